@@ -1,0 +1,99 @@
+#include "calc/direct.h"
+
+#include <atomic>
+#include <cmath>
+#include <mutex>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace luxgrid::calc {
+
+namespace {
+// A receiver closer than this to a point source gets no light from it rather than an infinite
+// value: 1 um is far below any grid spacing, and keeps I/d^2 finite.
+constexpr double kMinDistanceSquared = 1e-12;  // m^2
+}  // namespace
+
+double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3& normal) {
+  const Vec3 to_point = point - lum.pose.position;
+  const double d2 = glm::dot(to_point, to_point);
+  if (!(d2 > kMinDistanceSquared)) return 0.0;
+  const double d = std::sqrt(d2);
+  const Vec3 w = to_point / d;
+  const double cos_incidence = -glm::dot(normal, w);
+  if (!(cos_incidence > 0.0)) return 0.0;
+  // World direction -> luminaire frame: the rotation is orthonormal, so its inverse is its
+  // transpose (w * M == transpose(M) * w in glm).
+  const Vec3 local = w * lum.pose.rotation;
+  const double e = lum.distribution->intensity(local) * cos_incidence / d2;
+  return std::isfinite(e) && e > 0.0 ? e : 0.0;
+}
+
+double far_field_cylindrical(const nearfield::Emitter& emitter, const Vec3& point) {
+  const Vec3 to_point = point - emitter.centroid;
+  const double d2 = glm::dot(to_point, to_point);
+  if (!(d2 > kMinDistanceSquared)) return 0.0;
+  const Vec3 w = to_point / std::sqrt(d2);
+  const double sin_eps = std::hypot(w.x, w.y);
+  const double e = emitter.intensity_towards(w) * sin_eps / (kPi * d2);
+  return std::isfinite(e) && e > 0.0 ? e : 0.0;
+}
+
+std::vector<nearfield::Emitter> make_emitters(const Scene& scene) {
+  std::vector<nearfield::Emitter> out;
+  out.reserve(scene.luminaires.size());
+  for (const auto& l : scene.luminaires) {
+    out.push_back(nearfield::make_emitter(l.opening, l.pose.position, l.pose.rotation, l.distribution));
+  }
+  return out;
+}
+
+std::vector<double> direct_illuminance(const Plan& plan, const std::vector<nearfield::Emitter>& emitters,
+                                       const geometry::SurfaceGrid& grid, const Progress& progress,
+                                       DirectCounts* counts) {
+  std::vector<double> E(grid.points.size(), 0.0);
+  std::atomic<size_t> done{0};
+  std::mutex count_mutex;
+  const size_t total = grid.points.size();
+  const bool automatic = plan.near_switch == nearfield::NearFieldSwitch::automatic;
+  const bool cylindrical = grid.quantity == geometry::Quantity::cylindrical;
+  const Visibility* visibility = plan.visibility_test.get();
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, total, 16), [&](const auto& range) {
+    DirectCounts local;
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      if (!grid.active.empty() && !grid.active[i]) continue;
+      double sum = 0.0;
+      for (const auto& emitter : emitters) {
+        if (visibility && !visibility->visible(emitter.centroid, grid.points[i])) continue;
+        if (cylindrical) {
+          sum += far_field_cylindrical(emitter, grid.points[i]);
+        } else {
+          sum += nearfield::hybrid_illuminance(emitter, grid.points[i], grid.normals[i],
+                                               plan.near_model, plan.near_switch);
+        }
+        if (!counts) continue;
+        if (emitter.is_point()) {
+          ++local.point_sources;
+        } else if (cylindrical || plan.near_switch == nearfield::NearFieldSwitch::never) {
+          ++local.far;
+        } else if (!automatic) {
+          ++local.near;
+        } else {
+          const double w = nearfield::far_field_weight(emitter, grid.points[i]);
+          (w >= 1.0 ? local.far : w <= 0.0 ? local.near : local.blended) += 1;
+        }
+      }
+      E[i] = sum;
+    }
+    if (counts) {
+      std::lock_guard lock(count_mutex);
+      *counts += local;
+    }
+    const size_t now = done += range.size();
+    if (progress) progress(static_cast<double>(now) / static_cast<double>(total));
+  });
+  return E;
+}
+
+}  // namespace luxgrid::calc

@@ -1,0 +1,35 @@
+#pragma once
+// Direct illuminance on every point of every calculation surface, summed over luminaires,
+// in parallel over points (oneTBB).
+#include <functional>
+#include <vector>
+
+#include "calc/plan.h"
+#include "calc/scene.h"
+
+namespace luxgrid::calc {
+
+using Progress = std::function<void(double fraction_done)>;
+
+// Far-field point model: E = I(w) cos(theta) / d^2, w the direction from the luminaire to the
+// point in the luminaire's frame, theta the angle of incidence at the receiver. Zero for light
+// arriving from behind the receiver. Finite and >= 0 for every input.
+double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3& normal);
+
+// Cylindrical illuminance (mean vertical illuminance around a vertical axis through the point)
+// from a point emitter: E = I(w) sin(eps) / (pi d^2), eps the angle of the light from the vertical.
+double far_field_cylindrical(const nearfield::Emitter& emitter, const Vec3& point);
+
+// The emitters of all luminaires, built once per run (calc/nearfield/emitter.h).
+std::vector<nearfield::Emitter> make_emitters(const Scene& scene);
+
+// E_direct per point of `grid` (same order as grid.points): for each luminaire the plan's model
+// (far field, near field, or the five-times-rule blend of both), times the plan's visibility
+// test between the opening's centre and the point; inactive points get 0. `progress` may be
+// empty; it is called from worker threads. `counts`, when given, is increased by the pairs each
+// model served.
+std::vector<double> direct_illuminance(const Plan& plan, const std::vector<nearfield::Emitter>& emitters,
+                                       const geometry::SurfaceGrid& grid,
+                                       const Progress& progress = {}, DirectCounts* counts = nullptr);
+
+}  // namespace luxgrid::calc

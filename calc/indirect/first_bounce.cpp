@@ -1,0 +1,108 @@
+#include "calc/indirect/first_bounce.h"
+
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "calc/scaled_distribution.h"
+
+namespace luxgrid::calc::indirect {
+
+namespace {
+
+// A luminaire closer than this to a patch's plane sends it no light (grazing or behind); it also
+// keeps the solid angle of a patch the luminaire sits on (a recessed downlight) from being 2 pi.
+constexpr double kMinPlaneDistance_m = 1e-6;
+// Sample points are lifted this far off the face before visibility tests, so that a segment
+// ending on a wall is not reported as crossing it.
+constexpr double kSampleLift_m = 1e-6;
+constexpr int kMaxLevel = 6;
+// Once a patch's pieces disagree on visibility, integrate it this many levels deeper (the
+// shadow edge is then resolved to 1/4 of the piece size per extra level... 1/2 per level).
+constexpr int kShadowExtraLevels = 2;
+
+struct Sampler {
+  const Luminaire& lum;
+  const OcclusionFn& occluded;
+  Vec3 normal;
+  mutable int visible = 0, hidden = 0;
+
+  double triangle(const Vec3& a, const Vec3& b, const Vec3& c, int level) const {
+    if (level > 0) {
+      const Vec3 ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
+      return triangle(a, ab, ca, level - 1) + triangle(ab, b, bc, level - 1) +
+             triangle(ca, bc, c, level - 1) + triangle(ab, bc, ca, level - 1);
+    }
+    const Vec3 s = lum.pose.position;
+    const Vec3 centre = (a + b + c) / 3.0;
+    if (occluded && occluded(s, centre + normal * kSampleLift_m)) {
+      ++hidden;
+      return 0.0;
+    }
+    ++visible;
+    const double omega = triangle_solid_angle_from(s, a, b, c);
+    const Vec3 dir = glm::normalize(centre - s);
+    const Vec3 local = glm::transpose(lum.pose.rotation) * dir;
+    return lum.distribution->intensity(local) * omega;
+  }
+};
+
+double patch_flux(const Luminaire& lum, const Patch& p, const OcclusionFn& occluded,
+                  double max_angle_rad) {
+  const Vec3 s = lum.pose.position;
+  const double h = glm::dot(p.normal, s - p.centroid);
+  if (!(h > kMinPlaneDistance_m)) return 0.0;
+  // Distance from the luminaire to the nearest point of the patch is at least h; use the
+  // centroid distance less the radius for the angular size of the whole patch.
+  const double dist = std::max(h, glm::length(s - p.centroid) - 0.5 * p.diameter_m);
+  const double angle = p.diameter_m / dist;
+  int level = 0;
+  // Each fan triangle spans about half the patch; each level halves a piece.
+  while (level < kMaxLevel && 0.5 * angle / std::ldexp(1.0, level) > max_angle_rad) ++level;
+  Sampler sampler{lum, occluded, p.normal};
+  auto integrate = [&](int lv) {
+    double flux = 0.0;
+    for (size_t k = 0, n = p.polygon.size(); k < n; ++k)
+      flux += sampler.triangle(p.centroid, p.polygon[k], p.polygon[(k + 1) % n], lv);
+    return flux;
+  };
+  double flux = integrate(level);
+  if (occluded && sampler.visible > 0 && sampler.hidden > 0) {
+    sampler.visible = sampler.hidden = 0;
+    flux = integrate(std::min(kMaxLevel, level + kShadowExtraLevels));
+  }
+  return flux;
+}
+
+}  // namespace
+
+FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
+                         const std::vector<OcclusionFn>& occlusion, double max_angle_rad) {
+  FirstBounce fb;
+  const size_t n = mesh.patches.size();
+  fb.incident_flux_lm.assign(n, 0.0);
+  fb.vpl_flux_lm.assign(n, 0.0);
+  for (const auto& lum : scene.luminaires) {
+    const int r = room_containing(scene, lum.pose.position, 0.0);
+    if (r < 0) {
+      fb.notes.push_back(lum.label + ": not inside any room, its light is not reflected");
+      continue;
+    }
+    fb.emitted_flux_lm += luminous_flux(*lum.distribution);
+    const size_t begin = mesh.room_begin[r], end = mesh.room_begin[r + 1];
+    const OcclusionFn& occ = occlusion[r];
+    std::vector<double> add(end - begin, 0.0);
+    tbb::parallel_for(begin, end, [&](size_t i) {
+      add[i - begin] = patch_flux(lum, mesh.patches[i], occ, max_angle_rad);
+    });
+    for (size_t i = begin; i < end; ++i) fb.incident_flux_lm[i] += add[i - begin];
+  }
+  for (size_t i = 0; i < n; ++i) {
+    fb.vpl_flux_lm[i] = mesh.patches[i].reflectance * fb.incident_flux_lm[i];
+    fb.received_flux_lm += fb.incident_flux_lm[i];
+    if (fb.vpl_flux_lm[i] > 0.0) ++fb.vpl_count;
+  }
+  return fb;
+}
+
+}  // namespace luxgrid::calc::indirect

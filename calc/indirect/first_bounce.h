@@ -1,0 +1,36 @@
+#pragma once
+// The first bounce, RSM-style (seed 004, ARCHITECTURE.md "Indirect light"): the luminous flux
+// each luminaire sends onto each patch, found by integrating the luminaire's intensity over the
+// patch's solid angle. A patch with flux Phi = reflectance x incident lumens is one virtual point
+// light (VPL). Where an RSM rasterises the room into a (cube) shadow map from the luminaire, this
+// integrates over the same directions deterministically: each patch is a fan of triangles from
+// its centroid, each triangle subdivided 4^level times, each piece weighted by its exact solid
+// angle (Van Oosterom-Strackee) times I in the direction of its centroid, with visibility tested
+// per piece. Because the patches of a closed room tile the sphere around the luminaire, the exact
+// solid angles sum to 4 pi, so the received flux equals the emitted flux up to the quadrature
+// error of I alone (zero for an isotropic source).
+#include <string>
+#include <vector>
+
+#include "calc/indirect/form_factor.h"
+#include "calc/indirect/patches.h"
+#include "calc/scene.h"
+
+namespace luxgrid::calc::indirect {
+
+struct FirstBounce {
+  std::vector<double> incident_flux_lm;  // per patch: direct lumens received
+  std::vector<double> vpl_flux_lm;       // per patch: reflectance x incident
+  double emitted_flux_lm = 0.0;          // sum of luminous_flux over luminaires inside a room
+  double received_flux_lm = 0.0;         // sum of incident_flux_lm
+  size_t vpl_count = 0;                  // patches with vpl flux > 0
+  std::vector<std::string> notes;        // e.g. luminaires outside every room
+};
+
+// `occlusion[r]` is room r's occlusion callback (may be empty: nothing blocks).
+// `max_angle_rad` is the largest angular size of one integration piece (0.08 rad by default:
+// I is sampled at least every ~4.6 degrees).
+FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
+                         const std::vector<OcclusionFn>& occlusion, double max_angle_rad = 0.08);
+
+}  // namespace luxgrid::calc::indirect

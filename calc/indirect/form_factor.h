@@ -1,0 +1,34 @@
+#pragma once
+// Form factors of calc/indirect: the exact point-to-polygon (differential area to polygon) form
+// factor by Lambert's formula on the horizon-clipped polygon, and the point-to-point kernel used
+// far from a patch. Both return the fraction of the light leaving a point, cosine-weighted over
+// its hemisphere, that reaches the polygon; equivalently E(x) = M * F for a uniform-exitance
+// (Lambertian) polygon of exitance M (lm/m^2) seen from a receiver at x with normal n.
+#include <functional>
+
+#include "calc/indirect/polygon.h"
+
+namespace luxgrid::calc::indirect {
+
+// Occlusion callback: true when the open segment from a to b is blocked. Empty = nothing blocks.
+using OcclusionFn = std::function<bool(const Vec3& a, const Vec3& b)>;
+
+// Lambert (1760), Baum, Rushmeier and Winget (1989) Eq. 2:
+//   F = (1 / 2 pi) | sum over edges  theta_k  n . (r_k x r_k+1) / |r_k x r_k+1| |,
+// with r_k the vertices relative to x and theta_k the angle they subtend, after clipping the
+// polygon to the receiver's hemisphere n . (y - x) >= 0. Exact for any planar polygon, in [0, 1],
+// bounded however close x is to the polygon (no singularity: no spikes near walls or corners).
+double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Polygon3& polygon);
+
+// The point-to-point kernel of seed 004, Eq. 3, as a form factor: a patch of area A at centroid
+// c with normal m, seen from x with normal n:
+//   F = A max(0, m . (x - c)) max(0, n . (c - x)) / (pi |x - c|^4).
+// Relative error against the exact value is about (D / d)^2 / (2 pi) for a patch of diameter D
+// at distance d (on-axis disk: exact a^2/(a^2+d^2) vs a^2/d^2); 0.6 % at d = 5 D.
+double point_kernel_form_factor(const Vec3& x, const Vec3& n, const Vec3& c, const Vec3& m,
+                                double area_m2);
+
+// Solid angle (sr) of the triangle abc seen from s (Van Oosterom and Strackee 1983, by atan2).
+double triangle_solid_angle_from(const Vec3& s, const Vec3& a, const Vec3& b, const Vec3& c);
+
+}  // namespace luxgrid::calc::indirect

@@ -1,0 +1,82 @@
+#pragma once
+// Reflected light (issue 7): the public face of calc/indirect.
+//
+//   decide_indirect(scene)                 -> run it or not, and why (for the Plan)
+//   compute_indirect(scene, surfaces, opt) -> E_indirect per point of every surface + a summary
+//
+// Method (docs/indirect.md): rooms are meshed into patches (patches.h); the first bounce
+// integrates every luminaire's intensity over each patch's solid angle and makes each lit patch a
+// virtual point light of flux rho x incident lumens (first_bounce.h, seed 004); the light is then
+// carried between patches with exact polygon form factors and solved to convergence, or for
+// exactly N reflections (radiosity.h); finally each grid point gathers from the patches with
+// Lambert's exact polygon form factor near a patch and the seed's point kernel far from it.
+#include <string>
+#include <vector>
+
+#include "calc/indirect/form_factor.h"
+#include "calc/indirect/patches.h"
+#include "calc/scene.h"
+#include "geometry/surface_grid.h"
+
+namespace luxgrid::calc::indirect {
+
+struct IndirectOptions {
+  Quality quality = Quality::standard;
+  int bounces = 0;              // 0: auto (converged; draft: 1); N >= 1: exactly N reflections
+  double patch_size_m = 0.0;    // 0: the quality's (draft 1.0, standard 0.5, high 0.25, ref 0.2 m)
+  size_t max_patches_per_room = 4000;  // budget: the patch size grows to fit, unless set above
+  double far_ratio = 0.0;       // 0: the quality's (draft 3, standard 5, high 8, reference: never)
+  double tolerance = 0.0;       // 0: the quality's (draft 1e-2, standard 1e-3, high 1e-4, ref 1e-6)
+  // Occlusion between two points of a room (true = blocked), e.g. geometry/'s AABB tree. Empty:
+  // nothing blocks in convex rooms, and the built-in prism test (walls only) in non-convex ones.
+  OcclusionFn occluded;
+};
+
+// Options from the project's settings (quality, bounces).
+IndirectOptions indirect_options(const Settings& settings);
+
+struct IndirectDecision {
+  bool run = false;
+  std::string reason;            // "skipped: all reflectances are 0", "on: ...", ...
+  double estimate_lx = 0.0;      // integrating-sphere estimate rho Phi / (A (1 - rho)), max over rooms
+  double mean_direct_lx = 0.0;   // mean far-field direct illuminance on the calculation surfaces
+};
+
+// Auto mode skips indirect light when the integrating-sphere estimate is below this fraction of
+// the mean direct illuminance on the calculation surfaces (1 %: the standard quality's target).
+inline constexpr double kAutoSkipFraction = 0.01;
+
+IndirectDecision decide_indirect(const Scene& scene);
+
+struct IndirectResult {
+  std::vector<std::vector<double>> E_indirect_per_surface;  // lx, same order as the surfaces' points
+  std::string summary;      // one line for Plan::indirect
+  std::vector<std::string> notes;
+  size_t patches = 0;
+  size_t vpls = 0;
+  int bounces_run = 0;      // largest over rooms
+  bool tail_added = false;
+  double residual = 0.0;    // largest over rooms, relative
+  double patch_size_m = 0.0;
+  double emitted_flux_lm = 0.0;   // luminaires inside rooms
+  double received_flux_lm = 0.0;  // direct lumens landing on patches
+  double vpl_flux_lm = 0.0;       // sum over VPLs (= sum rho x received)
+  double max_row_correction = 0.0;
+  double seconds = 0.0;
+};
+
+// E_indirect at every point of every surface (inactive points get 0). Throws
+// InputError naming the room for a bad room or a patch budget the scene exceeds.
+IndirectResult compute_indirect(const Scene& scene,
+                                const std::vector<geometry::SurfaceGrid>& surfaces,
+                                const IndirectOptions& options);
+
+// Building blocks, exposed for tests and benchmarks.
+
+// E_indirect (lx) at point x with normal n from patches [begin, end) of `mesh` with exitant
+// fluxes `exitant_flux_lm` (indexed by patch, whole mesh).
+double gather_point(const PatchMesh& mesh, size_t begin, size_t end,
+                    const std::vector<double>& exitant_flux_lm, const Vec3& x, const Vec3& n,
+                    double far_ratio, const OcclusionFn& occluded);
+
+}  // namespace luxgrid::calc::indirect

@@ -1,0 +1,58 @@
+#pragma once
+// Interreflection between patches: form factors and the radiosity solve, seeded by the first
+// bounce (the VPL fluxes). Everything is in lumens per patch.
+//
+// Formulation (shooting form factors, flux units): F[j -> i] is the fraction of the light leaving
+// patch j that lands on patch i, computed at j's centroid with the exact polygon form factor of
+// i (near) or the point kernel (far), times the fraction of i visible from there. In a closed
+// room each row sums to 1 (the patches tile j's hemisphere); rows are renormalised to 1 so that no
+// light is created or lost by discretisation or visibility sampling, which matters at high
+// reflectance: a row-sum error e changes the converged total by about rho e / (1 - rho), 19 e at
+// rho = 0.95. The largest correction is reported.
+//
+// Solver: Jacobi on the bounce series, Delta_1 = rho D, Delta_k+1 = rho (F^T Delta_k), Phi = sum
+// of Delta_k. Each sweep is exactly one more reflection, so `bounces: N` means exactly N
+// reflections (N = 1 is the seed's one-bounce model), which Gauss-Seidel and Southwell shooting
+// cannot promise. A sweep is one dense matrix-vector product (parallel, cache-friendly), so even
+// 4000 patches cost ~10 ms per bounce. For `auto`, the ratio r_k = |Delta_k+1| / |Delta_k| tends
+// to the dominant eigenvalue (exactly rho in a closed room of uniform rho); once it is stable the
+// remaining bounces are a geometric series whose sum Delta_k r / (1 - r) is added (the "ambient"
+// tail of Cohen et al. 1988), so rho = 0.95 converges in tens of sweeps, not hundreds.
+#include <vector>
+
+#include "calc/indirect/form_factor.h"
+#include "calc/indirect/patches.h"
+
+namespace luxgrid::calc::indirect {
+
+// Dense form-factor matrix of one room's patches, stored so that row i holds F[j -> i] for all j
+// (the "gather" layout: incident flux on i = row i . exitant flux).
+struct FormFactorMatrix {
+  size_t begin = 0, n = 0;      // patches [begin, begin + n) of the mesh
+  std::vector<float> gather;    // n x n, gather[i * n + j] = F[j -> i]
+  double max_row_correction = 0.0;  // largest |1 - sum_i F[j -> i]| before renormalisation
+  bool renormalised = true;
+};
+
+// `far_ratio`: the point kernel is used when the distance between centroids exceeds far_ratio x
+// the receiving patch's diameter (infinity: always exact). `renormalise`: scale rows to 1 (closed
+// rooms).
+FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn& occluded,
+                              double far_ratio, bool renormalise = true);
+
+struct RadiosityResult {
+  std::vector<double> exitant_flux_lm;  // per patch of the room (index i - begin)
+  int bounces_run = 0;                  // reflections computed explicitly (sweeps + 1)
+  bool tail_added = false;              // geometric remainder added (auto mode)
+  double residual = 0.0;  // flux not accounted for, relative to the total: the next bounce's
+                          // share for fixed N; the tail's estimated error for auto
+  std::vector<double> bounce_flux_lm;   // |Delta_k| for k = 1..bounces_run
+};
+
+// `bounces` = 0: auto, until the remaining flux < tolerance x total (with the geometric tail);
+// N >= 1: exactly N reflections. `max_bounces` caps auto mode (rho = 1 never converges).
+RadiosityResult solve_radiosity(const FormFactorMatrix& F, const std::vector<double>& reflectance,
+                                const std::vector<double>& incident_flux_lm, int bounces,
+                                double tolerance, int max_bounces = 10000);
+
+}  // namespace luxgrid::calc::indirect

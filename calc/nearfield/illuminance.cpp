@@ -1,0 +1,78 @@
+#include "calc/nearfield/illuminance.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "calc/nearfield/models.h"
+
+namespace luxgrid::nearfield {
+namespace {
+
+// Default tolerances when Model::tolerance is 0.
+constexpr double kDefaultAdaptiveRelTol = 1e-3;
+constexpr double kDefaultReferenceRelTol = 1e-6;
+
+}  // namespace
+
+std::string to_string(const Model& m) {
+  char buf[64];
+  switch (m.kind) {
+    case ModelKind::far_field: return "far field";
+    case ModelKind::paper_cubature: return "paper cubature";
+    case ModelKind::subdivided: std::snprintf(buf, sizeof buf, "paper k=%d", m.level); return buf;
+    case ModelKind::lambert_subdivided: std::snprintf(buf, sizeof buf, "lambert k=%d", m.level); return buf;
+    case ModelKind::adaptive:
+      std::snprintf(buf, sizeof buf, "adaptive %.0e", m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol);
+      return buf;
+    case ModelKind::standard: return "standard";
+    case ModelKind::reference: return "reference";
+    case ModelKind::structured_sampling: return "structured sampling";
+    case ModelKind::most_representative_point: return "MRP";
+    case ModelKind::monte_carlo: std::snprintf(buf, sizeof buf, "MC %d", m.level); return buf;
+  }
+  return "?";
+}
+
+double illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, const Model& m) {
+  switch (m.kind) {
+    case ModelKind::far_field: return far_field_illuminance(e, point, normal);
+    case ModelKind::paper_cubature: return paper_cubature_illuminance(e, point, normal);
+    case ModelKind::subdivided:
+      return subdivided_illuminance(e, point, normal, 1 << std::clamp(m.level, 0, 10), TriangleRule::paper);
+    case ModelKind::lambert_subdivided:
+      return subdivided_illuminance(e, point, normal, 1 << std::clamp(m.level, 0, 10),
+                                    TriangleRule::lambert_product);
+    case ModelKind::adaptive:
+      return adaptive_illuminance(e, point, normal, m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol);
+    case ModelKind::standard: return standard_illuminance(e, point, normal);
+    case ModelKind::reference:
+      return reference_illuminance(e, point, normal, m.tolerance > 0 ? m.tolerance : kDefaultReferenceRelTol)
+          .illuminance_lx;
+    case ModelKind::structured_sampling: return structured_sampling_illuminance(e, point, normal);
+    case ModelKind::most_representative_point: return mrp_illuminance(e, point, normal);
+    case ModelKind::monte_carlo: return monte_carlo_illuminance(e, point, normal, std::max(1, m.level), m.seed);
+  }
+  return 0.0;
+}
+
+double far_field_weight(const Emitter& e, const Vec3& point) {
+  const double size = e.largest_dimension_m;
+  if (!(size > 0.0)) return 1.0;
+  const double t = (glm::length(point - e.centroid) / size - kBlendStart) / (kBlendEnd - kBlendStart);
+  if (t <= 0.0) return 0.0;
+  if (t >= 1.0) return 1.0;
+  return t * t * (3.0 - 2.0 * t);
+}
+
+double hybrid_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
+                          const Model& near_model, NearFieldSwitch mode) {
+  if (mode == NearFieldSwitch::never) return far_field_illuminance(e, point, normal);
+  if (mode == NearFieldSwitch::always) return illuminance(e, point, normal, near_model);
+  const double w = far_field_weight(e, point);
+  if (w >= 1.0) return far_field_illuminance(e, point, normal);
+  const double near = illuminance(e, point, normal, near_model);
+  if (w <= 0.0) return near;
+  return (1.0 - w) * near + w * far_field_illuminance(e, point, normal);
+}
+
+}  // namespace luxgrid::nearfield

@@ -1,0 +1,70 @@
+#pragma once
+// The one entry point the rest of luxgrid calls for direct light from one luminaire at one
+// receiver point (no visibility: calc/direct multiplies by it), and the five-times-rule switch.
+#include <cstdint>
+#include <string>
+
+#include "calc/nearfield/emitter.h"
+
+namespace luxgrid::nearfield {
+
+enum class ModelKind {
+  far_field,       // point at the centroid (quality draft)
+  paper_cubature,  // Luksch et al. 2020 as published ("near_field_model": "paper")
+  subdivided,      // every fan triangle split into 4^level with the paper's rule (Eq. 10)
+  lambert_subdivided,  // same split, exact projected solid angle and product average
+  adaptive,        // adaptive rung, local tolerance `tolerance`
+  standard,        // quality standard: within 1 % of the reference on the paper's protocol
+  reference,       // converged area-form integrator, tolerance `tolerance` (quality reference)
+  structured_sampling,        // study baselines (Sec. 4)
+  most_representative_point,
+  monte_carlo,                // `level` samples
+};
+
+struct Model {
+  ModelKind kind = ModelKind::standard;
+  int level = 0;           // subdivision k (4^k triangles per fan triangle) or MC samples
+  double tolerance = 0.0;  // relative; adaptive and reference (0 = the model's default)
+  std::uint64_t seed = 1;  // Monte Carlo
+
+  static Model far_field() { return {ModelKind::far_field}; }
+  static Model paper_cubature() { return {ModelKind::paper_cubature}; }
+  static Model subdivided(int k) { return {ModelKind::subdivided, k}; }
+  static Model lambert_subdivided(int k) { return {ModelKind::lambert_subdivided, k}; }
+  static Model adaptive(double rel_tol) { return {ModelKind::adaptive, 0, rel_tol}; }
+  static Model standard() { return {ModelKind::standard}; }
+  static Model reference(double rel_tol = 0.0) { return {ModelKind::reference, 0, rel_tol}; }
+  static Model structured_sampling() { return {ModelKind::structured_sampling}; }
+  static Model most_representative_point() { return {ModelKind::most_representative_point}; }
+  static Model monte_carlo(int samples, std::uint64_t seed = 1) {
+    return {ModelKind::monte_carlo, samples, 0.0, seed};
+  }
+};
+
+// A short name for tables and results ("paper", "lambert k=2", "adaptive 1e-3", ...).
+std::string to_string(const Model& model);
+
+// Illuminance (lx) at `point` with unit `normal` from the emitter, by `model`. Always finite and
+// >= 0. Light reaches the receiver only from above its horizon; the opening emits from both
+// faces with L = I / (A |cos|), so upward intensity reaches receivers behind the opening.
+double illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal,
+                   const Model& model);
+
+// Five-times rule with a blend band, so the near/far switch draws no seam on an isolux plot:
+// weight of the far-field model, 0 below kBlendStart x D, 1 beyond kBlendEnd x D (D = largest
+// dimension), smoothstep in between (continuous value and slope).
+inline constexpr double kBlendStart = 4.0;  // x largest dimension
+inline constexpr double kBlendEnd = 6.0;    // x largest dimension
+double far_field_weight(const Emitter& emitter, const Vec3& point);
+
+// settings.near_field: auto (blend by the five-times rule), always (near model everywhere),
+// never (far field everywhere).
+enum class NearFieldSwitch { automatic, always, never };
+
+// What calc/direct calls: `near_model` is the quality's rung (Model::standard() for standard).
+// With automatic, the far field alone is evaluated beyond the band, the near model alone inside
+// it, both within it (weights from far_field_weight).
+double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal,
+                          const Model& near_model, NearFieldSwitch mode = NearFieldSwitch::automatic);
+
+}  // namespace luxgrid::nearfield

@@ -1,0 +1,82 @@
+#pragma once
+// The emitter models of the near-field ladder, each a plain function of (emitter, receiver point,
+// receiver unit normal) -> illuminance in lux. Most callers use illuminance() in
+// calc/nearfield/illuminance.h instead; these are public for tests, benchmarks and the study.
+#include <cstdint>
+
+#include "calc/nearfield/emitter.h"
+
+namespace luxgrid::nearfield {
+
+// Far-field point at the emitter centroid: E = I(-w) cos(theta_x) / d^2, finite and >= 0.
+double far_field_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal);
+
+// The Luksch et al. 2020 cubature exactly as published (Sec. 5, Eq. 10):
+//   E = sum over fan triangles of mean(L) * mean(G) * |triangle|  (Van Oosterom-Strackee).
+// `shift_m` is the horizon epsilon shift; pass horizon_shift_m(e) (the default below) — other
+// values exist for the hard-case tests. Not sanitized: returns NaN where the method breaks.
+double paper_cubature_raw(const Emitter& e, const Vec3& point, const Vec3& normal, double shift_m);
+double paper_cubature_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal);
+
+// How one (sub)triangle of the fan is integrated.
+enum class TriangleRule {
+  paper,           // Eq. 10: mean(L) mean(G) Omega, Omega by Van Oosterom-Strackee
+  lambert_mean,    // exact projected solid angle (Lambert) times mean(L): exact for uniform L
+  lambert_product, // exact projected solid angle times the L average that is exact when L and
+                   // the area-form weight cos_r cos_e / d^2 are both linear over the triangle
+  two_kernel,      // I fitted as a cos_e + b over the triangle's vertices, each term integrated
+                   // exactly: a * projected solid angle + b * integral of cos_r / d^2 dA
+                   // (exact for Lambertian and for isotropic emitters)
+};
+
+// Every fan triangle split into n x n similar triangles in the emitter plane (n = 2^k gives the
+// issue's "subdivided k times", 4^k triangles), each integrated by `rule`.
+double subdivided_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, int n,
+                              TriangleRule rule);
+
+// Adaptive rung (two-kernel rule unless given): globally adaptive, the triangle whose estimate
+// differs most from the sum of its four children's (edge-midpoint split) is split first, until
+// the summed differences are below rel_tol * E or a budget (20000 lookups) is spent. Returns
+// the children's sums; `error_lx` (optional) receives the summed |differences|.
+double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
+                            double rel_tol, double* error_lx = nullptr);
+// The same with a chosen rule; `samples` (optional) receives the number of intensity lookups.
+double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
+                            double rel_tol, TriangleRule rule, double* error_lx, int* samples);
+
+// quality "standard": see docs/nearfield.md. Within 1 % of the reference on the paper's protocol.
+double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal);
+
+// Exact illuminance from a uniform (Lambertian) emitter of luminance `luminance_cd_m2`:
+// Lambert's polygon formula E = L/2 |n . sum_edges theta g| on the horizon-clipped polygon.
+// Only the emitting side is lit. No horizon shift.
+double lambert_uniform_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
+                                   double luminance_cd_m2);
+
+struct ReferenceResult {
+  double illuminance_lx = 0.0;
+  double error_estimate_lx = 0.0;  // sum over leaf triangles of |coarse - fine|
+  std::int64_t evaluations = 0;    // intensity lookups
+  bool converged = false;          // error estimate <= rel_tol * E (or abs floor) reached
+};
+
+// Converging reference for any distribution: the area form (Eq. 1), E = (1/A) integral of
+// I(-w) cos_r / d^2 dA over the horizon-clipped polygon, by globally adaptive cubature on
+// triangles (degree-5 7-point rule, 4-way splits of the triangle with the largest error first)
+// until the error estimate is below rel_tol * E. Same horizon shift as the other models, so all
+// models integrate the same regularised problem. Independent of the solid-angle machinery.
+ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
+                                      double rel_tol = 1e-7, std::int64_t max_evaluations = 4'000'000);
+
+// Study-only baselines (Sec. 4 of the paper) ------------------------------------------------
+// Structured sampling (Eq. 4): corners of the clipped polygon + its centre, Omega/N sum L G.
+double structured_sampling_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal);
+// Most representative point (Drobot 2014 as adapted in Sec. 4.2): L_e at MRP times the exact
+// projected solid angle of the clipped polygon.
+double mrp_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal);
+// Monte Carlo with `samples` stratified solid-angle samples (Arvo 1995 spherical-triangle
+// sampling over the fan), seeded by `seed` — unbiased, noisy.
+double monte_carlo_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
+                               int samples, std::uint64_t seed);
+
+}  // namespace luxgrid::nearfield

@@ -1,0 +1,52 @@
+#pragma once
+// The plan: which effects this scene needs, which model computes each, and why. Every decision is
+// recorded in words, so results say what was simulated ("indirect: skipped, all reflectances are
+// 0"). Later capabilities add their decisions here.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "calc/nearfield/illuminance.h"
+#include "calc/scene.h"
+#include "calc/visibility.h"
+
+namespace luxgrid::calc {
+
+struct Plan {
+  // Direct light: the near-field rung for area emitters and how the near/far switch is made.
+  nearfield::Model near_model = nearfield::Model::standard();
+  nearfield::NearFieldSwitch near_switch = nearfield::NearFieldSwitch::automatic;
+  // Occlusion test, or null when nothing in the scene can block light (calc/visibility.h).
+  std::shared_ptr<const Visibility> visibility_test;
+  std::string direct;      // e.g. "hybrid (five-times rule): 1200 pairs near-field, ..."
+  std::string indirect;    // e.g. "not computed: ..."
+  std::string visibility;  // e.g. "off: ..."
+  std::vector<std::string> notes;
+};
+
+// The near-field rung for a quality, or for settings.near_field_model when it is set
+// ("paper", "standard", "high", "reference", "far-field", "subdivided-K", "lambert-K",
+// "adaptive", "monte-carlo-N"). Throws InputError for an unknown name.
+nearfield::Model near_model_for(const Settings& settings);
+
+Plan make_plan(const Scene& scene);
+
+// How many luminaire-point pairs each direct model served (filled by calc/direct).
+struct DirectCounts {
+  size_t point_sources = 0;  // luminaires without an opening: the point model is exact
+  size_t far = 0;            // area emitters beyond the five-times band
+  size_t near = 0;           // area emitters inside it
+  size_t blended = 0;        // within the blend band: both, weighted
+  DirectCounts& operator+=(const DirectCounts& o) {
+    point_sources += o.point_sources;
+    far += o.far;
+    near += o.near;
+    blended += o.blended;
+    return *this;
+  }
+};
+
+// The plan's sentence about direct light, once the counts are known.
+std::string describe_direct(const Plan& plan, const DirectCounts& counts);
+
+}  // namespace luxgrid::calc

@@ -1,0 +1,35 @@
+#include "calc/scaled_distribution.h"
+
+#include <array>
+#include <cmath>
+
+namespace luxgrid::calc {
+
+double luminous_flux(const photometry::IntensityDistribution& d) {
+  // 8-point Gauss-Legendre per band of cos(gamma), 90 bands (2 degrees) and 360 C steps:
+  // 259200 lookups, ~10 ms; sharp beams on 1-degree grids are still resolved.
+  static constexpr std::array<double, 4> kNodes = {0.1834346424956498, 0.5255324099163290,
+                                                   0.7966664774136267, 0.9602898564975363};
+  static constexpr std::array<double, 4> kWeights = {0.3626837833783620, 0.3137066458778873,
+                                                     0.2223810344533745, 0.1012285362903763};
+  constexpr int kBands = 90, kCSteps = 360;
+  double total = 0.0;
+  for (int band = 0; band < kBands; ++band) {
+    const double lo = -1.0 + 2.0 * band / kBands, hi = -1.0 + 2.0 * (band + 1) / kBands;
+    const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+    for (int k = 0; k < 8; ++k) {
+      const double x = mid + (k < 4 ? -1 : 1) * kNodes[k % 4] * half;  // x = -cos(gamma) = dir.z
+      const double w = kWeights[k % 4] * half;
+      const double s = std::sqrt(std::max(0.0, 1.0 - x * x));
+      double ring = 0.0;
+      for (int c = 0; c < kCSteps; ++c) {
+        const double phi = (c + 0.5) * 2.0 * kPi / kCSteps;
+        ring += d.intensity(Vec3(s * std::cos(phi), s * std::sin(phi), x));
+      }
+      total += w * ring * (2.0 * kPi / kCSteps);
+    }
+  }
+  return total;
+}
+
+}  // namespace luxgrid::calc

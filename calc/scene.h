@@ -1,0 +1,80 @@
+#pragma once
+// The scene as the calculation sees it: everything in the project file, resolved, validated and
+// in SI units and radians. Built by calc/project_file, read by calc/plan, calc/direct, report/.
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+
+#include "geometry/room.h"
+#include "geometry/surface_grid.h"
+#include "photometry/photometry.h"
+
+namespace luxgrid::calc {
+
+enum class Quality { draft, standard, high, reference };
+enum class NearFieldMode { automatic, always, never };
+enum class IndirectMode { automatic, off, on };
+
+const char* to_string(Quality q);
+std::optional<Quality> quality_from_string(const std::string& s);
+
+struct Settings {
+  Quality quality = Quality::standard;
+  NearFieldMode near_field = NearFieldMode::automatic;
+  IndirectMode indirect = IndirectMode::automatic;
+  std::string near_field_model;  // empty: the quality's rung; else a rung by name (docs/nearfield.md)
+  int bounces = 0;  // 0 means "auto" (iterate until converged)
+  double maintenance_factor = 1.0;
+};
+
+struct Reflectances {
+  double floor = 0.2;
+  double walls = 0.5;
+  double ceiling = 0.7;
+};
+
+struct Room {
+  std::string name;
+  std::vector<Vec2> outline;  // floor polygon seen from above, counter-clockwise
+  double floor_z = 0.0;
+  double height = 0.0;
+  Reflectances reflectance;
+  // Boxes and prisms inside the room (geometry/room.h), footprints counter-clockwise.
+  std::vector<geometry::Obstacle> obstacles;
+};
+
+// Where a luminaire sits and how it is turned: world = position + rotation * local.
+struct Pose {
+  Vec3 position{0.0};
+  glm::dmat3 rotation{1.0};  // luminaire frame -> world frame
+};
+
+// Rotation [rx, ry, rz] in radians about the world x, then y, then z axis (ARCHITECTURE.md).
+glm::dmat3 rotation_xyz(double rx, double ry, double rz);
+
+struct Luminaire {
+  std::string label;       // "luminaire 3" or "luminaire 3 [1,0]" for array members
+  std::string photometry;  // key into Scene::photometry
+  Pose pose;
+  photometry::DistributionPtr distribution;
+  photometry::LuminousOpening opening;  // from the file, or the project's "emitter" override
+};
+
+struct Scene {
+  std::string name;
+  std::filesystem::path project_file;
+  Settings settings;
+  std::map<std::string, photometry::Photometry> photometry;
+  std::vector<Room> rooms;
+  std::vector<Luminaire> luminaires;
+  std::vector<geometry::SurfaceGrid> surfaces;
+  // Legal but suspicious input, each naming the object ("room \"L\": the outline is clockwise;
+  // reversed to counter-clockwise"). The CLI prints them; results may list them.
+  std::vector<std::string> warnings;
+};
+
+}  // namespace luxgrid::calc

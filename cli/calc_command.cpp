@@ -1,0 +1,58 @@
+// `luxgrid calc PROJECT [-o DIR] [--quality Q] [--no-report] [--scale MIN:MAX] [--check]
+//  [--with-cost]`
+#include <cstdio>
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/run_project.h"
+#include "util/error.h"
+
+namespace luxgrid::cli {
+
+void add_calc_command(CLI::App& app, Runner& run) {
+  struct Options {
+    std::string project, out, quality, scale;
+    bool no_report = false, check = false, with_cost = false;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("calc", "Calculate a project: results.json, CSV and PNG per surface, report.html");
+  cmd->add_option("PROJECT", opt->project, "Project file (JSON)")->required();
+  cmd->add_option("-o,--output", opt->out, "Output folder (default: <project>.out beside the project)");
+  cmd->add_option("--quality", opt->quality, "Override settings.quality")
+      ->check(CLI::IsMember({"draft", "standard", "high", "reference"}));
+  cmd->add_flag("--no-report", opt->no_report, "Do not write report.html");
+  cmd->add_option("--scale", opt->scale, "Fix the colour scale of every plot to MIN:MAX lux (e.g. 0:1000)");
+  cmd->add_flag("--check", opt->check, "Exit with code 3 when a surface's requirement is not met");
+  cmd->add_flag("--with-cost", opt->with_cost,
+                "Also run draft/standard/high/reference and put the cost table into the report");
+  cmd->callback([opt, &run] {
+    run = [opt] {
+      RunOptions options;
+      if (!opt->quality.empty()) options.quality = calc::quality_from_string(opt->quality);
+      if (!opt->scale.empty()) options.scale = report::parse_scale(opt->scale);
+      options.report = !opt->no_report;
+      options.with_cost = opt->with_cost;
+      options.show_progress = true;
+      const std::filesystem::path out =
+          opt->out.empty() ? default_output_dir(opt->project) : std::filesystem::path(opt->out);
+      const auto outcome = run_project(opt->project, out, options);
+      for (const auto& w : outcome.warnings) std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
+      for (const auto& s : outcome.results.surfaces) {
+        std::printf("%-24s Emin %9.2f  Eavg %9.2f  Emax %9.2f lx  U0 %.3f\n", s.grid.name.c_str(),
+                    s.stats.Emin, s.stats.Eavg, s.stats.Emax, s.stats.U0);
+      }
+      if (!outcome.checks.empty()) {
+        std::printf("requirements:\n%s", report::format_checks(outcome.checks).c_str());
+      }
+      if (outcome.cost) std::printf("cost of accuracy:\n%s", report::format_cost_table(*outcome.cost).c_str());
+      std::printf("results written to %s\n", out.string().c_str());
+      if (opt->check && !report::all_met(outcome.checks)) {
+        std::fprintf(stderr, "luxgrid: requirements not met (--check)\n");
+        return 3;
+      }
+      return 0;
+    };
+  });
+}
+
+}  // namespace luxgrid::cli

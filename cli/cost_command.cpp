@@ -1,0 +1,29 @@
+// `luxgrid cost PROJECT`: what accuracy costs on the user's own project. Runs the project at
+// draft, standard, high and reference and prints, per surface, wall time, Eavg, Emin, U0 and the
+// largest and mean point difference to the reference run, then what each level simulated.
+#include <cstdio>
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/run_project.h"
+
+namespace luxgrid::cli {
+
+void add_cost_command(CLI::App& app, Runner& run) {
+  struct Options {
+    std::string project;
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("cost", "Run a project at every quality and show time against accuracy");
+  cmd->add_option("PROJECT", opt->project, "Project file (JSON)")->required();
+  cmd->callback([opt, &run] {
+    run = [opt] {
+      const LoadedProject loaded = load_project_with_requirements(opt->project);
+      const auto table = run_cost(loaded.scene, true);
+      std::fputs(report::format_cost_table(table).c_str(), stdout);
+      return 0;
+    };
+  });
+}
+
+}  // namespace luxgrid::cli

@@ -1,0 +1,252 @@
+// `luxgrid info FILE [--json] [--at C,gamma ...] [--plot out.png] [--interpolation bicubic]`:
+// what a photometric file says and what luxgrid derives from it, as text or JSON, and a polar
+// (goniometric) diagram of the C0-C180 and C90-C270 planes drawn the way data sheets draw them:
+// nadir at the bottom, C0 to the right and C180 to the left (solid), C90 right / C270 left
+// (dashed), intensity rings at round values.
+//
+// --at angles: for type C files the file's own C numbering (C0 = +x, counter-clockwise from
+// above) and gamma from nadir; for types A and B, luxgrid's frame after the mapping documented in
+// photometry/symmetry.h (and docs/photometry.md).
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "photometry/derived_photometry.h"
+#include "photometry/photometry.h"
+#include "photometry/source_text.h"
+#include "photometry/tabular_distribution.h"
+#include "photometry/tilt.h"
+#include "util/error.h"
+
+namespace luxgrid::cli {
+
+namespace {
+
+using namespace luxgrid::photometry;
+
+struct At {
+  double c_deg, gamma_deg;
+};
+
+At parse_at(const std::string& s) {
+  const auto comma = s.find(',');
+  double c = 0, g = 0;
+  if (comma == std::string::npos || !try_parse_number(trim(std::string_view(s).substr(0, comma)), c) ||
+      !try_parse_number(trim(std::string_view(s).substr(comma + 1)), g))
+    throw InputError("--at '" + s + "': expected C,gamma in degrees, e.g. --at 0,30");
+  if (g < 0 || g > 180) throw InputError("--at '" + s + "': expected gamma between 0 and 180 degrees");
+  return {c, g};
+}
+
+const char* shape_name(LuminousOpening::Shape s) {
+  switch (s) {
+    case LuminousOpening::Shape::point: return "point";
+    case LuminousOpening::Shape::rectangle: return "rectangle";
+    case LuminousOpening::Shape::disk: return "disk";
+  }
+  return "?";
+}
+
+nlohmann::json optional_number(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+// A round number >= v for the outer ring (1, 2, 2.5, 5 x 10^k).
+double nice_ceiling(double v) {
+  if (!(v > 0)) return 1.0;
+  const double p = std::pow(10.0, std::floor(std::log10(v)));
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
+    if (m * p >= v * (1 - 1e-12)) return m * p;
+  return 10 * p;
+}
+
+void write_polar_png(const Photometry& p, const std::filesystem::path& path) {
+  constexpr int kSize = 640, kMargin = 40;
+  constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+  const double cx = kSize / 2.0, cy = kSize / 2.0, radius = kSize / 2.0 - kMargin;
+  const IntensityDistribution& d = *p.distribution;
+  // Sample both planes every 0.5 deg of signed angle from nadir.
+  std::vector<double> a, b;
+  double peak = 0.0;
+  for (int k = 0; k <= 720; ++k) {
+    const double s = -180.0 + 0.5 * k;
+    a.push_back(plane_intensity(d, 0.0, s));
+    b.push_back(plane_intensity(d, 90.0, s));
+    peak = std::max({peak, a.back(), b.back()});
+  }
+  const double ring = nice_ceiling(peak);
+  OIIO::ImageBuf img(OIIO::ImageSpec(kSize, kSize, 3, OIIO::TypeDesc::FLOAT));
+  const float white[3] = {1, 1, 1}, grey[3] = {0.8f, 0.8f, 0.8f}, black[3] = {0, 0, 0},
+              red[3] = {0.8f, 0.1f, 0.1f}, blue[3] = {0.1f, 0.2f, 0.8f};
+  OIIO::ImageBufAlgo::fill(img, white);
+  // Point at signed angle s (deg from nadir; > 0 towards the right) and intensity v.
+  auto xy = [&](double s, double v, double& x, double& y) {
+    const double r = radius * v / ring, t = s * kDegToRad;
+    x = cx + r * std::sin(t);
+    y = cy + r * std::cos(t);  // image y grows downwards: nadir at the bottom
+  };
+  for (int q = 1; q <= 4; ++q) {  // rings at 25 % steps
+    double x0, y0, x1, y1;
+    for (int k = 0; k < 360; ++k) {
+      xy(k, ring * q / 4.0, x0, y0);
+      xy(k + 1, ring * q / 4.0, x1, y1);
+      OIIO::ImageBufAlgo::render_line(img, int(x0), int(y0), int(x1), int(y1), grey);
+    }
+  }
+  for (int k = 0; k < 360; k += 30) {  // spokes every 30 deg
+    double x, y;
+    xy(k, ring, x, y);
+    OIIO::ImageBufAlgo::render_line(img, int(cx), int(cy), int(x), int(y), grey);
+  }
+  auto curve = [&](const std::vector<double>& v, const float* colour, bool dashed) {
+    for (std::size_t k = 0; k + 1 < v.size(); ++k) {
+      if (dashed && (k / 6) % 2 == 1) continue;
+      double x0, y0, x1, y1;
+      xy(-180.0 + 0.5 * k, v[k], x0, y0);
+      xy(-180.0 + 0.5 * (k + 1), v[k + 1], x1, y1);
+      OIIO::ImageBufAlgo::render_line(img, int(std::lround(x0)), int(std::lround(y0)),
+                                      int(std::lround(x1)), int(std::lround(y1)), OIIO::cspan<float>(colour, 3));
+    }
+  };
+  curve(a, red, false);
+  curve(b, blue, true);
+  auto text = [&](int x, int y, const std::string& s, const float* colour) {
+    // Without the font the diagram is still drawn, just unlabelled.
+    (void)OIIO::ImageBufAlgo::render_text(img, x, y, s, 14, kFont, OIIO::cspan<float>(colour, 3));
+  };
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%s   outer ring %g cd", p.format.c_str(), ring);
+  text(10, 20, buf, black);
+  text(10, kSize - 28, "C0-C180 (solid)", red);
+  text(10, kSize - 10, "C90-C270 (dashed)", blue);
+  text(int(cx) + 4, kSize - kMargin + 16, "0", black);
+  text(int(cx) + 4, kMargin - 6, "180", black);
+
+  // Written beside the target and renamed, so no partial image is ever left behind.
+  const std::filesystem::path tmp = path.parent_path() / (path.stem().string() + ".partial" + path.extension().string());
+  OIIO::ImageBuf out = OIIO::ImageBufAlgo::copy(img, OIIO::TypeDesc::UINT8);
+  if (!out.write(tmp.string())) {
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    throw InputError(path.string() + ": cannot write the image: " + out.geterror());
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) throw InputError(path.string() + ": cannot write the image: " + ec.message());
+}
+
+int run_info(const std::string& file, bool json, const std::vector<std::string>& at_args,
+             const std::string& plot, const std::string& interpolation) {
+  std::vector<At> at;
+  for (const auto& s : at_args) at.push_back(parse_at(s));
+  Photometry p = load_photometry_file(file);
+  if (interpolation == "bicubic" && p.table) {
+    p.table = p.table->with_interpolation(Interpolation::bicubic);
+    p.distribution = p.table;
+  }
+  const DerivedPhotometry d = derive(p);
+  std::vector<double> intensities;
+  for (const At& x : at)
+    intensities.push_back(p.distribution->intensity(direction_of(x.c_deg * kDegToRad, x.gamma_deg * kDegToRad)));
+
+  if (json) {
+    nlohmann::json j;
+    j["source"] = p.source;
+    j["format"] = p.format;
+    j["version"] = p.version;
+    j["photometric_type"] = to_string(p.photometric_type);
+    j["symmetry"] = to_string(p.symmetry);
+    j["interpolation"] = p.table ? to_string(p.table->interpolation()) : "none";
+    j["counts"] = {{"vertical", p.counts_vertical}, {"horizontal", p.counts_horizontal}};
+    j["flux_lm"] = d.flux_lm;
+    j["downward_flux_lm"] = d.downward_flux_lm;
+    j["lamp_flux_lm"] = optional_number(p.lamp_flux_lm);
+    j["lor"] = optional_number(d.lor);
+    j["dff"] = d.dff;
+    j["stated_lor"] = optional_number(p.stated_lor);
+    j["stated_dff"] = optional_number(p.stated_dff);
+    j["candela_multiplier"] = p.candela_multiplier;
+    j["max_cd"] = d.max_cd;
+    j["max_direction"] = {{"c_deg", d.max_c_deg}, {"gamma_deg", d.max_gamma_deg}};
+    j["beam"] = {{"c0_c180", {{"beam_deg", d.c0_c180.beam_deg}, {"field_deg", d.c0_c180.field_deg}}},
+                 {"c90_c270", {{"beam_deg", d.c90_c270.beam_deg}, {"field_deg", d.c90_c270.field_deg}}}};
+    j["opening"] = {{"shape", shape_name(p.opening.shape)}, {"description", p.opening.description},
+                    {"length_m", p.opening.length}, {"width_m", p.opening.width},
+                    {"height_m", p.opening.height}};
+    nlohmann::json lamps = nlohmann::json::array();
+    for (const auto& l : p.lamp_sets)
+      lamps.push_back({{"count", l.count}, {"type", l.type}, {"flux_lm", l.flux_lm},
+                       {"colour", l.colour}, {"cri", l.cri}, {"power_w", l.power_w}});
+    j["lamps"] = lamps;
+    j["keywords"] = p.keywords;
+    j["warnings"] = p.warnings;
+    j["at"] = nlohmann::json::array();
+    for (const At& x : at) j["at"].push_back({x.c_deg, x.gamma_deg});
+    j["intensity_cd"] = intensities;
+    if (p.tilt) j["tilt"] = {{"geometry", p.tilt->lamp_to_luminaire_geometry}, {"angles_deg", p.tilt->angle_deg}, {"factors", p.tilt->factor}};
+    std::printf("%s\n", j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+  } else {
+    std::printf("%s\n", p.source.c_str());
+    std::printf("  format        %s (type %s, symmetry %s, %d x %d angles)\n", p.format.c_str(),
+                to_string(p.photometric_type), to_string(p.symmetry), p.counts_vertical, p.counts_horizontal);
+    for (const char* k : {"MANUFAC", "LUMCAT", "LUMINAIRE", "LAMP", "TEST", "COMPANY", "REPORT", "DATE"})
+      if (auto it = p.keywords.find(k); it != p.keywords.end()) {
+        std::string v = it->second;
+        for (char& ch : v)
+          if (ch == '\n') ch = ' ';
+        std::printf("  %-13s %s\n", k, v.c_str());
+      }
+    for (const auto& l : p.lamp_sets)
+      std::printf("  lamps         %d x %s, %.1f lm, %.1f W%s\n", l.count, l.type.empty() ? "-" : l.type.c_str(),
+                  l.flux_lm, l.power_w, l.count < 0 ? " (absolute photometry)" : "");
+    if (p.lamp_flux_lm) std::printf("  lamp flux     %.1f lm (stated)\n", *p.lamp_flux_lm);
+    else std::printf("  lamp flux     - (absolute photometry)\n");
+    std::printf("  flux          %.1f lm (integrated, %s)\n", d.flux_lm,
+                p.table ? to_string(p.table->interpolation()) : "-");
+    if (d.lor) std::printf("  LOR           %.4f%s\n", *d.lor,
+                           p.stated_lor ? (" (stated " + format_number(*p.stated_lor) + ")").c_str() : "");
+    std::printf("  DFF           %.4f%s\n", d.dff,
+                p.stated_dff ? (" (stated " + format_number(*p.stated_dff) + ")").c_str() : "");
+    std::printf("  max           %.1f cd at C %.1f, gamma %.1f deg\n", d.max_cd, d.max_c_deg, d.max_gamma_deg);
+    std::printf("  beam / field  C0-C180 %.1f / %.1f deg, C90-C270 %.1f / %.1f deg\n", d.c0_c180.beam_deg,
+                d.c0_c180.field_deg, d.c90_c270.beam_deg, d.c90_c270.field_deg);
+    std::printf("  opening       %s, %.4g x %.4g m (length along C0 x width), height %.4g m\n",
+                p.opening.description.c_str(), p.opening.length, p.opening.width, p.opening.height);
+    for (std::size_t k = 0; k < at.size(); ++k)
+      std::printf("  I(C %g, gamma %g) = %.6g cd\n", at[k].c_deg, at[k].gamma_deg, intensities[k]);
+    for (const auto& w : p.warnings) std::printf("  warning: %s\n", w.c_str());
+  }
+  if (!plot.empty()) write_polar_png(p, plot);
+  return 0;
+}
+
+}  // namespace
+
+void add_info_command(CLI::App& app, Runner& run) {
+  auto* cmd = app.add_subcommand("info", "Summarise an IES or EULUMDAT file: flux, LOR, DFF, beam angles, "
+                                          "intensities, polar diagram");
+  auto file = std::make_shared<std::string>();
+  auto json = std::make_shared<bool>(false);
+  auto at = std::make_shared<std::vector<std::string>>();
+  auto plot = std::make_shared<std::string>();
+  auto interpolation = std::make_shared<std::string>("bilinear");
+  cmd->add_option("file", *file, "IES (.ies) or EULUMDAT (.ldt) file")->required();
+  cmd->add_flag("--json", *json, "print JSON instead of text");
+  cmd->add_option("--at", *at, "C,gamma in degrees (repeatable): intensity in that direction")
+      ->allow_extra_args(false);
+  cmd->add_option("--plot", *plot, "write a polar diagram PNG (C0-C180 and C90-C270 planes)");
+  cmd->add_option("--interpolation", *interpolation, "bilinear (default) or bicubic")
+      ->check(CLI::IsMember({"bilinear", "bicubic"}));
+  cmd->callback([&run, file, json, at, plot, interpolation] {
+    run = [file, json, at, plot, interpolation] { return run_info(*file, *json, *at, *plot, *interpolation); };
+  });
+}
+
+}  // namespace luxgrid::cli

@@ -1,0 +1,99 @@
+#include "cli/run_project.h"
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+
+#include "calc/pipeline.h"
+#include "calc/project_file.h"
+#include "cli/progress.h"
+#include "report/output_folder.h"
+#include "report/write_outputs.h"
+
+namespace luxgrid::cli {
+
+std::filesystem::path default_output_dir(const std::filesystem::path& project) {
+  std::filesystem::path out = project;
+  out.replace_extension(".out");
+  return out;
+}
+
+LoadedProject load_project_with_requirements(const std::filesystem::path& project) {
+  std::ifstream in(project, std::ios::binary);
+  nlohmann::json doc;
+  bool parsed = false;
+  if (in) {
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    doc = nlohmann::json::parse(buffer.str(), nullptr, /*allow_exceptions=*/false);
+    parsed = !doc.is_discarded();
+  }
+  // Unreadable or malformed: the loader reports it with line and column.
+  if (!parsed) return {calc::load_project(project), {}};
+  const std::string label = project.filename().string();
+  LoadedProject out;
+  out.scene = calc::parse_project(report::without_requirements(doc), label, project.parent_path());
+  out.scene.project_file = project;
+  out.requirements = report::parse_requirements(doc, label);
+  return out;
+}
+
+RunOutcome run_project(const std::filesystem::path& project, const std::filesystem::path& out_dir,
+                       const RunOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  LoadedProject loaded = load_project_with_requirements(project);
+  calc::Scene& scene = loaded.scene;
+  if (options.quality) scene.settings.quality = *options.quality;
+  const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  // Everything that can reject the input has run: only now does an output folder appear.
+  report::OutputFolder folder(out_dir);
+  RunOutcome outcome;
+  outcome.results = calc::run_scene(scene, options.show_progress ? make_progress("calculating") : calc::Progress{});
+  end_progress();
+  outcome.results.timing_s.insert(outcome.results.timing_s.begin(), {"load", load_s});
+  outcome.checks = report::check_requirements(outcome.results, loaded.requirements);
+  if (options.with_cost) outcome.cost = run_cost(scene, options.show_progress);
+
+  report::OutputOptions out;
+  out.report = options.report;
+  out.scale = options.scale;
+  out.scene = &scene;
+  out.checks = outcome.checks;
+  out.cost = outcome.cost ? &*outcome.cost : nullptr;
+  out.version = LUXGRID_VERSION;
+  outcome.warnings = report::write_outputs(outcome.results, folder, out);
+  folder.commit();
+  return outcome;
+}
+
+report::CostTable run_cost(const calc::Scene& base, bool show_progress) {
+  report::CostTable table;
+  std::vector<calc::Results> runs;
+  for (calc::Quality q : {calc::Quality::draft, calc::Quality::standard, calc::Quality::high, calc::Quality::reference}) {
+    calc::Scene scene = base;
+    scene.settings.quality = q;
+    const auto t0 = std::chrono::steady_clock::now();
+    runs.push_back(calc::run_scene(
+        scene, show_progress ? make_progress(std::string("cost: ") + calc::to_string(q)) : calc::Progress{}));
+    end_progress();
+    report::CostLevel level;
+    level.quality = calc::to_string(q);
+    level.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    level.direct = runs.back().plan.direct;
+    level.indirect = runs.back().plan.indirect;
+    level.visibility = runs.back().plan.visibility;
+    table.levels.push_back(std::move(level));
+  }
+  const calc::Results& ref = runs.back();
+  for (size_t k = 0; k < runs.size(); ++k) {
+    for (size_t s = 0; s < runs[k].surfaces.size(); ++s) {
+      const auto& sr = runs[k].surfaces[s];
+      table.levels[k].surfaces.push_back(
+          {sr.grid.name, sr.stats, report::point_difference(sr.E, ref.surfaces[s].E)});
+    }
+  }
+  return table;
+}
+
+}  // namespace luxgrid::cli

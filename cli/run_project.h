@@ -1,0 +1,50 @@
+#pragma once
+// Load a project, calculate it and write its output folder: the shared path of `calc`,
+// `validate` and `cost`.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "calc/results.h"
+#include "calc/scene.h"
+#include "report/colour_scale.h"
+#include "report/diff.h"
+#include "report/requirements.h"
+
+namespace luxgrid::cli {
+
+struct RunOptions {
+  std::optional<calc::Quality> quality;  // overrides the project's setting
+  bool show_progress = false;
+  bool report = true;                          // report.html (--no-report switches it off)
+  std::optional<report::ColourScale> scale;    // --scale MIN:MAX
+  bool with_cost = false;                      // --with-cost: the cost table into the report
+};
+
+struct RunOutcome {
+  calc::Results results;
+  std::vector<std::string> warnings;
+  std::vector<report::RequirementCheck> checks;  // empty when the project states none
+  std::optional<report::CostTable> cost;         // with_cost only
+};
+
+// A project and the requirements its surfaces state. The loader does not know the
+// "requirements" key yet, so they are read from the raw document and removed before it parses
+// (harmless once it does).
+struct LoadedProject {
+  calc::Scene scene;
+  report::Requirements requirements;
+};
+LoadedProject load_project_with_requirements(const std::filesystem::path& project);
+
+// Loads `project`, runs it and writes every output into `out_dir` atomically.
+RunOutcome run_project(const std::filesystem::path& project, const std::filesystem::path& out_dir,
+                       const RunOptions& options);
+
+// The scene at draft, standard, high and reference; differences against the reference run.
+report::CostTable run_cost(const calc::Scene& scene, bool show_progress);
+
+// `<project without extension>.out`, beside the project file.
+std::filesystem::path default_output_dir(const std::filesystem::path& project);
+
+}  // namespace luxgrid::cli

@@ -1,0 +1,38 @@
+// `luxgrid validate [CASES_DIR] [-o DIR]`
+#include <cstdio>
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/validation.h"
+#include "report/output_folder.h"
+
+namespace luxgrid::cli {
+
+void add_validate_command(CLI::App& app, Runner& run) {
+  struct Options {
+    std::string cases = "cases", out = "validation.out";
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("validate", "Run the validation cases and compare with their expected values");
+  cmd->add_option("CASES_DIR", opt->cases, "Folder of case folders")->capture_default_str();
+  cmd->add_option("-o,--output", opt->out, "Output folder for the tables and each case's results")
+      ->capture_default_str();
+  cmd->callback([opt, &run] {
+    run = [opt] {
+      report::OutputFolder folder(opt->out);
+      const ValidationReport report = run_validation(opt->cases, folder.staging());
+      const std::string md = report.markdown();
+      report::write_text_file(folder.file("validation.md"), md);
+      report::write_text_file(folder.file("validation.json"), report.json().dump(1) + "\n");
+      folder.commit();
+      std::fputs(md.c_str(), stdout);
+      size_t passed = 0;
+      for (const auto& r : report.rows) passed += r.pass;
+      std::printf("\n%zu passed, %zu failed\n", passed, report.rows.size() - passed + report.case_errors.size());
+      std::printf("tables written to %s/validation.md and validation.json\n", opt->out.c_str());
+      return report.all_passed() ? 0 : 1;
+    };
+  });
+}
+
+}  // namespace luxgrid::cli

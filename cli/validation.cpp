@@ -1,0 +1,175 @@
+#include "cli/validation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "calc/json_reader.h"
+#include "calc/statistics.h"
+#include "cli/run_project.h"
+#include "util/error.h"
+
+namespace luxgrid::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const calc::SurfaceResult& find_surface(const calc::JsonValue& where, const calc::Results& r,
+                                        const std::string& name) {
+  for (const auto& s : r.surfaces) {
+    if (s.grid.name == name) return s;
+  }
+  where.fail("the case has no surface named \"" + name + "\"");
+}
+
+// The values of `quantity` ("E", "E_direct" or "E_indirect") over the surface's points.
+const std::vector<double>& quantity_values(const calc::JsonValue& where, const calc::SurfaceResult& s,
+                                           const std::string& quantity) {
+  if (quantity == "E") return s.E;
+  if (quantity == "E_direct") return s.E_direct;
+  if (quantity == "E_indirect") return s.E_indirect;
+  where.fail("expected quantity \"E\", \"E_direct\" or \"E_indirect\", got \"" + quantity + "\"");
+}
+
+double point_value(const calc::JsonValue& where, const calc::SurfaceResult& s, size_t index,
+                   const std::vector<double>& values) {
+  if (index >= values.size()) {
+    where.fail("point " + std::to_string(index) + " is out of range: surface \"" + s.grid.name +
+               "\" has " + std::to_string(values.size()) + " points");
+  }
+  return values[index];
+}
+
+// A statistic of `values` over the surface's active points.
+double stat_value(const calc::JsonValue& where, const calc::SurfaceResult& s,
+                  const std::vector<double>& values, const std::string& stat) {
+  const calc::Statistics st = calc::compute_statistics(values, s.grid.active);
+  if (stat == "Emin") return st.Emin;
+  if (stat == "Eavg") return st.Eavg;
+  if (stat == "Emax") return st.Emax;
+  if (stat == "U0") return st.U0;
+  if (stat == "Ud") return st.Ud;
+  where.fail("expected stat \"Emin\", \"Eavg\", \"Emax\", \"U0\" or \"Ud\", got \"" + stat + "\"");
+}
+
+void check_case(const fs::path& dir, const fs::path& out_dir, ValidationReport& report) {
+  const std::string name = dir.filename().string();
+  const fs::path expected_file = dir / "expected.json";
+  std::ifstream in(expected_file);
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(expected_file.string() + ": malformed JSON: " + e.what());
+  }
+  RunOptions options;
+  const auto outcome = run_project(dir / "project.json", out_dir / name, options);
+  const calc::JsonValue root(doc, name + "/expected.json", "");
+  root.expect_object({"cases", "notes"});
+  for (const auto& c : root.at("cases").items()) {
+    c.expect_object({"surface", "point", "stat", "quantity", "expected", "rel_tol", "abs_tol", "source"});
+    const auto surface_v = c.at("surface");
+    const auto& s = find_surface(surface_v, outcome.results, surface_v.as_string());
+    CheckRow row;
+    row.case_name = name;
+    row.source = c.at("source").as_string();
+    row.expected = c.at("expected").as_number();
+    if (c.has("point") == c.has("stat")) c.fail("expected exactly one of \"point\" or \"stat\"");
+    const std::string quantity = c.has("quantity") ? c.at("quantity").as_string() : "E";
+    const auto& values = quantity_values(c.has("quantity") ? c.at("quantity") : c, s, quantity);
+    if (auto p = c.find("point")) {
+      const int index = p->as_int();
+      if (index < 0) p->fail("expected a point index >= 0");
+      row.got = point_value(*p, s, static_cast<size_t>(index), values);
+      row.quantity = s.grid.name + "[" + std::to_string(index) + "]." + quantity;
+    } else {
+      const auto st = c.at("stat");
+      row.got = stat_value(st, s, values, st.as_string());
+      row.quantity = s.grid.name + "." + st.as_string() + "(" + quantity + ")";
+    }
+    const double rel = c.has("rel_tol") ? c.at("rel_tol").as_non_negative() : 0.0;
+    const double abs = c.has("abs_tol") ? c.at("abs_tol").as_non_negative() : 0.0;
+    if (!c.has("rel_tol") && !c.has("abs_tol")) c.fail("expected \"rel_tol\" and/or \"abs_tol\"");
+    row.tolerance = std::max(rel * std::abs(row.expected), abs);
+    char tol[64];
+    if (c.has("rel_tol") && c.has("abs_tol")) std::snprintf(tol, sizeof tol, "%g %% or %g", rel * 100, abs);
+    else if (c.has("rel_tol")) std::snprintf(tol, sizeof tol, "%g %%", rel * 100);
+    else std::snprintf(tol, sizeof tol, "%g abs", abs);
+    row.tolerance_text = tol;
+    row.error = row.expected != 0.0 ? (row.got - row.expected) / std::abs(row.expected) : row.got - row.expected;
+    row.pass = std::isfinite(row.got) && std::abs(row.got - row.expected) <= row.tolerance;
+    report.rows.push_back(row);
+  }
+}
+
+}  // namespace
+
+bool ValidationReport::all_passed() const {
+  if (!case_errors.empty() || rows.empty()) return false;
+  return std::all_of(rows.begin(), rows.end(), [](const CheckRow& r) { return r.pass; });
+}
+
+std::string ValidationReport::markdown() const {
+  std::string md = "| case | quantity | expected | got | error | tolerance | result | source |\n"
+                   "|---|---|---|---|---|---|---|---|\n";
+  char line[1024];
+  for (const auto& r : rows) {
+    std::snprintf(line, sizeof line, "| %s | %s | %.6g | %.6g | %+.3g %% | %s | %s | %s |\n",
+                  r.case_name.c_str(), r.quantity.c_str(), r.expected, r.got, r.error * 100.0,
+                  r.tolerance_text.c_str(), r.pass ? "PASS" : "FAIL", r.source.c_str());
+    md += line;
+  }
+  for (const auto& e : case_errors) md += "\nERROR: " + e + "\n";
+  for (const auto& p : pending) md += "\nPENDING (not run): " + p + "\n";
+  return md;
+}
+
+nlohmann::json ValidationReport::json() const {
+  nlohmann::json j;
+  j["passed"] = all_passed();
+  j["checks"] = nlohmann::json::array();
+  for (const auto& r : rows) {
+    j["checks"].push_back({{"case", r.case_name}, {"quantity", r.quantity}, {"expected", r.expected},
+                           {"got", r.got}, {"error", r.error}, {"tolerance", r.tolerance},
+                           {"tolerance_text", r.tolerance_text}, {"pass", r.pass}, {"source", r.source}});
+  }
+  j["case_errors"] = case_errors;
+  j["pending"] = pending;
+  return j;
+}
+
+ValidationReport run_validation(const fs::path& cases_dir, const fs::path& out_dir) {
+  if (!fs::is_directory(cases_dir)) throw InputError(cases_dir.string() + ": not a folder of cases");
+  std::vector<fs::path> dirs;
+  for (const auto& entry : fs::directory_iterator(cases_dir)) {
+    if (entry.is_directory() && fs::exists(entry.path() / "expected.json") &&
+        fs::exists(entry.path() / "project.json")) {
+      dirs.push_back(entry.path());
+    }
+  }
+  std::sort(dirs.begin(), dirs.end());
+  ValidationReport report;
+  if (fs::is_directory(cases_dir / "pending")) {
+    for (const auto& entry : fs::directory_iterator(cases_dir / "pending")) {
+      if (!entry.is_directory()) continue;
+      std::string why;
+      std::ifstream reason(entry.path() / "PENDING");
+      std::getline(reason, why);
+      report.pending.push_back(entry.path().filename().string() + (why.empty() ? "" : ": " + why));
+    }
+    std::sort(report.pending.begin(), report.pending.end());
+  }
+  if (dirs.empty()) throw InputError(cases_dir.string() + ": no case folders (project.json + expected.json)");
+  for (const auto& d : dirs) {
+    try {
+      check_case(d, out_dir, report);
+    } catch (const std::exception& e) {
+      report.case_errors.push_back(d.filename().string() + ": " + e.what());
+    }
+  }
+  return report;
+}
+
+}  // namespace luxgrid::cli

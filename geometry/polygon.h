@@ -1,0 +1,40 @@
+#pragma once
+// Small, fast polygon helpers on plain doubles (no CGAL): areas, convexity, point location and
+// ear-clipping triangulation. Outlines are lists of corners without a repeated closing corner.
+// The CGAL-backed set-up operations (validation with exact predicates, straight-skeleton insets)
+// live in outline.h and workplane.h; these helpers are for code that runs per point.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "util/robust_math.h"
+
+namespace luxgrid::geometry {
+
+using Polygon2 = std::vector<Vec2>;
+
+// Shoelace area: positive for counter-clockwise corners.
+double signed_area(const Polygon2& poly);
+
+// True when every turn of a counter-clockwise polygon is a left turn or straight (collinear
+// corners are allowed: a wall split in two is still convex).
+bool is_convex(const Polygon2& ccw);
+
+enum class Location { inside, boundary, outside };
+
+// Where `p` lies relative to a simple polygon (either orientation). `boundary_tol_m` is the
+// distance within which a point counts as on an edge.
+Location locate(const Vec2& p, const Polygon2& poly, double boundary_tol_m = 1e-9);
+
+// Ear-clipping triangulation of a simple counter-clockwise polygon: indices into `ccw`, each
+// triangle counter-clockwise. Collinear corners are clipped away without emitting a sliver.
+std::vector<std::array<int, 3>> triangulate(const Polygon2& ccw);
+
+// True when two simple polygons share interior area (touching along an edge or at a corner is
+// not overlap). Set-up code: O(n m).
+bool polygons_overlap(const Polygon2& a, const Polygon2& b);
+
+// Shortest decimal that reads back to the same double (std::to_chars), for messages.
+std::string format_number(double x);
+
+}  // namespace luxgrid::geometry

@@ -1,0 +1,49 @@
+#pragma once
+// Calculation surfaces turned into points with normals. Grids run along u first, then v
+// (row-major, size = [nu, nv]); points sit at cell centres.
+#include <string>
+#include <vector>
+
+#include "util/robust_math.h"
+
+namespace luxgrid::geometry {
+
+// What a surface's numbers mean (project key "quantity"):
+// - planar: illuminance on each point's own normal (the default; the surface normal).
+// - horizontal: on a face looking up (the loader sets every normal to +z).
+// - vertical: on a vertical face (the loader sets every normal horizontal: "facing" or the
+//   horizontal part of the surface normal).
+// - cylindrical: mean vertical illuminance around a vertical axis through the point,
+//   E_cyl = I sin(eps) / (pi d^2) for a point source at angle eps from the vertical; normals keep
+//   the surface normal and are not used by the calculation.
+enum class Quantity { planar, horizontal, vertical, cylindrical };
+const char* to_string(Quantity q);
+
+struct SurfaceGrid {
+  enum class Kind { grid, points };
+  std::string name;
+  Kind kind = Kind::grid;
+  int nu = 0, nv = 0;         // grid size; for points: nu = count, nv = 1
+  double spacing_u = 0.0;     // m, actual cell size along u (0 for points)
+  double spacing_v = 0.0;
+  Vec3 origin{0.0}, u_dir{1, 0, 0}, v_dir{0, 1, 0};  // grid frame (unit u, v), for plots
+  double size_u = 0.0, size_v = 0.0;                 // extent of the gridded rectangle, m
+  std::vector<Vec3> points;
+  std::vector<Vec3> normals;
+  std::vector<bool> active;   // false for points left out (inside obstacles); same size as points
+  // Points left out (active = false), by reason; the grid keeps them so it stays nu x nv.
+  size_t points_outside = 0;       // outside the (inset) polygon of a workplane/floor/ceiling
+  size_t points_in_obstacles = 0;  // inside the footprint of an obstacle spanning the grid
+  Quantity quantity = Quantity::planar;
+};
+
+// EN 12464-1 automatic grid spacing: p = 0.2 * 5^log10(d) for the longer side d, capped at 10 m
+// (the standard's table caps the spacing; see docs/project-format.md).
+double auto_spacing(double longer_side);
+
+// A rectangle from `origin` along unit `u` and `v` directions of `size_u` x `size_v` metres,
+// cells of at most `spacing`; normal = u x v.
+SurfaceGrid make_plane_grid(const std::string& name, const Vec3& origin, const Vec3& u,
+                            const Vec3& v, double size_u, double size_v, double spacing);
+
+}  // namespace luxgrid::geometry

@@ -1,0 +1,58 @@
+#pragma once
+// The text of a photometric file as the readers see it: split into lines (LF, CRLF or CR), a
+// UTF-8 byte-order mark dropped, every error naming "file:line". Both readers count lines here so
+// that messages look alike (STYLE.md habit 1: `panel.ies:14: expected 37 vertical angles, found 36`).
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace luxgrid::photometry {
+
+// Files larger than this are not photometry; refusing them bounds memory for hostile input.
+// The largest real file seen (a 360 x 181 EULUMDAT) is 0.5 MB.
+inline constexpr std::size_t kMaxPhotometryFileBytes = 32u << 20;
+
+struct Token {
+  std::string_view text;
+  int line;  // 1-based
+};
+
+class SourceText {
+ public:
+  SourceText(std::string_view bytes, std::string name);
+
+  const std::string& name() const { return name_; }
+  int line_count() const { return static_cast<int>(lines_.size()); }
+  // 1-based; returns "" past the end.
+  std::string_view line(int number) const;
+
+  // Throws InputError "name:line: message" (or "name: message" for line <= 0).
+  [[noreturn]] void fail(int line, const std::string& message) const;
+  std::string where(int line) const;
+
+  // Every token from `first_line` on, split at blanks, tabs and commas (LM-63 allows commas as
+  // separators; lithonia_esg uses them).
+  std::vector<Token> tokens_from(int first_line) const;
+
+ private:
+  std::string name_;
+  std::string text_;
+  std::vector<std::string_view> lines_;
+};
+
+// Strict number parsing for a token: the whole token must be a finite number ("1", "-.1", "750.",
+// "1e3"; a leading '+' is accepted). `what` names the field in the message.
+double parse_number(const SourceText& src, const Token& t, const std::string& what);
+// As parse_number, and the value must be a whole number within [lo, hi].
+long parse_count(const SourceText& src, const Token& t, const std::string& what, long lo, long hi);
+// Parses without throwing; false if not a finite number.
+bool try_parse_number(std::string_view s, double& out);
+
+// Text from the file made printable and valid UTF-8 (bytes that are not UTF-8 are read as
+// Latin-1, which is what cp1252 degree signs and no-break spaces in the corpus are), trimmed.
+std::string clean_text(std::string_view s);
+std::string_view trim(std::string_view s);
+std::string format_number(double v);  // shortest round-trip form, for messages
+
+}  // namespace luxgrid::photometry

@@ -1,0 +1,82 @@
+#pragma once
+// Intensity from a measured (C, gamma) table: the full-sphere grid a reader produces after
+// symmetry expansion (symmetry.h), looked up by direction with bilinear or Catmull-Rom bicubic
+// interpolation (Wallner, "Geometry of Arbitrary Light Distributions", Sec. 4.1, seed 001).
+//
+// Conventions, stated once here:
+//  * The grid is periodic in C: c_rad ascending in [0, 2 pi), the cell after the last plane wraps
+//    to the first. One plane means rotational symmetry.
+//  * gamma_rad is ascending inside [0, pi]. Outside [front, back] the file says nothing and the
+//    intensity is zero (a downlight measured to 90 deg sends nothing upwards).
+//  * The poles are single directions: where the grid reaches gamma = 0 or pi, the row there is
+//    replaced by its mean over C, so the lookup is exactly continuous at the poles.
+//  * Types A and B (floodlights, automotive) are stored as a C-style grid in a rotated frame;
+//    `table_from_luminaire` maps a luminaire-frame direction into it (see symmetry.h).
+#include <memory>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+
+#include "photometry/intensity_distribution.h"
+
+namespace luxgrid::photometry {
+
+enum class Interpolation { bilinear, bicubic };
+const char* to_string(Interpolation i);
+
+struct SphericalGrid {
+  std::vector<double> c_rad;      // ascending in [0, 2 pi); size 1 = rotationally symmetric
+  std::vector<double> gamma_rad;  // ascending within [0, pi], at least 2 values
+  std::vector<double> cd;         // C-major: cd[i * gamma_rad.size() + j], finite, >= 0
+  // Replace the rows at gamma = 0 and pi by their mean (the poles are single directions). Off
+  // only for type A/B grids whose data stop short of a full turn (see symmetry.cpp).
+  bool average_poles = true;
+  double at(std::size_t i, std::size_t j) const { return cd[i * gamma_rad.size() + j]; }
+};
+
+class TabularDistribution final : public IntensityDistribution {
+ public:
+  // `table_from_luminaire` is an orthogonal matrix (possibly a reflection) taking luminaire-frame
+  // directions into the grid's frame; identity for type C.
+  explicit TabularDistribution(SphericalGrid grid,
+                               Interpolation mode = Interpolation::bilinear,
+                               const glm::dmat3& table_from_luminaire = glm::dmat3(1.0));
+
+  double intensity(const Vec3& direction) const override;
+  // Lookup by angles of the grid's own frame (radians; c any real, gamma in [0, pi]).
+  double intensity_at(double c_rad, double gamma_rad) const;
+
+  Interpolation interpolation() const { return mode_; }
+  std::shared_ptr<const TabularDistribution> with_interpolation(Interpolation mode) const;
+  std::shared_ptr<const TabularDistribution> scaled(double factor) const;
+
+  const SphericalGrid& grid() const { return grid_; }
+  bool has_frame() const { return has_frame_; }
+  const glm::dmat3& table_from_luminaire() const { return frame_; }
+  // Direction of grid angles (c, gamma) in the luminaire frame.
+  Vec3 luminaire_direction(double c_rad, double gamma_rad) const;
+
+ private:
+  struct Cell {
+    std::size_t i;  // C plane below (periodic)
+    double tc;      // fraction in C
+    std::size_t j;  // gamma row below
+    double tg;      // fraction in gamma
+  };
+  bool locate(double c, double g, Cell& cell) const;
+  double bilinear(const Cell& cell) const;
+  double bicubic(const Cell& cell) const;
+  double c_of(long k) const;  // periodic C position of plane index k (any integer)
+
+  SphericalGrid grid_;
+  Interpolation mode_;
+  glm::dmat3 frame_;
+  bool has_frame_;
+  std::size_t nc_, ng_;
+  // Regular grids (most files) find their cell by one multiplication instead of a search.
+  bool c_uniform_ = false, g_uniform_ = false;
+  double inv_dc_ = 0.0, inv_dg_ = 0.0;
+  double g_front_, g_back_;
+};
+
+}  // namespace luxgrid::photometry

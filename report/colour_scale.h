@@ -1,0 +1,24 @@
+#pragma once
+// Colour scales for illuminance plots: a range in lux rounded to values people read, and ticks.
+#include <string>
+#include <vector>
+
+namespace luxgrid::report {
+
+struct ColourScale {
+  double min = 0.0, max = 1.0;  // lx
+  std::vector<double> ticks;    // round values in [min, max]
+};
+
+// The smallest "nice" number (1, 2, 2.5, 5 x 10^k) >= x.
+double nice_ceil(double x);
+
+// 0 to a nice value above `emax` (an all-dark surface gets 0..1 lx), ticks every nice step.
+ColourScale auto_scale(double emax);
+ColourScale fixed_scale(double min, double max);
+
+// "MIN:MAX" in lux (the --scale option) -> a fixed scale. Throws InputError naming the text when
+// it is not two finite numbers with 0 <= MIN < MAX.
+ColourScale parse_scale(const std::string& text);
+
+}  // namespace luxgrid::report

@@ -1,0 +1,11 @@
+#pragma once
+// One CSV per surface: a row per point with position, normal and the three illuminances.
+#include <string>
+
+#include "calc/results.h"
+
+namespace luxgrid::report {
+
+std::string surface_csv(const calc::SurfaceResult& r);
+
+}  // namespace luxgrid::report

@@ -1,0 +1,182 @@
+#include "report/diff.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "report/results_json.h"
+#include "util/error.h"
+
+namespace luxgrid::report {
+
+namespace fs = std::filesystem;
+
+PointDifference point_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  PointDifference d;
+  if (a.empty() || a.size() != b.size()) return d;
+  double bmax = 0.0;
+  for (double v : b) bmax = std::max(bmax, std::abs(v));
+  const double floor = kRelativeFloor * bmax;
+  double sum = 0.0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    const double diff = std::abs(a[i] - b[i]);
+    const double denom = std::max(std::abs(b[i]), floor);
+    const double rel = diff == 0.0 ? 0.0 : (denom > 0.0 ? diff / denom : INFINITY);
+    sum += rel;
+    if (rel > d.max_rel) {
+      d.max_rel = rel;
+      d.worst_index = i;
+    }
+  }
+  d.mean_rel = sum / static_cast<double>(a.size());
+  return d;
+}
+
+namespace {
+
+std::vector<double> numbers_at(const nlohmann::json& s, const char* key, const std::string& where) {
+  const auto it = s.find(key);
+  if (it == s.end() || !it->is_array()) throw InputError(where + "/" + key + ": expected an array of numbers");
+  std::vector<double> out;
+  out.reserve(it->size());
+  for (size_t i = 0; i < it->size(); ++i) {
+    const auto& v = (*it)[i];
+    if (!v.is_number()) {
+      throw InputError(where + "/" + key + "/" + std::to_string(i) + ": expected a number, got " + v.dump());
+    }
+    out.push_back(v.get<double>());
+  }
+  return out;
+}
+
+calc::Statistics stats_of(const nlohmann::json& s) {
+  calc::Statistics st;
+  const auto it = s.find("stats");
+  if (it == s.end() || !it->is_object()) return st;
+  auto get = [&](const char* k) { return it->contains(k) && (*it)[k].is_number() ? (*it)[k].get<double>() : 0.0; };
+  st.Emin = get("Emin");
+  st.Eavg = get("Eavg");
+  st.Emax = get("Emax");
+  st.U0 = get("U0");
+  st.Ud = get("Ud");
+  return st;
+}
+
+const nlohmann::json& surfaces_of(const nlohmann::json& doc, const std::string& label) {
+  if (!doc.is_object() || !doc.contains("format") || doc["format"] != kResultsFormat) {
+    throw InputError(label + ": not a luxgrid results file (expected \"format\": \"" +
+                     std::string(kResultsFormat) + "\")");
+  }
+  const auto it = doc.find("surfaces");
+  if (it == doc.end() || !it->is_array()) throw InputError(label + " /surfaces: expected an array");
+  for (size_t i = 0; i < it->size(); ++i) {
+    if (!(*it)[i].is_object() || !(*it)[i].contains("name") || !(*it)[i]["name"].is_string()) {
+      throw InputError(label + " /surfaces/" + std::to_string(i) + "/name: expected a string");
+    }
+  }
+  return *it;
+}
+
+}  // namespace
+
+ResultsDiff diff_results(const nlohmann::json& a, const std::string& label_a,
+                         const nlohmann::json& b, const std::string& label_b) {
+  const auto& sa = surfaces_of(a, label_a);
+  const auto& sb = surfaces_of(b, label_b);
+  auto find = [](const nlohmann::json& list, const std::string& name) -> const nlohmann::json* {
+    for (const auto& s : list) {
+      if (s["name"] == name) return &s;
+    }
+    return nullptr;
+  };
+  // Every surface must be in both: a missing one is named, from whichever side lacks it.
+  for (const auto& s : sa) {
+    const std::string name = s["name"];
+    if (!find(sb, name)) throw InputError(label_b + ": surface \"" + name + "\" of " + label_a + " is missing");
+  }
+  for (const auto& s : sb) {
+    const std::string name = s["name"];
+    if (!find(sa, name)) throw InputError(label_a + ": surface \"" + name + "\" of " + label_b + " is missing");
+  }
+  ResultsDiff out{label_a, label_b, {}, 0.0};
+  for (size_t i = 0; i < sa.size(); ++i) {
+    const std::string name = sa[i]["name"];
+    const nlohmann::json& other = *find(sb, name);
+    size_t j = 0;
+    while (sb[j]["name"] != name) ++j;
+    const auto ea = numbers_at(sa[i], "E", label_a + " /surfaces/" + std::to_string(i));
+    const auto eb = numbers_at(other, "E", label_b + " /surfaces/" + std::to_string(j));
+    if (ea.size() != eb.size()) {
+      throw InputError("surface \"" + name + "\": " + label_a + " has " + std::to_string(ea.size()) +
+                       " points, " + label_b + " has " + std::to_string(eb.size()));
+    }
+    SurfaceDiff d{name, ea.size(), point_difference(ea, eb), stats_of(sa[i]), stats_of(other)};
+    out.max_rel = std::max(out.max_rel, d.diff.max_rel);
+    out.surfaces.push_back(std::move(d));
+  }
+  return out;
+}
+
+nlohmann::json read_results_file(const fs::path& path) {
+  fs::path file = path;
+  if (fs::is_directory(file)) file /= "results.json";
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string() + ": cannot open the results file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  try {
+    return nlohmann::json::parse(buffer.str());
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(file.string() + ": malformed JSON: " + e.what());
+  }
+}
+
+std::string format_diff(const ResultsDiff& d) {
+  std::string out;
+  char line[512];
+  std::snprintf(line, sizeof line, "A = %s\nB = %s (reference)\n", d.label_a.c_str(), d.label_b.c_str());
+  out += line;
+  std::snprintf(line, sizeof line, "%-20s %6s %9s %9s  %19s  %19s  %19s  %13s\n", "surface", "points",
+                "max diff", "mean diff", "Emin A / B lx", "Eavg A / B lx", "Emax A / B lx", "U0 A / B");
+  out += line;
+  for (const auto& s : d.surfaces) {
+    std::snprintf(line, sizeof line,
+                  "%-20s %6zu %8.3f%% %8.3f%%  %9.2f %9.2f  %9.2f %9.2f  %9.2f %9.2f  %6.3f %6.3f\n",
+                  s.name.c_str(), s.points, 100.0 * s.diff.max_rel, 100.0 * s.diff.mean_rel, s.a.Emin,
+                  s.b.Emin, s.a.Eavg, s.b.Eavg, s.a.Emax, s.b.Emax, s.a.U0, s.b.U0);
+    out += line;
+  }
+  std::snprintf(line, sizeof line, "largest relative difference: %.3f %%\n", 100.0 * d.max_rel);
+  out += line;
+  return out;
+}
+
+std::string format_cost_table(const CostTable& t) {
+  std::string out;
+  char line[512];
+  if (t.levels.empty()) return out;
+  for (size_t si = 0; si < t.levels.front().surfaces.size(); ++si) {
+    std::snprintf(line, sizeof line, "%s\n  %-10s %9s %10s %10s %7s %10s %10s\n",
+                  t.levels.front().surfaces[si].name.c_str(), "quality", "time s", "Eavg lx", "Emin lx", "U0",
+                  "max diff", "mean diff");
+    out += line;
+    for (const auto& l : t.levels) {
+      if (si >= l.surfaces.size()) continue;
+      const auto& s = l.surfaces[si];
+      std::snprintf(line, sizeof line, "  %-10s %9.3f %10.2f %10.2f %7.3f %9.3f%% %9.3f%%\n", l.quality.c_str(),
+                    l.time_s, s.stats.Eavg, s.stats.Emin, s.stats.U0, 100.0 * s.to_reference.max_rel,
+                    100.0 * s.to_reference.mean_rel);
+      out += line;
+    }
+  }
+  out += "what each level simulated\n";
+  for (const auto& l : t.levels) {
+    out += "  " + l.quality + ": direct: " + l.direct + "; indirect: " + l.indirect + "; visibility: " +
+           l.visibility + "\n";
+  }
+  return out;
+}
+
+}  // namespace luxgrid::report

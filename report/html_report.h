@@ -1,0 +1,38 @@
+#pragma once
+// report.html: the one self-contained page a lighting designer hands over. Images are inline
+// (PNG as base64 data URIs, plan views and polar diagrams as inline SVG), there is no script and
+// no external resource, and a print style sheet lays it out on A4.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "calc/results.h"
+#include "calc/scene.h"
+#include "report/diff.h"
+#include "report/requirements.h"
+
+namespace luxgrid::report {
+
+struct ReportInput {
+  const calc::Results* results = nullptr;
+  const calc::Scene* scene = nullptr;          // null: no plan view, no luminaire schedule
+  std::map<std::string, std::string> png;      // surface name -> PNG file bytes
+  std::vector<RequirementCheck> checks;
+  const CostTable* cost = nullptr;             // --with-cost
+  std::string version;                         // "0.1.0"
+  std::string date;                            // "2024-05-01 14:03 UTC"
+};
+
+std::string html_report(const ReportInput& in);
+
+// RFC 4648 base64 of `bytes`.
+std::string base64(const std::string& bytes);
+
+// Text safe inside HTML elements and attribute values.
+std::string html_escape(const std::string& s);
+
+// The numbers as the report prints them (tests compare the page with results.json through these).
+std::string format_lux_value(double lx);     // "%.1f"
+std::string format_ratio_value(double ratio);  // "%.3f"
+
+}  // namespace luxgrid::report

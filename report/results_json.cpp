@@ -1,0 +1,50 @@
+#include "report/results_json.h"
+
+namespace luxgrid::report {
+
+namespace {
+nlohmann::json vec3(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+nlohmann::json surface_json(const calc::SurfaceResult& r) {
+  using nlohmann::json;
+  const auto& g = r.grid;
+  json s;
+  s["name"] = g.name;
+  s["kind"] = g.kind == geometry::SurfaceGrid::Kind::grid ? "grid" : "points";
+  s["size"] = json::array({g.nu, g.nv});
+  if (g.kind == geometry::SurfaceGrid::Kind::grid) {
+    s["spacing"] = json::array({g.spacing_u, g.spacing_v});
+  }
+  json points = json::array(), normals = json::array();
+  for (size_t i = 0; i < g.points.size(); ++i) {
+    points.push_back(vec3(g.points[i]));
+    normals.push_back(vec3(g.normals[i]));
+  }
+  s["points"] = std::move(points);
+  s["normals"] = std::move(normals);
+  s["E"] = r.E;
+  s["E_direct"] = r.E_direct;
+  s["E_indirect"] = r.E_indirect;
+  s["stats"] = {{"Emin", r.stats.Emin}, {"Eavg", r.stats.Eavg}, {"Emax", r.stats.Emax},
+                {"U0", r.stats.U0}, {"Ud", r.stats.Ud}};
+  return s;
+}
+}  // namespace
+
+nlohmann::json results_to_json(const calc::Results& results) {
+  using nlohmann::json;
+  json j;
+  j["format"] = kResultsFormat;
+  j["project"] = results.project;
+  j["plan"] = {{"direct", results.plan.direct},
+               {"indirect", results.plan.indirect},
+               {"visibility", results.plan.visibility},
+               {"notes", results.plan.notes}};
+  j["surfaces"] = json::array();
+  for (const auto& s : results.surfaces) j["surfaces"].push_back(surface_json(s));
+  j["timing_s"] = json::object();
+  for (const auto& [phase, seconds] : results.timing_s) j["timing_s"][phase] = seconds;
+  return j;
+}
+
+}  // namespace luxgrid::report

@@ -1,0 +1,84 @@
+#include "report/write_outputs.h"
+
+#include <chrono>
+#include <ctime>
+#include <fstream>
+#include <sstream>
+
+#include "report/csv.h"
+#include "report/false_colour.h"
+#include "report/html_report.h"
+#include "report/results_json.h"
+#include "util/error.h"
+
+namespace luxgrid::report {
+
+namespace {
+
+std::string read_bytes(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw CalculationError(p.string() + ": cannot read back the image");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M UTC", &tm);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<std::string> write_outputs(calc::Results& results, const OutputFolder& folder) {
+  return write_outputs(results, folder, OutputOptions{});
+}
+
+std::vector<std::string> write_outputs(calc::Results& results, const OutputFolder& folder,
+                                       const OutputOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<std::string> warnings;
+  PlotOverlay overlay;
+  if (options.scene) {
+    for (const auto& l : options.scene->luminaires) overlay.luminaires.push_back(l.pose.position);
+  }
+  ReportInput report;
+  report.results = &results;
+  report.scene = options.scene;
+  report.checks = options.checks;
+  report.cost = options.cost;
+  report.version = options.version;
+  report.date = utc_now();
+  for (const auto& s : results.surfaces) {
+    const std::string base = safe_file_name(s.grid.name);
+    write_text_file(folder.file(base + ".csv"), surface_csv(s));
+    if (s.grid.kind == geometry::SurfaceGrid::Kind::grid) {
+      const ColourScale scale = options.scale ? *options.scale : auto_scale(s.stats.Emax);
+      const auto png = folder.file(base + ".png");
+      const std::string w = write_false_colour_png(s, scale, png, overlay);
+      if (!w.empty()) warnings.push_back(w);
+      if (options.report) report.png[s.grid.name] = read_bytes(png);
+    }
+  }
+  if (options.report) write_text_file(folder.file("report.html"), html_report(report));
+  results.timing_s.emplace_back(
+      "report", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  nlohmann::json j = results_to_json(results);
+  if (!options.checks.empty()) {
+    // Per surface, each requirement with its verdict and margin; at the top, the overall verdict.
+    for (auto& s : j["surfaces"]) {
+      for (const auto& c : options.checks) {
+        if (c.surface == s["name"]) s["requirements"].push_back(check_to_json(c));
+      }
+    }
+    j["requirements_met"] = all_met(options.checks);
+  }
+  write_text_file(folder.file("results.json"), j.dump(1) + "\n");
+  return warnings;
+}
+
+}  // namespace luxgrid::report

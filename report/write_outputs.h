@@ -1,0 +1,31 @@
+#pragma once
+// Everything a calculation leaves in its output folder: results.json, <surface>.csv, for grid
+// surfaces <surface>.png, and report.html (unless switched off).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "calc/results.h"
+#include "calc/scene.h"
+#include "report/colour_scale.h"
+#include "report/diff.h"
+#include "report/output_folder.h"
+#include "report/requirements.h"
+
+namespace luxgrid::report {
+
+struct OutputOptions {
+  bool report = true;                 // report.html
+  std::optional<ColourScale> scale;   // one fixed scale for every surface; default: per surface
+  const calc::Scene* scene = nullptr; // luminaire marks, plan view and schedule; null: left out
+  std::vector<RequirementCheck> checks;  // also written into results.json per surface
+  const CostTable* cost = nullptr;    // the `luxgrid cost` table, into the report
+  std::string version;                // luxgrid version for the report
+};
+
+// Writes into folder.staging(); adds the "report" phase to results.timing_s. Returns warnings.
+std::vector<std::string> write_outputs(calc::Results& results, const OutputFolder& folder,
+                                       const OutputOptions& options);
+std::vector<std::string> write_outputs(calc::Results& results, const OutputFolder& folder);
+
+}  // namespace luxgrid::report

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Installs luxgrid's build and test dependencies from Debian packages, only those missing.
+# Run as root on Debian 12 (bookworm). Quiet when everything is there already.
+set -euo pipefail
+packages=(cmake make g++ pkg-config
+          libcgal-dev libglm-dev libopenimageio-dev nlohmann-json3-dev libtbb-dev libcli11-dev
+          libgtest-dev libbenchmark-dev fonts-dejavu-core python3 chromium ${LUXGRID_EXTRA_PACKAGES:-})
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "installing: ${missing[*]}" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi

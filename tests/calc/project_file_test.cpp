@@ -1,0 +1,300 @@
+// The project loader: good files load with the right values, bad files fail with one exact
+// message naming the place.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "calc/project_file.h"
+#include "geometry/polygon.h"
+#include "util/error.h"
+
+namespace luxgrid::calc {
+namespace {
+
+nlohmann::json minimal() {
+  return nlohmann::json::parse(R"({
+    "format": "luxgrid-project/1",
+    "name": "t",
+    "photometry": { "iso": { "builtin": "isotropic", "intensity_cd": 100 } },
+    "rooms": [ { "name": "r", "outline": [[0,0],[4,0],[4,3],[0,3]], "height": 2.5 } ],
+    "luminaires": [ { "photometry": "iso", "position": [2, 1.5, 2.5] } ],
+    "surfaces": [ { "name": "wp", "workplane": { "room": "r", "height": 0.8, "border": 0.5 }, "spacing": 0.5 } ]
+  })");
+}
+
+std::string error_of(const nlohmann::json& doc) {
+  try {
+    parse_project(doc, "p.json", ".");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(ProjectFile, MinimalProjectLoads) {
+  const Scene s = parse_project(minimal(), "p.json", ".");
+  EXPECT_EQ(s.name, "t");
+  ASSERT_EQ(s.luminaires.size(), 1u);
+  EXPECT_EQ(s.luminaires[0].pose.position, Vec3(2, 1.5, 2.5));
+  ASSERT_EQ(s.surfaces.size(), 1u);
+  // 4 x 3 room, 0.5 border: 3 x 2 m at 0.5 m -> 6 x 4 cells, first centre at (0.75, 0.75, 0.8).
+  EXPECT_EQ(s.surfaces[0].nu, 6);
+  EXPECT_EQ(s.surfaces[0].nv, 4);
+  EXPECT_EQ(s.surfaces[0].points.front(), Vec3(0.75, 0.75, 0.8));
+  EXPECT_EQ(s.surfaces[0].points.back(), Vec3(3.25, 2.25, 0.8));
+  EXPECT_EQ(s.settings.quality, Quality::standard);  // the default
+}
+
+TEST(ProjectFile, ArrayExpandsAlongXThenY) {
+  auto doc = minimal();
+  doc["luminaires"][0] = {{"photometry", "iso"},
+                          {"array", {{"origin", {1, 1, 2.5}}, {"count", {3, 2}}, {"spacing", {1.0, 0.5}}}}};
+  const Scene s = parse_project(doc, "p.json", ".");
+  ASSERT_EQ(s.luminaires.size(), 6u);
+  EXPECT_EQ(s.luminaires[1].pose.position, Vec3(2, 1, 2.5));
+  EXPECT_EQ(s.luminaires[3].pose.position, Vec3(1, 1.5, 2.5));
+  EXPECT_EQ(s.luminaires[5].label, "luminaire 0 [2,1]");
+}
+
+TEST(ProjectFile, SettingsAreRead) {
+  auto doc = minimal();
+  doc["settings"] = {{"quality", "draft"}, {"near_field", "never"}, {"indirect", "off"},
+                     {"bounces", 3}, {"maintenance_factor", 0.8}};
+  const Scene s = parse_project(doc, "p.json", ".");
+  EXPECT_EQ(s.settings.quality, Quality::draft);
+  EXPECT_EQ(s.settings.near_field, NearFieldMode::never);
+  EXPECT_EQ(s.settings.indirect, IndirectMode::off);
+  EXPECT_EQ(s.settings.bounces, 3);
+  EXPECT_DOUBLE_EQ(s.settings.maintenance_factor, 0.8);
+}
+
+TEST(ProjectFile, PlaneGridNormalIsUCrossV) {
+  auto doc = minimal();
+  doc["surfaces"][0] = nlohmann::json::parse(
+      R"({"name": "wall", "plane": {"origin": [4,0,0], "u": [0,2,0], "v": [0,0,1], "size": [3, 2.5]}, "spacing": 1})");
+  const Scene s = parse_project(doc, "p.json", ".");
+  const auto& g = s.surfaces[0];
+  EXPECT_EQ(g.nu, 3);
+  EXPECT_EQ(g.nv, 3);  // 2.5 m at <= 1 m -> 3 cells of 0.8333 m
+  EXPECT_NEAR(g.spacing_v, 2.5 / 3, 1e-15);
+  EXPECT_EQ(g.normals[0], Vec3(1, 0, 0));  // (0,1,0) x (0,0,1) = +x
+  EXPECT_EQ(g.points[0], Vec3(4, 0.5, 2.5 / 6));
+}
+
+TEST(ProjectFile, AutoSpacingFollowsEn12464) {
+  auto doc = minimal();
+  doc["surfaces"][0]["spacing"] = "auto";
+  const Scene s = parse_project(doc, "p.json", ".");
+  // Longer side d = 3 m: p = 0.2 * 5^log10(3) = 0.2 * 2.1555 = 0.4311 m -> ceil(3 / 0.4311) = 7.
+  EXPECT_EQ(s.surfaces[0].nu, 7);
+  EXPECT_EQ(s.surfaces[0].nv, 5);  // 2 m / 0.4311 = 4.64 -> 5
+}
+
+struct BadCase {
+  const char* name;
+  const char* pointer;    // JSON pointer to patch (RFC 6902 "add"/"replace" path)
+  const char* value;      // JSON text to put there
+  const char* expected;   // the exact message
+};
+
+class ProjectFileBad : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(ProjectFileBad, ExactMessage) {
+  const auto& c = GetParam();
+  auto doc = minimal();
+  doc[nlohmann::json::json_pointer(c.pointer)] = nlohmann::json::parse(c.value);
+  EXPECT_EQ(error_of(doc), c.expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Messages, ProjectFileBad,
+    ::testing::Values(
+        BadCase{"unknown_top_key", "/reflectence", "1",
+                "p.json /reflectence: unknown key \"reflectence\" (expected one of: format, name, settings, photometry, rooms, luminaires, surfaces)"},
+        BadCase{"wrong_format", "/format", "\"luxgrid-project/2\"",
+                "p.json /format: expected \"luxgrid-project/1\", got \"luxgrid-project/2\""},
+        BadCase{"rotation_two_numbers", "/luminaires/0/rotation", "[0, 90]",
+                "p.json /luminaires/0/rotation: expected 3 numbers, got 2"},
+        BadCase{"rotation_empty", "/luminaires/0/rotation", "[]",
+                "p.json /luminaires/0/rotation: expected 3 numbers, got 0"},
+        BadCase{"position_string", "/luminaires/0/position", "\"here\"",
+                "p.json /luminaires/0/position: expected 3 numbers, got a string"},
+        BadCase{"position_item_type", "/luminaires/0/position", "[1, \"2\", 3]",
+                "p.json /luminaires/0/position/1: expected a number, got a string"},
+        BadCase{"negative_height", "/rooms/0/height", "-2.5",
+                "p.json /rooms/0/height: expected a positive number, got -2.5"},
+        BadCase{"reflectance_above_one", "/rooms/0/reflectance", "{\"walls\": 1.2}",
+                "p.json /rooms/0/reflectance/walls: expected a number in [0, 1], got 1.2"},
+        BadCase{"reflectance_unknown", "/rooms/0/reflectance", "{\"wall\": 0.5}",
+                "p.json /rooms/0/reflectance/wall: unknown key \"wall\" (expected one of: floor, walls, ceiling)"},
+        BadCase{"empty_outline", "/rooms/0/outline", "[]",
+                "p.json /rooms/0/outline: expected at least 3 corners, got 0"},
+        BadCase{"unknown_photometry", "/luminaires/0/photometry", "\"panel\"",
+                "p.json /luminaires/0/photometry: no photometry entry named \"panel\""},
+        BadCase{"negative_spacing", "/surfaces/0/spacing", "-0.25",
+                "p.json /surfaces/0/spacing: expected a positive number, got -0.25"},
+        BadCase{"negative_emitter_size", "/luminaires/0/emitter", "{\"shape\": \"rectangle\", \"size\": [0.6, -0.6]}",
+                "p.json /luminaires/0/emitter/size: expected two positive sizes in metres"},
+        BadCase{"unknown_builtin", "/photometry/iso/builtin", "\"spot\"",
+                "p.json /photometry/iso/builtin: expected \"isotropic\" or \"lambertian\", got \"spot\""},
+        BadCase{"missing_file", "/photometry/iso", "\"no/such/file.ies\"",
+                "p.json /photometry/iso: photometry file not found: ./no/such/file.ies"},
+        BadCase{"bad_quality", "/settings", "{\"quality\": \"best\"}",
+                "p.json /settings/quality: expected \"draft\", \"standard\", \"high\" or \"reference\", got \"best\""},
+        BadCase{"bounces_zero", "/settings", "{\"bounces\": 0}",
+                "p.json /settings/bounces: expected \"auto\" or a whole number >= 1, got 0"},
+        BadCase{"unknown_room", "/surfaces/0/workplane/room", "\"hall\"",
+                "p.json /surfaces/0/workplane/room: no room named \"hall\""},
+        BadCase{"border_too_wide", "/surfaces/0/workplane/border", "1.5",
+                "p.json /surfaces/0/workplane/border: the border leaves no workplane inside the room"},
+        BadCase{"huge_grid", "/surfaces/0/spacing", "0.0001",
+                "p.json /surfaces/0: the grid would have 600000000 points, more than the limit of 4000000; use a larger spacing"},
+        BadCase{"self_intersecting_outline", "/rooms/0/outline", "[[0,0],[4,3],[4,0],[0,3]]",
+                "p.json /rooms/0/outline: room \"r\": the outline crosses itself (edge 0-1 meets edge 2-3)"},
+        BadCase{"zero_area_outline", "/rooms/0/outline", "[[0,0],[2,0],[4,0]]",
+                "p.json /rooms/0/outline: room \"r\": the outline has zero area"},
+        BadCase{"repeated_corner", "/rooms/0/outline", "[[0,0],[4,0],[4,0],[0,3]]",
+                "p.json /rooms/0/outline: room \"r\": corners 1 and 2 coincide"},
+        BadCase{"box_min_above_max", "/rooms/0/obstacles", "[{\"name\": \"cabinet\", \"box\": {\"min\": [1,1,1.8], \"max\": [2,2,0]}}]",
+                "p.json /rooms/0/obstacles/0/box: obstacle \"cabinet\": box min must be below max in x, y and z, got z from 1.8 to 0"},
+        BadCase{"box_flat", "/rooms/0/obstacles", "[{\"box\": {\"min\": [1,1,0], \"max\": [1,2,1]}}]",
+                "p.json /rooms/0/obstacles/0/box: obstacle \"obstacle 0\": box min must be below max in x, y and z, got x from 1 to 1"},
+        BadCase{"obstacle_outside", "/rooms/0/obstacles", "[{\"name\": \"shed\", \"box\": {\"min\": [5,0,0], \"max\": [6,1,2]}}]",
+                "p.json /rooms/0/obstacles/0: obstacle \"shed\" lies outside room \"r\""},
+        BadCase{"obstacle_above_ceiling", "/rooms/0/obstacles", "[{\"name\": \"lamp\", \"box\": {\"min\": [1,1,2.5], \"max\": [2,2,3]}}]",
+                "p.json /rooms/0/obstacles/0: obstacle \"lamp\" lies outside room \"r\""},
+        BadCase{"obstacle_box_and_prism", "/rooms/0/obstacles", "[{\"box\": {\"min\": [1,1,0], \"max\": [2,2,1]}, \"prism\": {}}]",
+                "p.json /rooms/0/obstacles/0: expected exactly one of \"box\" or \"prism\""},
+        BadCase{"prism_self_intersecting", "/rooms/0/obstacles", "[{\"name\": \"x\", \"prism\": {\"outline\": [[1,1],[2,2],[2,1],[1,2]], \"z0\": 0, \"z1\": 1}}]",
+                "p.json /rooms/0/obstacles/0/prism/outline: obstacle \"x\": the outline crosses itself (edge 0-1 meets edge 2-3)"},
+        BadCase{"obstacle_unknown_key", "/rooms/0/obstacles", "[{\"box\": {\"min\": [1,1,0], \"max\": [2,2,1], \"rotation\": 30}}]",
+                "p.json /rooms/0/obstacles/0/box/rotation: unknown key \"rotation\" (expected one of: min, max, rotation_z)"},
+        BadCase{"zero_size_plane", "/surfaces/0", "{\"name\": \"w\", \"plane\": {\"origin\": [0,0,0], \"u\": [1,0,0], \"v\": [0,0,1], \"size\": [0, 2]}, \"spacing\": 0.5}",
+                "p.json /surfaces/0/plane/size: expected two positive sizes in metres"},
+        BadCase{"zero_spacing", "/surfaces/0/spacing", "0",
+                "p.json /surfaces/0/spacing: expected a positive number, got 0"},
+        BadCase{"bad_quantity", "/surfaces/0/quantity", "\"semi-cylindrical\"",
+                "p.json /surfaces/0/quantity: expected \"planar\", \"horizontal\", \"vertical\" or \"cylindrical\", got \"semi-cylindrical\""},
+        BadCase{"vertical_without_facing", "/surfaces/0/quantity", "\"vertical\"",
+                "p.json /surfaces/0/quantity: a vertical quantity on a horizontal surface needs \"facing\": [x, y]"},
+        BadCase{"facing_without_vertical", "/surfaces/0/facing", "[1, 0]",
+                "p.json /surfaces/0/facing: \"facing\" only goes with \"quantity\": \"vertical\""},
+        BadCase{"position_and_array", "/luminaires/0/array", "{\"origin\": [0,0,0], \"count\": [1,1], \"spacing\": [1,1]}",
+                "p.json /luminaires/0: expected exactly one of \"position\" or \"array\""}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+nlohmann::json l_room() {
+  auto doc = minimal();
+  doc["rooms"][0] = nlohmann::json::parse(R"({
+    "name": "r", "outline": [[0,0],[6,0],[6,3],[3,3],[3,6],[0,6]], "height": 3,
+    "obstacles": [
+      { "name": "column", "box": { "min": [1.5, 1.5, 0], "max": [2.5, 2.5, 3] }, "reflectance": 0.4 },
+      { "name": "table", "box": { "min": [0.6, 0.6, 0], "max": [1.4, 1.4, 0.7] } },
+      { "name": "partition", "prism": { "outline": [[4,0],[4,1],[4.1,1],[4.1,0]], "z0": 0, "z1": 2 } }
+    ] })");
+  doc["surfaces"][0] = nlohmann::json::parse(
+      R"({ "name": "wp", "workplane": { "room": "r", "height": 0.8, "border": 0.5 }, "spacing": 1 })");
+  return doc;
+}
+
+TEST(ProjectFile, LShapedRoomWithObstacles) {
+  const Scene s = parse_project(l_room(), "p.json", ".");
+  ASSERT_EQ(s.rooms[0].obstacles.size(), 3u);
+  EXPECT_EQ(s.rooms[0].obstacles[1].name, "table");
+  EXPECT_DOUBLE_EQ(s.rooms[0].obstacles[1].reflectance, 0.5);  // the default
+  EXPECT_DOUBLE_EQ(s.rooms[0].obstacles[0].z1, 3.0);
+  // The clockwise prism outline was reversed, with a warning.
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_EQ(s.warnings[0], "obstacle \"partition\": the outline is clockwise; reversed to counter-clockwise");
+  // Inset L: 5 x 5 cells of 1 m; 16 inside the L, (2, 2) inside the column; the table (0.7 m)
+  // and the partition (its footprint holds no cell centre) remove nothing.
+  const auto& g = s.surfaces[0];
+  EXPECT_EQ(g.nu, 5);
+  EXPECT_EQ(g.nv, 5);
+  EXPECT_EQ(g.points_outside, 9u);
+  EXPECT_EQ(g.points_in_obstacles, 1u);
+  EXPECT_FALSE(g.active[6]);
+}
+
+TEST(ProjectFile, ClockwiseRoomIsReversedWithAWarning) {
+  auto doc = minimal();
+  doc["rooms"][0]["outline"] = nlohmann::json::parse("[[0,3],[4,3],[4,0],[0,0]]");
+  const Scene s = parse_project(doc, "p.json", ".");
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_EQ(s.warnings[0], "room \"r\": the outline is clockwise; reversed to counter-clockwise");
+  EXPECT_GT(geometry::signed_area(s.rooms[0].outline), 0.0);
+  EXPECT_EQ(s.surfaces[0].points.front(), Vec3(0.75, 0.75, 0.8));  // the same grid as CCW
+}
+
+TEST(ProjectFile, LuminaireOutsideEveryRoomOrInsideAnObstacleWarns) {
+  auto doc = l_room();
+  doc["luminaires"][0]["position"] = {5, 5, 2.9};  // in the missing quadrant of the L
+  doc["luminaires"].push_back({{"name", "in column"}, {"photometry", "iso"}, {"position", {2, 2, 2}}});
+  const Scene s = parse_project(doc, "p.json", ".");
+  ASSERT_EQ(s.warnings.size(), 3u);
+  EXPECT_EQ(s.warnings[1], "luminaire 0: outside every room");
+  EXPECT_EQ(s.warnings[2], "in column: inside obstacle \"column\" of room \"r\"");
+}
+
+TEST(ProjectFile, RoomSurfacesGiveOneGridPerFace) {
+  auto doc = l_room();
+  doc["surfaces"][0] = nlohmann::json::parse(R"({ "name": "L", "room_surfaces": { "room": "r" }, "spacing": 0.5 })");
+  const Scene s = parse_project(doc, "p.json", ".");
+  ASSERT_EQ(s.surfaces.size(), 8u);  // floor, ceiling, 6 walls
+  const auto& floor = s.surfaces[0];
+  EXPECT_EQ(floor.name, "L floor");
+  // 12 x 12 cells of 0.5 m over the 6 x 6 box; the L holds 27 / 0.25 = 108 of them. On the floor
+  // the column (1.5..2.5) holds the centres 1.75, 2.25 in x and y (4) and the 0.7 m table
+  // (0.6..1.4) holds 0.75, 1.25 (4); the thin partition holds none.
+  EXPECT_EQ(floor.nu, 12);
+  EXPECT_EQ(floor.points_outside, 36u);
+  EXPECT_EQ(floor.points_in_obstacles, 8u);
+  // The ceiling (z = 3) is reached only by the column.
+  EXPECT_EQ(s.surfaces[1].points_in_obstacles, 4u);
+  EXPECT_EQ(s.surfaces[2].name, "L wall 0");
+  EXPECT_EQ(s.surfaces[2].nu, 12);
+  EXPECT_EQ(s.surfaces[2].nv, 6);
+  EXPECT_EQ(s.surfaces[7].name, "L wall 5");
+}
+
+TEST(ProjectFile, QuantitiesSetReceiverNormals) {
+  auto doc = minimal();
+  doc["surfaces"][0]["quantity"] = "vertical";
+  doc["surfaces"][0]["facing"] = {0, -2};
+  Scene s = parse_project(doc, "p.json", ".");
+  EXPECT_EQ(s.surfaces[0].quantity, geometry::Quantity::vertical);
+  EXPECT_EQ(s.surfaces[0].normals[0], Vec3(0, -1, 0));
+  doc["surfaces"][0].erase("facing");
+  doc["surfaces"][0]["quantity"] = "cylindrical";
+  s = parse_project(doc, "p.json", ".");
+  EXPECT_EQ(s.surfaces[0].quantity, geometry::Quantity::cylindrical);
+  EXPECT_EQ(s.surfaces[0].normals[0], Vec3(0, 0, 1));
+  // A wall plane asked for vertical illuminance keeps its own horizontal normal u x v = +x.
+  doc["surfaces"][0] = nlohmann::json::parse(
+      R"({"name": "wall", "plane": {"origin": [4,0,0], "u": [0,1,0], "v": [0,0,1], "size": [3, 2.5]}, "spacing": 1, "quantity": "vertical"})");
+  s = parse_project(doc, "p.json", ".");
+  EXPECT_EQ(s.surfaces[0].normals[0], Vec3(1, 0, 0));
+}
+
+TEST(ProjectFile, MalformedJsonNamesLineAndColumn) {
+  const auto dir = std::filesystem::temp_directory_path() / "luxgrid_project_file_test";
+  std::filesystem::create_directories(dir);
+  const auto file = dir / "broken.json";
+  {
+    std::ofstream out(file);
+    out << "{\n  \"format\": \"luxgrid-project/1\",\n  \"name\": \"x\"\n  \"rooms\": []\n}\n";
+  }
+  try {
+    load_project(file);
+    FAIL() << "expected an error";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    // nlohmann stops at the end of the offending token: the "rooms" string ending in column 9.
+    EXPECT_EQ(msg, file.string() + ":4:9: malformed JSON: syntax error while parsing object - "
+                   "unexpected string literal; expected '}'");
+  }
+}
+
+}  // namespace
+}  // namespace luxgrid::calc

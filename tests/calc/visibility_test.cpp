@@ -1,0 +1,139 @@
+// Visibility in scenes: a point source in one leg of an L-shaped room lights the other leg only
+// where the inner corner does not hide it (exactly 0 lx behind it, the analytic I cos / d^2 where
+// seen); a box between a source and a point gives 0; the plan's on/off reason.
+#include <gtest/gtest.h>
+
+#include "calc/direct.h"
+#include "calc/project_file.h"
+#include "calc/visibility.h"
+
+#include <filesystem>
+
+namespace luxgrid::calc {
+namespace {
+
+Scene scene_from(const std::string& rooms, const std::string& lamp) {
+  return parse_project(nlohmann::json::parse(R"({
+    "format": "luxgrid-project/1",
+    "photometry": { "iso": { "builtin": "isotropic", "intensity_cd": 1000 } },
+    "rooms": )" + rooms + R"(,
+    "luminaires": [ { "photometry": "iso", "position": )" + lamp + R"( } ],
+    "surfaces": [ { "name": "p", "points": [ { "at": [1, 1, 0], "normal": [0, 0, 1] } ] } ]
+  })"), "v.json", ".");
+}
+
+const char* kLRoom = R"([ { "name": "L", "outline": [[0,0],[6,0],[6,3],[3,3],[3,6],[0,6]], "height": 3 } ])";
+
+// E with visibility, as the direct calculation will form it.
+double shadowed(const Visibility* vis, const Luminaire& lum, const Vec3& p) {
+  if (vis && !vis->visible(lum.pose.position, p)) return 0.0;
+  return far_field_illuminance(lum, p, Vec3(0, 0, 1));
+}
+
+TEST(Visibility, LRoomPointSourceDarkBehindTheCorner) {
+  const Scene scene = scene_from(kLRoom, "[1, 5, 2.9]");
+  std::string reason;
+  const auto vis = make_visibility(scene, reason);
+  ASSERT_TRUE(vis);
+  EXPECT_EQ(reason, "on: non-convex room 'L'");
+  const Luminaire& lum = scene.luminaires[0];
+  const double h = 2.9;
+  // Visible: E = I h / d^3 (isotropic source, horizontal receiver).
+  for (const Vec3 p : {Vec3(1, 1, 0), Vec3(2.5, 1, 0), Vec3(5.5, 0.2, 0)}) {
+    const double d = glm::length(p - lum.pose.position);
+    EXPECT_NEAR(shadowed(vis.get(), lum, p), 1000.0 * h / (d * d * d), 1e-12) << p.x << "," << p.y;
+  }
+  // Hidden by the inner corner at (3, 3): the segments leave the room through wall 3.
+  for (const Vec3 p : {Vec3(5.5, 1.0, 0), Vec3(5.5, 2.0, 0), Vec3(4.0, 2.5, 0)}) {
+    EXPECT_GT(far_field_illuminance(lum, p, Vec3(0, 0, 1)), 0.0);  // unshadowed it would be lit
+    EXPECT_EQ(shadowed(vis.get(), lum, p), 0.0) << p.x << "," << p.y;
+  }
+}
+
+TEST(Visibility, BoxBetweenSourceAndPointGivesZero) {
+  const Scene scene = scene_from(R"([ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3,
+      "obstacles": [ { "name": "cabinet", "box": { "min": [1.5, 1.5, 0], "max": [2.5, 2.5, 1.8] } } ] } ])",
+                                 "[2, 2, 3]");
+  std::string reason;
+  const auto vis = make_visibility(scene, reason);
+  ASSERT_TRUE(vis);
+  EXPECT_EQ(reason, "on: 1 obstacle");
+  const Luminaire& lum = scene.luminaires[0];
+  EXPECT_EQ(shadowed(vis.get(), lum, Vec3(2, 2, 0)), 0.0);      // under the cabinet
+  EXPECT_EQ(shadowed(vis.get(), lum, Vec3(2.6, 2.0, 0)), 0.0);  // in its shadow beside it
+  // On the cabinet's top the point is lit, at the analytic value: E = I / h^2 at 1.2 m.
+  EXPECT_NEAR(shadowed(vis.get(), lum, Vec3(2, 2, 1.8)), 1000.0 / (1.2 * 1.2), 1e-9);
+  // Far enough out the shadow ends: the ray to (3.9, 2, 0) is at z = 3 - 3 * 0.5 / 1.9 = 2.21
+  // above the cabinet's edge at x = 2.5.
+  EXPECT_GT(shadowed(vis.get(), lum, Vec3(3.9, 2.0, 0)), 0.0);
+}
+
+TEST(Visibility, OffForAConvexEmptyRoomWithTheLuminaireInside) {
+  std::string reason;
+  const Scene scene = scene_from(R"([ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3 } ])",
+                                 "[2, 2, 3]");  // on the ceiling: inside the closed room
+  EXPECT_EQ(make_visibility(scene, reason), nullptr);
+  EXPECT_EQ(reason, "off: convex room, no obstacles, every luminaire inside");
+  const Scene outside = scene_from(R"([ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3 } ])",
+                                   "[2, 2, 3.5]");
+  EXPECT_NE(make_visibility(outside, reason), nullptr);
+  EXPECT_EQ(reason, "on: luminaire 0 outside every room");
+  const Scene no_rooms = scene_from("[]", "[2, 2, 3]");
+  EXPECT_EQ(make_visibility(no_rooms, reason), nullptr);
+  EXPECT_EQ(reason, "off: no rooms and no obstacles, nothing can block light");
+}
+
+TEST(Visibility, Cie171Case57ShadowEdgesMatchTheDerivation) {
+  // cases/pending/cie171_5_7_obstruction: S2 is the wall y = 4; from the floor point (2, 0.5, 0) the
+  // README's z_min = (4 - 0.5) / (1.9 - 0.5) = 2.5 m; from the wall point (2, 0, 0.5)
+  // z_min = 0.5 + 0.5 * 4 / 1.9 = 1.5526 m. The AABB tree must agree on both sides of each edge.
+  const Scene scene = load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) /
+                                   "cases/pending/cie171_5_7_obstruction/project.json");
+  std::string reason;
+  const auto vis = make_visibility(scene, reason);
+  ASSERT_TRUE(vis);
+  EXPECT_EQ(reason, "on: 1 obstacle");
+  EXPECT_TRUE(scene.warnings.empty());
+  // The emitter faces into the room: its nadir (local -z) is world -y.
+  EXPECT_NEAR(glm::length(scene.luminaires[0].pose.rotation * Vec3(0, 0, -1) - Vec3(0, -1, 0)), 0.0, 1e-12);
+  for (double x : {0.1, 2.0, 3.9}) {
+    EXPECT_FALSE(vis->visible(Vec3(2, 0.5, 0), Vec3(x, 4, 2.5 - 1e-6)));
+    EXPECT_TRUE(vis->visible(Vec3(2, 0.5, 0), Vec3(x, 4, 2.5 + 1e-6)));
+    EXPECT_FALSE(vis->visible(Vec3(2, 0, 0.5), Vec3(x, 4, 0.5 + 0.5 * 4 / 1.9 - 1e-6)));
+    EXPECT_TRUE(vis->visible(Vec3(2, 0, 0.5), Vec3(x, 4, 0.5 + 0.5 * 4 / 1.9 + 1e-6)));
+  }
+  // In the umbra (y = 1.5) even the top corner of S2 is hidden; in front (y = 3) the bottom
+  // corner region is seen (a segment lying in the floor plane itself would graze the floor and
+  // count as blocked; it carries no light, cos = 0).
+  EXPECT_FALSE(vis->visible(Vec3(2, 1.5, 0), Vec3(0, 4, 3)));
+  EXPECT_TRUE(vis->visible(Vec3(2, 3, 0), Vec3(0.01, 4, 0.01)));
+}
+
+TEST(Visibility, EarlierCasesNeedNone) {
+  // The point-source cases sit in empty convex black rooms with their sources on the ceiling:
+  // visibility must stay off so their results cannot change.
+  for (const char* c : {"cie171_5_2_directional_point", "point_isotropic_horizontal",
+                        "point_isotropic_vertical", "point_lambertian_tilted"}) {
+    const Scene scene = load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) / "cases" / c / "project.json");
+    std::string reason;
+    EXPECT_EQ(make_visibility(scene, reason), nullptr) << c << ": " << reason;
+  }
+}
+
+TEST(Visibility, LShapeExampleLoads) {
+  const Scene scene = load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) / "examples/lshape/project.json");
+  EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+  std::string reason;
+  const auto vis = make_visibility(scene, reason);
+  ASSERT_TRUE(vis);
+  EXPECT_EQ(reason, "on: 2 obstacles, non-convex room 'L office'");
+  EXPECT_EQ(vis->triangle_count(), 20u + 2u * 12u);
+  ASSERT_EQ(scene.surfaces.size(), 1u + 8u);
+  const auto& wp = scene.surfaces[0];
+  EXPECT_EQ(wp.nu, 35);  // inset L spans 0.5..7.5: 7 m / 0.2 m
+  EXPECT_EQ(wp.points_outside, 400u);  // the inset's missing 4 x 4 m quadrant: 20 x 20 cells
+  EXPECT_EQ(wp.points_in_obstacles, 22u);  // column 0.4 x 0.4 m: 2 x 2; the turned cabinet: 18
+}
+
+}  // namespace
+}  // namespace luxgrid::calc

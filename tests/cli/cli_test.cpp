@@ -1,0 +1,123 @@
+// End to end through the real binary: exit codes, messages, and the output folder appearing whole
+// or not at all.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int code;
+  std::string output;  // stdout + stderr
+};
+
+CommandResult run(const std::string& args) {
+  const std::string cmd = std::string(LUXGRID_BINARY) + " " + args + " 2>&1";
+  CommandResult r{-1, ""};
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf{};
+  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
+  const int status = pclose(pipe);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / "luxgrid_cli_test" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+const char* kGood = R"({
+  "format": "luxgrid-project/1", "name": "cli test",
+  "photometry": { "iso": { "builtin": "isotropic", "intensity_cd": 1000 } },
+  "rooms": [ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3,
+               "reflectance": { "floor": 0, "walls": 0, "ceiling": 0 } } ],
+  "luminaires": [ { "photometry": "iso", "position": [2, 2, 3] } ],
+  "surfaces": [ { "name": "floor", "workplane": { "room": "r", "height": 0, "border": 0 }, "spacing": 1 } ]
+})";
+
+TEST(Cli, VersionAndHelpExitZero) {
+  EXPECT_EQ(run("--version").code, 0);
+  EXPECT_NE(run("--version").output.find("luxgrid 0."), std::string::npos);
+  EXPECT_EQ(run("calc --help").code, 0);
+  EXPECT_EQ(run("validate --help").code, 0);
+}
+
+TEST(Cli, UsageErrorExitsTwo) {
+  EXPECT_EQ(run("").code, 2);
+  EXPECT_EQ(run("calc").code, 2);
+  EXPECT_EQ(run("frobnicate").code, 2);
+}
+
+TEST(Cli, CalcWritesEveryOutputAndTheValuesAreRight) {
+  const fs::path dir = scratch("good");
+  write(dir / "p.json", kGood);
+  const CommandResult r = run("calc " + (dir / "p.json").string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const fs::path out = dir / "p.out";  // the default: beside the project
+  EXPECT_NE(r.output.find("results written to " + out.string()), std::string::npos) << r.output;
+  for (const char* f : {"results.json", "floor.csv", "floor.png"}) EXPECT_TRUE(fs::exists(out / f)) << f;
+  const auto j = nlohmann::json::parse(std::ifstream(out / "results.json"));
+  // Point (0.5, 0.5, 0): d^2 = 1.5^2 + 1.5^2 + 3^2 = 13.5, E = I h / d^3.
+  const double d = std::sqrt(13.5);
+  EXPECT_NEAR(j["surfaces"][0]["E"][0].get<double>(), 1000.0 * 3.0 / (d * d * d), 1e-9);
+  // Nothing else is left beside the output folder (no temporary folders).
+  size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 2u);
+}
+
+TEST(Cli, BadInputExitsTwoWithOneMessageAndNoOutput) {
+  const fs::path dir = scratch("bad");
+  std::string bad = kGood;
+  bad.replace(bad.find("\"height\": 3"), 11, "\"height\": -3");  // the room's height
+  write(dir / "p.json", bad);
+  const CommandResult r = run("calc " + (dir / "p.json").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.output, "luxgrid: error: p.json /rooms/0/height: expected a positive number, got -3\n");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(Cli, MissingProjectFileIsBadInput) {
+  const CommandResult r = run("calc /nonexistent/p.json");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.output, "luxgrid: error: /nonexistent/p.json: cannot open the project file\n");
+}
+
+TEST(Cli, FailedRunKeepsThePreviousOutputIntact) {
+  const fs::path dir = scratch("keep");
+  write(dir / "p.json", kGood);
+  ASSERT_EQ(run("calc " + (dir / "p.json").string() + " -o " + (dir / "out").string()).code, 0);
+  write(dir / "p.json", "{ broken");
+  EXPECT_EQ(run("calc " + (dir / "p.json").string() + " -o " + (dir / "out").string()).code, 2);
+  EXPECT_TRUE(fs::exists(dir / "out" / "results.json"));
+}
+
+TEST(Cli, ValidateFailsOnAWrongExpectedValue) {
+  const fs::path dir = scratch("validate");
+  fs::create_directories(dir / "cases" / "one");
+  write(dir / "cases" / "one" / "project.json", kGood);
+  // The nadir point is not on the 1 m grid; use the corner cell: deliberately wrong value.
+  write(dir / "cases" / "one" / "expected.json",
+        R"({"cases": [{"surface": "floor", "point": 0, "expected": 1.0, "rel_tol": 0.01, "source": "wrong on purpose"}]})");
+  const CommandResult r = run("validate " + (dir / "cases").string() + " -o " + (dir / "v.out").string());
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_NE(r.output.find("FAIL"), std::string::npos);
+  EXPECT_NE(r.output.find("0 passed, 1 failed"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir / "v.out" / "validation.md"));
+  EXPECT_TRUE(fs::exists(dir / "v.out" / "validation.json"));
+}
+
+}  // namespace

@@ -1,0 +1,269 @@
+// The report, requirement checks, diff and cost through the real binary, and the example office's
+// report as a person sees it: rendered by headless Chromium to a PNG and a PDF.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int code;
+  std::string output;  // stdout + stderr
+};
+
+Outcome shell(const std::string& cmd) {
+  Outcome r{-1, ""};
+  FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
+  std::array<char, 4096> buf{};
+  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
+  const int status = pclose(pipe);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+Outcome luxgrid(const std::string& args) { return shell(std::string(LUXGRID_BINARY) + " " + args); }
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / "luxgrid_report_cli_test" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// An isotropic 1000 cd source 3 m above the centre of a black 4 x 4 m room's floor (no reflected
+// light, so the values are I h / d^3 by hand), 1 m grid: 16 points.
+std::string project(const std::string& requirements, double intensity_cd = 1000) {
+  return R"({
+  "format": "luxgrid-project/1", "name": "report test",
+  "photometry": { "iso": { "builtin": "isotropic", "intensity_cd": )" + std::to_string(intensity_cd) + R"( } },
+  "rooms": [ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3,
+               "reflectance": { "floor": 0, "walls": 0, "ceiling": 0 } } ],
+  "luminaires": [ { "photometry": "iso", "position": [2, 2, 3] } ],
+  "surfaces": [ { "name": "floor", "workplane": { "room": "r", "height": 0, "border": 0 }, "spacing": 1 )" +
+         requirements + R"( } ]
+})";
+}
+
+std::string quote(const fs::path& p) { return "'" + p.string() + "'"; }
+
+TEST(ReportCli, ReportIsWrittenByDefaultAndSkippedOnRequest) {
+  const fs::path dir = scratch("report");
+  write(dir / "p.json", project(""));
+  ASSERT_EQ(luxgrid("calc " + quote(dir / "p.json") + " -o " + quote(dir / "a")).code, 0);
+  EXPECT_TRUE(fs::exists(dir / "a" / "report.html"));
+  const Outcome r = luxgrid("calc " + quote(dir / "p.json") + " -o " + quote(dir / "b") + " --no-report");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "b" / "report.html"));
+  EXPECT_TRUE(fs::exists(dir / "b" / "floor.png"));
+}
+
+TEST(ReportCli, ScaleMustBeMinBelowMax) {
+  const fs::path dir = scratch("scale");
+  write(dir / "p.json", project(""));
+  const Outcome bad = luxgrid("calc " + quote(dir / "p.json") + " -o " + quote(dir / "o") + " --scale 500:100");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_EQ(bad.output, "luxgrid: error: --scale 500:100: MIN must be less than MAX\n");
+  EXPECT_FALSE(fs::exists(dir / "o"));
+  EXPECT_EQ(luxgrid("calc " + quote(dir / "p.json") + " -o " + quote(dir / "o") + " --scale 0:200").code, 0);
+}
+
+TEST(ReportCli, CheckExitsThreeWhenARequirementFails) {
+  // The floor's Emin is at a corner: d^2 = 1.5^2 * 2 + 9 = 13.5, E = 1000 * 3 / 13.5^1.5 = 60.47 lx;
+  // its Emax at the four centre points: d^2 = 0.5 + 9, E = 3000 / 9.5^1.5 = 102.45 lx.
+  const fs::path dir = scratch("check");
+  write(dir / "ok.json", project(R"(, "requirements": { "Emin": 60, "Emax": 103 })"));
+  write(dir / "fail.json", project(R"(, "requirements": { "Emin": 61 })"));
+  const Outcome ok = luxgrid("calc " + quote(dir / "ok.json") + " --check");
+  EXPECT_EQ(ok.code, 0) << ok.output;
+  const Outcome fail = luxgrid("calc " + quote(dir / "fail.json") + " --check");
+  EXPECT_EQ(fail.code, 3) << fail.output;
+  EXPECT_NE(fail.output.find("NOT MET"), std::string::npos) << fail.output;
+  // Without --check the same run succeeds, and results.json carries the verdict.
+  EXPECT_EQ(luxgrid("calc " + quote(dir / "fail.json")).code, 0);
+  const auto j = nlohmann::json::parse(read(dir / "fail.out" / "results.json"));
+  EXPECT_EQ(j["requirements_met"], false);
+  const auto& c = j["surfaces"][0]["requirements"][0];
+  EXPECT_EQ(c["quantity"], "Emin");
+  EXPECT_EQ(c["met"], false);
+  EXPECT_NEAR(c["margin"].get<double>(), 3000.0 / std::pow(13.5, 1.5) - 61.0, 1e-9);
+  EXPECT_NE(read(dir / "fail.out" / "report.html").find("not met"), std::string::npos);
+}
+
+TEST(ReportCli, UnknownRequirementIsBadInputNamingTheKey) {
+  const fs::path dir = scratch("unknown");
+  write(dir / "p.json", project(R"(, "requirements": { "Eavg": 500 })"));
+  const Outcome r = luxgrid("calc " + quote(dir / "p.json") + " --check");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.output,
+            "luxgrid: error: p.json /surfaces/0/requirements/Eavg: unknown quantity \"Eavg\", expected Em, U0, Emin or Emax\n");
+  EXPECT_FALSE(fs::exists(dir / "p.out"));
+}
+
+TEST(ReportCli, DiffComparesAndGatesOnTolerance) {
+  const fs::path dir = scratch("diff");
+  write(dir / "a.json", project(""));
+  write(dir / "b.json", project("", 1100));  // every point 10 % brighter
+  ASSERT_EQ(luxgrid("calc " + quote(dir / "a.json")).code, 0);
+  ASSERT_EQ(luxgrid("calc " + quote(dir / "b.json")).code, 0);
+  const Outcome same = luxgrid("diff " + quote(dir / "a.out") + " " + quote(dir / "a.out" / "results.json") + " --tol 0");
+  EXPECT_EQ(same.code, 0) << same.output;
+  EXPECT_NE(same.output.find("largest relative difference: 0.000 %"), std::string::npos) << same.output;
+  // b against a: 1100 / 1000 - 1 = 10 % everywhere.
+  const Outcome ten = luxgrid("diff " + quote(dir / "b.out") + " " + quote(dir / "a.out") + " --tol 0.05");
+  EXPECT_EQ(ten.code, 1) << ten.output;
+  EXPECT_NE(ten.output.find("largest relative difference: 10.000 %"), std::string::npos) << ten.output;
+  EXPECT_EQ(luxgrid("diff " + quote(dir / "b.out") + " " + quote(dir / "a.out") + " --tol 0.11").code, 0);
+}
+
+TEST(ReportCli, DiffOfDifferentSurfacesIsBadInput) {
+  const fs::path dir = scratch("diff_surfaces");
+  write(dir / "a.json", project(""));
+  std::string other = project("");
+  other.replace(other.find("\"name\": \"floor\""), std::string("\"name\": \"floor\"").size(), "\"name\": \"ground\"");
+  write(dir / "b.json", other);
+  ASSERT_EQ(luxgrid("calc " + quote(dir / "a.json")).code, 0);
+  ASSERT_EQ(luxgrid("calc " + quote(dir / "b.json")).code, 0);
+  const Outcome r = luxgrid("diff " + quote(dir / "a.out") + " " + quote(dir / "b.out"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("surface \"floor\""), std::string::npos) << r.output;
+}
+
+// `luxgrid cost` prints per surface "  <quality> <time> <Eavg> <Emin> <U0> <max>% <mean>%".
+struct CostRow {
+  double time_s, eavg, max_diff, mean_diff;
+};
+std::map<std::string, std::vector<CostRow>> parse_cost(const std::string& out) {
+  std::map<std::string, std::vector<CostRow>> rows;
+  const std::regex row(R"(^  (draft|standard|high|reference) +(\S+) +(\S+) +(\S+) +(\S+) +(\S+)% +(\S+)%$)");
+  std::istringstream in(out);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (std::regex_match(line, m, row)) {
+      rows[m[1]].push_back({std::stod(m[2]), std::stod(m[3]), std::stod(m[6]), std::stod(m[7])});
+    }
+  }
+  return rows;
+}
+
+TEST(ReportCli, CostOfTheExampleOffice) {
+  const Outcome r = luxgrid(std::string("cost ") + LUXGRID_SOURCE_DIR + "/examples/office/project.json");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const auto rows = parse_cost(r.output);
+  ASSERT_EQ(rows.size(), 4u) << r.output;
+  const size_t surfaces = rows.at("reference").size();
+  ASSERT_EQ(surfaces, 6u) << r.output;  // workplane, four walls, desk probes
+  for (const auto& [q, list] : rows) {
+    ASSERT_EQ(list.size(), surfaces) << q;
+    for (const auto& c : list) {
+      EXPECT_TRUE(std::isfinite(c.max_diff) && std::isfinite(c.mean_diff)) << q;
+      EXPECT_GT(c.time_s, 0.0) << q;
+      if (q == "reference") {
+        EXPECT_EQ(c.max_diff, 0.0);
+        EXPECT_EQ(c.mean_diff, 0.0);
+      }
+    }
+  }
+  // Each level's time is the same for all of its rows; the levels are ordered by cost. The cheap
+  // levels can take the same few milliseconds, so only the extremes are compared strictly.
+  EXPECT_LE(rows.at("draft")[0].time_s, rows.at("reference")[0].time_s);
+  EXPECT_LE(rows.at("standard")[0].time_s, rows.at("reference")[0].time_s);
+  EXPECT_LE(rows.at("high")[0].time_s, rows.at("reference")[0].time_s);
+  EXPECT_NE(r.output.find("what each level simulated"), std::string::npos);
+}
+
+// ------------------------------------------------------------------------------------------
+// The example office's report in headless Chromium (Debian package `chromium`).
+
+bool have_chromium() { return shell("command -v chromium").code == 0; }
+
+std::string chromium(const std::string& args) {
+  const Outcome mk = shell("mktemp -d");
+  std::string profile = mk.output;
+  while (!profile.empty() && (profile.back() == '\n' || profile.back() == '\r')) profile.pop_back();
+  // --enable-logging=stderr --v=0 prints the page's console messages as "CONSOLE(...)".
+  const Outcome r = shell("chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+                      "--disable-background-networking --disable-component-update --disable-sync "
+                      "--enable-logging=stderr --v=0 --user-data-dir=" + profile + " " + args);
+  shell("rm -rf '" + profile + "'");
+  return r.output;
+}
+
+TEST(ReportChromium, ExampleOfficeRendersWithEveryImageAndTheRightNumbers) {
+  if (!have_chromium()) {
+    if (std::getenv("CI")) FAIL() << "chromium is required in CI (apt-get install chromium)";
+    GTEST_SKIP() << "chromium not installed (apt-get install chromium)";
+  }
+  const fs::path dir = scratch("chromium");
+  const Outcome calc = luxgrid(std::string("calc ") + LUXGRID_SOURCE_DIR + "/examples/office/project.json -o " + quote(dir / "office"));
+  ASSERT_EQ(calc.code, 0) << calc.output;
+  const fs::path html = dir / "office" / "report.html";
+  const std::string url = "file://" + html.string();
+
+  const std::string shot_log = chromium("--window-size=1000,3000 --screenshot=" + quote(dir / "report.png") + " " + url);
+  const std::string pdf_log = chromium("--print-to-pdf=" + quote(dir / "report.pdf") + " " + url);
+  const std::string dom = chromium("--dump-dom " + url);
+  for (const std::string* log : {&shot_log, &pdf_log}) {
+    EXPECT_EQ(log->find("CONSOLE("), std::string::npos) << *log;
+    EXPECT_EQ(log->find("Failed to load resource"), std::string::npos) << *log;
+  }
+  ASSERT_TRUE(fs::exists(dir / "report.png")) << shot_log;
+  ASSERT_TRUE(fs::exists(dir / "report.pdf")) << pdf_log;
+  EXPECT_GT(fs::file_size(dir / "report.png"), 20000u);
+  EXPECT_EQ(read(dir / "report.pdf").rfind("%PDF", 0), 0u);
+  EXPECT_GT(fs::file_size(dir / "report.pdf"), 20000u);
+
+  // Every image is inline and decodes to a PNG: one per grid surface (5 of the office's 6).
+  const std::regex img(R"re(<img [^>]*src="([^"]*)")re");
+  size_t images = 0;
+  for (std::sregex_iterator it(dom.begin(), dom.end(), img), end; it != end; ++it) {
+    const std::string src = (*it)[1];
+    ASSERT_EQ(src.rfind("data:image/png;base64,iVBORw0KGgo", 0), 0u) << src.substr(0, 80);
+    ++images;
+  }
+  EXPECT_EQ(images, 5u);
+  EXPECT_NE(dom.find("<svg"), std::string::npos);  // plan view and polar diagram
+
+  // The statistics printed in the page equal those in results.json (to the printed digits).
+  const auto j = nlohmann::json::parse(read(dir / "office" / "results.json"));
+  const std::regex cell(R"re(data-surface="([^"]+)" data-stat="(\w+)">([0-9.]+))re");
+  size_t checked = 0;
+  for (std::sregex_iterator it(dom.begin(), dom.end(), cell), end; it != end; ++it) {
+    const std::string surface = (*it)[1], stat = (*it)[2];
+    const double printed = std::stod((*it)[3]);
+    bool found = false;
+    for (const auto& s : j["surfaces"]) {
+      if (s["name"] != surface) continue;
+      found = true;
+      const double half_digit = (stat == "U0" || stat == "Ud") ? 0.0005 : 0.05;
+      EXPECT_NEAR(printed, s["stats"][stat].get<double>(), half_digit * 1.0001) << surface << " " << stat;
+    }
+    EXPECT_TRUE(found) << surface;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 6u * 5u);  // six surfaces, five statistics each
+}
+
+}  // namespace

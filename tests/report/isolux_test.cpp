@@ -1,0 +1,120 @@
+// Marching squares against a field whose contours are known, and the report's building blocks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "report/colour_scale.h"
+#include "report/html_report.h"
+#include "report/isolux.h"
+#include "report/polar_diagram.h"
+#include "photometry/builtin.h"
+#include "util/error.h"
+
+namespace luxgrid::report {
+namespace {
+
+TEST(Isolux, LinearFieldGivesAStraightLineAtTheRightPlace) {
+  // E = 100 * i on a 5 x 4 grid: the 250 lx contour is the vertical line x = 2.5.
+  const int nu = 5, nv = 4;
+  std::vector<double> E;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) E.push_back(100.0 * i);
+  const auto s = isolux_segments(E, nu, nv, 250.0);
+  ASSERT_EQ(s.size(), 3u);  // one per row of squares
+  for (const auto& g : s) {
+    EXPECT_DOUBLE_EQ(g.x0, 2.5);
+    EXPECT_DOUBLE_EQ(g.x1, 2.5);
+    EXPECT_DOUBLE_EQ(std::abs(g.y1 - g.y0), 1.0);
+  }
+}
+
+TEST(Isolux, CircleRadiusIsRecovered) {
+  // E = r (distance from the centre): every segment end lies on the circle r = 5 to within the
+  // linear interpolation error of a chord (< 0.05 grid units at r = 5).
+  const int n = 21;
+  std::vector<double> E;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) E.push_back(std::hypot(i - 10.0, j - 10.0));
+  const auto s = isolux_segments(E, n, n, 5.0);
+  ASSERT_GT(s.size(), 20u);
+  for (const auto& g : s) {
+    EXPECT_NEAR(std::hypot(g.x0 - 10, g.y0 - 10), 5.0, 0.05);
+    EXPECT_NEAR(std::hypot(g.x1 - 10, g.y1 - 10), 5.0, 0.05);
+  }
+}
+
+TEST(Isolux, InactivePointsAndFlatFieldsGiveNothing) {
+  std::vector<double> E(16, 300.0);
+  EXPECT_TRUE(isolux_segments(E, 4, 4, 250.0).empty());
+  E[0] = 100.0;
+  std::vector<bool> active(16, true);
+  active[0] = false;
+  EXPECT_TRUE(isolux_segments(E, 4, 4, 250.0, active).empty());
+  EXPECT_FALSE(isolux_segments(E, 4, 4, 250.0).empty());
+}
+
+TEST(Isolux, LevelsAreTicksInsideTheData) {
+  const auto scale = fixed_scale(0, 1000);  // ticks every 200
+  EXPECT_EQ(isolux_levels(scale, 150, 700), (std::vector<double>{200, 400, 600}));
+}
+
+TEST(Scale, ParsesAndRejects) {
+  const auto s = parse_scale("0:1000");
+  EXPECT_EQ(s.min, 0.0);
+  EXPECT_EQ(s.max, 1000.0);
+  EXPECT_EQ(s.ticks.back(), 1000.0);
+  try {
+    parse_scale("500:100");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "--scale 500:100: MIN must be less than MAX");
+  }
+  EXPECT_THROW(parse_scale("100:100"), InputError);
+  EXPECT_THROW(parse_scale("100"), InputError);
+  EXPECT_THROW(parse_scale("a:100"), InputError);
+  EXPECT_THROW(parse_scale("-5:100"), InputError);
+}
+
+TEST(Html, Base64MatchesRfc4648Vectors) {
+  EXPECT_EQ(base64(""), "");
+  EXPECT_EQ(base64("f"), "Zg==");
+  EXPECT_EQ(base64("fo"), "Zm8=");
+  EXPECT_EQ(base64("foo"), "Zm9v");
+  EXPECT_EQ(base64("foobar"), "Zm9vYmFy");
+  EXPECT_EQ(html_escape("<a&\"b\">"), "&lt;a&amp;&quot;b&quot;&gt;");
+}
+
+TEST(Html, ReportIsSelfContainedAndPrintsTheStatistics) {
+  calc::Results r;
+  r.project = "demo <1>";
+  r.plan.direct = "far-field";
+  calc::SurfaceResult s;
+  s.grid = geometry::make_plane_grid("wp", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2.0, 1.0, 1.0);
+  s.E = {400.0, 600.0};
+  s.stats = calc::compute_statistics(s.E);
+  r.surfaces.push_back(s);
+  ReportInput in;
+  in.results = &r;
+  in.version = "0.1.0";
+  in.png["wp"] = "PNGDATA";
+  const std::string h = html_report(in);
+  EXPECT_NE(h.find("demo &lt;1&gt;"), std::string::npos);
+  EXPECT_NE(h.find("data-stat=\"Eavg\">500.0 lx<"), std::string::npos);
+  EXPECT_NE(h.find("data-stat=\"U0\">0.800<"), std::string::npos);
+  EXPECT_NE(h.find("src=\"data:image/png;base64," + base64("PNGDATA") + "\""), std::string::npos);
+  EXPECT_EQ(h.find("<script"), std::string::npos);
+  EXPECT_EQ(h.find("http://"), h.find("http://www.w3.org/2000/svg"));  // no external resource
+  EXPECT_NE(h.find("@page { size: A4"), std::string::npos);
+  EXPECT_NE(h.find("<td>400</td><td>600</td>"), std::string::npos);  // the value table
+}
+
+TEST(Polar, LambertianReachesTheOuterRingAtNadir) {
+  const photometry::LambertianDistribution d(800.0);
+  const std::string svg = polar_diagram_svg(d, 220);
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.find(">1000</text>"), std::string::npos);  // outer ring: nice_ceil(800)
+  EXPECT_NE(svg.find("C90-C270"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace luxgrid::report

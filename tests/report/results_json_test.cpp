@@ -1,0 +1,61 @@
+// results.json follows docs/project-format.md, key by key.
+#include <gtest/gtest.h>
+
+#include "report/colour_scale.h"
+#include "report/results_json.h"
+
+namespace luxgrid::report {
+namespace {
+
+calc::Results sample() {
+  calc::Results r;
+  r.project = "demo";
+  r.plan.direct = "far-field";
+  r.plan.indirect = "none";
+  r.plan.visibility = "off";
+  r.plan.notes = {"n1"};
+  calc::SurfaceResult s;
+  s.grid = geometry::make_plane_grid("wp", {0, 0, 0.8}, {1, 0, 0}, {0, 1, 0}, 2.0, 1.0, 0.5);
+  s.E_direct.assign(s.grid.points.size(), 100.0);
+  s.E_indirect.assign(s.grid.points.size(), 20.0);
+  s.E.assign(s.grid.points.size(), 96.0);
+  s.stats = calc::compute_statistics(s.E);
+  r.surfaces.push_back(s);
+  r.timing_s = {{"load", 0.01}, {"direct", 0.02}};
+  return r;
+}
+
+TEST(ResultsJson, HasTheDocumentedShape) {
+  const auto j = results_to_json(sample());
+  EXPECT_EQ(j["format"], "luxgrid-results/1");
+  EXPECT_EQ(j["project"], "demo");
+  for (const char* k : {"direct", "indirect", "visibility", "notes"}) EXPECT_TRUE(j["plan"].contains(k)) << k;
+  const auto& s = j["surfaces"][0];
+  EXPECT_EQ(s["name"], "wp");
+  EXPECT_EQ(s["kind"], "grid");
+  EXPECT_EQ(s["size"], nlohmann::json::array({4, 2}));
+  ASSERT_EQ(s["points"].size(), 8u);
+  // Row-major along u first: the second point is one cell further along u.
+  EXPECT_EQ(s["points"][0], nlohmann::json::array({0.25, 0.25, 0.8}));
+  EXPECT_EQ(s["points"][1], nlohmann::json::array({0.75, 0.25, 0.8}));
+  EXPECT_EQ(s["normals"][0], nlohmann::json::array({0.0, 0.0, 1.0}));
+  for (const char* k : {"E", "E_direct", "E_indirect"}) EXPECT_EQ(s[k].size(), 8u) << k;
+  for (const char* k : {"Emin", "Eavg", "Emax", "U0", "Ud"}) EXPECT_TRUE(s["stats"].contains(k)) << k;
+  EXPECT_DOUBLE_EQ(s["stats"]["U0"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(j["timing_s"]["direct"].get<double>(), 0.02);
+}
+
+TEST(ColourScale, NiceValues) {
+  EXPECT_DOUBLE_EQ(nice_ceil(480.0), 500.0);
+  EXPECT_DOUBLE_EQ(nice_ceil(500.0), 500.0);
+  EXPECT_DOUBLE_EQ(nice_ceil(501.0), 1000.0);
+  EXPECT_DOUBLE_EQ(nice_ceil(0.013), 0.02);
+  EXPECT_DOUBLE_EQ(nice_ceil(210.0), 250.0);
+  const auto s = auto_scale(480.0);
+  ASSERT_FALSE(s.ticks.empty());
+  EXPECT_DOUBLE_EQ(s.ticks.front(), 0.0);
+  EXPECT_DOUBLE_EQ(s.ticks.back(), 500.0);
+}
+
+}  // namespace
+}  // namespace luxgrid::report
