@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -13,6 +14,19 @@ namespace {
 // A receiver closer than this to a point source gets no light from it rather than an infinite
 // value: 1 um is far below any grid spacing, and keeps I/d^2 finite.
 constexpr double kMinDistanceSquared = 1e-12;  // m^2
+
+// The scene's AABB tree seen through the near-field models' occlusion interface, so area
+// emitters cast soft shadows (visibility per quadrature node; calc/nearfield/occluder.h).
+class SceneOccluder final : public nearfield::Occluder {
+ public:
+  explicit SceneOccluder(const Visibility& v) : v_(v) {}
+  bool visible(const Vec3& emitter_point, const Vec3& receiver) const override {
+    return v_.visible(emitter_point, receiver);
+  }
+
+ private:
+  const Visibility& v_;
+};
 }  // namespace
 
 double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3& normal) {
@@ -59,18 +73,25 @@ std::vector<double> direct_illuminance(const Plan& plan, const std::vector<nearf
   const bool automatic = plan.near_switch == nearfield::NearFieldSwitch::automatic;
   const bool cylindrical = grid.quantity == geometry::Quantity::cylindrical;
   const Visibility* visibility = plan.visibility_test.get();
+  // nullptr when nothing can occlude: the near-field models then skip every test.
+  std::optional<SceneOccluder> scene_occluder;
+  if (visibility) scene_occluder.emplace(*visibility);
+  const nearfield::Occluder* occluder = scene_occluder ? &*scene_occluder : nullptr;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, total, 16), [&](const auto& range) {
     DirectCounts local;
     for (size_t i = range.begin(); i != range.end(); ++i) {
       if (!grid.active.empty() && !grid.active[i]) continue;
       double sum = 0.0;
       for (const auto& emitter : emitters) {
-        if (visibility && !visibility->visible(emitter.centroid, grid.points[i])) continue;
         if (cylindrical) {
+          // Far-field only: the one segment from the opening's centre (hard shadow).
+          if (visibility && !visibility->visible(emitter.centroid, grid.points[i])) continue;
           sum += far_field_cylindrical(emitter, grid.points[i]);
         } else {
+          // Soft shadows: the near-field models test visibility per node, the far field from
+          // the opening's centre.
           sum += nearfield::hybrid_illuminance(emitter, grid.points[i], grid.normals[i],
-                                               plan.near_model, plan.near_switch);
+                                               plan.near_model, plan.near_switch, occluder);
         }
         if (!counts) continue;
         if (emitter.is_point()) {

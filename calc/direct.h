@@ -24,8 +24,9 @@ double far_field_cylindrical(const nearfield::Emitter& emitter, const Vec3& poin
 std::vector<nearfield::Emitter> make_emitters(const Scene& scene);
 
 // E_direct per point of `grid` (same order as grid.points): for each luminaire the plan's model
-// (far field, near field, or the five-times-rule blend of both), times the plan's visibility
-// test between the opening's centre and the point; inactive points get 0. `progress` may be
+// (far field, near field, or the five-times-rule blend of both) with the plan's visibility test
+// (when it has one): per quadrature node for the near-field models (soft shadows), from the
+// opening's centre for the far field and cylindrical illuminance; inactive points get 0. `progress` may be
 // empty; it is called from worker threads. `counts`, when given, is increased by the pairs each
 // model served.
 std::vector<double> direct_illuminance(const Plan& plan, const std::vector<nearfield::Emitter>& emitters,

@@ -65,8 +65,8 @@ Plan make_plan(const Scene& scene) {
   plan.visibility_test = make_visibility(scene, reason);
   plan.visibility = reason;
   if (plan.visibility_test) {
-    plan.visibility += "; area luminaires are tested from the centre of their opening (hard "
-                       "shadows; soft shadows of area emitters are not computed yet)";
+    plan.visibility += "; near-field pairs test visibility per quadrature node (soft shadows of "
+                       "area luminaires), far-field pairs from the centre of the opening";
   }
   for (const auto& s : scene.surfaces) {
     if (s.quantity == geometry::Quantity::cylindrical) {

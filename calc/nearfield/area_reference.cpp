@@ -27,13 +27,21 @@ struct Integrand {
   const Emitter* e;
   Vec3 normal;
   double inv_area;
+  const Occluder* occluder = nullptr;  // per-sample visibility (occluder.h)
+  Vec3 receiver{0.0};                  // unshifted receiver, world: segment end
+  Vec3 origin{0.0};                    // shifted receiver, world: origin of `r`
   double operator()(const Vec3& r) const {
     const double d2 = glm::dot(r, r);
     if (!(d2 > 0.0)) return 0.0;
     const Vec3 w = r / std::sqrt(d2);
     const double cos_r = glm::dot(w, normal);
     if (!(cos_r > 0.0)) return 0.0;
-    return e->intensity_towards(-w) * cos_r / d2 * inv_area;
+    const double value = e->intensity_towards(-w) * cos_r / d2 * inv_area;
+    if (occluder && value != 0.0) {
+      const Vec3 p = origin + r;
+      if (!occluder->visible(p + kOccluderInsetRelative * (e->centroid - p), receiver)) return 0.0;
+    }
+    return value;
   }
 };
 
@@ -74,10 +82,12 @@ class Cubature {
 }  // namespace
 
 ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                                      double rel_tol, std::int64_t max_evaluations) {
+                                      double rel_tol, std::int64_t max_evaluations,
+                                      const Occluder* occluder) {
   ReferenceResult result;
   if (e.is_point()) {
-    result.illuminance_lx = far_field_illuminance(e, point, normal);
+    if (!occluder || occluder->visible(e.centroid, point))
+      result.illuminance_lx = far_field_illuminance(e, point, normal);
     result.converged = true;
     return result;
   }
@@ -86,7 +96,7 @@ ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const
     result.converged = true;
     return result;
   }
-  const Integrand f{&e, normal, 1.0 / e.area_m2};
+  const Integrand f{&e, normal, 1.0 / e.area_m2, occluder, point, fan.receiver};
   Cubature cubature(f);
   std::priority_queue<Tri> queue;
   double value = 0.0, error = 0.0;

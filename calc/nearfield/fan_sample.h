@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "calc/nearfield/occluder.h"
 #include "calc/nearfield/receiver_fan.h"
 
 namespace luxgrid::nearfield {
@@ -19,6 +20,8 @@ struct FanSample {
   double cos_e = 0.0;  // |s| / d, cosine at the emitter
   double rho = 0.0;  // G / d^3 (1/m^3): the area-form weight cos_r cos_e / d^2 divided by the
                      // plane distance s, which is the same for every point of the polygon
+  double vis = 1.0;  // 1 when the node sees the receiver (or no occluder), else 0; I and L
+                     // already include it
 };
 
 struct SampleContext {
@@ -29,11 +32,26 @@ struct SampleContext {
   Vec3 emitter_normal{0.0};        // n_A, world
   double side = 1.0;               // +1 on the emitting side, -1 behind
   double inv_area = 0.0;           // 1 / A, 1/m^2
+  const Occluder* occluder = nullptr;  // optional, per-node visibility (occluder.h)
+  Vec3 receiver{0.0};              // the receiver as given (unshifted), world: segment end
+  Vec3 shifted_receiver{0.0};      // origin of the relative coordinates `r`, world
+  Vec3 origin_to_centroid{0.0};    // emitter centroid relative to shifted_receiver
 
-  SampleContext(const Emitter& e, const ReceiverFan& fan)
+  // `point` is the receiver as the caller gave it (before the horizon shift): the visibility
+  // segments end there.
+  SampleContext(const Emitter& e, const ReceiverFan& fan, const Occluder* occ = nullptr,
+                const Vec3& point = Vec3(0.0))
       : emitter(&e), normal(fan.normal), inv_area_distance(1.0 / (e.area_m2 * fan.plane_distance)),
         plane_distance(fan.plane_distance), emitter_normal(e.normal), side(fan.front ? 1.0 : -1.0),
-        inv_area(1.0 / e.area_m2) {}
+        inv_area(1.0 / e.area_m2), occluder(occ), receiver(point), shifted_receiver(fan.receiver),
+        origin_to_centroid(e.centroid - fan.receiver) {}
+
+  // Visibility of the emitter point at `r` (relative to the shifted receiver), tested from a
+  // point inset towards the centroid by kOccluderInsetRelative (occluder.h).
+  bool node_visible(const Vec3& r) const {
+    const Vec3 inset = r + kOccluderInsetRelative * (origin_to_centroid - r);
+    return occluder->visible(shifted_receiver + inset, receiver);
+  }
 
   // `r` is the emitter point relative to the shifted receiver. Every point of the emitter plane
   // is at plane distance |s| from the receiver, so cos_e = |s| / d exactly and
@@ -49,6 +67,11 @@ struct SampleContext {
     out.L = out.I * d * inv_area_distance;
     out.cos_e = plane_distance / d;
     out.rho = out.G / (d * d * d);
+    if (occluder && out.I != 0.0 && !node_visible(r)) {
+      out.vis = 0.0;
+      out.I = 0.0;
+      out.L = 0.0;
+    }
     return out;
   }
 };

@@ -33,24 +33,45 @@ std::string to_string(const Model& m) {
   return "?";
 }
 
-double illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, const Model& m) {
+namespace {
+
+// Hard shadow: the one segment from the opening's centroid (far field, study baselines).
+bool centroid_visible(const Emitter& e, const Vec3& point, const Occluder* occ) {
+  return !occ || occ->visible(e.centroid, point);
+}
+
+}  // namespace
+
+double illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, const Model& m,
+                   const Occluder* occ) {
+  // A point opening has no nodes: every model falls back to the far field, so the centroid test.
+  if (occ && e.is_point()) return centroid_visible(e, point, occ) ? far_field_illuminance(e, point, normal) : 0.0;
   switch (m.kind) {
-    case ModelKind::far_field: return far_field_illuminance(e, point, normal);
-    case ModelKind::paper_cubature: return paper_cubature_illuminance(e, point, normal);
+    case ModelKind::far_field:
+      return centroid_visible(e, point, occ) ? far_field_illuminance(e, point, normal) : 0.0;
+    case ModelKind::paper_cubature: return paper_cubature_illuminance(e, point, normal, occ);
     case ModelKind::subdivided:
-      return subdivided_illuminance(e, point, normal, 1 << std::clamp(m.level, 0, 10), TriangleRule::paper);
+      return subdivided_illuminance(e, point, normal, 1 << std::clamp(m.level, 0, 10), TriangleRule::paper, occ);
     case ModelKind::lambert_subdivided:
       return subdivided_illuminance(e, point, normal, 1 << std::clamp(m.level, 0, 10),
-                                    TriangleRule::lambert_product);
+                                    TriangleRule::lambert_product, occ);
     case ModelKind::adaptive:
-      return adaptive_illuminance(e, point, normal, m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol);
-    case ModelKind::standard: return standard_illuminance(e, point, normal);
+      return adaptive_illuminance(e, point, normal, m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol,
+                                  nullptr, occ);
+    case ModelKind::standard: return standard_illuminance(e, point, normal, occ);
     case ModelKind::reference:
-      return reference_illuminance(e, point, normal, m.tolerance > 0 ? m.tolerance : kDefaultReferenceRelTol)
+      return reference_illuminance(e, point, normal, m.tolerance > 0 ? m.tolerance : kDefaultReferenceRelTol,
+                                   4'000'000, occ)
           .illuminance_lx;
+    default:
+      if (!centroid_visible(e, point, occ)) return 0.0;
+      break;
+  }
+  switch (m.kind) {
     case ModelKind::structured_sampling: return structured_sampling_illuminance(e, point, normal);
     case ModelKind::most_representative_point: return mrp_illuminance(e, point, normal);
     case ModelKind::monte_carlo: return monte_carlo_illuminance(e, point, normal, std::max(1, m.level), m.seed);
+    default: break;
   }
   return 0.0;
 }
@@ -65,14 +86,15 @@ double far_field_weight(const Emitter& e, const Vec3& point) {
 }
 
 double hybrid_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                          const Model& near_model, NearFieldSwitch mode) {
-  if (mode == NearFieldSwitch::never) return far_field_illuminance(e, point, normal);
-  if (mode == NearFieldSwitch::always) return illuminance(e, point, normal, near_model);
+                          const Model& near_model, NearFieldSwitch mode, const Occluder* occ) {
+  const Model far = Model::far_field();
+  if (mode == NearFieldSwitch::never) return illuminance(e, point, normal, far, occ);
+  if (mode == NearFieldSwitch::always) return illuminance(e, point, normal, near_model, occ);
   const double w = far_field_weight(e, point);
-  if (w >= 1.0) return far_field_illuminance(e, point, normal);
-  const double near = illuminance(e, point, normal, near_model);
+  if (w >= 1.0) return illuminance(e, point, normal, far, occ);
+  const double near = illuminance(e, point, normal, near_model, occ);
   if (w <= 0.0) return near;
-  return (1.0 - w) * near + w * far_field_illuminance(e, point, normal);
+  return (1.0 - w) * near + w * illuminance(e, point, normal, far, occ);
 }
 
 }  // namespace luxgrid::nearfield

@@ -1,10 +1,12 @@
 #pragma once
 // The one entry point the rest of luxgrid calls for direct light from one luminaire at one
-// receiver point (no visibility: calc/direct multiplies by it), and the five-times-rule switch.
+// receiver point, optionally with occlusion (occluder.h: per quadrature node, soft shadows), and
+// the five-times-rule switch.
 #include <cstdint>
 #include <string>
 
 #include "calc/nearfield/emitter.h"
+#include "calc/nearfield/occluder.h"
 
 namespace luxgrid::nearfield {
 
@@ -47,8 +49,11 @@ std::string to_string(const Model& model);
 // Illuminance (lx) at `point` with unit `normal` from the emitter, by `model`. Always finite and
 // >= 0. Light reaches the receiver only from above its horizon; the opening emits from both
 // faces with L = I / (A |cos|), so upward intensity reaches receivers behind the opening.
+// `occluder` (optional): the paper cubature, subdivided, adaptive, standard and reference models
+// test visibility per node / sample (soft shadows); the far field and the study baselines test
+// the one segment from the opening's centroid (hard shadows). nullptr costs nothing.
 double illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal,
-                   const Model& model);
+                   const Model& model, const Occluder* occluder = nullptr);
 
 // Five-times rule with a blend band, so the near/far switch draws no seam on an isolux plot:
 // weight of the far-field model, 0 below kBlendStart x D, 1 beyond kBlendEnd x D (D = largest
@@ -64,7 +69,9 @@ enum class NearFieldSwitch { automatic, always, never };
 // What calc/direct calls: `near_model` is the quality's rung (Model::standard() for standard).
 // With automatic, the far field alone is evaluated beyond the band, the near model alone inside
 // it, both within it (weights from far_field_weight).
+// `occluder` as in illuminance(): the far-field part uses the centroid segment.
 double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal,
-                          const Model& near_model, NearFieldSwitch mode = NearFieldSwitch::automatic);
+                          const Model& near_model, NearFieldSwitch mode = NearFieldSwitch::automatic,
+                          const Occluder* occluder = nullptr);
 
 }  // namespace luxgrid::nearfield

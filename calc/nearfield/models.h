@@ -2,9 +2,12 @@
 // The emitter models of the near-field ladder, each a plain function of (emitter, receiver point,
 // receiver unit normal) -> illuminance in lux. Most callers use illuminance() in
 // calc/nearfield/illuminance.h instead; these are public for tests, benchmarks and the study.
+// `occluder` (optional, occluder.h) multiplies each quadrature node's radiance by its
+// visibility; nullptr (the default) is free.
 #include <cstdint>
 
 #include "calc/nearfield/emitter.h"
+#include "calc/nearfield/occluder.h"
 
 namespace luxgrid::nearfield {
 
@@ -15,8 +18,10 @@ double far_field_illuminance(const Emitter& e, const Vec3& point, const Vec3& no
 //   E = sum over fan triangles of mean(L) * mean(G) * |triangle|  (Van Oosterom-Strackee).
 // `shift_m` is the horizon epsilon shift; pass horizon_shift_m(e) (the default below) — other
 // values exist for the hard-case tests. Not sanitized: returns NaN where the method breaks.
-double paper_cubature_raw(const Emitter& e, const Vec3& point, const Vec3& normal, double shift_m);
-double paper_cubature_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal);
+double paper_cubature_raw(const Emitter& e, const Vec3& point, const Vec3& normal, double shift_m,
+                          const Occluder* occluder = nullptr);
+double paper_cubature_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
+                                  const Occluder* occluder = nullptr);
 
 // How one (sub)triangle of the fan is integrated.
 enum class TriangleRule {
@@ -32,20 +37,25 @@ enum class TriangleRule {
 // Every fan triangle split into n x n similar triangles in the emitter plane (n = 2^k gives the
 // issue's "subdivided k times", 4^k triangles), each integrated by `rule`.
 double subdivided_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, int n,
-                              TriangleRule rule);
+                              TriangleRule rule, const Occluder* occluder = nullptr);
 
 // Adaptive rung (two-kernel rule unless given): globally adaptive, the triangle whose estimate
 // differs most from the sum of its four children's (edge-midpoint split) is split first, until
 // the summed differences are below rel_tol * E or a budget (20000 lookups) is spent. Returns
-// the children's sums; `error_lx` (optional) receives the summed |differences|.
+// the children's sums; `error_lx` (optional) receives the summed |differences|. With an
+// occluder, a cell whose six nodes (corners and edge midpoints) disagree on visibility carries
+// at least half its value as error indicator, so the shadow edge is refined until it converges.
 double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                            double rel_tol, double* error_lx = nullptr);
+                            double rel_tol, double* error_lx = nullptr,
+                            const Occluder* occluder = nullptr);
 // The same with a chosen rule; `samples` (optional) receives the number of intensity lookups.
 double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                            double rel_tol, TriangleRule rule, double* error_lx, int* samples);
+                            double rel_tol, TriangleRule rule, double* error_lx, int* samples,
+                            const Occluder* occluder = nullptr);
 
 // quality "standard": see docs/nearfield.md. Within 1 % of the reference on the paper's protocol.
-double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal);
+double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
+                            const Occluder* occluder = nullptr);
 
 // Exact illuminance from a uniform (Lambertian) emitter of luminance `luminance_cd_m2`:
 // Lambert's polygon formula E = L/2 |n . sum_edges theta g| on the horizon-clipped polygon.
@@ -65,8 +75,11 @@ struct ReferenceResult {
 // triangles (degree-5 7-point rule, 4-way splits of the triangle with the largest error first)
 // until the error estimate is below rel_tol * E. Same horizon shift as the other models, so all
 // models integrate the same regularised problem. Independent of the solid-angle machinery.
+// With an occluder, each sample's integrand is multiplied by its visibility (the 7-point rule's
+// error estimate sees the discontinuity and refines along the shadow edge).
 ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                                      double rel_tol = 1e-7, std::int64_t max_evaluations = 4'000'000);
+                                      double rel_tol = 1e-7, std::int64_t max_evaluations = 4'000'000,
+                                      const Occluder* occluder = nullptr);
 
 // Study-only baselines (Sec. 4 of the paper) ------------------------------------------------
 // Structured sampling (Eq. 4): corners of the clipped polygon + its centre, Omega/N sum L G.

@@ -5,11 +5,12 @@
 
 namespace luxgrid::nearfield {
 
-double paper_cubature_raw(const Emitter& e, const Vec3& point, const Vec3& normal, double shift_m) {
+double paper_cubature_raw(const Emitter& e, const Vec3& point, const Vec3& normal, double shift_m,
+                          const Occluder* occluder) {
   if (e.is_point()) return far_field_illuminance(e, point, normal);
   const ReceiverFan fan = build_fan(e, point, normal, shift_m);
   if (fan.triangles == 0) return 0.0;
-  const SampleContext sample(e, fan);
+  const SampleContext sample(e, fan, occluder, point);
   const FanSample apex = sample(fan.apex);
   // The inside case's rim is closed (rim[m] == rim[0]); sample each point once.
   const bool closed = fan.cp_case == ClosestPointCase::inside;
@@ -26,8 +27,9 @@ double paper_cubature_raw(const Emitter& e, const Vec3& point, const Vec3& norma
   return sum;
 }
 
-double paper_cubature_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal) {
-  return sanitize_illuminance(paper_cubature_raw(e, point, normal, horizon_shift_m(e)));
+double paper_cubature_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
+                                  const Occluder* occluder) {
+  return sanitize_illuminance(paper_cubature_raw(e, point, normal, horizon_shift_m(e), occluder));
 }
 
 }  // namespace luxgrid::nearfield

@@ -1,5 +1,6 @@
 #include "calc/nearfield/receiver_fan.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -11,13 +12,29 @@ SmallPolygon clip_to_horizon(const Emitter& e, const Vec3& point, const Vec3& no
   if (n < 3) return out;
   std::array<Vec3, kMaxPolygonVertices> rel;
   std::array<double, kMaxPolygonVertices> h;
+  double reach = 0.0;
   for (int i = 0; i < n; ++i) {
     rel[i] = e.vertices[i] - point;
     h[i] = glm::dot(rel[i], normal);
+    reach = std::max(reach, glm::length(rel[i]));
+  }
+  // Heights within rounding of the plane count as on it. Why: for a polygon lying in the horizon
+  // plane the computed heights are +-rounding with arbitrary signs, and every sign change would
+  // add a crossing vertex -- up to 2n of them, past the fixed capacity. A height below a few ulps
+  // of the polygon's reach carries no geometric information, so snapping it loses nothing.
+  const double on_plane = 64.0 * std::numeric_limits<double>::epsilon() * reach;
+  for (int i = 0; i < n; ++i) {
+    if (std::abs(h[i]) <= on_plane) {
+      rel[i] -= h[i] * normal;
+      h[i] = 0.0;
+    }
   }
   for (int i = 0; i < n; ++i) {
     const int j = (i + 1) % n;
     const bool in_i = h[i] >= 0.0;
+    // A convex polygon clipped by a plane has at most n + 1 vertices; the guard only keeps a
+    // non-convex input (never produced by make_emitter) from writing past the array.
+    if (out.n + 2 > kMaxPolygonVertices) break;
     if (in_i) out.v[out.n++] = rel[i];
     if ((h[i] > 0.0 && h[j] < 0.0) || (h[i] < 0.0 && h[j] > 0.0)) {
       // Crossing strictly between the two vertices (a vertex on the plane is kept by itself,

@@ -84,11 +84,11 @@ TEST(Visibility, OffForAConvexEmptyRoomWithTheLuminaireInside) {
 }
 
 TEST(Visibility, Cie171Case57ShadowEdgesMatchTheDerivation) {
-  // cases/pending/cie171_5_7_obstruction: S2 is the wall y = 4; from the floor point (2, 0.5, 0) the
+  // cases/cie171_5_7_obstruction: S2 is the wall y = 4; from the floor point (2, 0.5, 0) the
   // README's z_min = (4 - 0.5) / (1.9 - 0.5) = 2.5 m; from the wall point (2, 0, 0.5)
   // z_min = 0.5 + 0.5 * 4 / 1.9 = 1.5526 m. The AABB tree must agree on both sides of each edge.
   const Scene scene = load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) /
-                                   "cases/pending/cie171_5_7_obstruction/project.json");
+                                   "cases/cie171_5_7_obstruction/project.json");
   std::string reason;
   const auto vis = make_visibility(scene, reason);
   ASSERT_TRUE(vis);
@@ -132,7 +132,10 @@ TEST(Visibility, LShapeExampleLoads) {
   const auto& wp = scene.surfaces[0];
   EXPECT_EQ(wp.nu, 35);  // inset L spans 0.5..7.5: 7 m / 0.2 m
   EXPECT_EQ(wp.points_outside, 400u);  // the inset's missing 4 x 4 m quadrant: 20 x 20 cells
-  EXPECT_EQ(wp.points_in_obstacles, 22u);  // column 0.4 x 0.4 m: 2 x 2; the turned cabinet: 18
+  // Centres 0.5 + (i + 0.5) * 0.2 strictly inside a footprint, counted apart with the same
+  // arithmetic: the column gives 2 (its faces lie on rows of centres, so rounding decides), the
+  // cabinet (1.6 x 0.5 m about (2, 3.75), turned 20 degrees) 19.
+  EXPECT_EQ(wp.points_in_obstacles, 21u);
 }
 
 }  // namespace

@@ -1,0 +1,148 @@
+// Soft shadows in the near-field models (issue 6, item 3; calc/nearfield/occluder.h): a 1 x 1
+// Lambertian emitter 1 m above the receiver, partly hidden by an opaque half-plane screen
+// {z = kScreenZ, x >= kScreenEdgeX} between them. A ray from the receiver R to the emitter point
+// P passes the screen at x = R.x + kScreenZ (P.x - R.x) / h, so the part of the emitter that R sees
+// is exactly the strip P.x < x_c = R.x + (kScreenEdgeX - R.x) h / kScreenZ: the value to match
+// is Lambert's exact formula on that clipped rectangle with the emitter's luminance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "calc/nearfield/illuminance.h"
+#include "calc/nearfield/models.h"
+#include "nearfield_test_support.h"
+
+namespace luxgrid::nearfield {
+namespace {
+
+using namespace testing;
+
+constexpr double kHeight = 1.0;       // emitter plane, m
+constexpr double kScreenZ = 0.5;      // screen plane, m
+constexpr double kScreenEdgeX = 0.1;  // the screen covers x >= this, m
+
+class HalfPlaneScreen final : public Occluder {
+ public:
+  bool visible(const Vec3& p, const Vec3& r) const override {
+    const double t = (kScreenZ - r.z) / (p.z - r.z);
+    if (!(t > 0.0 && t < 1.0)) return true;
+    return r.x + t * (p.x - r.x) < kScreenEdgeX;
+  }
+};
+
+class Everything final : public Occluder {
+ public:
+  bool visible(const Vec3&, const Vec3&) const override { return false; }
+};
+
+class Nothing final : public Occluder {
+ public:
+  bool visible(const Vec3&, const Vec3&) const override { return true; }
+};
+
+constexpr double kI0 = 1000.0;  // cd; L = I0 / A = 1000 cd/m^2 for the 1 x 1 emitter
+
+Emitter panel() { return paper_emitter(kHeight, kPi, lambertian(kI0)); }
+
+// Exact: Lambert on the visible strip x in [-0.5, min(x_c, 0.5)] of the panel.
+double exact_visible(const Vec3& r) {
+  const double xc = std::min(0.5, r.x + (kScreenEdgeX - r.x) * (kHeight - r.z) / (kScreenZ - r.z));
+  if (xc <= -0.5) return 0.0;
+  const Emitter strip = make_polygon_emitter(
+      {{xc, 0.5, kHeight}, {-0.5, 0.5, kHeight}, {-0.5, -0.5, kHeight}, {xc, -0.5, kHeight}},
+      rotation_about_y(0.0), lambertian(kI0));
+  return lambert_uniform_illuminance(strip, r, kUp, kI0 / 1.0);
+}
+
+// The near-field tolerance: `standard` is held to 1 % of the reference (issue 5, item 2), plus,
+// in a shadow, 5e-4 of the unshadowed value: the adaptive rung stops at 2e-4 of it
+// (kPenumbraAbsoluteFraction in ladder.cpp) rather than chase a sliver of the emitter to its
+// budget; 5e-4 allows for its error estimate being an estimate. The reference at rel_tol 1e-5 to
+// 0.1 % here (the shadow edge cuts its 7-point cells, so its own estimate is looser than on
+// smooth integrands; it can miss a sliver narrower than its cells entirely, so it is tested only
+// where a good part of the emitter is seen).
+constexpr double kStandardTol = 0.01;
+constexpr double kPenumbraAbsTol = 5e-4;
+constexpr double kReferenceTol = 1e-3;
+
+TEST(Occlusion, HalfHiddenPanelGivesLambertOfItsVisiblePart) {
+  const Emitter e = panel();
+  const HalfPlaneScreen screen;
+  for (double x : {-0.25, -0.1, 0.0, 0.1, 0.3, 0.4}) {
+    const Vec3 r(x, 0.13, 0.0);
+    const double exact = exact_visible(r);
+    const double full = lambert_uniform_illuminance(e, r, kUp, kI0);
+    ASSERT_GT(exact, 0.05 * full) << x;
+    ASSERT_LT(exact, 0.98 * full) << x;  // really a partial shadow
+    EXPECT_NEAR(illuminance(e, r, kUp, Model::standard(), &screen), exact, kStandardTol * exact) << x;
+    EXPECT_NEAR(illuminance(e, r, kUp, Model::adaptive(1e-3), &screen), exact, kStandardTol * exact) << x;
+    EXPECT_NEAR(illuminance(e, r, kUp, Model::reference(1e-5), &screen), exact, kReferenceTol * exact) << x;
+  }
+}
+
+TEST(Occlusion, FullyHiddenGivesZeroFullyVisibleGivesTheUnoccludedValue) {
+  const Emitter e = panel();
+  const Everything wall;
+  const Nothing open;
+  const HalfPlaneScreen screen;
+  for (const Model& m : {Model::far_field(), Model::paper_cubature(), Model::subdivided(2),
+                         Model::lambert_subdivided(1), Model::standard(), Model::adaptive(1e-3),
+                         Model::reference(1e-5), Model::structured_sampling(), Model::monte_carlo(16)}) {
+    const Vec3 r(0.1, -0.2, 0.0);
+    EXPECT_EQ(illuminance(e, r, kUp, m, &wall), 0.0) << to_string(m);
+    EXPECT_EQ(illuminance(e, r, kUp, m, &open), illuminance(e, r, kUp, m)) << to_string(m);
+    EXPECT_EQ(hybrid_illuminance(e, r, kUp, m, NearFieldSwitch::automatic, &wall), 0.0) << to_string(m);
+  }
+  // Behind the screen's shadow: x_c <= -0.5 once R.x >= 0.1 + 0.6 = 0.7.
+  for (double x : {0.8, 1.5}) {
+    const Vec3 r(x, 0.0, 0.0);
+    EXPECT_EQ(exact_visible(r), 0.0);
+    EXPECT_EQ(illuminance(e, r, kUp, Model::standard(), &screen), 0.0) << x;
+    EXPECT_EQ(illuminance(e, r, kUp, Model::reference(1e-5), &screen), 0.0) << x;
+  }
+}
+
+TEST(Occlusion, ContinuousAcrossTheShadowEdge) {
+  // A sweep through the whole penumbra (x_c from 0.5 down to -0.5: R.x from -0.3 to 0.7) in 2 mm
+  // steps: every value within the tolerance of the exact one, and neighbours differ by no more
+  // than the exact profile does plus the tolerance of the larger value (no jump when the shadow
+  // edge crosses a node or a cell of the adaptive rung). Measured: largest deviation 0.06 lx
+  // where the unshadowed value is 440 lx (a 8 mm sliver seen).
+  const Emitter e = panel();
+  const HalfPlaneScreen screen;
+  double prev_model = -1.0, prev_exact = -1.0;
+  for (double x = -0.4; x <= 0.75; x += 0.002) {
+    const Vec3 r(x, 0.07, 0.0);
+    const double exact = exact_visible(r);
+    const double value = illuminance(e, r, kUp, Model::standard(), &screen);
+    const double open = lambert_uniform_illuminance(e, r, kUp, kI0);
+    ASSERT_NEAR(value, exact, kStandardTol * exact + kPenumbraAbsTol * open) << x;
+    if (prev_model >= 0.0) {
+      EXPECT_LE(std::abs(value - prev_model), std::abs(exact - prev_exact) +
+                                                  kStandardTol * std::max(value, prev_model) +
+                                                  2.0 * kPenumbraAbsTol * open)
+          << x;
+    }
+    prev_model = value;
+    prev_exact = exact;
+  }
+}
+
+TEST(Occlusion, NodesOnTheOpeningEdgeAreTestedSlightlyInside) {
+  // An occluder that blocks every segment starting exactly on the opening's boundary (as a wall
+  // face containing the edge would) must not darken the panel: nodes are inset (occluder.h).
+  class BlocksBoundary final : public Occluder {
+   public:
+    bool visible(const Vec3& p, const Vec3&) const override {
+      return std::abs(p.x) < 0.5 && std::abs(p.y) < 0.5;
+    }
+  } boundary;
+  const Emitter e = panel();
+  const Vec3 r(0.3, 0.2, 0.0);
+  const double open = illuminance(e, r, kUp, Model::standard());
+  EXPECT_NEAR(illuminance(e, r, kUp, Model::standard(), &boundary), open, 1e-9 * open);
+}
+
+}  // namespace
+}  // namespace luxgrid::nearfield
