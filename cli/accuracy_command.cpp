@@ -1,0 +1,68 @@
+// `luxgrid accuracy [--out DIR] [--quick] [--grid N] [--photometry DIR]`: the accuracy-versus-time study of
+// the near-field models (issue 5 item 6; cli/accuracy_study.h describes the protocol). Writes
+// DIR/accuracy.md (tables) and DIR/accuracy.png (error versus time with the Pareto front).
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include "cli/accuracy_study.h"
+#include "cli/commands.h"
+#include "util/error.h"
+
+namespace luxgrid::cli {
+
+void add_accuracy_command(CLI::App& app, Runner& run) {
+  struct Options {
+    std::string out = "accuracy";
+    std::string photometry = "tests/data/photometry/ldt";
+    bool quick = false;
+    int grid = 0;  // 0: the study's default (AccuracyOptions::grid), 6 with --quick
+  };
+  auto opt = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand(
+      "accuracy", "Measure NRMS error and time per evaluation of every near-field model (paper's protocol)");
+  cmd->add_option("--out", opt->out, "Output folder for accuracy.md and accuracy.png")->capture_default_str();
+  cmd->add_option("--photometry", opt->photometry, "Folder holding the paper's seven Zumtobel LDT files")
+      ->capture_default_str();
+  cmd->add_option("--grid", opt->grid, "Receivers per side of the 5 x 5 region (per orientation)")
+      ->check(CLI::Range(2, 200));
+  cmd->add_flag("--quick", opt->quick,
+                "Reduced study for CI: cosine, batwing and one LDT file, 6 x 6 receivers, 3 Monte Carlo levels");
+  cmd->callback([opt, &run] {
+    run = [opt] {
+      namespace fs = std::filesystem;
+      auto files = paper_ldt_files(opt->photometry);
+      for (const auto& f : files)
+        if (!fs::exists(f)) throw InputError(f.string() + ": photometry file of the study not found (--photometry)");
+      AccuracyOptions options;
+      if (opt->quick) {
+        files.resize(1);
+        options.grid = 6;
+        options.reference_tolerance = 1e-6;
+      }
+      if (opt->grid > 0) options.grid = opt->grid;
+      const auto models = accuracy_models(opt->quick);
+      const auto sets = accuracy_data_sets(files);
+      const AccuracyStudy study = run_accuracy_study(sets, models, options, [](const std::string& what) {
+        std::fprintf(stderr, "accuracy: %s\n", what.c_str());
+      });
+      fs::create_directories(opt->out);
+      const std::string command = std::string("luxgrid accuracy") + (opt->quick ? " --quick" : "") +
+                                  (opt->grid > 0 ? " --grid " + std::to_string(opt->grid) : "");
+      const std::string md = format_accuracy_markdown(study, command);
+      const fs::path md_path = fs::path(opt->out) / "accuracy.md";
+      {
+        std::ofstream f(md_path.string() + ".tmp");
+        f << md;
+        if (!f) throw CalculationError(md_path.string() + ": cannot write");
+      }
+      fs::rename(md_path.string() + ".tmp", md_path);
+      write_accuracy_plot(study, fs::path(opt->out) / "accuracy.png");
+      std::fputs(md.c_str(), stdout);
+      return 0;
+    };
+  });
+}
+
+}  // namespace luxgrid::cli
