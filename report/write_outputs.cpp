@@ -1,10 +1,12 @@
 #include "report/write_outputs.h"
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <fstream>
 #include <sstream>
 
+#include "calc/statistics.h"
 #include "report/csv.h"
 #include "report/false_colour.h"
 #include "report/html_report.h"
@@ -53,6 +55,13 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   report.cost = options.cost;
   report.version = options.version;
   report.date = utc_now();
+  // Indirect light ran when any point received some: then each grid also gets its direct and
+  // indirect parts as <surface>_direct.png and <surface>_indirect.png (initial values, before the
+  // maintenance factor, like the CSV's E_direct_lx / E_indirect_lx columns; each on its own scale
+  // unless a scale was given, since the indirect part is often a small fraction of the total).
+  bool indirect_ran = false;
+  for (const auto& s : results.surfaces)
+    for (double e : s.E_indirect) indirect_ran = indirect_ran || e > 0.0;
   for (const auto& s : results.surfaces) {
     const std::string base = safe_file_name(s.grid.name);
     write_text_file(folder.file(base + ".csv"), surface_csv(s));
@@ -62,6 +71,23 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
       const std::string w = write_false_colour_png(s, scale, png, overlay);
       if (!w.empty()) warnings.push_back(w);
       if (options.report) report.png[s.grid.name] = read_bytes(png);
+      if (indirect_ran) {
+        for (const bool direct : {true, false}) {
+          calc::SurfaceResult part;
+          part.grid = s.grid;
+          part.grid.name = s.grid.name + (direct ? " (direct)" : " (indirect)");
+          part.E = direct ? s.E_direct : s.E_indirect;
+          part.E_direct = s.E_direct;
+          part.E_indirect = s.E_indirect;
+          part.stats = calc::compute_statistics(part.E, s.grid.active);
+          const ColourScale part_scale = options.scale ? *options.scale : auto_scale(part.stats.Emax);
+          const std::string pw = write_false_colour_png(
+              part, part_scale, folder.file(base + (direct ? "_direct.png" : "_indirect.png")),
+              overlay);
+          if (!pw.empty() && std::find(warnings.begin(), warnings.end(), pw) == warnings.end())
+            warnings.push_back(pw);
+        }
+      }
     }
   }
   if (options.report) write_text_file(folder.file("report.html"), html_report(report));

@@ -1,6 +1,7 @@
 #include "calc/indirect/first_bounce.h"
 
 #include <cmath>
+#include <map>
 
 #include <tbb/parallel_for.h>
 
@@ -82,13 +83,18 @@ FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
   const size_t n = mesh.patches.size();
   fb.incident_flux_lm.assign(n, 0.0);
   fb.vpl_flux_lm.assign(n, 0.0);
+  // luminous_flux integrates the whole distribution: once per distinct distribution (the
+  // members of an array share theirs), not once per luminaire.
+  std::map<const photometry::IntensityDistribution*, double> flux_of;
   for (const auto& lum : scene.luminaires) {
     const int r = room_containing(scene, lum.pose.position, 0.0);
     if (r < 0) {
       fb.notes.push_back(lum.label + ": not inside any room, its light is not reflected");
       continue;
     }
-    fb.emitted_flux_lm += luminous_flux(*lum.distribution);
+    auto [it, fresh] = flux_of.try_emplace(lum.distribution.get(), 0.0);
+    if (fresh) it->second = luminous_flux(*lum.distribution);
+    fb.emitted_flux_lm += it->second;
     const size_t begin = mesh.room_begin[r], end = mesh.room_begin[r + 1];
     const OcclusionFn& occ = occlusion[r];
     std::vector<double> add(end - begin, 0.0);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <memory>
 #include <stdexcept>
 
 #include <tbb/parallel_for.h>
@@ -13,6 +15,7 @@
 #include "calc/indirect/prism_visibility.h"
 #include "calc/indirect/radiosity.h"
 #include "calc/scaled_distribution.h"
+#include "calc/visibility.h"
 #include "util/error.h"
 
 namespace luxgrid::calc::indirect {
@@ -106,6 +109,48 @@ PatchMesh mesh_within_budget(const Scene& scene, const IndirectOptions& o, doubl
   }
 }
 
+// Axis-aligned bounding box of an obstacle, grown by kBoxMargin_m.
+struct Box3 {
+  Vec3 lo, hi;
+};
+// Obstacle boxes are grown by this much so that a segment ending on an obstacle face, or grazing
+// one, always goes to the exact test (the tree's end allowance is 1 um).
+constexpr double kBoxMargin_m = 1e-5;
+
+std::vector<Box3> obstacle_boxes(const Scene& scene) {
+  std::vector<Box3> boxes;
+  for (const auto& room : scene.rooms)
+    for (const auto& o : room.obstacles) {
+      Box3 b{Vec3(o.footprint[0].x, o.footprint[0].y, o.z0), Vec3(o.footprint[0].x, o.footprint[0].y, o.z1)};
+      for (const auto& v : o.footprint) {
+        b.lo = glm::min(b.lo, Vec3(v.x, v.y, o.z0));
+        b.hi = glm::max(b.hi, Vec3(v.x, v.y, o.z1));
+      }
+      b.lo -= Vec3(kBoxMargin_m);
+      b.hi += Vec3(kBoxMargin_m);
+      boxes.push_back(b);
+    }
+  return boxes;
+}
+
+// True when the closed segment ab meets the box (slab test).
+bool segment_meets_box(const Vec3& a, const Vec3& b, const Box3& box) {
+  double t0 = 0.0, t1 = 1.0;
+  const Vec3 d = b - a;
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] == 0.0) {
+      if (a[k] < box.lo[k] || a[k] > box.hi[k]) return false;
+      continue;
+    }
+    double ta = (box.lo[k] - a[k]) / d[k], tb = (box.hi[k] - a[k]) / d[k];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
 // `x` moved to at least kReceiverInset_m inside every face of `room` that it lies on or near.
 Vec3 inset_into_room(const Room& room, Vec3 x) {
   x.z = std::clamp(x.z, room.floor_z + kReceiverInset_m, room.floor_z + room.height - kReceiverInset_m);
@@ -144,8 +189,11 @@ IndirectDecision decide_indirect(const Scene& scene) {
   }
   bool any = false;
   for (const auto& r : scene.rooms)
+  {
     any = any || r.reflectance.floor > 0.0 || r.reflectance.walls > 0.0 ||
           r.reflectance.ceiling > 0.0;
+    for (const auto& o : r.obstacles) any = any || o.reflectance > 0.0;
+  }
   if (!any) {
     d.reason = "skipped: all reflectances are 0";
     return d;
@@ -155,12 +203,17 @@ IndirectDecision decide_indirect(const Scene& scene) {
     return d;
   }
   // Integrating-sphere estimate per room: rho Phi / (A (1 - rho)), rho area-weighted.
+  // luminous_flux integrates the whole distribution: once per distinct one.
+  std::map<const photometry::IntensityDistribution*, double> flux_of;
   for (size_t r = 0; r < scene.rooms.size(); ++r) {
     const Room& room = scene.rooms[r];
     double flux = 0.0;
     for (const auto& lum : scene.luminaires)
-      if (room_containing(scene, lum.pose.position, 0.0) == static_cast<int>(r))
-        flux += luminous_flux(*lum.distribution);
+      if (room_containing(scene, lum.pose.position, 0.0) == static_cast<int>(r)) {
+        auto [it, fresh] = flux_of.try_emplace(lum.distribution.get(), 0.0);
+        if (fresh) it->second = luminous_flux(*lum.distribution);
+        flux += it->second;
+      }
     const double rho = mean_reflectance(room);
     const double area = room_surface_area(room);
     const double e = rho < 1.0 && area > 0.0 ? rho * flux / (area * (1.0 - rho))
@@ -244,11 +297,35 @@ IndirectResult compute_indirect(const Scene& scene,
   res.patches = mesh.patches.size();
   res.patch_size_m = mesh.patch_size_m;
 
+  // Visibility: the caller's callback (the pipeline passes the scene's AABB tree); else, with
+  // obstacles, our own tree over scene_faces (rooms and obstacles); else the prism test for
+  // non-convex rooms, and nothing for convex ones.
+  size_t obstacle_count = 0;
+  for (const auto& room : scene.rooms) obstacle_count += room.obstacles.size();
+  std::shared_ptr<const Visibility> own_tree;
+  OcclusionFn tree_occlusion;
+  if (!options.occluded && obstacle_count > 0) {
+    own_tree = std::make_shared<const Visibility>(scene_faces(scene));
+    tree_occlusion = [own_tree](const Vec3& a, const Vec3& b) { return !own_tree->visible(a, b); };
+  }
   std::vector<OcclusionFn> occlusion(scene.rooms.size());
   bool prism = false;
+  const auto boxes = std::make_shared<const std::vector<Box3>>(obstacle_boxes(scene));
   for (size_t r = 0; r < scene.rooms.size(); ++r) {
-    if (options.occluded) occlusion[r] = options.occluded;
-    else if (!outline_is_convex(scene.rooms[r])) occlusion[r] = prism_occlusion(scene.rooms[r]), prism = true;
+    const OcclusionFn& general = options.occluded ? options.occluded : tree_occlusion;
+    if (general && outline_is_convex(scene.rooms[r])) {
+      // In a convex room only obstacles can block a segment between two of its points: skip
+      // the tree for segments that miss every obstacle's box (most of them), an exact filter.
+      occlusion[r] = [boxes, general](const Vec3& a, const Vec3& b) {
+        for (const auto& box : *boxes)
+          if (segment_meets_box(a, b, box)) return general(a, b);
+        return false;
+      };
+    } else if (general) {
+      occlusion[r] = general;
+    } else if (!outline_is_convex(scene.rooms[r])) {
+      occlusion[r] = prism_occlusion(scene.rooms[r]), prism = true;
+    }
   }
 
   const FirstBounce fb = first_bounce(scene, mesh, occlusion);
@@ -314,7 +391,11 @@ IndirectResult compute_indirect(const Scene& scene,
                 " virtual point lights, residual " + fmt("%.2g", res.residual) + "; direct flux on room faces " +
                 fmt("%.6g", res.received_flux_lm) + " lm of " + fmt("%.6g", res.emitted_flux_lm) +
                 " lm emitted" + (prism ? "; visibility: walls of non-convex rooms" : "") +
-                (options.occluded ? "; visibility: occlusion callback" : "");
+                (options.occluded ? "; visibility: occlusion callback" : "") +
+                (own_tree ? "; visibility: AABB tree of room and obstacle faces" : "") +
+                (obstacle_count ? "; " + std::to_string(obstacle_count) + " obstacle" +
+                                      (obstacle_count == 1 ? "" : "s") + " reflect and shade"
+                                : std::string());
   return res;
 }
 

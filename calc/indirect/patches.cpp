@@ -12,6 +12,11 @@ namespace {
 // Pieces smaller than this are dropped from boundary cells: they carry no light worth a patch and
 // would only add ill-conditioned form factors. 1 mm^2 over a whole room is far below any tolerance.
 constexpr double kMinPieceArea_m2 = 1e-6;
+// An obstacle whose bottom is within this distance of the floor stands on it (its footprint is cut
+// out of the floor and its bottom face is dropped: the two would face each other at zero distance,
+// both dark, and a floor patch half under the obstacle would shoot its light from a centroid
+// inside the obstacle, where every ray is blocked, and lose it). Likewise at the ceiling.
+constexpr double kTouch_m = 1e-4;
 
 void check_room(const Room& room) {
   const std::string where = "room '" + room.name + "'";
@@ -28,8 +33,77 @@ void check_room(const Room& room) {
   check(room.reflectance.floor, "floor");
   check(room.reflectance.walls, "walls");
   check(room.reflectance.ceiling, "ceiling");
+  // A self-crossing outline has no inside: the faces would not close, and light would leak.
+  const auto& o = room.outline;
+  const size_t n = o.size();
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // neighbours (wrapping)
+      if (segments_cross(o[i], o[(i + 1) % n], o[j], o[(j + 1) % n]))
+        throw InputError(where + ": outline edges " + std::to_string(i) + " and " +
+                         std::to_string(j) + " cross, so the room is not closed (it leaks); " +
+                         "indirect light needs a simple outline");
+    }
   if (!(signed_area2(room.outline) > 0.0))
     throw InputError(where + ": outline must be counter-clockwise with non-zero area");
+  for (const auto& ob : room.obstacles) {
+    if (!(ob.reflectance >= 0.0 && ob.reflectance <= 1.0))
+      throw InputError(where + ", obstacle '" + ob.name + "': reflectance is " +
+                       std::to_string(ob.reflectance) + ", expected a number in [0, 1]");
+    if (ob.footprint.size() < 3 || !(signed_area2(ob.footprint) > 0.0))
+      throw InputError(where + ", obstacle '" + ob.name +
+                       "': footprint must be a counter-clockwise polygon with non-zero area");
+  }
+}
+
+// `poly` (convex) clipped to the left (keep_left) or right of the line a -> b.
+Polygon2 clip_half_plane(const Polygon2& poly, const Vec2& a, const Vec2& b, bool keep_left) {
+  Polygon2 out;
+  const auto side = [&](const Vec2& p) {
+    const double o = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+    return keep_left ? o : -o;
+  };
+  for (size_t k = 0, m = poly.size(); k < m; ++k) {
+    const Vec2 p = poly[k], q = poly[(k + 1) % m];
+    const double dp = side(p), dq = side(q);
+    if (dp >= 0.0) out.push_back(p);
+    if ((dp >= 0.0) != (dq >= 0.0)) out.push_back(p + (q - p) * (dp / (dp - dq)));
+  }
+  return out;
+}
+
+// Convex `piece` minus the convex counter-clockwise `hole`: up to one convex piece per hole edge
+// (the part outside that edge and inside the previous ones); the part inside the hole is dropped.
+void subtract_convex(const Polygon2& piece, const Polygon2& hole, std::vector<Polygon2>& out) {
+  Polygon2 rest = piece;
+  for (size_t k = 0, n = hole.size(); k < n && rest.size() >= 3; ++k) {
+    const Vec2 a = hole[k], b = hole[(k + 1) % n];
+    Polygon2 outside = clip_half_plane(rest, a, b, false);
+    if (outside.size() >= 3 && 0.5 * std::abs(signed_area2(outside)) > kMinPieceArea_m2)
+      out.push_back(std::move(outside));
+    rest = clip_half_plane(rest, a, b, true);
+  }
+}
+
+// Pieces minus every convex hole (holes may overlap: each is subtracted in turn).
+std::vector<Polygon2> subtract_holes(std::vector<Polygon2> pieces,
+                                     const std::vector<Polygon2>& holes) {
+  for (const auto& hole : holes) {
+    Vec2 hlo = hole[0], hhi = hole[0];
+    for (const auto& v : hole) hlo = glm::min(hlo, v), hhi = glm::max(hhi, v);
+    std::vector<Polygon2> next;
+    for (auto& p : pieces) {
+      Vec2 lo = p[0], hi = p[0];
+      for (const auto& v : p) lo = glm::min(lo, v), hi = glm::max(hi, v);
+      if (hi.x <= hlo.x || lo.x >= hhi.x || hi.y <= hlo.y || lo.y >= hhi.y) {
+        next.push_back(std::move(p));
+        continue;
+      }
+      subtract_convex(p, hole, next);
+    }
+    pieces.swap(next);
+  }
+  return pieces;
 }
 
 // True when the open segment ab enters the open axis-aligned box [lo, hi] (Liang-Barsky).
@@ -70,9 +144,9 @@ void add_patch(PatchMesh& mesh, Polygon3 poly, const Vec3& normal, double reflec
   mesh.patches.push_back(std::move(p));
 }
 
-// Floor or ceiling of `room` at height z: 2D convex pieces.
-std::vector<Polygon2> horizontal_pieces(const Room& room, double size) {
-  const auto& outline = room.outline;
+// A horizontal face (floor, ceiling, obstacle top or bottom) with the given outline: 2D convex
+// pieces, cells of about `size`.
+std::vector<Polygon2> horizontal_pieces(const Polygon2& outline, double size) {
   Vec2 lo = outline[0], hi = outline[0];
   for (const auto& v : outline) {
     lo = glm::min(lo, v);
@@ -146,16 +220,67 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
     mesh.room_begin.push_back(mesh.patches.size());
     const int ri = static_cast<int>(r);
     const double z0 = room.floor_z, z1 = room.floor_z + room.height;
-    for (const auto& piece : horizontal_pieces(room, patch_size_m)) {
-      Polygon3 floor, ceiling;
-      for (const auto& v : piece) {
-        floor.emplace_back(v.x, v.y, z0);
-        ceiling.emplace_back(v.x, v.y, z1);
-      }
+    // Footprints (as convex triangles) of obstacles standing on the floor / touching the ceiling.
+    std::vector<Polygon2> floor_holes, ceiling_holes;
+    for (const auto& ob : room.obstacles) {
+      if (ob.z0 <= z0 + kTouch_m)
+        for (auto& t : ear_clip(ob.footprint)) floor_holes.push_back(t);
+      if (ob.z1 >= z1 - kTouch_m)
+        for (auto& t : ear_clip(ob.footprint)) ceiling_holes.push_back(t);
+    }
+    const std::vector<Polygon2> pieces = horizontal_pieces(room.outline, patch_size_m);
+    for (const auto& piece : floor_holes.empty() ? pieces : subtract_holes(pieces, floor_holes)) {
+      Polygon3 floor;
+      for (const auto& v : piece) floor.emplace_back(v.x, v.y, z0);
       add_patch(mesh, std::move(floor), Vec3(0, 0, 1), room.reflectance.floor, ri,
                 FaceKind::floor, 0);
+    }
+    for (const auto& piece : ceiling_holes.empty() ? pieces : subtract_holes(pieces, ceiling_holes)) {
+      Polygon3 ceiling;
+      for (const auto& v : piece) ceiling.emplace_back(v.x, v.y, z1);
       add_patch(mesh, std::move(ceiling), Vec3(0, 0, -1), room.reflectance.ceiling, ri,
                 FaceKind::ceiling, 0);
+    }
+    // Obstacles: clamped to the room's height; sides outward, top and bottom where exposed.
+    for (size_t k = 0; k < room.obstacles.size(); ++k) {
+      const auto& ob = room.obstacles[k];
+      const int ki = static_cast<int>(k);
+      const double b = std::max(ob.z0, z0), t = std::min(ob.z1, z1);
+      if (!(t > b)) continue;
+      if (t < z1 - kTouch_m || b > z0 + kTouch_m) {
+        for (const auto& piece : horizontal_pieces(ob.footprint, patch_size_m)) {
+          if (t < z1 - kTouch_m) {
+            Polygon3 top;
+            for (const auto& v : piece) top.emplace_back(v.x, v.y, t);
+            add_patch(mesh, std::move(top), Vec3(0, 0, 1), ob.reflectance, ri, FaceKind::obstacle, ki);
+          }
+          if (b > z0 + kTouch_m) {
+            Polygon3 bottom;
+            for (const auto& v : piece) bottom.emplace_back(v.x, v.y, b);
+            add_patch(mesh, std::move(bottom), Vec3(0, 0, -1), ob.reflectance, ri,
+                      FaceKind::obstacle, ki);
+          }
+        }
+      }
+      const auto& f = ob.footprint;
+      const int nv = std::max(1, static_cast<int>(std::ceil((t - b) / patch_size_m - 1e-9)));
+      for (size_t e = 0; e < f.size(); ++e) {
+        const Vec2 a = f[e], c = f[(e + 1) % f.size()];
+        const double len = glm::length(c - a);
+        if (!(len > 0.0)) continue;
+        const Vec2 dir = (c - a) / len;
+        const Vec3 outward(dir.y, -dir.x, 0.0);  // counter-clockwise footprint: outside on the right
+        const int nu = std::max(1, static_cast<int>(std::ceil(len / patch_size_m - 1e-9)));
+        for (int j = 0; j < nv; ++j) {
+          const double za = b + (t - b) * j / nv, zb = b + (t - b) * (j + 1) / nv;
+          for (int i = 0; i < nu; ++i) {
+            const Vec2 p = a + (c - a) * (static_cast<double>(i) / nu);
+            const Vec2 q = a + (c - a) * (static_cast<double>(i + 1) / nu);
+            add_patch(mesh, {{p.x, p.y, za}, {q.x, q.y, za}, {q.x, q.y, zb}, {p.x, p.y, zb}},
+                      outward, ob.reflectance, ri, FaceKind::obstacle, ki);
+          }
+        }
+      }
     }
     const auto& o = room.outline;
     const int nv = std::max(1, static_cast<int>(std::ceil(room.height / patch_size_m - 1e-9)));

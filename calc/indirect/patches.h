@@ -3,10 +3,15 @@
 // cut into convex planar patches of about `patch_size_m`. Patches are the unit of the radiosity
 // solve and, after the first bounce, its virtual point lights (ARCHITECTURE.md, seed 004).
 //
-// Until geometry/ delivers room faces and obstacles, the mesh is built here from Scene::rooms:
-// walls are gridded rectangles; floor and ceiling are a grid over the outline's bounding box
-// whose cells lie wholly inside the outline, plus the pieces of boundary cells clipped by the
-// outline's ear-clipping triangles, so the patches tile the faces exactly for any simple outline.
+// The mesh is built here from Scene::rooms, with the faces and orientations of geometry/room.h
+// (room_faces, obstacle_faces): walls are gridded rectangles; floor and ceiling are a grid over the
+// outline's bounding box whose cells lie wholly inside the outline, plus the pieces of boundary
+// cells clipped by the outline's ear-clipping triangles, so the patches tile the faces exactly for
+// any simple outline. Obstacles (Room::obstacles) add their sides (gridded rectangles, normals
+// outward), their top unless it touches the ceiling and their bottom unless it stands on the floor;
+// the footprint of an obstacle standing on the floor (hanging from the ceiling) is cut out of the
+// floor (ceiling), so no patch lies hidden under it and the room plus obstacle surfaces stay a
+// closed, non-overlapping tiling (the first bounce's solid angles then still sum to 4 pi).
 #include <string>
 #include <vector>
 
@@ -15,18 +20,19 @@
 
 namespace luxgrid::calc::indirect {
 
-enum class FaceKind { floor, ceiling, wall };
+enum class FaceKind { floor, ceiling, wall, obstacle };
 
 struct Patch {
   Polygon3 polygon;   // convex, counter-clockwise seen from the room side
   Vec3 centroid{0.0};
-  Vec3 normal{0.0};   // unit, into the room
+  Vec3 normal{0.0};   // unit, into the room (obstacles: out of the obstacle, into the room)
   double area_m2 = 0.0;
   double diameter_m = 0.0;
   double reflectance = 0.0;
   int room = 0;       // index into Scene::rooms
   FaceKind face = FaceKind::floor;
-  int face_index = 0; // 0 for floor / ceiling; outline edge index for a wall
+  int face_index = 0; // 0 for floor / ceiling; outline edge index for a wall; obstacle index in
+                      // Room::obstacles for an obstacle face
 };
 
 struct PatchMesh {
@@ -36,11 +42,12 @@ struct PatchMesh {
   double patch_size_m = 0.0;  // the size actually used (after the budget)
 };
 
-// Patch mesh of all rooms at `patch_size_m`. Throws std::invalid_argument naming the room for an
-// outline with fewer than 3 vertices or a non-positive height, or a reflectance outside [0, 1].
+// Patch mesh of all rooms at `patch_size_m`. Throws InputError naming the room for an outline
+// with fewer than 3 vertices, a non-positive height, an outline that crosses itself (the room
+// leaks), or a reflectance outside [0, 1] (room faces or an obstacle, named).
 PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m);
 
-// Total surface area of a room's faces (floor + ceiling + walls), m^2.
+// Total surface area of a room's faces (floor + ceiling + walls), m^2, without obstacles.
 double room_surface_area(const Room& room);
 
 // True when the room's outline is convex (then no face can hide another from a point inside).

@@ -9,7 +9,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
+#include <array>
 
 #include "calc/indirect/first_bounce.h"
 #include "calc/indirect/form_factor.h"
@@ -19,6 +21,7 @@
 #include "calc/indirect/radiosity.h"
 #include "calc/direct.h"
 #include "calc/scaled_distribution.h"
+#include "calc/visibility.h"
 #include "photometry/builtin.h"
 
 namespace luxgrid::calc::indirect {
@@ -552,6 +555,207 @@ TEST(Decision, PatchBudgetIsEnforced) {
   EXPECT_LE(r.patches, 4000u);
   EXPECT_FALSE(r.notes.empty());
   std::printf("[ budget ] 40 x 20 x 3 m: %s (%.2f s)\n", r.summary.c_str(), r.seconds);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Obstacles: they reflect light and cast shadows, in the first bounce and between patches.
+
+// 4 x 4 x 3 m box of uniform rho with a cabinet standing on the floor and a table top floating
+// at 0.70-0.75 m, both of reflectance rho.
+Scene box_with_obstacles(double rho, const Vec3& lum, bool with_obstacles = true) {
+  Scene s = scene_of(box_room(4, 4, 3, rho, rho, rho), {isotropic_at(lum, 10000.0)});
+  if (with_obstacles) {
+    s.rooms[0].obstacles.push_back(geometry::make_box("cabinet", {0.3, 0.3, 0.0}, {1.1, 0.9, 1.2}, 0.3, rho));
+    s.rooms[0].obstacles.push_back(geometry::make_box("table", {1.5, 1.5, 0.70}, {2.5, 2.5, 0.75}, 0.0, rho));
+  }
+  return s;
+}
+
+OcclusionFn tree_occlusion(const Scene& s) {
+  auto vis = std::make_shared<const Visibility>(scene_faces(s));
+  return [vis](const Vec3& a, const Vec3& b) { return !vis->visible(a, b); };
+}
+
+TEST(Obstacles, PatchesTileRoomAndObstacleSurfaces) {
+  const Scene s = box_with_obstacles(0.5, {2, 2, 2.5});
+  const PatchMesh m = build_patch_mesh(s, 0.25);
+  double floor = 0.0, obstacle = 0.0, total = 0.0;
+  for (const auto& p : m.patches) {
+    total += p.area_m2;
+    if (p.face == FaceKind::floor) floor += p.area_m2;
+    if (p.face == FaceKind::obstacle) obstacle += p.area_m2;
+  }
+  // The cabinet's 0.8 x 0.6 footprint is cut out of the floor; it has sides and a top (no
+  // bottom); the table has a top, a bottom and sides.
+  const double cabinet = 0.8 * 0.6 + 2 * (0.8 + 0.6) * 1.2;
+  const double table = 2 * 1.0 + 4 * 1.0 * 0.05;
+  EXPECT_NEAR(floor, 16.0 - 0.48, 1e-9);
+  EXPECT_NEAR(obstacle, cabinet + table, 1e-9);
+  EXPECT_NEAR(total, room_surface_area(s.rooms[0]) - 0.48 + cabinet + table, 1e-9);
+}
+
+TEST(Obstacles, EnergyBalanceInClosedBoxWithObstacles) {
+  // Direct lumens on room + obstacle faces = emitted flux (the faces close around the luminaire;
+  // the shadow edges are resolved to the first bounce's pieces), VPL flux = sum rho x received,
+  // and after N bounces the total exitant flux is rho R (1 - rho^N) / (1 - rho) (rows of a closed
+  // room sum to 1).
+  // The geometry (mesh, direct flux, form factors) does not depend on rho: built once.
+  Scene s = box_with_obstacles(0.5, {2.3, 1.8, 2.5});
+  PatchMesh mesh = build_patch_mesh(s, 0.3);
+  const std::vector<OcclusionFn> occ = {tree_occlusion(s)};
+  FirstBounce fb = first_bounce(s, mesh, occ);
+  const FormFactorMatrix F = form_factors(mesh, 0, occ[0], 5.0);
+  double vpl = 0.0, rho_received = 0.0;
+  for (size_t i = 0; i < mesh.patches.size(); ++i) {
+    vpl += fb.vpl_flux_lm[i];
+    rho_received += mesh.patches[i].reflectance * fb.incident_flux_lm[i];
+  }
+  EXPECT_NEAR(vpl / rho_received, 1.0, 1e-12);
+  EXPECT_NEAR(vpl / fb.received_flux_lm, 0.5, 1e-12);
+  const double direct_err = fb.received_flux_lm / fb.emitted_flux_lm - 1.0;
+  EXPECT_NEAR(direct_err, 0.0, 5e-3);  // issue 7: within 0.5 %
+  for (double rho : {0.2, 0.5, 0.8}) {
+    for (auto& p : mesh.patches) p.reflectance = rho;
+    std::vector<double> rhos;
+    for (const auto& p : mesh.patches) rhos.push_back(p.reflectance);
+    for (int bounces : {1, 2, 3, 5, 10, 0}) {
+      const RadiosityResult sol = solve_radiosity(F, rhos, fb.incident_flux_lm, bounces, 1e-6);
+      double total = 0.0;
+      for (double x : sol.exitant_flux_lm) total += x;
+      const double R = fb.received_flux_lm;
+      const double expect = bounces == 0 ? rho * R / (1 - rho)
+                                         : rho * R * (1 - std::pow(rho, bounces)) / (1 - rho);
+      const double expect_emitted = expect * fb.emitted_flux_lm / R;
+      std::printf("[ energy obstacles rho %.1f bounces %-4s ] direct %+.2e  exitant %.2f lm, vs "
+                  "received %+.2e, vs emitted %+.2e  (%zu patches, max row corr %.1e)\n",
+                  rho, bounces ? std::to_string(bounces).c_str() : "auto", direct_err, total,
+                  total / expect - 1.0, total / expect_emitted - 1.0, mesh.patches.size(),
+                  F.max_row_correction);
+      EXPECT_NEAR(total / expect, 1.0, bounces == 0 ? 1e-5 : 1e-9);
+      EXPECT_NEAR(total / expect_emitted, 1.0, 5e-3);
+    }
+  }
+}
+
+TEST(Obstacles, TableShadowsTheFloorInTheFirstBounce) {
+  // Luminaire straight above a 1 x 1 m table top at 0.75 m: the floor under it gets no direct
+  // light (shadow 1.43 m wide), and, in the one-bounce solution, less reflected light than the
+  // same point without the table (the table hides most of the lit ceiling and walls).
+  const Vec3 lum(2, 2, 2.5);
+  const Scene with = box_with_obstacles(0.5, lum), without = box_with_obstacles(0.5, lum, false);
+  const PatchMesh mw = build_patch_mesh(with, 0.25), mo = build_patch_mesh(without, 0.25);
+  const FirstBounce fw = first_bounce(with, mw, {tree_occlusion(with)});
+  const FirstBounce fo = first_bounce(without, mo, {OcclusionFn{}});
+  auto under_table = [](const PatchMesh& m, const FirstBounce& fb) {
+    double flux = 0.0;
+    for (size_t i = 0; i < m.patches.size(); ++i) {
+      const auto& p = m.patches[i];
+      if (p.face == FaceKind::floor && std::abs(p.centroid.x - 2) < 0.5 && std::abs(p.centroid.y - 2) < 0.5)
+        flux += fb.incident_flux_lm[i];
+    }
+    return flux;
+  };
+  EXPECT_GT(under_table(mo, fo), 100.0);
+  EXPECT_LT(under_table(mw, fw), 1e-9);
+
+  SurfaceGrid g;
+  g.name = "under the table";
+  g.kind = SurfaceGrid::Kind::points;
+  g.points = {{2.0, 2.0, 0.0}, {2.3, 1.8, 0.0}, {3.7, 3.7, 0.0}};
+  g.normals.assign(3, Vec3(0, 0, 1));
+  g.active.assign(3, true);
+  g.nu = 3;
+  g.nv = 1;
+  IndirectOptions one;
+  one.bounces = 1;
+  const auto Ew = compute_indirect(with, {g}, one).E_indirect_per_surface[0];
+  const auto Eo = compute_indirect(without, {g}, one).E_indirect_per_surface[0];
+  std::printf("[ obstacle shadow ] first-bounce E_indirect with / without the table: centre %.2f / "
+              "%.2f lx, (2.3, 1.8) %.2f / %.2f lx, corner (3.7, 3.7) %.2f / %.2f lx\n",
+              Ew[0], Eo[0], Ew[1], Eo[1], Ew[2], Eo[2]);
+  EXPECT_LT(Ew[0], 0.5 * Eo[0]);
+  EXPECT_LT(Ew[1], 0.7 * Eo[1]);
+  EXPECT_GT(Ew[2], 0.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// A sphere-like room (issue 7): in a sphere the form factor from any surface element to dA' is
+// dA' / (4 pi R^2) whatever the element (cos = d / 2R at both ends), so the first reflection of
+// ANY light is uniform, rho R_flux / A, however the direct light falls. A 24-gon prism as high as
+// it is wide is the nearest room luxgrid can describe; it is not exact because its faces are flat
+// (a face does not see itself: the floor gets nothing from the floor's light, a sphere's cap
+// would) and its corners are not on one sphere (floor and ceiling centres are R from the middle,
+// their rims R sqrt 2).
+
+TEST(SphereLikeRoom, FirstBounceIsNearlyUniform) {
+  Room r;
+  r.name = "24-gon";
+  const double R = 2.0;
+  for (int k = 0; k < 24; ++k)
+    r.outline.emplace_back(R * std::cos(2 * kPi * k / 24), R * std::sin(2 * kPi * k / 24));
+  r.height = 2 * R;
+  r.reflectance = {0.5, 0.5, 0.5};
+  // Off-centre, so that the direct light is far from uniform.
+  const Scene s = scene_of(r, {isotropic_at({0.9, 0.4, 3.0}, 10000.0)});
+  const PatchMesh mesh = build_patch_mesh(s, 0.25);
+  const FirstBounce fb = first_bounce(s, mesh, {OcclusionFn{}});
+  const FormFactorMatrix F = form_factors(mesh, 0, {}, 5.0);
+  // Per face: direct and first-bounce indirect irradiance (flux received / area).
+  std::map<std::pair<int, int>, std::array<double, 3>> faces;  // direct lm, indirect lm, area
+  double area = 0.0;
+  for (size_t i = 0; i < F.n; ++i) {
+    double e1 = 0.0;
+    for (size_t j = 0; j < F.n; ++j) e1 += F.gather[i * F.n + j] * fb.vpl_flux_lm[j];
+    const auto& p = mesh.patches[i];
+    auto& f = faces[{static_cast<int>(p.face), p.face_index}];
+    f[0] += fb.incident_flux_lm[i];
+    f[1] += e1;
+    f[2] += p.area_m2;
+    area += p.area_m2;
+  }
+  const double uniform = 0.5 * fb.received_flux_lm / area;  // rho Phi / A
+  double dmin = 1e300, dmax = 0, imin = 1e300, imax = 0;
+  for (const auto& [key, f] : faces) {
+    dmin = std::min(dmin, f[0] / f[2]), dmax = std::max(dmax, f[0] / f[2]);
+    imin = std::min(imin, f[1] / f[2]), imax = std::max(imax, f[1] / f[2]);
+  }
+  std::printf("[ sphere-like 24-gon ] direct per face %.1f .. %.1f lx (max/min %.2f); first bounce "
+              "per face %.2f .. %.2f lx, rho Phi / A = %.2f lx (%+.1f %% .. %+.1f %%)\n",
+              dmin, dmax, dmax / dmin, imin, imax, uniform, 100 * (imin / uniform - 1),
+              100 * (imax / uniform - 1));
+  EXPECT_GT(dmax / dmin, 3.0);       // the direct light is far from uniform...
+  EXPECT_LT(imax / imin, 1.35);      // ...its first reflection nearly uniform
+  EXPECT_NEAR(imin / uniform, 1.0, 0.25);
+  EXPECT_NEAR(imax / uniform, 1.0, 0.25);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input: exact messages.
+
+TEST(BadInput, LeakingRoomAndBadObstacleAndBudgetNameTheObject) {
+  auto message = [](const Scene& s, const IndirectOptions& o) -> std::string {
+    try {
+      compute_indirect(s, {}, o);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  Scene s = scene_of(box_room(4, 4, 3, 0.2, 0.5, 0.7), {isotropic_at({2, 2, 2}, 1e4)});
+  s.rooms[0].outline = {{0, 0}, {4, 0}, {0, 4}, {4, 4}};  // a bow tie: edges 0 and 2 cross
+  EXPECT_EQ(message(s, {}),
+            "room 'box': outline edges 1 and 3 cross, so the room is not closed (it leaks); "
+            "indirect light needs a simple outline");
+  s = box_with_obstacles(0.5, {2, 2, 2.5});
+  s.rooms[0].obstacles[1].reflectance = 1.2;
+  EXPECT_EQ(message(s, {}),
+            "room 'box', obstacle 'table': reflectance is 1.200000, expected a number in [0, 1]");
+  s = scene_of(box_room(40, 20, 3, 0.2, 0.5, 0.7), {isotropic_at({20, 10, 2}, 1e5)});
+  IndirectOptions o;
+  o.patch_size_m = 0.1;
+  EXPECT_EQ(message(s, o),
+            "room 'box': 196000 patches at a patch size of 0.1 m exceed the budget of 4000 "
+            "patches per room");
 }
 
 }  // namespace

@@ -1,0 +1,67 @@
+// How calc/indirect's time and memory grow with the patch count (issue 7, performance): a
+// 12 x 8 x 3 m room (floor 0.2, walls 0.5, ceiling 0.7) with 6 Lambertian downlights and a
+// 0.25 m workplane grid (1 353 points), solved at patch sizes from 1 m to 0.25 m, converged
+// (`auto`) and one bounce. Counters: patches, VPLs, form-factor matrix size (the dominant memory:
+// n^2 floats; the mesh and vectors are O(n)), bounces run.
+// Run: build/bench/indirect_bench --benchmark_min_time=0.01
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <vector>
+
+#include "calc/indirect/indirect.h"
+#include "photometry/builtin.h"
+
+namespace {
+
+using namespace luxgrid;
+using namespace luxgrid::calc;
+
+Scene bench_room() {
+  Scene s;
+  s.name = "bench";
+  Room r;
+  r.name = "room";
+  r.outline = {{0, 0}, {12, 0}, {12, 8}, {0, 8}};
+  r.height = 3.0;
+  r.reflectance = {0.2, 0.5, 0.7};
+  s.rooms = {r};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 2; ++j) {
+      Luminaire l;
+      l.label = "downlight";
+      l.pose.position = Vec3(2.0 + 4.0 * i, 2.0 + 4.0 * j, 2.99);
+      l.distribution = std::make_shared<photometry::LambertianDistribution>(1000.0);
+      s.luminaires.push_back(l);
+    }
+  s.surfaces = {geometry::make_plane_grid("workplane", {0.5, 0.5, 0.75}, {1, 0, 0}, {0, 1, 0},
+                                          11.0, 7.0, 0.25)};
+  return s;
+}
+
+void BM_Indirect(benchmark::State& state) {
+  const Scene scene = bench_room();
+  indirect::IndirectOptions o;
+  o.patch_size_m = static_cast<double>(state.range(0)) / 100.0;
+  o.bounces = static_cast<int>(state.range(1));
+  o.max_patches_per_room = 20000;
+  indirect::IndirectResult r;
+  for (auto _ : state) {
+    r = indirect::compute_indirect(scene, scene.surfaces, o);
+    benchmark::DoNotOptimize(r.E_indirect_per_surface.data());
+  }
+  const double n = static_cast<double>(r.patches);
+  state.counters["patches"] = n;
+  state.counters["vpls"] = static_cast<double>(r.vpls);
+  state.counters["bounces"] = r.bounces_run;
+  // The one-bounce path builds no form factors.
+  state.counters["FF_MB"] = o.bounces == 1 ? 0.0 : n * n * sizeof(float) / 1e6;
+}
+
+// Patch size in cm; bounces (0 = auto, 1 = one bounce).
+BENCHMARK(BM_Indirect)
+    ->ArgsProduct({{100, 70, 50, 35, 25}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace
