@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "calc/json_reader.h"
+#include "calc/luminaire_tilt.h"
 #include "calc/scaled_distribution.h"
 #include "calc/visibility.h"
 #include "geometry/workplane.h"
@@ -526,6 +527,9 @@ Scene parse_project(const nlohmann::json& doc, const std::string& label,
     }
   }
   if (scene.surfaces.empty()) surfaces.fail("expected at least one calculation surface");
+  // IES TILT tables hold for the lamp as measured; a luminaire turned in the scene gets its
+  // file's factor at its actual tilt, once, here, so every later stage sees the scaled output.
+  apply_tilt_factors(scene);
   return scene;
 }
 
