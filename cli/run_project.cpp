@@ -62,7 +62,9 @@ RunOutcome run_project(const std::filesystem::path& project, const std::filesyst
   out.checks = outcome.checks;
   out.cost = outcome.cost ? &*outcome.cost : nullptr;
   out.version = LUXGRID_VERSION;
-  outcome.warnings = report::write_outputs(outcome.results, folder, out);
+  // Scene warnings (legal but suspicious input, naming the object) first, then the outputs'.
+  outcome.warnings = scene.warnings;
+  for (auto& w : report::write_outputs(outcome.results, folder, out)) outcome.warnings.push_back(std::move(w));
   folder.commit();
   return outcome;
 }

@@ -15,6 +15,11 @@ nlohmann::json surface_json(const calc::SurfaceResult& r) {
   if (g.kind == geometry::SurfaceGrid::Kind::grid) {
     s["spacing"] = json::array({g.spacing_u, g.spacing_v});
   }
+  // What geometry did to the grid: the quantity its numbers are, and the points it kept in the
+  // nu x nv layout but left out of the calculation and the statistics (their E is 0).
+  s["quantity"] = geometry::to_string(g.quantity);
+  s["points_outside"] = g.points_outside;
+  s["points_in_obstacles"] = g.points_in_obstacles;
   json points = json::array(), normals = json::array();
   for (size_t i = 0; i < g.points.size(); ++i) {
     points.push_back(vec3(g.points[i]));
@@ -31,7 +36,7 @@ nlohmann::json surface_json(const calc::SurfaceResult& r) {
 }
 }  // namespace
 
-nlohmann::json results_to_json(const calc::Results& results) {
+nlohmann::json results_to_json(const calc::Results& results, const std::vector<std::string>& warnings) {
   using nlohmann::json;
   json j;
   j["format"] = kResultsFormat;
@@ -40,6 +45,7 @@ nlohmann::json results_to_json(const calc::Results& results) {
                {"indirect", results.plan.indirect},
                {"visibility", results.plan.visibility},
                {"notes", results.plan.notes}};
+  j["warnings"] = warnings;
   j["surfaces"] = json::array();
   for (const auto& s : results.surfaces) j["surfaces"].push_back(surface_json(s));
   j["timing_s"] = json::object();

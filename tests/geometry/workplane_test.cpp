@@ -87,6 +87,27 @@ TEST(Workplane, UShapeQuarterMetreBorderHandCounted) {
   EXPECT_TRUE(g.active[6 * 9 + 8]);   // (4.5, 3.5): top of the right arm
 }
 
+TEST(Workplane, ChamferedCornerHandCounted) {
+  // A 4 x 4 room with its north-east corner cut at 45 degrees: the chamfer x + y = 6 moves in by
+  // the border along its normal, to x + y = 6 - 0.5 sqrt(2) = 5.2929. Inset box 0.5..3.5, 0.5 m
+  // cells: 6 x 6, centres 0.75 + 0.5 i. A centre is outside when 1.5 + 0.5 (i + j) > 5.2929,
+  // i.e. i + j >= 8: (3,5), (4,4), (5,3), (4,5), (5,4), (5,5) -> 6 outside, 30 active (the
+  // nearest centres, i + j = 7, sit 0.21 m inside the chamfer: no ties).
+  const Polygon2 chamfered = {{0, 0}, {4, 0}, {4, 2}, {2, 4}, {0, 4}};
+  const auto region = inset_outline(chamfered, 0.5);
+  ASSERT_EQ(region.size(), 1u);
+  EXPECT_NEAR(signed_area(region[0]), 9.0 - 0.5 * std::pow(3.5 + 3.5 - (6.0 - 0.5 * std::sqrt(2.0)), 2), 1e-9);
+  const auto g = make_region_grid("wp", region, 0.8, 0.5, {});
+  EXPECT_EQ(g.nu, 6);
+  EXPECT_EQ(g.nv, 6);
+  EXPECT_EQ(g.points.front(), Vec3(0.75, 0.75, 0.8));
+  EXPECT_EQ(active_count(g), 30u);
+  EXPECT_EQ(g.points_outside, 6u);
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i)
+      EXPECT_EQ(g.active[static_cast<size_t>(j * 6 + i)], i + j < 8) << i << ", " << j;
+}
+
 TEST(Workplane, ObstaclesSpanningTheHeightRemovePoints) {
   // A column over (2, 2) removes that point; a 0.7 m table under (1, 1) does not (the
   // workplane at 0.8 m passes over it); a box through (1, 2) in the air above 1 m does not.

@@ -43,6 +43,26 @@ TEST(ResultsJson, HasTheDocumentedShape) {
   for (const char* k : {"Emin", "Eavg", "Emax", "U0", "Ud"}) EXPECT_TRUE(s["stats"].contains(k)) << k;
   EXPECT_DOUBLE_EQ(s["stats"]["U0"].get<double>(), 1.0);
   EXPECT_DOUBLE_EQ(j["timing_s"]["direct"].get<double>(), 0.02);
+  EXPECT_EQ(s["quantity"], "planar");
+  EXPECT_EQ(s["points_outside"], 0);
+  EXPECT_EQ(s["points_in_obstacles"], 0);
+  EXPECT_EQ(j["warnings"], nlohmann::json::array());
+}
+
+TEST(ResultsJson, SaysWhatGeometryDid) {
+  calc::Results r = sample();
+  auto& g = r.surfaces[0].grid;
+  g.quantity = geometry::Quantity::cylindrical;
+  g.active = {true, false, false, true, true, true, false, true};
+  g.points_outside = 2;
+  g.points_in_obstacles = 1;
+  const auto j = results_to_json(r, {"room \"L\": the outline is clockwise; reversed to counter-clockwise"});
+  const auto& s = j["surfaces"][0];
+  EXPECT_EQ(s["quantity"], "cylindrical");
+  EXPECT_EQ(s["points_outside"], 2);
+  EXPECT_EQ(s["points_in_obstacles"], 1);
+  ASSERT_EQ(j["warnings"].size(), 1u);
+  EXPECT_EQ(j["warnings"][0], "room \"L\": the outline is clockwise; reversed to counter-clockwise");
 }
 
 TEST(ColourScale, NiceValues) {
