@@ -55,6 +55,20 @@ std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Lumina
   }
   svg += "<polygon points=\"" + pts + "\" fill=\"#f4f4f0\" stroke=\"#222\" stroke-width=\"2.5\"/>";
 
+  // Obstacles: their footprint, hatched grey, with name and height in the tooltip; drawn before
+  // the grids and luminaires so those stay on top.
+  for (const auto& o : room.obstacles) {
+    std::string fp;
+    for (const auto& p : o.footprint) {
+      std::snprintf(buf, sizeof buf, "%.1f,%.1f ", sx(p.x), sy(p.y));
+      fp += buf;
+    }
+    std::snprintf(buf, sizeof buf, "%.2f to %.2f m", o.z0, o.z1);
+    svg += "<polygon class=\"obstacle\" points=\"" + fp +
+           "\" fill=\"#b8b8b8\" stroke=\"#555\" stroke-width=\"1.2\"><title>obstacle " + escape(o.name) +
+           ", " + buf + "</title></polygon>";
+  }
+
   // Grid extents: horizontal grids as dashed rectangles, vertical ones as a line along the wall.
   for (const auto& g : surfaces) {
     if (g.kind != geometry::SurfaceGrid::Kind::grid) continue;

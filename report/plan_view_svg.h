@@ -1,7 +1,7 @@
 #pragma once
-// The plan view of a room seen from above, as an inline SVG: outline, luminaires with their
-// aiming, the extents of the calculation grids, a north arrow (+y is north, the project's
-// convention) and a scale bar.
+// The plan view of a room seen from above, as an inline SVG: outline, obstacles (footprints),
+// luminaires with their aiming, the extents of the calculation grids, a north arrow (+y is north,
+// the project's convention) and a scale bar.
 #include <string>
 #include <vector>
 
@@ -10,8 +10,8 @@
 namespace luxgrid::report {
 
 // Draws `room` with every luminaire whose position lies over its outline (or within 0.5 m of its
-// bounding box) and every grid surface that lies inside its bounding box. Obstacles: the Scene
-// carries none yet; they will be drawn as filled boxes when it does.
+// bounding box) and every grid surface that lies inside its bounding box; the room's obstacles
+// as grey footprints (class "obstacle").
 std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Luminaire>& luminaires,
                           const std::vector<geometry::SurfaceGrid>& surfaces, int width_px = 640);
 

@@ -186,11 +186,15 @@ TEST(ReportCli, CostOfTheExampleOffice) {
       }
     }
   }
-  // Each level's time is the same for all of its rows; the levels are ordered by cost. The cheap
-  // levels can take the same few milliseconds, so only the extremes are compared strictly.
-  EXPECT_LE(rows.at("draft")[0].time_s, rows.at("reference")[0].time_s);
-  EXPECT_LE(rows.at("standard")[0].time_s, rows.at("reference")[0].time_s);
-  EXPECT_LE(rows.at("high")[0].time_s, rows.at("reference")[0].time_s);
+  // Each level's time is the same for all of its rows; the times follow the quality order. Draft
+  // and standard differ only in the near field, a small part of the office's time (measured
+  // 0.89 s vs 1.11 s), so on a noisy machine they may swap; every other neighbour pair is apart
+  // by 2.5x or more (standard 1.1 s, high 2.8 s, reference 10 s), so those are compared strictly.
+  const double draft = rows.at("draft")[0].time_s, standard = rows.at("standard")[0].time_s,
+               high = rows.at("high")[0].time_s, reference = rows.at("reference")[0].time_s;
+  EXPECT_LE(draft, high);
+  EXPECT_LE(standard, high);
+  EXPECT_LE(high, reference);
   EXPECT_NE(r.output.find("what each level simulated"), std::string::npos);
 }
 
