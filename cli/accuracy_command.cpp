@@ -23,7 +23,7 @@ void add_accuracy_command(CLI::App& app, Runner& run) {
   CLI::App* cmd = app.add_subcommand(
       "accuracy", "Measure NRMS error and time per evaluation of every near-field model (paper's protocol)");
   cmd->add_option("--out", opt->out, "Output folder for accuracy.md and accuracy.png")->capture_default_str();
-  cmd->add_option("--photometry", opt->photometry, "Folder holding the paper's seven Zumtobel LDT files")
+  cmd->add_option("--photometry", opt->photometry, "Folder holding the paper's seven Zumtobel LDT files (the full study also reads three contrast files from ../ies and ../ldt beside it)")
       ->capture_default_str();
   cmd->add_option("--grid", opt->grid, "Receivers per side of the 5 x 5 region (per orientation)")
       ->check(CLI::Range(2, 200));
@@ -33,6 +33,8 @@ void add_accuracy_command(CLI::App& app, Runner& run) {
     run = [opt] {
       namespace fs = std::filesystem;
       auto files = paper_ldt_files(opt->photometry);
+      if (!opt->quick)
+        for (const auto& f : contrast_files(opt->photometry)) files.push_back(f);
       for (const auto& f : files)
         if (!fs::exists(f)) throw InputError(f.string() + ": photometry file of the study not found (--photometry)");
       AccuracyOptions options;

@@ -104,6 +104,15 @@ std::vector<std::filesystem::path> paper_ldt_files(const std::filesystem::path& 
   return files;
 }
 
+std::vector<std::filesystem::path> contrast_files(const std::filesystem::path& ldt_dir) {
+  // Files of a very different character from the paper's office luminaires, from the corpus
+  // (tests/data/photometry, see its MANIFEST): a narrow spot (steep peak), an asymmetric
+  // wall-washer-like flood (isym 0) and a roadway optic (strongly lateral, bilateral).
+  const std::filesystem::path root = ldt_dir.parent_path();
+  return {root / "ies" / "erco_qrcbc35_lm86_spot.ies", root / "ldt" / "ledvance_flmax_asym_isym0.ldt",
+          root / "ies" / "rab_roadway_bilateral_lm02.ies"};
+}
+
 std::vector<AccuracyDataSet> accuracy_data_sets(const std::vector<std::filesystem::path>& files) {
   std::vector<AccuracyDataSet> sets;
   sets.push_back({"cosine", std::make_shared<photometry::LambertianDistribution>(kIntensityCd)});

@@ -83,6 +83,9 @@ std::vector<AccuracyDataSet> accuracy_data_sets(const std::vector<std::filesyste
 
 // The seven Zumtobel data sets of the paper, in `ldt_dir`.
 std::vector<std::filesystem::path> paper_ldt_files(const std::filesystem::path& ldt_dir);
+// Corpus files of a very different character (spot, asymmetric flood, roadway), found beside
+// `ldt_dir` (its parent's ies/ and ldt/ folders); the full study adds them after the paper's.
+std::vector<std::filesystem::path> contrast_files(const std::filesystem::path& ldt_dir);
 
 using AccuracyProgress = std::function<void(const std::string& what)>;
 

@@ -46,8 +46,9 @@ int model_index(const AccuracyStudy& s, const Model& model) {
   return 0;
 }
 
-TEST(AccuracyStudy, PaperLdtFilesArePresent) {
+TEST(AccuracyStudy, StudyFilesArePresent) {
   for (const auto& f : luxgrid::cli::paper_ldt_files(kLdtDir)) EXPECT_TRUE(fs::exists(f)) << f;
+  for (const auto& f : luxgrid::cli::contrast_files(kLdtDir)) EXPECT_TRUE(fs::exists(f)) << f;
 }
 
 TEST(AccuracyStudy, EveryCellIsFiniteAndComplete) {
