@@ -78,7 +78,9 @@ double patch_flux(const Luminaire& lum, const Patch& p, const OcclusionFn& occlu
 }  // namespace
 
 FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
-                         const std::vector<OcclusionFn>& occlusion, double max_angle_rad) {
+                         const std::vector<OcclusionFn>& occlusion, double max_angle_rad,
+                         const std::map<const photometry::IntensityDistribution*, double>*
+                             known_flux_lm) {
   FirstBounce fb;
   const size_t n = mesh.patches.size();
   fb.incident_flux_lm.assign(n, 0.0);
@@ -86,6 +88,7 @@ FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
   // luminous_flux integrates the whole distribution: once per distinct distribution (the
   // members of an array share theirs), not once per luminaire.
   std::map<const photometry::IntensityDistribution*, double> flux_of;
+  if (known_flux_lm) flux_of = *known_flux_lm;
   for (const auto& lum : scene.luminaires) {
     const int r = room_containing(scene, lum.pose.position, 0.0);
     if (r < 0) {

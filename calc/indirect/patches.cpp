@@ -137,6 +137,15 @@ void add_patch(PatchMesh& mesh, Polygon3 poly, const Vec3& normal, double reflec
   if (p.area_m2 < kMinPieceArea_m2) return;
   p.centroid = polygon_centroid(p.polygon);
   p.diameter_m = polygon_diameter(p.polygon);
+  if (p.polygon.size() == 4) {
+    // A parallelogram when the diagonals bisect each other; its quarters' centroids are then
+    // halfway between the centre and each corner.
+    const Vec3 mid02 = 0.5 * (p.polygon[0] + p.polygon[2]), mid13 = 0.5 * (p.polygon[1] + p.polygon[3]);
+    if (glm::length(mid02 - mid13) <= 1e-9 * p.diameter_m) {
+      p.has_quarters = true;
+      for (int k = 0; k < 4; ++k) p.quarter_centroid[k] = 0.5 * (p.polygon[k] + p.centroid);
+    }
+  }
   p.reflectance = reflectance;
   p.room = room;
   p.face = face;

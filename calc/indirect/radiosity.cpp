@@ -1,8 +1,14 @@
 #include "calc/indirect/radiosity.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 namespace luxgrid::calc::indirect {
@@ -17,11 +23,29 @@ constexpr double kMinPlaneDistance_m = 1e-9;
 // over the last sweep; below it the tail's shape error is negligible against the tolerances.
 constexpr double kRatioStability = 1e-4;
 constexpr int kMinSweepsBeforeTail = 4;
+// Patches whose planes are this close (same normal) are coplanar: far below kMinPlaneDistance_m,
+// so the plane test would give their mutual form factors 0 anyway.
+constexpr double kCoplanar_m = 1e-11;
 
 double l1(const std::vector<double>& v) {
   double s = 0.0;
   for (double x : v) s += std::abs(x);
   return s;
+}
+
+// sum of row[j] v[j] over [b, e), in double, with four independent partial sums: a single sum
+// is one long chain of dependent additions, which (not the memory) limits a sweep.
+double dot(const float* row, const double* v, size_t b, size_t e) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  size_t j = b;
+  for (; j + 4 <= e; j += 4) {
+    s0 += static_cast<double>(row[j]) * v[j];
+    s1 += static_cast<double>(row[j + 1]) * v[j + 1];
+    s2 += static_cast<double>(row[j + 2]) * v[j + 2];
+    s3 += static_cast<double>(row[j + 3]) * v[j + 3];
+  }
+  for (; j < e; ++j) s0 += static_cast<double>(row[j]) * v[j];
+  return (s0 + s1) + (s2 + s3);
 }
 
 // Fraction of `target` visible from `from`: its centroid and the midpoints between centroid and
@@ -36,6 +60,21 @@ double visible_fraction(const Vec3& from, const Patch& target, const OcclusionFn
 }
 }  // namespace
 
+void* allocate_huge_pages(size_t bytes) {
+  constexpr size_t kHuge = size_t(2) << 20;
+  if (bytes < kHuge) {
+    if (void* p = std::malloc(bytes == 0 ? 1 : bytes)) return p;
+    throw std::bad_alloc();
+  }
+  const size_t rounded = (bytes + kHuge - 1) / kHuge * kHuge;
+  void* p = std::aligned_alloc(kHuge, rounded);
+  if (!p) throw std::bad_alloc();
+#ifdef MADV_HUGEPAGE
+  madvise(p, rounded, MADV_HUGEPAGE);  // advice only: without THP the pages are just small
+#endif
+  return p;
+}
+
 FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn& occluded,
                               double far_ratio, bool renormalise) {
   FormFactorMatrix F;
@@ -43,32 +82,87 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn
   F.n = mesh.room_begin[room + 1] - F.begin;
   F.renormalised = renormalise;
   const size_t n = F.n;
-  F.gather.assign(n * n, 0.0f);
-  std::vector<double> correction(n, 0.0);
-  tbb::parallel_for(size_t(0), n, [&](size_t j) {
-    const Patch& src = mesh.patches[F.begin + j];
-    const Vec3 from = src.centroid + src.normal * kShootLift_m;
-    std::vector<double> row(n, 0.0);
-    double sum = 0.0;
-    for (size_t i = 0; i < n; ++i) {
-      if (i == j) continue;
+  // Centroids and normals side by side: the inner loop below streams through them n^2 times.
+  std::vector<Vec3> centroid(n), normal(n);
+  for (size_t k = 0; k < n; ++k) {
+    centroid[k] = mesh.patches[F.begin + k].centroid;
+    normal[k] = mesh.patches[F.begin + k].normal;
+  }
+  // Runs of consecutive coplanar patches (same normal, same plane): their mutual entries are 0
+  // (the plane test below rejects them), so they are neither computed nor read by the sweeps.
+  F.zero_begin.assign(n, 0);
+  F.zero_end.assign(n, 0);
+  for (size_t k = 0; k < n;) {
+    size_t e = k + 1;
+    const double offset = glm::dot(normal[k], centroid[k]);
+    while (e < n && normal[e] == normal[k] &&
+           std::abs(glm::dot(normal[e], centroid[e]) - offset) <= kCoplanar_m)
+      ++e;
+    for (size_t q = k; q < e; ++q) F.zero_begin[q] = k, F.zero_end[q] = e;
+    k = e;
+  }
+  // Filled one receiving row at a time (row i = F[j -> i] over all sources j), so every write is
+  // contiguous; the per-source sums needed for the renormalisation are column sums, taken after.
+  F.gather.resize(n * n);  // not zeroed: every entry is written below
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t i = range.begin(); i < range.end(); ++i) {
       const Patch& dst = mesh.patches[F.begin + i];
-      if (!(glm::dot(dst.normal, src.centroid - dst.centroid) > kMinPlaneDistance_m)) continue;
-      if (!(glm::dot(src.normal, dst.centroid - src.centroid) > -dst.diameter_m)) continue;
-      const double d = glm::length(dst.centroid - src.centroid);
-      double f = d > far_ratio * dst.diameter_m
-                     ? point_kernel_form_factor(src.centroid, src.normal, dst.centroid, dst.normal,
-                                                dst.area_m2)
-                     : point_polygon_form_factor(src.centroid, src.normal, dst.polygon);
-      if (f > 0.0) f *= visible_fraction(from, dst, occluded);
-      row[i] = f;
-      sum += f;
+      const Vec3 dc = dst.centroid, dn = dst.normal;
+      const double near_d2 = far_ratio * dst.diameter_m * far_ratio * dst.diameter_m;
+      float* row = F.gather.data() + i * n;
+      const size_t zb = F.zero_begin[i], ze = F.zero_end[i];
+      for (size_t j = zb; j < ze; ++j) row[j] = 0.0f;
+      for (size_t j = 0; j < n; ++j) {
+        if (j == zb) j = ze;
+        if (j == n) break;
+        row[j] = 0.0f;
+        if (i == j) continue;
+        const Vec3 sc = centroid[j], sn = normal[j];
+        const Vec3 d = dc - sc;  // source -> receiver
+        const double h_dst = -glm::dot(dn, d);  // source's height over the receiver's plane
+        if (!(h_dst > kMinPlaneDistance_m)) continue;
+        const double h_src = glm::dot(sn, d);
+        if (!(h_src > -dst.diameter_m)) continue;
+        const double d2 = glm::dot(d, d);
+        // Far: point_kernel_form_factor(sc, sn, dc, dn, A) = A max(0, dn . (sc - dc))
+        // max(0, sn . (dc - sc)) / (pi d^4), written out.
+        double f;
+        if (d2 > near_d2) {
+          f = h_src > 0.0 ? dst.area_m2 * h_dst * h_src / (kPi * d2 * d2) : 0.0;
+        } else {
+          // Between far_ratio x D / 2 and far_ratio x D: the kernel on the quarters; closer: exact.
+          f = dst.has_quarters ? quarter_kernel_form_factor(sc, sn, dst.polygon, dc, dst.quarter_centroid, dn,
+                                                            dst.area_m2, 0.25 * near_d2)
+                               : -1.0;
+          if (f < 0.0) f = point_polygon_form_factor(sc, sn, dst.polygon);
+        }
+        if (f > 0.0 && occluded) f *= visible_fraction(sc + sn * kShootLift_m, dst, occluded);
+        row[j] = static_cast<float>(f);
+      }
     }
-    correction[j] = std::abs(1.0 - sum);
-    const double scale = renormalise && sum > 0.0 ? 1.0 / sum : 1.0;
-    for (size_t i = 0; i < n; ++i) F.gather[i * n + j] = static_cast<float>(row[i] * scale);
   });
-  for (double c : correction) F.max_row_correction = std::max(F.max_row_correction, c);
+  // Per-source sums (columns), in double, and the renormalisation.
+  std::vector<double> sum(n, 0.0);
+  constexpr size_t kColumnBlock = 512;
+  tbb::parallel_for(size_t(0), (n + kColumnBlock - 1) / kColumnBlock, [&](size_t b) {
+    const size_t j0 = b * kColumnBlock, j1 = std::min(n, j0 + kColumnBlock);
+    for (size_t i = 0; i < n; ++i) {
+      const float* row = F.gather.data() + i * n;
+      for (size_t j = j0; j < j1; ++j) sum[j] += row[j];
+    }
+  });
+  // The scale stays in double (a float scale would bias each source's total by up to 6e-8).
+  std::vector<double> scale(n, 1.0);
+  for (size_t j = 0; j < n; ++j) {
+    F.max_row_correction = std::max(F.max_row_correction, std::abs(1.0 - sum[j]));
+    if (renormalise && sum[j] > 0.0) scale[j] = 1.0 / sum[j];
+  }
+  if (renormalise) {
+    tbb::parallel_for(size_t(0), n, [&](size_t i) {
+      float* row = F.gather.data() + i * n;
+      for (size_t j = 0; j < n; ++j) row[j] = static_cast<float>(static_cast<double>(row[j]) * scale[j]);
+    });
+  }
   return F;
 }
 
@@ -89,8 +183,10 @@ RadiosityResult solve_radiosity(const FormFactorMatrix& F, const std::vector<dou
   auto sweep = [&]() {
     tbb::parallel_for(size_t(0), n, [&](size_t i) {
       const float* row = F.gather.data() + i * n;
-      double s = 0.0;
-      for (size_t j = 0; j < n; ++j) s += static_cast<double>(row[j]) * delta[j];
+      // Entries [zero_begin, zero_end) are 0 (coplanar patches): skipped.
+      const size_t zb = F.zero_begin.empty() ? n : F.zero_begin[i];
+      const size_t ze = F.zero_begin.empty() ? n : F.zero_end[i];
+      const double s = dot(row, delta.data(), 0, zb) + dot(row, delta.data(), ze, n);
       next[i] = reflectance[i] * s;
     });
     delta.swap(next);
