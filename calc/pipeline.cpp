@@ -1,8 +1,6 @@
 #include "calc/pipeline.h"
 
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 
 #include "calc/indirect/indirect.h"
 
@@ -39,9 +37,7 @@ void run_direct(const Scene& scene, Results& results, const Progress& progress) 
 
 // Reflected light, when the plan's decision says the scene needs it.
 void run_indirect(const Scene& scene, Results& results) {
-  const auto td = std::chrono::steady_clock::now();
   const indirect::IndirectDecision decision = indirect::decide_indirect(scene);
-  if (std::getenv("LUXGRID_INDIRECT_PROFILE")) std::fprintf(stderr, "PROFILE decide %.4f s\n", seconds_since(td));
   results.plan.indirect = decision.reason;
   if (!decision.run) return;
   indirect::IndirectOptions options = indirect::indirect_options(scene.settings);

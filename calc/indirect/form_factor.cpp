@@ -81,9 +81,13 @@ double point_kernel_form_factor(const Vec3& x, const Vec3& n, const Vec3& c, con
 
 double quarter_kernel_form_factor(const Vec3& x, const Vec3& n, const Polygon3& polygon,
                                   const Vec3& centroid, const std::array<Vec3, 4>& quarter,
-                                  const Vec3& m, double area_m2, double min_d2) {
-  for (const Vec3& v : polygon)
-    if (!(glm::dot(n, v - x) > 0.0)) return -1.0;
+                                  const Vec3& m, double area_m2, double diameter_m,
+                                  double min_d2) {
+  // Every vertex in front of the receiver: at once when the circumscribed sphere is (a
+  // parallelogram's vertices are at most half its diameter from its centroid), else one by one.
+  if (!(glm::dot(n, centroid - x) > 0.5 * diameter_m))
+    for (const Vec3& v : polygon)
+      if (!(glm::dot(n, v - x) > 0.0)) return -1.0;
   double sum = 0.0;
   for (const Vec3& c : quarter) {
     const Vec3 d = x - c;

@@ -29,7 +29,8 @@ double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Polygon3& p
 double point_kernel_form_factor(const Vec3& x, const Vec3& n, const Vec3& c, const Vec3& m,
                                 double area_m2);
 
-// The form factor of a parallelogram patch (polygon, centroid, area) at an intermediate distance,
+// The form factor of a parallelogram patch (polygon, centroid, area, diameter) at an intermediate
+// distance,
 // without Lambert's atan2s: the point kernel on the patch (F1, the one-point midpoint rule of the
 // form-factor integral) and on its four quarters (F4, the 2 x 2 midpoint rule, centroids
 // `quarter`), extrapolated (Richardson): the midpoint rules' leading errors go as the square of
@@ -40,7 +41,8 @@ double point_kernel_form_factor(const Vec3& x, const Vec3& n, const Vec3& c, con
 // or when the extrapolation comes out negative.
 double quarter_kernel_form_factor(const Vec3& x, const Vec3& n, const Polygon3& polygon,
                                   const Vec3& centroid, const std::array<Vec3, 4>& quarter,
-                                  const Vec3& m, double area_m2, double min_d2);
+                                  const Vec3& m, double area_m2, double diameter_m,
+                                  double min_d2);
 
 // Solid angle (sr) of the triangle abc seen from s (Van Oosterom and Strackee 1983, by atan2).
 double triangle_solid_angle_from(const Vec3& s, const Vec3& a, const Vec3& b, const Vec3& c);

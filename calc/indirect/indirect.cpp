@@ -3,8 +3,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <ctime>
 #include <limits>
 #include <algorithm>
 #include <array>
@@ -345,7 +343,7 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
         } else {
           const double half = 0.5 * far_ratio * p.diameter_m;
           f = p.has_quarters ? quarter_kernel_form_factor(x, n, p.polygon, p.centroid, p.quarter_centroid, p.normal,
-                                                          p.area_m2, half * half)
+                                                          p.area_m2, p.diameter_m, half * half)
                              : -1.0;
           if (f < 0.0) f = point_polygon_form_factor(x, n, p.polygon);
         }
@@ -455,7 +453,7 @@ double gather_point(const PatchMesh& mesh, size_t begin, size_t end,
       // Between far_ratio x D / 2 and far_ratio x D: the kernel on the quarters; closer: exact.
       const double half = 0.5 * far_ratio * p.diameter_m;
       f = p.has_quarters ? quarter_kernel_form_factor(x, n, p.polygon, p.centroid, p.quarter_centroid, p.normal,
-                                                      p.area_m2, half * half)
+                                                      p.area_m2, p.diameter_m, half * half)
                          : -1.0;
       if (f < 0.0) f = point_polygon_form_factor(x, n, p.polygon);
     }
@@ -479,19 +477,7 @@ IndirectResult compute_indirect(const Scene& scene,
   const int bounces = options.bounces > 0 ? options.bounces
                       : options.quality == Quality::draft ? 1 : 0;
 
-  static const bool prof = std::getenv("LUXGRID_INDIRECT_PROFILE") != nullptr;
-  auto tp = std::chrono::steady_clock::now();
-  auto cpu = [] { timespec ts; clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts); return ts.tv_sec + 1e-9 * ts.tv_nsec; };
-  double cp = cpu();
-  auto lap = [&](const char* what) {
-    if (!prof) return;
-    const auto now = std::chrono::steady_clock::now();
-    const double c = cpu();
-    std::fprintf(stderr, "PROFILE %-14s %.4f s cpu %.4f\n", what, std::chrono::duration<double>(now - tp).count(), c - cp);
-    tp = now; cp = c;
-  };
   const PatchMesh mesh = mesh_within_budget(scene, options, size, res.notes);
-  lap("mesh");
   res.patches = mesh.patches.size();
   res.patch_size_m = mesh.patch_size_m;
 
@@ -527,7 +513,6 @@ IndirectResult compute_indirect(const Scene& scene,
   }
 
   const FirstBounce fb = first_bounce(scene, mesh, occlusion, 0.08, &options.luminous_flux_lm);
-  lap("first_bounce");
   for (const auto& n : fb.notes) res.notes.push_back(n);
   res.vpls = fb.vpl_count;
   res.emitted_flux_lm = fb.emitted_flux_lm;
@@ -554,7 +539,6 @@ IndirectResult compute_indirect(const Scene& scene,
       sol = solve_radiosity(none, rho, incident, 1, tol);
     } else {
       const FormFactorMatrix F = form_factors(mesh, static_cast<int>(r), occlusion[r], far_ratio);
-      lap("form_factors");
       res.max_row_correction = std::max(res.max_row_correction, F.max_row_correction);
       sol = solve_radiosity(F, rho, incident, bounces, tol);
     }
@@ -563,7 +547,6 @@ IndirectResult compute_indirect(const Scene& scene,
     res.residual = std::max(res.residual, sol.residual);
     for (size_t i = begin; i < end; ++i) exitant[i] = sol.exitant_flux_lm[i - begin];
   }
-  lap("solve");
 
   // Final gather.
   std::vector<GatherSet> gather_sets;
@@ -582,7 +565,6 @@ IndirectResult compute_indirect(const Scene& scene,
       out[i] = gather_set_point(mesh, gather_sets[r], x, grid.normals[i], far_ratio, occlusion[r]);
     });
   }
-  lap("gather");
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   std::string what = bounces == 1 ? "one bounce (RSM-style)"

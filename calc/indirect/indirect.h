@@ -9,7 +9,8 @@
 // virtual point light of flux rho x incident lumens (first_bounce.h, seed 004); the light is then
 // carried between patches with exact polygon form factors and solved to convergence, or for
 // exactly N reflections (radiosity.h); finally each grid point gathers from the patches with
-// Lambert's exact polygon form factor near a patch and the seed's point kernel far from it.
+// Lambert's exact polygon form factor near a patch, the point kernel on its quarters extrapolated
+// (Richardson) at intermediate distances and the seed's point kernel far from it.
 #include <map>
 #include <string>
 #include <vector>

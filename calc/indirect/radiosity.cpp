@@ -1,6 +1,7 @@
 #include "calc/indirect/radiosity.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -46,6 +47,23 @@ double dot(const float* row, const double* v, size_t b, size_t e) {
   }
   for (; j < e; ++j) s0 += static_cast<double>(row[j]) * v[j];
   return (s0 + s1) + (s2 + s3);
+}
+
+// Tile size of the source chunks, in units of the largest patch diameter of a coplanar run.
+constexpr double kChunkTile = 4.0;
+
+// Largest (smallest) of n . (v - x) over the box [lo, hi]; squared distance from x to the box.
+double box_max_height(const Vec3& n, const Vec3& x, const Vec3& lo, const Vec3& hi) {
+  const Vec3 a = lo - x, b = hi - x;
+  return std::max(n.x * a.x, n.x * b.x) + std::max(n.y * a.y, n.y * b.y) + std::max(n.z * a.z, n.z * b.z);
+}
+double box_min_height(const Vec3& n, const Vec3& x, const Vec3& lo, const Vec3& hi) {
+  const Vec3 a = lo - x, b = hi - x;
+  return std::min(n.x * a.x, n.x * b.x) + std::min(n.y * a.y, n.y * b.y) + std::min(n.z * a.z, n.z * b.z);
+}
+double box_distance2(const Vec3& x, const Vec3& lo, const Vec3& hi) {
+  const Vec3 d = glm::max(glm::max(lo - x, x - hi), Vec3(0.0));
+  return glm::dot(d, d);
 }
 
 // Fraction of `target` visible from `from`: its centroid and the midpoints between centroid and
@@ -101,43 +119,109 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn
     for (size_t q = k; q < e; ++q) F.zero_begin[q] = k, F.zero_end[q] = e;
     k = e;
   }
-  // Filled one receiving row at a time (row i = F[j -> i] over all sources j), so every write is
-  // contiguous; the per-source sums needed for the renormalisation are column sums, taken after.
-  F.gather.resize(n * n);  // not zeroed: every entry is written below
+  // The sources of each coplanar run in tiles (chunks) of kChunkTile x the run's largest
+  // diameter: a receiver takes a chunk that is wholly far, wholly in front of it and with it
+  // wholly in front of the chunk's plane in one loop without branches (most of the matrix).
+  struct Chunk {
+    size_t begin = 0, end = 0;  // into `order`
+    size_t run = 0;             // first patch of the coplanar run
+    Vec3 normal{0.0};
+    double max_offset = 0.0;    // largest normal . centroid
+    Vec3 lo{0.0}, hi{0.0};      // bounding box of the centroids
+  };
+  std::vector<size_t> order;
+  std::vector<double> ox, oy, oz;
+  std::vector<Chunk> chunks;
+  for (size_t k = 0; k < n; k = F.zero_end[k]) {
+    const size_t e = F.zero_end[k];
+    Vec3 lo = centroid[k], hi = centroid[k];
+    double dmax = 0.0;
+    for (size_t q = k; q < e; ++q) {
+      lo = glm::min(lo, centroid[q]), hi = glm::max(hi, centroid[q]);
+      dmax = std::max(dmax, mesh.patches[F.begin + q].diameter_m);
+    }
+    const double tile = std::max(kChunkTile * dmax, 1e-9);
+    auto key = [&](size_t q) {
+      const Vec3 t = glm::floor((centroid[q] - lo) / tile);
+      return std::array<double, 3>{t.x, t.y, t.z};
+    };
+    std::vector<size_t> run(e - k);
+    for (size_t q = k; q < e; ++q) run[q - k] = q;
+    std::stable_sort(run.begin(), run.end(), [&](size_t a, size_t b) { return key(a) < key(b); });
+    for (size_t r = 0; r < run.size(); ++r) {
+      const size_t q = run[r];
+      if (r == 0 || key(q) != key(run[r - 1])) {
+        Chunk c;
+        c.begin = c.end = order.size();
+        c.run = k;
+        c.normal = normal[q];
+        c.max_offset = -std::numeric_limits<double>::infinity();
+        c.lo = c.hi = centroid[q];
+        chunks.push_back(c);
+      }
+      Chunk& c = chunks.back();
+      order.push_back(q);
+      ox.push_back(centroid[q].x), oy.push_back(centroid[q].y), oz.push_back(centroid[q].z);
+      c.end = order.size();
+      c.max_offset = std::max(c.max_offset, glm::dot(normal[q], centroid[q]));
+      c.lo = glm::min(c.lo, centroid[q]), c.hi = glm::max(c.hi, centroid[q]);
+    }
+  }
+  // Filled one receiving row at a time (row i = F[j -> i] over all sources j), so every write
+  // lands in one row (in cache); the per-source sums needed for the renormalisation are column
+  // sums, taken after.
+  F.gather.resize(n * n);  // not zeroed here: each row is cleared below
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
     for (size_t i = range.begin(); i < range.end(); ++i) {
       const Patch& dst = mesh.patches[F.begin + i];
       const Vec3 dc = dst.centroid, dn = dst.normal;
       const double near_d2 = far_ratio * dst.diameter_m * far_ratio * dst.diameter_m;
+      const double a_pi = dst.area_m2;
       float* row = F.gather.data() + i * n;
-      const size_t zb = F.zero_begin[i], ze = F.zero_end[i];
-      for (size_t j = zb; j < ze; ++j) row[j] = 0.0f;
-      for (size_t j = 0; j < n; ++j) {
-        if (j == zb) j = ze;
-        if (j == n) break;
-        row[j] = 0.0f;
-        if (i == j) continue;
-        const Vec3 sc = centroid[j], sn = normal[j];
-        const Vec3 d = dc - sc;  // source -> receiver
-        const double h_dst = -glm::dot(dn, d);  // source's height over the receiver's plane
-        if (!(h_dst > kMinPlaneDistance_m)) continue;
-        const double h_src = glm::dot(sn, d);
-        if (!(h_src > -dst.diameter_m)) continue;
-        const double d2 = glm::dot(d, d);
-        // Far: point_kernel_form_factor(sc, sn, dc, dn, A) = A max(0, dn . (sc - dc))
-        // max(0, sn . (dc - sc)) / (pi d^4), written out.
-        double f;
-        if (d2 > near_d2) {
-          f = h_src > 0.0 ? dst.area_m2 * h_dst * h_src / (kPi * d2 * d2) : 0.0;
-        } else {
-          // Between far_ratio x D / 2 and far_ratio x D: the kernel on the quarters; closer: exact.
-          f = dst.has_quarters ? quarter_kernel_form_factor(sc, sn, dst.polygon, dc, dst.quarter_centroid, dn,
-                                                            dst.area_m2, 0.25 * near_d2)
-                               : -1.0;
-          if (f < 0.0) f = point_polygon_form_factor(sc, sn, dst.polygon);
+      std::fill(row, row + n, 0.0f);
+      for (const Chunk& c : chunks) {
+        if (c.run == F.zero_begin[i]) continue;  // coplanar with i: zeros
+        // Every source's height over the receiver's plane at most kMinPlaneDistance_m: all 0.
+        if (!(box_max_height(dn, dc, c.lo, c.hi) > kMinPlaneDistance_m)) continue;
+        const Vec3 sn = c.normal;
+        if (!occluded && box_min_height(dn, dc, c.lo, c.hi) > kMinPlaneDistance_m &&
+            glm::dot(sn, dc) - c.max_offset > 0.0 && box_distance2(dc, c.lo, c.hi) > near_d2) {
+          // All far, h_dst > kMinPlaneDistance_m and h_src > 0: the kernel for every source.
+          for (size_t k = c.begin; k < c.end; ++k) {
+            const double dx = dc.x - ox[k], dy = dc.y - oy[k], dz = dc.z - oz[k];
+            const double h_dst = -(dn.x * dx + dn.y * dy + dn.z * dz);
+            const double h_src = sn.x * dx + sn.y * dy + sn.z * dz;
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            row[order[k]] = static_cast<float>(a_pi * h_dst * h_src / (kPi * d2 * d2));
+          }
+          continue;
         }
-        if (f > 0.0 && occluded) f *= visible_fraction(sc + sn * kShootLift_m, dst, occluded);
-        row[j] = static_cast<float>(f);
+        for (size_t k = c.begin; k < c.end; ++k) {
+          const size_t j = order[k];
+          if (i == j) continue;
+          const Vec3 sc = centroid[j];
+          const Vec3 d = dc - sc;  // source -> receiver
+          const double h_dst = -glm::dot(dn, d);  // source's height over the receiver's plane
+          if (!(h_dst > kMinPlaneDistance_m)) continue;
+          const double h_src = glm::dot(sn, d);
+          if (!(h_src > -dst.diameter_m)) continue;
+          const double d2 = glm::dot(d, d);
+          // Far: point_kernel_form_factor(sc, sn, dc, dn, A) = A max(0, dn . (sc - dc))
+          // max(0, sn . (dc - sc)) / (pi d^4), written out.
+          double f;
+          if (d2 > near_d2) {
+            f = h_src > 0.0 ? dst.area_m2 * h_dst * h_src / (kPi * d2 * d2) : 0.0;
+          } else {
+            // Between far_ratio x D / 2 and far_ratio x D: the kernel on the quarters; closer: exact.
+            f = dst.has_quarters ? quarter_kernel_form_factor(sc, sn, dst.polygon, dc,
+                                                              dst.quarter_centroid, dn,
+                                                              dst.area_m2, dst.diameter_m, 0.25 * near_d2)
+                                 : -1.0;
+            if (f < 0.0) f = point_polygon_form_factor(sc, sn, dst.polygon);
+          }
+          if (f > 0.0 && occluded) f *= visible_fraction(sc + sn * kShootLift_m, dst, occluded);
+          row[j] = static_cast<float>(f);
+        }
       }
     }
   });

@@ -4,7 +4,9 @@
 //
 // Formulation (shooting form factors, flux units): F[j -> i] is the fraction of the light leaving
 // patch j that lands on patch i, computed at j's centroid with the exact polygon form factor of
-// i (near) or the point kernel (far), times the fraction of i visible from there. In a closed
+// i (near: within far_ratio x D_i / 2), the point kernel on i's quarters extrapolated to the
+// patch (Richardson, between far_ratio x D_i / 2 and far_ratio x D_i; form_factor.h) or the point
+// kernel on i (far), times the fraction of i visible from there. In a closed
 // room each row sums to 1 (the patches tile j's hemisphere); rows are renormalised to 1 so that no
 // light is created or lost by discretisation or visibility sampling, which matters at high
 // reflectance: a row-sum error e changes the converged total by about rho e / (1 - rho), 19 e at
@@ -13,8 +15,8 @@
 // Solver: Jacobi on the bounce series, Delta_1 = rho D, Delta_k+1 = rho (F^T Delta_k), Phi = sum
 // of Delta_k. Each sweep is exactly one more reflection, so `bounces: N` means exactly N
 // reflections (N = 1 is the seed's one-bounce model), which Gauss-Seidel and Southwell shooting
-// cannot promise. A sweep is one dense matrix-vector product (parallel, cache-friendly), so even
-// 4000 patches cost ~10 ms per bounce. For `auto`, the ratio r_k = |Delta_k+1| / |Delta_k| tends
+// cannot promise. A sweep is one dense matrix-vector product (parallel, rows in order, the
+// coplanar blocks skipped), so even 4000 patches cost ~5 ms per bounce. For `auto`, the ratio r_k = |Delta_k+1| / |Delta_k| tends
 // to the dominant eigenvalue (exactly rho in a closed room of uniform rho); once it is stable the
 // remaining bounces are a geometric series whose sum Delta_k r / (1 - r) is added (the "ambient"
 // tail of Cohen et al. 1988), so rho = 0.95 converges in tens of sweeps, not hundreds.
@@ -67,7 +69,10 @@ struct FormFactorMatrix {
 };
 
 // `far_ratio`: the point kernel is used when the distance between centroids exceeds far_ratio x
-// the receiving patch's diameter (infinity: always exact). `renormalise`: scale rows to 1 (closed
+// the receiving patch's diameter, its quarters (extrapolated) beyond half that, the exact formula
+// closer (infinity: always exact). Rows of the gather layout are filled in parallel; each
+// receiver takes the sources in tiles, and a tile wholly far and in front (most of a big room)
+// in one branch-free loop. `renormalise`: scale rows to 1 (closed
 // rooms).
 FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn& occluded,
                               double far_ratio, bool renormalise = true);
