@@ -235,29 +235,10 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn
       for (size_t j = j0; j < j1; ++j) sum[j] += row[j];
     }
   });
-  // The scale stays in double, and each source's column is rounded to float with error
-  // diffusion (the rounding error of each entry is carried into the next one down the column),
-  // so the stored column sums to 1 up to the last entry's rounding instead of a random walk of
-  // n roundings: a float matrix then conserves the flux to ~1e-12 over any number of bounces.
-  std::vector<double> scale(n, 1.0);
+  F.source_scale.assign(n, 1.0);
   for (size_t j = 0; j < n; ++j) {
     F.max_row_correction = std::max(F.max_row_correction, std::abs(1.0 - sum[j]));
-    if (renormalise && sum[j] > 0.0) scale[j] = 1.0 / sum[j];
-  }
-  if (renormalise) {
-    tbb::parallel_for(size_t(0), (n + kColumnBlock - 1) / kColumnBlock, [&](size_t b) {
-      const size_t j0 = b * kColumnBlock, j1 = std::min(n, j0 + kColumnBlock);
-      std::vector<double> carry(j1 - j0, 0.0);
-      for (size_t i = 0; i < n; ++i) {
-        float* row = F.gather.data() + i * n;
-        for (size_t j = j0; j < j1; ++j) {
-          if (row[j] == 0.0f) continue;
-          const double want = static_cast<double>(row[j]) * scale[j] + carry[j - j0];
-          row[j] = static_cast<float>(std::max(want, 0.0));  // never negative
-          carry[j - j0] = want - static_cast<double>(row[j]);
-        }
-      }
-    });
+    if (renormalise && sum[j] > 0.0) F.source_scale[j] = 1.0 / sum[j];
   }
   return F;
 }
@@ -276,13 +257,15 @@ RadiosityResult solve_radiosity(const FormFactorMatrix& F, const std::vector<dou
   double total = delta_norm;
   if (n == 0 || total == 0.0) return res;
 
+  std::vector<double> shot(n);  // delta x the per-source renormalisation
   auto sweep = [&]() {
+    for (size_t j = 0; j < n; ++j) shot[j] = F.source_scale.empty() ? delta[j] : delta[j] * F.source_scale[j];
     tbb::parallel_for(size_t(0), n, [&](size_t i) {
       const float* row = F.gather.data() + i * n;
       // Entries [zero_begin, zero_end) are 0 (coplanar patches): skipped.
       const size_t zb = F.zero_begin.empty() ? n : F.zero_begin[i];
       const size_t ze = F.zero_begin.empty() ? n : F.zero_end[i];
-      const double s = dot(row, delta.data(), 0, zb) + dot(row, delta.data(), ze, n);
+      const double s = dot(row, shot.data(), 0, zb) + dot(row, shot.data(), ze, n);
       next[i] = reflectance[i] * s;
     });
     delta.swap(next);

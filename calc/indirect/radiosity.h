@@ -59,7 +59,15 @@ T* HugePageAllocator<T>::allocate(size_t count) {
 // (the "gather" layout: incident flux on i = row i . exitant flux).
 struct FormFactorMatrix {
   size_t begin = 0, n = 0;      // patches [begin, begin + n) of the mesh
-  std::vector<float, HugePageAllocator<float>> gather;  // n x n, gather[i * n + j] = F[j -> i]
+  // n x n, unnormalised: F[j -> i] = gather[i * n + j] x source_scale[j] (use at(i, j)). The
+  // renormalisation is a factor per source applied to the flux vector in each sweep, not a pass
+  // over the matrix: the float entries then sum (in double) to exactly 1 / scale per source, so
+  // the float matrix conserves the flux to double precision over any number of bounces.
+  std::vector<float, HugePageAllocator<float>> gather;
+  std::vector<double> source_scale;  // per source j: 1 / sum_i gather[i * n + j] (1 if not renormalised)
+  double at(size_t i, size_t j) const {
+    return static_cast<double>(gather[i * n + j]) * (source_scale.empty() ? 1.0 : source_scale[j]);
+  }
   // Row i's entries j in [zero_begin[i], zero_end[i]) are 0: the patches coplanar with i and
   // next to it in the mesh (its face: the whole floor for a floor patch). The sweeps skip them,
   // about a third of the matrix in a flat room.

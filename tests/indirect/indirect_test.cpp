@@ -121,7 +121,7 @@ PatchLevel patch_level(const Scene& scene, double size, int bounces) {
   double area = 0.0, received = 0.0, direct = 0.0;
   for (size_t i = 0; i < F.n; ++i) {
     double s = 0.0;
-    for (size_t j = 0; j < F.n; ++j) s += F.gather[i * F.n + j] * sol.exitant_flux_lm[j];
+    for (size_t j = 0; j < F.n; ++j) s += F.at(i, j) * sol.exitant_flux_lm[j];
     received += s;
     direct += fb.incident_flux_lm[i];
     area += mesh.patches[i].area_m2;
@@ -739,7 +739,7 @@ TEST(SphereLikeRoom, FirstBounceIsNearlyUniform) {
   double area = 0.0;
   for (size_t i = 0; i < F.n; ++i) {
     double e1 = 0.0;
-    for (size_t j = 0; j < F.n; ++j) e1 += F.gather[i * F.n + j] * fb.vpl_flux_lm[j];
+    for (size_t j = 0; j < F.n; ++j) e1 += F.at(i, j) * fb.vpl_flux_lm[j];
     const auto& p = mesh.patches[i];
     auto& f = faces[{static_cast<int>(p.face), p.face_index}];
     f[0] += fb.incident_flux_lm[i];
