@@ -171,8 +171,15 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn
   // lands in one row (in cache); the per-source sums needed for the renormalisation are column
   // sums, taken after.
   F.gather.resize(n * n);  // not zeroed here: each row is cleared below
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
-    for (size_t i = range.begin(); i < range.end(); ++i) {
+  // Fixed blocks of rows, each adding its rows into its own partial column sums (summed in block
+  // order below: the same result on any number of threads), so the sums need no second pass
+  // over the matrix.
+  constexpr size_t kRowBlock = 64;
+  const size_t blocks = (n + kRowBlock - 1) / kRowBlock;
+  std::vector<double> partial(blocks * n, 0.0);
+  tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+    double* psum = partial.data() + b * n;
+    for (size_t i = b * kRowBlock, i_end = std::min(n, i + kRowBlock); i < i_end; ++i) {
       const Patch& dst = mesh.patches[F.begin + i];
       const Vec3 dc = dst.centroid, dn = dst.normal;
       const double near_d2 = far_ratio * dst.diameter_m * far_ratio * dst.diameter_m;
@@ -223,18 +230,13 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn
           row[j] = static_cast<float>(f);
         }
       }
+      for (size_t j = 0; j < n; ++j) psum[j] += row[j];
     }
   });
-  // Per-source sums (columns), in double, and the renormalisation.
+  // Per-source sums (columns) of the stored floats, in double, and the renormalisation.
   std::vector<double> sum(n, 0.0);
-  constexpr size_t kColumnBlock = 512;
-  tbb::parallel_for(size_t(0), (n + kColumnBlock - 1) / kColumnBlock, [&](size_t b) {
-    const size_t j0 = b * kColumnBlock, j1 = std::min(n, j0 + kColumnBlock);
-    for (size_t i = 0; i < n; ++i) {
-      const float* row = F.gather.data() + i * n;
-      for (size_t j = j0; j < j1; ++j) sum[j] += row[j];
-    }
-  });
+  for (size_t b = 0; b < blocks; ++b)
+    for (size_t j = 0; j < n; ++j) sum[j] += partial[b * n + j];
   F.source_scale.assign(n, 1.0);
   for (size_t j = 0; j < n; ++j) {
     F.max_row_correction = std::max(F.max_row_correction, std::abs(1.0 - sum[j]));
