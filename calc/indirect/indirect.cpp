@@ -410,18 +410,25 @@ IndirectDecision decide_indirect(const Scene& scene) {
     return d;
   }
   // Mean direct light on the calculation surfaces, far field, on a sample of points.
-  double sum = 0.0;
-  size_t count = 0;
+  // The sample points first, then their illuminances in parallel, summed in order.
+  std::vector<std::pair<const geometry::SurfaceGrid*, size_t>> samples;
   for (const auto& s : scene.surfaces) {
     const size_t step = std::max<size_t>(1, s.points.size() / kDecisionSamplesPerSurface);
     for (size_t i = 0; i < s.points.size(); i += step) {
       if (!s.active.empty() && !s.active[i]) continue;
-      double e = 0.0;
-      for (const auto& lum : scene.luminaires) e += far_field_illuminance(lum, s.points[i], s.normals[i]);
-      sum += e;
-      ++count;
+      samples.push_back({&s, i});
     }
   }
+  std::vector<double> sample_e(samples.size(), 0.0);
+  tbb::parallel_for(size_t(0), samples.size(), [&](size_t k) {
+    const auto& [s, i] = samples[k];
+    double e = 0.0;
+    for (const auto& lum : scene.luminaires) e += far_field_illuminance(lum, s->points[i], s->normals[i]);
+    sample_e[k] = e;
+  });
+  double sum = 0.0;
+  for (double e : sample_e) sum += e;
+  const size_t count = samples.size();
   d.mean_direct_lx = count ? sum / count : 0.0;
   if (count > 0 && d.estimate_lx < kAutoSkipFraction * d.mean_direct_lx) {
     d.reason = "skipped: integrating-sphere estimate " + fmt("%.4g", d.estimate_lx) +

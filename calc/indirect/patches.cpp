@@ -223,6 +223,21 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
   if (!(patch_size_m > 0.0)) throw InputError("indirect: patch size must be > 0");
   PatchMesh mesh;
   mesh.patch_size_m = patch_size_m;
+  {
+    // Room for the patches up front (a few thousand structs with their polygons: growing the
+    // vector step by step moved them about a dozen times).
+    double estimate = 0.0;
+    for (const Room& room : scene.rooms) {
+      if (room.outline.empty()) continue;
+      Vec2 lo = room.outline[0], hi = room.outline[0];
+      for (const auto& v : room.outline) lo = glm::min(lo, v), hi = glm::max(hi, v);
+      const double cells = (std::ceil((hi.x - lo.x) / patch_size_m) + 1.0) *
+                           (std::ceil((hi.y - lo.y) / patch_size_m) + 1.0);
+      estimate += 2.0 * cells + 4.0 * room_surface_area(room) / (patch_size_m * patch_size_m) +
+                  64.0 * static_cast<double>(room.obstacles.size() + 1);
+    }
+    if (estimate > 0.0 && estimate < 1e7) mesh.patches.reserve(static_cast<size_t>(estimate));
+  }
   for (size_t r = 0; r < scene.rooms.size(); ++r) {
     const Room& room = scene.rooms[r];
     check_room(room);
