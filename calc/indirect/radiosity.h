@@ -7,7 +7,8 @@
 // i (near: within far_ratio x D_i / 2), the point kernel on i's quarters extrapolated to the
 // patch (Richardson, between far_ratio x D_i / 2 and far_ratio x D_i; form_factor.h) or the point
 // kernel on i (far), times the fraction of i visible from there. In a closed
-// room each row sums to 1 (the patches tile j's hemisphere); rows are renormalised to 1 so that no
+// room each source's factors sum to 1 (the patches tile j's hemisphere); they are renormalised to 1
+// (a factor per source, FormFactorMatrix::source_scale) so that no
 // light is created or lost by discretisation or visibility sampling, which matters at high
 // reflectance: a row-sum error e changes the converged total by about rho e / (1 - rho), 19 e at
 // rho = 0.95. The largest correction is reported.
