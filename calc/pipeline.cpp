@@ -41,6 +41,7 @@ void run_indirect(const Scene& scene, Results& results) {
   results.plan.indirect = decision.reason;
   if (!decision.run) return;
   indirect::IndirectOptions options = indirect::indirect_options(scene.settings);
+  options.luminous_flux_lm = decision.luminous_flux_lm;
   if (auto vis = results.plan.visibility_test) {
     options.occluded = [vis](const Vec3& a, const Vec3& b) { return !vis->visible(a, b); };
   }

@@ -78,7 +78,9 @@ double patch_flux(const Luminaire& lum, const Patch& p, const OcclusionFn& occlu
 }  // namespace
 
 FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
-                         const std::vector<OcclusionFn>& occlusion, double max_angle_rad) {
+                         const std::vector<OcclusionFn>& occlusion, double max_angle_rad,
+                         const std::map<const photometry::IntensityDistribution*, double>*
+                             known_flux_lm) {
   FirstBounce fb;
   const size_t n = mesh.patches.size();
   fb.incident_flux_lm.assign(n, 0.0);
@@ -86,6 +88,9 @@ FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
   // luminous_flux integrates the whole distribution: once per distinct distribution (the
   // members of an array share theirs), not once per luminaire.
   std::map<const photometry::IntensityDistribution*, double> flux_of;
+  if (known_flux_lm) flux_of = *known_flux_lm;
+  // The luminaires of each room (in scene order)...
+  std::vector<std::vector<const Luminaire*>> in_room(scene.rooms.size());
   for (const auto& lum : scene.luminaires) {
     const int r = room_containing(scene, lum.pose.position, 0.0);
     if (r < 0) {
@@ -95,13 +100,18 @@ FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
     auto [it, fresh] = flux_of.try_emplace(lum.distribution.get(), 0.0);
     if (fresh) it->second = luminous_flux(*lum.distribution);
     fb.emitted_flux_lm += it->second;
-    const size_t begin = mesh.room_begin[r], end = mesh.room_begin[r + 1];
+    in_room[r].push_back(&lum);
+  }
+  // ...then one parallel loop over the patches, each adding its room's luminaires in that order
+  // (one loop instead of one per luminaire; the same sums).
+  for (size_t r = 0; r < scene.rooms.size(); ++r) {
+    if (in_room[r].empty()) continue;
     const OcclusionFn& occ = occlusion[r];
-    std::vector<double> add(end - begin, 0.0);
-    tbb::parallel_for(begin, end, [&](size_t i) {
-      add[i - begin] = patch_flux(lum, mesh.patches[i], occ, max_angle_rad);
+    tbb::parallel_for(mesh.room_begin[r], mesh.room_begin[r + 1], [&](size_t i) {
+      double sum = 0.0;
+      for (const Luminaire* lum : in_room[r]) sum += patch_flux(*lum, mesh.patches[i], occ, max_angle_rad);
+      fb.incident_flux_lm[i] = sum;
     });
-    for (size_t i = begin; i < end; ++i) fb.incident_flux_lm[i] += add[i - begin];
   }
   for (size_t i = 0; i < n; ++i) {
     fb.vpl_flux_lm[i] = mesh.patches[i].reflectance * fb.incident_flux_lm[i];

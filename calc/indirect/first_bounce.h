@@ -9,6 +9,7 @@
 // per piece. Because the patches of a closed room tile the sphere around the luminaire, the exact
 // solid angles sum to 4 pi, so the received flux equals the emitted flux up to the quadrature
 // error of I alone (zero for an isotropic source).
+#include <map>
 #include <string>
 #include <vector>
 
@@ -30,7 +31,10 @@ struct FirstBounce {
 // `occlusion[r]` is room r's occlusion callback (may be empty: nothing blocks).
 // `max_angle_rad` is the largest angular size of one integration piece (0.08 rad by default:
 // I is sampled at least every ~4.6 degrees).
+// `known_flux_lm`: luminous_flux of distributions already integrated (others are computed).
 FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
-                         const std::vector<OcclusionFn>& occlusion, double max_angle_rad = 0.08);
+                         const std::vector<OcclusionFn>& occlusion, double max_angle_rad = 0.08,
+                         const std::map<const photometry::IntensityDistribution*, double>*
+                             known_flux_lm = nullptr);
 
 }  // namespace luxgrid::calc::indirect

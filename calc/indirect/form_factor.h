@@ -4,6 +4,7 @@
 // far from a patch. Both return the fraction of the light leaving a point, cosine-weighted over
 // its hemisphere, that reaches the polygon; equivalently E(x) = M * F for a uniform-exitance
 // (Lambertian) polygon of exitance M (lm/m^2) seen from a receiver at x with normal n.
+#include <array>
 #include <functional>
 
 #include "calc/indirect/polygon.h"
@@ -27,6 +28,21 @@ double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Polygon3& p
 // at distance d (on-axis disk: exact a^2/(a^2+d^2) vs a^2/d^2); 0.6 % at d = 5 D.
 double point_kernel_form_factor(const Vec3& x, const Vec3& n, const Vec3& c, const Vec3& m,
                                 double area_m2);
+
+// The form factor of a parallelogram patch (polygon, centroid, area, diameter) at an intermediate
+// distance,
+// without Lambert's atan2s: the point kernel on the patch (F1, the one-point midpoint rule of the
+// form-factor integral) and on its four quarters (F4, the 2 x 2 midpoint rule, centroids
+// `quarter`), extrapolated (Richardson): the midpoint rules' leading errors go as the square of
+// the cell size, so (4 F4 - F1) / 3 removes it and leaves an error of order (D / d)^4, below the
+// plain kernel's (D / d)^2 / (2 pi) at the far switch. Returns -1 (the caller then uses the exact
+// formula) when a quarter's centroid is not farther than sqrt(min_d2) from x, when any vertex is
+// not in front of the receiver's tangent plane (the horizon clip is the exact formula's job),
+// or when the extrapolation comes out negative.
+double quarter_kernel_form_factor(const Vec3& x, const Vec3& n, const Polygon3& polygon,
+                                  const Vec3& centroid, const std::array<Vec3, 4>& quarter,
+                                  const Vec3& m, double area_m2, double diameter_m,
+                                  double min_d2);
 
 // Solid angle (sr) of the triangle abc seen from s (Van Oosterom and Strackee 1983, by atan2).
 double triangle_solid_angle_from(const Vec3& s, const Vec3& a, const Vec3& b, const Vec3& c);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <algorithm>
+#include <array>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -109,6 +111,15 @@ PatchMesh mesh_within_budget(const Scene& scene, const IndirectOptions& o, doubl
   }
 }
 
+// Fraction of patch p visible from the receiver x (centroid and the points halfway to each vertex).
+double gather_visible_fraction(const Vec3& x, const Vec3& n, const Patch& p, const OcclusionFn& occluded) {
+  int seen = 0;
+  const Vec3 from = x + n * 1e-6;
+  seen += occluded(from, p.centroid + p.normal * 1e-6) ? 0 : 1;
+  for (const auto& v : p.polygon) seen += occluded(from, 0.5 * (v + p.centroid) + p.normal * 1e-6) ? 0 : 1;
+  return static_cast<double>(seen) / static_cast<double>(p.polygon.size() + 1);
+}
+
 // Axis-aligned bounding box of an obstacle, grown by kBoxMargin_m.
 struct Box3 {
   Vec3 lo, hi;
@@ -172,6 +183,178 @@ Vec3 inset_into_room(const Room& room, Vec3 x) {
   return x;
 }
 
+// The emitting patches of one room (exitant flux > 0) laid out for the final gather: in groups
+// of consecutive patches with the same normal (a face, or part of one), each cut into chunks of
+// nearby patches (tiles of kChunkTile x the largest diameter). A receiver skips a whole group
+// when it lies behind the group's plane (the floor, for a workplane point), and a whole chunk
+// when the chunk lies wholly behind the receiver's tangent plane (its own wall): exactly the
+// patches whose form factor is 0. A chunk wholly in front of the receiver and farther than every
+// one of its patches' near distances takes the far kernel for all its patches in one loop without
+// branches. Thirteen thousand points times a few thousand patches is the largest loop of
+// calc/indirect.
+constexpr double kChunkTile = 4.0;
+struct GatherSet {
+  // Entries (patches with flux), structure of arrays, ordered by group and chunk.
+  std::vector<double> cx, cy, cz, flux_lm;
+  std::vector<double> near_d2;  // (far_ratio x diameter)^2: closer, the quarters or the exact formula
+  std::vector<size_t> patch;    // index into the mesh
+  struct Chunk {
+    size_t begin = 0, end = 0;  // entries
+    Vec3 lo{0.0}, hi{0.0};      // bounding box of the patches' vertices
+    Vec3 clo{0.0}, chi{0.0};    // bounding box of the centroids
+    double max_near_d2 = 0.0;
+  };
+  struct Group {
+    size_t begin = 0, end = 0;  // chunks
+    Vec3 normal{0.0};
+    double max_offset = 0.0;    // largest normal . centroid over the group
+  };
+  std::vector<Chunk> chunks;
+  std::vector<Group> groups;
+};
+
+GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
+                          const std::vector<double>& exitant_flux_lm, double far_ratio) {
+  GatherSet set;
+  // Runs of emitting patches with the same normal.
+  std::vector<std::pair<size_t, size_t>> runs;  // [first, last) into `emitting`
+  std::vector<size_t> emitting;
+  for (size_t j = begin; j < end; ++j) {
+    if (!(exitant_flux_lm[j] > 0.0)) continue;
+    if (emitting.empty() || mesh.patches[emitting.back()].normal != mesh.patches[j].normal)
+      runs.push_back({emitting.size(), emitting.size()});
+    emitting.push_back(j);
+    runs.back().second = emitting.size();
+  }
+  for (const auto& [first, last] : runs) {
+    GatherSet::Group g;
+    g.normal = mesh.patches[emitting[first]].normal;
+    g.max_offset = -std::numeric_limits<double>::infinity();
+    g.begin = set.chunks.size();
+    Vec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    double dmax = 0.0;
+    for (size_t k = first; k < last; ++k) {
+      const Patch& p = mesh.patches[emitting[k]];
+      lo = glm::min(lo, p.centroid), hi = glm::max(hi, p.centroid);
+      dmax = std::max(dmax, p.diameter_m);
+      g.max_offset = std::max(g.max_offset, glm::dot(p.normal, p.centroid));
+    }
+    // Tiles of kChunkTile x the largest diameter: sort the run by tile (stable, so the order
+    // within a tile is the mesh's).
+    const double tile = std::max(kChunkTile * dmax, 1e-9);
+    auto key = [&](size_t j) {
+      const Vec3 t = glm::floor((mesh.patches[j].centroid - lo) / tile);
+      return std::array<double, 3>{t.x, t.y, t.z};
+    };
+    std::vector<size_t> order(emitting.begin() + first, emitting.begin() + last);
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return key(a) < key(b); });
+    for (size_t k = 0; k < order.size(); ++k) {
+      if (k == 0 || key(order[k]) != key(order[k - 1])) {
+        GatherSet::Chunk c;
+        c.begin = c.end = set.patch.size();
+        c.lo = c.clo = Vec3(std::numeric_limits<double>::infinity());
+        c.hi = c.chi = Vec3(-std::numeric_limits<double>::infinity());
+        set.chunks.push_back(c);
+      }
+      const size_t j = order[k];
+      const Patch& p = mesh.patches[j];
+      GatherSet::Chunk& c = set.chunks.back();
+      const double limit = far_ratio * p.diameter_m;
+      set.cx.push_back(p.centroid.x);
+      set.cy.push_back(p.centroid.y);
+      set.cz.push_back(p.centroid.z);
+      set.flux_lm.push_back(exitant_flux_lm[j]);
+      set.near_d2.push_back(limit * limit);
+      set.patch.push_back(j);
+      c.end = set.patch.size();
+      c.clo = glm::min(c.clo, p.centroid), c.chi = glm::max(c.chi, p.centroid);
+      for (const auto& v : p.polygon) c.lo = glm::min(c.lo, v), c.hi = glm::max(c.hi, v);
+      c.max_near_d2 = std::max(c.max_near_d2, limit * limit);
+    }
+    g.end = set.chunks.size();
+    set.groups.push_back(g);
+  }
+  return set;
+}
+
+// Largest (smallest) of n . (v - x) over the box [lo, hi].
+double box_max_height(const Vec3& n, const Vec3& x, const Vec3& lo, const Vec3& hi) {
+  const Vec3 a = lo - x, b = hi - x;
+  return std::max(n.x * a.x, n.x * b.x) + std::max(n.y * a.y, n.y * b.y) + std::max(n.z * a.z, n.z * b.z);
+}
+double box_min_height(const Vec3& n, const Vec3& x, const Vec3& lo, const Vec3& hi) {
+  const Vec3 a = lo - x, b = hi - x;
+  return std::min(n.x * a.x, n.x * b.x) + std::min(n.y * a.y, n.y * b.y) + std::min(n.z * a.z, n.z * b.z);
+}
+// Squared distance from x to the box [lo, hi].
+double box_distance2(const Vec3& x, const Vec3& lo, const Vec3& hi) {
+  const Vec3 d = glm::max(glm::max(lo - x, x - hi), Vec3(0.0));
+  return glm::dot(d, d);
+}
+
+// gather_point over a GatherSet: the same sum, term for term, with whole groups and chunks
+// skipped where every term is 0 and the far kernel written out (no square root).
+double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3& x, const Vec3& n,
+                        double far_ratio, const OcclusionFn& occluded) {
+  double near = 0.0, far = 0.0;
+  const double* cx = set.cx.data();
+  const double* cy = set.cy.data();
+  const double* cz = set.cz.data();
+  const double* flux = set.flux_lm.data();
+  for (const auto& g : set.groups) {
+    // x behind (or on) the plane of every patch of the group: each term is skipped below.
+    if (!(glm::dot(g.normal, x) - g.max_offset > kGatherPlaneDistance_m)) continue;
+    const Vec3 m = g.normal;
+    for (size_t c = g.begin; c < g.end; ++c) {
+      const GatherSet::Chunk& ch = set.chunks[c];
+      // Every vertex behind the receiver's tangent plane: so are the centroids and quarter
+      // centroids, and the kernel and the horizon-clipped polygon give 0.
+      if (box_max_height(n, x, ch.lo, ch.hi) < 0.0) continue;
+      if (!occluded && box_min_height(n, x, ch.clo, ch.chi) > 0.0 &&
+          box_distance2(x, ch.clo, ch.chi) > ch.max_near_d2) {
+        // Far kernel for the whole chunk: every centroid in front of the receiver (n . dx < 0),
+        // the receiver in front of every patch (group test), farther than its near distance.
+        double sum = 0.0;
+        for (size_t k = ch.begin; k < ch.end; ++k) {
+          const double dx = x.x - cx[k], dy = x.y - cy[k], dz = x.z - cz[k];
+          const double hm = m.x * dx + m.y * dy + m.z * dz;
+          const double hn = -(n.x * dx + n.y * dy + n.z * dz);
+          const double d2 = dx * dx + dy * dy + dz * dz;
+          sum += flux[k] * hm * hn / (d2 * d2);
+        }
+        far += sum;
+        continue;
+      }
+      for (size_t k = ch.begin; k < ch.end; ++k) {
+        const Vec3 dx = x - Vec3(cx[k], cy[k], cz[k]);
+        const double hm = glm::dot(m, dx);
+        if (!(hm > kGatherPlaneDistance_m)) continue;
+        const double d2 = glm::dot(dx, dx);
+        if (d2 > set.near_d2[k] && !occluded) {
+          // point_kernel_form_factor x exitance: flux max(0, m.dx) max(0, -n.dx) / (pi d^4)
+          const double hn = -glm::dot(n, dx);
+          if (hn > 0.0) far += flux[k] * hm * hn / (d2 * d2);
+          continue;
+        }
+        const Patch& p = mesh.patches[set.patch[k]];
+        double f;
+        if (d2 > set.near_d2[k]) {
+          f = point_kernel_form_factor(x, n, p.centroid, p.normal, p.area_m2);
+        } else {
+          const double half = 0.5 * far_ratio * p.diameter_m;
+          f = p.has_quarters ? quarter_kernel_form_factor(x, n, p.polygon, p.centroid, p.quarter_centroid, p.normal,
+                                                          p.area_m2, p.diameter_m, half * half)
+                             : -1.0;
+          if (f < 0.0) f = point_polygon_form_factor(x, n, p.polygon);
+        }
+        if (f > 0.0 && occluded) f *= gather_visible_fraction(x, n, p, occluded);
+        near += flux[k] / p.area_m2 * f;
+      }
+    }
+  }
+  return near + far / kPi;
+}
+
 }  // namespace
 
 IndirectOptions indirect_options(const Settings& settings) {
@@ -204,7 +387,7 @@ IndirectDecision decide_indirect(const Scene& scene) {
   }
   // Integrating-sphere estimate per room: rho Phi / (A (1 - rho)), rho area-weighted.
   // luminous_flux integrates the whole distribution: once per distinct one.
-  std::map<const photometry::IntensityDistribution*, double> flux_of;
+  std::map<const photometry::IntensityDistribution*, double>& flux_of = d.luminous_flux_lm;
   for (size_t r = 0; r < scene.rooms.size(); ++r) {
     const Room& room = scene.rooms[r];
     double flux = 0.0;
@@ -227,18 +410,25 @@ IndirectDecision decide_indirect(const Scene& scene) {
     return d;
   }
   // Mean direct light on the calculation surfaces, far field, on a sample of points.
-  double sum = 0.0;
-  size_t count = 0;
+  // The sample points first, then their illuminances in parallel, summed in order.
+  std::vector<std::pair<const geometry::SurfaceGrid*, size_t>> samples;
   for (const auto& s : scene.surfaces) {
     const size_t step = std::max<size_t>(1, s.points.size() / kDecisionSamplesPerSurface);
     for (size_t i = 0; i < s.points.size(); i += step) {
       if (!s.active.empty() && !s.active[i]) continue;
-      double e = 0.0;
-      for (const auto& lum : scene.luminaires) e += far_field_illuminance(lum, s.points[i], s.normals[i]);
-      sum += e;
-      ++count;
+      samples.push_back({&s, i});
     }
   }
+  std::vector<double> sample_e(samples.size(), 0.0);
+  tbb::parallel_for(size_t(0), samples.size(), [&](size_t k) {
+    const auto& [s, i] = samples[k];
+    double e = 0.0;
+    for (const auto& lum : scene.luminaires) e += far_field_illuminance(lum, s->points[i], s->normals[i]);
+    sample_e[k] = e;
+  });
+  double sum = 0.0;
+  for (double e : sample_e) sum += e;
+  const size_t count = samples.size();
   d.mean_direct_lx = count ? sum / count : 0.0;
   if (count > 0 && d.estimate_lx < kAutoSkipFraction * d.mean_direct_lx) {
     d.reason = "skipped: integrating-sphere estimate " + fmt("%.4g", d.estimate_lx) +
@@ -263,17 +453,18 @@ double gather_point(const PatchMesh& mesh, size_t begin, size_t end,
     const Patch& p = mesh.patches[j];
     if (!(glm::dot(p.normal, x - p.centroid) > kGatherPlaneDistance_m)) continue;
     const double d = glm::length(x - p.centroid);
-    double f = d > far_ratio * p.diameter_m
-                   ? point_kernel_form_factor(x, n, p.centroid, p.normal, p.area_m2)
-                   : point_polygon_form_factor(x, n, p.polygon);
-    if (f > 0.0 && occluded) {
-      // Fraction of the patch visible from x (centroid and four inner points).
-      int seen = 0;
-      const Vec3 from = x + n * 1e-6;
-      seen += occluded(from, p.centroid + p.normal * 1e-6) ? 0 : 1;
-      for (const auto& v : p.polygon) seen += occluded(from, 0.5 * (v + p.centroid) + p.normal * 1e-6) ? 0 : 1;
-      f *= static_cast<double>(seen) / static_cast<double>(p.polygon.size() + 1);
+    double f;
+    if (d > far_ratio * p.diameter_m) {
+      f = point_kernel_form_factor(x, n, p.centroid, p.normal, p.area_m2);
+    } else {
+      // Between far_ratio x D / 2 and far_ratio x D: the kernel on the quarters; closer: exact.
+      const double half = 0.5 * far_ratio * p.diameter_m;
+      f = p.has_quarters ? quarter_kernel_form_factor(x, n, p.polygon, p.centroid, p.quarter_centroid, p.normal,
+                                                      p.area_m2, p.diameter_m, half * half)
+                         : -1.0;
+      if (f < 0.0) f = point_polygon_form_factor(x, n, p.polygon);
     }
+    if (f > 0.0 && occluded) f *= gather_visible_fraction(x, n, p, occluded);
     e += flux / p.area_m2 * f;  // exitance M = flux / area; E = M F
   }
   return e;
@@ -328,7 +519,7 @@ IndirectResult compute_indirect(const Scene& scene,
     }
   }
 
-  const FirstBounce fb = first_bounce(scene, mesh, occlusion);
+  const FirstBounce fb = first_bounce(scene, mesh, occlusion, 0.08, &options.luminous_flux_lm);
   for (const auto& n : fb.notes) res.notes.push_back(n);
   res.vpls = fb.vpl_count;
   res.emitted_flux_lm = fb.emitted_flux_lm;
@@ -365,6 +556,9 @@ IndirectResult compute_indirect(const Scene& scene,
   }
 
   // Final gather.
+  std::vector<GatherSet> gather_sets;
+  for (size_t r = 0; r < scene.rooms.size(); ++r)
+    gather_sets.push_back(make_gather_set(mesh, mesh.room_begin[r], mesh.room_begin[r + 1], exitant, far_ratio));
   res.E_indirect_per_surface.resize(surfaces.size());
   for (size_t s = 0; s < surfaces.size(); ++s) {
     const auto& grid = surfaces[s];
@@ -374,10 +568,8 @@ IndirectResult compute_indirect(const Scene& scene,
       if (!grid.active.empty() && !grid.active[i]) return;
       const int r = room_containing(scene, grid.points[i], kRoomTolerance_m);
       if (r < 0) return;
-      const size_t begin = mesh.room_begin[r], end = mesh.room_begin[r + 1];
       const Vec3 x = inset_into_room(scene.rooms[r], grid.points[i]);
-      out[i] = gather_point(mesh, begin, end, exitant, x, grid.normals[i],
-                            far_ratio, occlusion[r]);
+      out[i] = gather_set_point(mesh, gather_sets[r], x, grid.normals[i], far_ratio, occlusion[r]);
     });
   }
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -9,7 +9,9 @@
 // virtual point light of flux rho x incident lumens (first_bounce.h, seed 004); the light is then
 // carried between patches with exact polygon form factors and solved to convergence, or for
 // exactly N reflections (radiosity.h); finally each grid point gathers from the patches with
-// Lambert's exact polygon form factor near a patch and the seed's point kernel far from it.
+// Lambert's exact polygon form factor near a patch, the point kernel on its quarters extrapolated
+// (Richardson) at intermediate distances and the seed's point kernel far from it.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,9 @@ struct IndirectOptions {
   // Occlusion between two points of a room (true = blocked), e.g. geometry/'s AABB tree. Empty:
   // nothing blocks in convex rooms, and the built-in prism test (walls only) in non-convex ones.
   OcclusionFn occluded;
+  // Luminous flux per distribution already integrated (decide_indirect's), so the first bounce
+  // does not integrate the same distributions again; missing ones are computed.
+  std::map<const photometry::IntensityDistribution*, double> luminous_flux_lm;
 };
 
 // Options from the project's settings (quality, bounces).
@@ -40,6 +45,9 @@ struct IndirectDecision {
   std::string reason;            // "skipped: all reflectances are 0", "on: ...", ...
   double estimate_lx = 0.0;      // integrating-sphere estimate rho Phi / (A (1 - rho)), max over rooms
   double mean_direct_lx = 0.0;   // mean far-field direct illuminance on the calculation surfaces
+  // luminous_flux of each distinct distribution of the luminaires inside rooms (for
+  // IndirectOptions::luminous_flux_lm).
+  std::map<const photometry::IntensityDistribution*, double> luminous_flux_lm;
 };
 
 // Auto mode skips indirect light when the integrating-sphere estimate is below this fraction of

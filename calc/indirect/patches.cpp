@@ -137,6 +137,15 @@ void add_patch(PatchMesh& mesh, Polygon3 poly, const Vec3& normal, double reflec
   if (p.area_m2 < kMinPieceArea_m2) return;
   p.centroid = polygon_centroid(p.polygon);
   p.diameter_m = polygon_diameter(p.polygon);
+  if (p.polygon.size() == 4) {
+    // A parallelogram when the diagonals bisect each other; its quarters' centroids are then
+    // halfway between the centre and each corner.
+    const Vec3 mid02 = 0.5 * (p.polygon[0] + p.polygon[2]), mid13 = 0.5 * (p.polygon[1] + p.polygon[3]);
+    if (glm::length(mid02 - mid13) <= 1e-9 * p.diameter_m) {
+      p.has_quarters = true;
+      for (int k = 0; k < 4; ++k) p.quarter_centroid[k] = 0.5 * (p.polygon[k] + p.centroid);
+    }
+  }
   p.reflectance = reflectance;
   p.room = room;
   p.face = face;
@@ -214,6 +223,21 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
   if (!(patch_size_m > 0.0)) throw InputError("indirect: patch size must be > 0");
   PatchMesh mesh;
   mesh.patch_size_m = patch_size_m;
+  {
+    // Room for the patches up front (a few thousand structs with their polygons: growing the
+    // vector step by step moved them about a dozen times).
+    double estimate = 0.0;
+    for (const Room& room : scene.rooms) {
+      if (room.outline.empty()) continue;
+      Vec2 lo = room.outline[0], hi = room.outline[0];
+      for (const auto& v : room.outline) lo = glm::min(lo, v), hi = glm::max(hi, v);
+      const double cells = (std::ceil((hi.x - lo.x) / patch_size_m) + 1.0) *
+                           (std::ceil((hi.y - lo.y) / patch_size_m) + 1.0);
+      estimate += 2.0 * cells + 4.0 * room_surface_area(room) / (patch_size_m * patch_size_m) +
+                  64.0 * static_cast<double>(room.obstacles.size() + 1);
+    }
+    if (estimate > 0.0 && estimate < 1e7) mesh.patches.reserve(static_cast<size_t>(estimate));
+  }
   for (size_t r = 0; r < scene.rooms.size(); ++r) {
     const Room& room = scene.rooms[r];
     check_room(room);

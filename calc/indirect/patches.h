@@ -12,6 +12,7 @@
 // the footprint of an obstacle standing on the floor (hanging from the ceiling) is cut out of the
 // floor (ceiling), so no patch lies hidden under it and the room plus obstacle surfaces stay a
 // closed, non-overlapping tiling (the first bounce's solid angles then still sum to 4 pi).
+#include <array>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,12 @@ struct Patch {
   FaceKind face = FaceKind::floor;
   int face_index = 0; // 0 for floor / ceiling; outline edge index for a wall; obstacle index in
                       // Room::obstacles for an obstacle face
+  // Parallelograms (wall patches, whole floor and ceiling cells, obstacle sides: nearly all) are
+  // also seen as 2 x 2 quarters, each of a quarter of the area and half the diameter, with these
+  // centroids: the point kernel on the quarters is as accurate at half the distance as on the
+  // whole patch (form_factor.h, quarter_kernel_form_factor).
+  bool has_quarters = false;
+  std::array<Vec3, 4> quarter_centroid{};
 };
 
 struct PatchMesh {

@@ -1,8 +1,15 @@
 #include "calc/indirect/radiosity.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 namespace luxgrid::calc::indirect {
@@ -17,11 +24,46 @@ constexpr double kMinPlaneDistance_m = 1e-9;
 // over the last sweep; below it the tail's shape error is negligible against the tolerances.
 constexpr double kRatioStability = 1e-4;
 constexpr int kMinSweepsBeforeTail = 4;
+// Patches whose planes are this close (same normal) are coplanar: far below kMinPlaneDistance_m,
+// so the plane test would give their mutual form factors 0 anyway.
+constexpr double kCoplanar_m = 1e-11;
 
 double l1(const std::vector<double>& v) {
   double s = 0.0;
   for (double x : v) s += std::abs(x);
   return s;
+}
+
+// sum of row[j] v[j] over [b, e), in double, with four independent partial sums: a single sum
+// is one long chain of dependent additions, which (not the memory) limits a sweep.
+double dot(const float* row, const double* v, size_t b, size_t e) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  size_t j = b;
+  for (; j + 4 <= e; j += 4) {
+    s0 += static_cast<double>(row[j]) * v[j];
+    s1 += static_cast<double>(row[j + 1]) * v[j + 1];
+    s2 += static_cast<double>(row[j + 2]) * v[j + 2];
+    s3 += static_cast<double>(row[j + 3]) * v[j + 3];
+  }
+  for (; j < e; ++j) s0 += static_cast<double>(row[j]) * v[j];
+  return (s0 + s1) + (s2 + s3);
+}
+
+// Tile size of the source chunks, in units of the largest patch diameter of a coplanar run.
+constexpr double kChunkTile = 4.0;
+
+// Largest (smallest) of n . (v - x) over the box [lo, hi]; squared distance from x to the box.
+double box_max_height(const Vec3& n, const Vec3& x, const Vec3& lo, const Vec3& hi) {
+  const Vec3 a = lo - x, b = hi - x;
+  return std::max(n.x * a.x, n.x * b.x) + std::max(n.y * a.y, n.y * b.y) + std::max(n.z * a.z, n.z * b.z);
+}
+double box_min_height(const Vec3& n, const Vec3& x, const Vec3& lo, const Vec3& hi) {
+  const Vec3 a = lo - x, b = hi - x;
+  return std::min(n.x * a.x, n.x * b.x) + std::min(n.y * a.y, n.y * b.y) + std::min(n.z * a.z, n.z * b.z);
+}
+double box_distance2(const Vec3& x, const Vec3& lo, const Vec3& hi) {
+  const Vec3 d = glm::max(glm::max(lo - x, x - hi), Vec3(0.0));
+  return glm::dot(d, d);
 }
 
 // Fraction of `target` visible from `from`: its centroid and the midpoints between centroid and
@@ -36,6 +78,21 @@ double visible_fraction(const Vec3& from, const Patch& target, const OcclusionFn
 }
 }  // namespace
 
+void* allocate_huge_pages(size_t bytes) {
+  constexpr size_t kHuge = size_t(2) << 20;
+  if (bytes < kHuge) {
+    if (void* p = std::malloc(bytes == 0 ? 1 : bytes)) return p;
+    throw std::bad_alloc();
+  }
+  const size_t rounded = (bytes + kHuge - 1) / kHuge * kHuge;
+  void* p = std::aligned_alloc(kHuge, rounded);
+  if (!p) throw std::bad_alloc();
+#ifdef MADV_HUGEPAGE
+  madvise(p, rounded, MADV_HUGEPAGE);  // advice only: without THP the pages are just small
+#endif
+  return p;
+}
+
 FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn& occluded,
                               double far_ratio, bool renormalise) {
   FormFactorMatrix F;
@@ -43,32 +100,148 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn
   F.n = mesh.room_begin[room + 1] - F.begin;
   F.renormalised = renormalise;
   const size_t n = F.n;
-  F.gather.assign(n * n, 0.0f);
-  std::vector<double> correction(n, 0.0);
-  tbb::parallel_for(size_t(0), n, [&](size_t j) {
-    const Patch& src = mesh.patches[F.begin + j];
-    const Vec3 from = src.centroid + src.normal * kShootLift_m;
-    std::vector<double> row(n, 0.0);
-    double sum = 0.0;
-    for (size_t i = 0; i < n; ++i) {
-      if (i == j) continue;
-      const Patch& dst = mesh.patches[F.begin + i];
-      if (!(glm::dot(dst.normal, src.centroid - dst.centroid) > kMinPlaneDistance_m)) continue;
-      if (!(glm::dot(src.normal, dst.centroid - src.centroid) > -dst.diameter_m)) continue;
-      const double d = glm::length(dst.centroid - src.centroid);
-      double f = d > far_ratio * dst.diameter_m
-                     ? point_kernel_form_factor(src.centroid, src.normal, dst.centroid, dst.normal,
-                                                dst.area_m2)
-                     : point_polygon_form_factor(src.centroid, src.normal, dst.polygon);
-      if (f > 0.0) f *= visible_fraction(from, dst, occluded);
-      row[i] = f;
-      sum += f;
+  // Centroids and normals side by side: the inner loop below streams through them n^2 times.
+  std::vector<Vec3> centroid(n), normal(n);
+  for (size_t k = 0; k < n; ++k) {
+    centroid[k] = mesh.patches[F.begin + k].centroid;
+    normal[k] = mesh.patches[F.begin + k].normal;
+  }
+  // Runs of consecutive coplanar patches (same normal, same plane): their mutual entries are 0
+  // (the plane test below rejects them), so they are neither computed nor read by the sweeps.
+  F.zero_begin.assign(n, 0);
+  F.zero_end.assign(n, 0);
+  for (size_t k = 0; k < n;) {
+    size_t e = k + 1;
+    const double offset = glm::dot(normal[k], centroid[k]);
+    while (e < n && normal[e] == normal[k] &&
+           std::abs(glm::dot(normal[e], centroid[e]) - offset) <= kCoplanar_m)
+      ++e;
+    for (size_t q = k; q < e; ++q) F.zero_begin[q] = k, F.zero_end[q] = e;
+    k = e;
+  }
+  // The sources of each coplanar run in tiles (chunks) of kChunkTile x the run's largest
+  // diameter: a receiver takes a chunk that is wholly far, wholly in front of it and with it
+  // wholly in front of the chunk's plane in one loop without branches (most of the matrix).
+  struct Chunk {
+    size_t begin = 0, end = 0;  // into `order`
+    size_t run = 0;             // first patch of the coplanar run
+    Vec3 normal{0.0};
+    double max_offset = 0.0;    // largest normal . centroid
+    Vec3 lo{0.0}, hi{0.0};      // bounding box of the centroids
+  };
+  std::vector<size_t> order;
+  std::vector<double> ox, oy, oz;
+  std::vector<Chunk> chunks;
+  for (size_t k = 0; k < n; k = F.zero_end[k]) {
+    const size_t e = F.zero_end[k];
+    Vec3 lo = centroid[k], hi = centroid[k];
+    double dmax = 0.0;
+    for (size_t q = k; q < e; ++q) {
+      lo = glm::min(lo, centroid[q]), hi = glm::max(hi, centroid[q]);
+      dmax = std::max(dmax, mesh.patches[F.begin + q].diameter_m);
     }
-    correction[j] = std::abs(1.0 - sum);
-    const double scale = renormalise && sum > 0.0 ? 1.0 / sum : 1.0;
-    for (size_t i = 0; i < n; ++i) F.gather[i * n + j] = static_cast<float>(row[i] * scale);
+    const double tile = std::max(kChunkTile * dmax, 1e-9);
+    auto key = [&](size_t q) {
+      const Vec3 t = glm::floor((centroid[q] - lo) / tile);
+      return std::array<double, 3>{t.x, t.y, t.z};
+    };
+    std::vector<size_t> run(e - k);
+    for (size_t q = k; q < e; ++q) run[q - k] = q;
+    std::stable_sort(run.begin(), run.end(), [&](size_t a, size_t b) { return key(a) < key(b); });
+    for (size_t r = 0; r < run.size(); ++r) {
+      const size_t q = run[r];
+      if (r == 0 || key(q) != key(run[r - 1])) {
+        Chunk c;
+        c.begin = c.end = order.size();
+        c.run = k;
+        c.normal = normal[q];
+        c.max_offset = -std::numeric_limits<double>::infinity();
+        c.lo = c.hi = centroid[q];
+        chunks.push_back(c);
+      }
+      Chunk& c = chunks.back();
+      order.push_back(q);
+      ox.push_back(centroid[q].x), oy.push_back(centroid[q].y), oz.push_back(centroid[q].z);
+      c.end = order.size();
+      c.max_offset = std::max(c.max_offset, glm::dot(normal[q], centroid[q]));
+      c.lo = glm::min(c.lo, centroid[q]), c.hi = glm::max(c.hi, centroid[q]);
+    }
+  }
+  // Filled one receiving row at a time (row i = F[j -> i] over all sources j), so every write
+  // lands in one row (in cache); the per-source sums needed for the renormalisation are column
+  // sums, taken after.
+  F.gather.resize(n * n);  // not zeroed here: each row is cleared below
+  // Fixed blocks of rows, each adding its rows into its own partial column sums (summed in block
+  // order below: the same result on any number of threads), so the sums need no second pass
+  // over the matrix.
+  constexpr size_t kRowBlock = 64;
+  const size_t blocks = (n + kRowBlock - 1) / kRowBlock;
+  std::vector<double> partial(blocks * n, 0.0);
+  tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+    double* psum = partial.data() + b * n;
+    for (size_t i = b * kRowBlock, i_end = std::min(n, i + kRowBlock); i < i_end; ++i) {
+      const Patch& dst = mesh.patches[F.begin + i];
+      const Vec3 dc = dst.centroid, dn = dst.normal;
+      const double near_d2 = far_ratio * dst.diameter_m * far_ratio * dst.diameter_m;
+      const double a_pi = dst.area_m2;
+      float* row = F.gather.data() + i * n;
+      std::fill(row, row + n, 0.0f);
+      for (const Chunk& c : chunks) {
+        if (c.run == F.zero_begin[i]) continue;  // coplanar with i: zeros
+        // Every source's height over the receiver's plane at most kMinPlaneDistance_m: all 0.
+        if (!(box_max_height(dn, dc, c.lo, c.hi) > kMinPlaneDistance_m)) continue;
+        const Vec3 sn = c.normal;
+        if (!occluded && box_min_height(dn, dc, c.lo, c.hi) > kMinPlaneDistance_m &&
+            glm::dot(sn, dc) - c.max_offset > 0.0 && box_distance2(dc, c.lo, c.hi) > near_d2) {
+          // All far, h_dst > kMinPlaneDistance_m and h_src > 0: the kernel for every source.
+          for (size_t k = c.begin; k < c.end; ++k) {
+            const double dx = dc.x - ox[k], dy = dc.y - oy[k], dz = dc.z - oz[k];
+            const double h_dst = -(dn.x * dx + dn.y * dy + dn.z * dz);
+            const double h_src = sn.x * dx + sn.y * dy + sn.z * dz;
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            row[order[k]] = static_cast<float>(a_pi * h_dst * h_src / (kPi * d2 * d2));
+          }
+          continue;
+        }
+        for (size_t k = c.begin; k < c.end; ++k) {
+          const size_t j = order[k];
+          if (i == j) continue;
+          const Vec3 sc = centroid[j];
+          const Vec3 d = dc - sc;  // source -> receiver
+          const double h_dst = -glm::dot(dn, d);  // source's height over the receiver's plane
+          if (!(h_dst > kMinPlaneDistance_m)) continue;
+          const double h_src = glm::dot(sn, d);
+          if (!(h_src > -dst.diameter_m)) continue;
+          const double d2 = glm::dot(d, d);
+          // Far: point_kernel_form_factor(sc, sn, dc, dn, A) = A max(0, dn . (sc - dc))
+          // max(0, sn . (dc - sc)) / (pi d^4), written out.
+          double f;
+          if (d2 > near_d2) {
+            f = h_src > 0.0 ? dst.area_m2 * h_dst * h_src / (kPi * d2 * d2) : 0.0;
+          } else {
+            // Between far_ratio x D / 2 and far_ratio x D: the kernel on the quarters; closer: exact.
+            f = dst.has_quarters ? quarter_kernel_form_factor(sc, sn, dst.polygon, dc,
+                                                              dst.quarter_centroid, dn,
+                                                              dst.area_m2, dst.diameter_m, 0.25 * near_d2)
+                                 : -1.0;
+            if (f < 0.0) f = point_polygon_form_factor(sc, sn, dst.polygon);
+          }
+          if (f > 0.0 && occluded) f *= visible_fraction(sc + sn * kShootLift_m, dst, occluded);
+          row[j] = static_cast<float>(f);
+        }
+      }
+      for (size_t j = 0; j < n; ++j) psum[j] += row[j];
+    }
   });
-  for (double c : correction) F.max_row_correction = std::max(F.max_row_correction, c);
+  // Per-source sums (columns) of the stored floats, in double, and the renormalisation.
+  std::vector<double> sum(n, 0.0);
+  for (size_t b = 0; b < blocks; ++b)
+    for (size_t j = 0; j < n; ++j) sum[j] += partial[b * n + j];
+  F.source_scale.assign(n, 1.0);
+  for (size_t j = 0; j < n; ++j) {
+    F.max_row_correction = std::max(F.max_row_correction, std::abs(1.0 - sum[j]));
+    if (renormalise && sum[j] > 0.0) F.source_scale[j] = 1.0 / sum[j];
+  }
   return F;
 }
 
@@ -86,11 +259,15 @@ RadiosityResult solve_radiosity(const FormFactorMatrix& F, const std::vector<dou
   double total = delta_norm;
   if (n == 0 || total == 0.0) return res;
 
+  std::vector<double> shot(n);  // delta x the per-source renormalisation
   auto sweep = [&]() {
+    for (size_t j = 0; j < n; ++j) shot[j] = F.source_scale.empty() ? delta[j] : delta[j] * F.source_scale[j];
     tbb::parallel_for(size_t(0), n, [&](size_t i) {
       const float* row = F.gather.data() + i * n;
-      double s = 0.0;
-      for (size_t j = 0; j < n; ++j) s += static_cast<double>(row[j]) * delta[j];
+      // Entries [zero_begin, zero_end) are 0 (coplanar patches): skipped.
+      const size_t zb = F.zero_begin.empty() ? n : F.zero_begin[i];
+      const size_t ze = F.zero_begin.empty() ? n : F.zero_end[i];
+      const double s = dot(row, shot.data(), 0, zb) + dot(row, shot.data(), ze, n);
       next[i] = reflectance[i] * s;
     });
     delta.swap(next);

@@ -4,8 +4,11 @@
 //
 // Formulation (shooting form factors, flux units): F[j -> i] is the fraction of the light leaving
 // patch j that lands on patch i, computed at j's centroid with the exact polygon form factor of
-// i (near) or the point kernel (far), times the fraction of i visible from there. In a closed
-// room each row sums to 1 (the patches tile j's hemisphere); rows are renormalised to 1 so that no
+// i (near: within far_ratio x D_i / 2), the point kernel on i's quarters extrapolated to the
+// patch (Richardson, between far_ratio x D_i / 2 and far_ratio x D_i; form_factor.h) or the point
+// kernel on i (far), times the fraction of i visible from there. In a closed
+// room each source's factors sum to 1 (the patches tile j's hemisphere); they are renormalised to 1
+// (a factor per source, FormFactorMatrix::source_scale) so that no
 // light is created or lost by discretisation or visibility sampling, which matters at high
 // reflectance: a row-sum error e changes the converged total by about rho e / (1 - rho), 19 e at
 // rho = 0.95. The largest correction is reported.
@@ -13,11 +16,14 @@
 // Solver: Jacobi on the bounce series, Delta_1 = rho D, Delta_k+1 = rho (F^T Delta_k), Phi = sum
 // of Delta_k. Each sweep is exactly one more reflection, so `bounces: N` means exactly N
 // reflections (N = 1 is the seed's one-bounce model), which Gauss-Seidel and Southwell shooting
-// cannot promise. A sweep is one dense matrix-vector product (parallel, cache-friendly), so even
-// 4000 patches cost ~10 ms per bounce. For `auto`, the ratio r_k = |Delta_k+1| / |Delta_k| tends
+// cannot promise. A sweep is one dense matrix-vector product (parallel, rows in order, the
+// coplanar blocks skipped), so even 4000 patches cost ~5 ms per bounce. For `auto`, the ratio r_k = |Delta_k+1| / |Delta_k| tends
 // to the dominant eigenvalue (exactly rho in a closed room of uniform rho); once it is stable the
 // remaining bounces are a geometric series whose sum Delta_k r / (1 - r) is added (the "ambient"
 // tail of Cohen et al. 1988), so rho = 0.95 converges in tens of sweeps, not hundreds.
+#include <cstdlib>
+#include <new>
+#include <utility>
 #include <vector>
 
 #include "calc/indirect/form_factor.h"
@@ -25,17 +31,57 @@
 
 namespace luxgrid::calc::indirect {
 
+// Allocator for the dense matrix: 2 MB-aligned blocks with transparent huge pages requested
+// (madvise), and no value-initialisation (form_factors writes every entry). At 4000 patches the
+// matrix is 64 MB; in 4 kB pages that is 16 000 page faults, which cost more than computing the
+// entries on a virtual machine.
+template <class T>
+struct HugePageAllocator {
+  using value_type = T;
+  HugePageAllocator() = default;
+  template <class U>
+  HugePageAllocator(const HugePageAllocator<U>&) noexcept {}
+  T* allocate(size_t count);
+  void deallocate(T* p, size_t) noexcept { std::free(p); }
+  template <class U>
+  void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }  // default-init: no zeroing
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) { ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...); }
+  template <class U>
+  bool operator==(const HugePageAllocator<U>&) const noexcept { return true; }
+};
+void* allocate_huge_pages(size_t bytes);  // radiosity.cpp; throws std::bad_alloc
+template <class T>
+T* HugePageAllocator<T>::allocate(size_t count) {
+  return static_cast<T*>(allocate_huge_pages(count * sizeof(T)));
+}
+
 // Dense form-factor matrix of one room's patches, stored so that row i holds F[j -> i] for all j
 // (the "gather" layout: incident flux on i = row i . exitant flux).
 struct FormFactorMatrix {
   size_t begin = 0, n = 0;      // patches [begin, begin + n) of the mesh
-  std::vector<float> gather;    // n x n, gather[i * n + j] = F[j -> i]
+  // n x n, unnormalised: F[j -> i] = gather[i * n + j] x source_scale[j] (use at(i, j)). The
+  // renormalisation is a factor per source applied to the flux vector in each sweep, not a pass
+  // over the matrix: the float entries then sum (in double) to exactly 1 / scale per source, so
+  // the float matrix conserves the flux to double precision over any number of bounces.
+  std::vector<float, HugePageAllocator<float>> gather;
+  std::vector<double> source_scale;  // per source j: 1 / sum_i gather[i * n + j] (1 if not renormalised)
+  double at(size_t i, size_t j) const {
+    return static_cast<double>(gather[i * n + j]) * (source_scale.empty() ? 1.0 : source_scale[j]);
+  }
+  // Row i's entries j in [zero_begin[i], zero_end[i]) are 0: the patches coplanar with i and
+  // next to it in the mesh (its face: the whole floor for a floor patch). The sweeps skip them,
+  // about a third of the matrix in a flat room.
+  std::vector<size_t> zero_begin, zero_end;
   double max_row_correction = 0.0;  // largest |1 - sum_i F[j -> i]| before renormalisation
   bool renormalised = true;
 };
 
 // `far_ratio`: the point kernel is used when the distance between centroids exceeds far_ratio x
-// the receiving patch's diameter (infinity: always exact). `renormalise`: scale rows to 1 (closed
+// the receiving patch's diameter, its quarters (extrapolated) beyond half that, the exact formula
+// closer (infinity: always exact). Rows of the gather layout are filled in parallel; each
+// receiver takes the sources in tiles, and a tile wholly far and in front (most of a big room)
+// in one branch-free loop. `renormalise`: scale rows to 1 (closed
 // rooms).
 FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn& occluded,
                               double far_ratio, bool renormalise = true);

@@ -6,12 +6,12 @@
 
 #include "util/error.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
-#include <array>
 
 #include "calc/indirect/first_bounce.h"
 #include "calc/indirect/form_factor.h"
@@ -121,7 +121,7 @@ PatchLevel patch_level(const Scene& scene, double size, int bounces) {
   double area = 0.0, received = 0.0, direct = 0.0;
   for (size_t i = 0; i < F.n; ++i) {
     double s = 0.0;
-    for (size_t j = 0; j < F.n; ++j) s += F.gather[i * F.n + j] * sol.exitant_flux_lm[j];
+    for (size_t j = 0; j < F.n; ++j) s += F.at(i, j) * sol.exitant_flux_lm[j];
     received += s;
     direct += fb.incident_flux_lm[i];
     area += mesh.patches[i].area_m2;
@@ -218,6 +218,40 @@ TEST(FormFactor, LambertMatchesHottelForParallelRectangle) {
   const double kernel = point_kernel_form_factor({0, 0, 0}, {0, 0, 1}, {0, 0, 5}, {0, 0, -1}, 0.25);
   const double D = 0.5 * std::sqrt(2.0);
   EXPECT_NEAR(kernel / exact - 1.0, (D / 5) * (D / 5) / (2 * kPi), 0.002);
+}
+
+TEST(FormFactor, QuarterExtrapolationIsFarMoreAccurateThanThePointKernel) {
+  // A 0.5 m square ceiling patch seen from receivers between 2.5 D and 5 D (the band where the
+  // gather and the form factors use the quarters): level, tilted, off-axis, near the horizon.
+  const Polygon3 sq = {{-0.25, -0.25, 0}, {0.25, -0.25, 0}, {0.25, 0.25, 0}, {-0.25, 0.25, 0}};
+  const Vec3 m(0, 0, -1);
+  const double D = 0.5 * std::sqrt(2.0), A = 0.25;
+  const std::array<Vec3, 4> q = {Vec3(-0.125, -0.125, 0), Vec3(0.125, -0.125, 0),
+                                 Vec3(0.125, 0.125, 0), Vec3(-0.125, 0.125, 0)};
+  double worst_q = 0.0, worst_k = 0.0;
+  int used = 0;
+  for (double ratio : {2.6, 3.0, 4.0, 4.9})
+    for (double az : {0.0, 0.3, 0.8, 1.2})
+      for (const Vec3& n : {Vec3(0, 0, 1), glm::normalize(Vec3(1, 0, 1)), Vec3(-1, 0, 0)}) {
+        const double d = ratio * D;
+        const Vec3 x(d * std::sin(az), 0.0, -d * std::cos(az));
+        const double exact = point_polygon_form_factor(x, n, sq);
+        const double f = quarter_kernel_form_factor(x, n, sq, {0, 0, 0}, q, m, A, D, 0.0);
+        if (f < 0.0) continue;  // straddles the horizon: the caller takes the exact formula
+        ++used;
+        const double k = point_kernel_form_factor(x, n, {0, 0, 0}, m, A);
+        worst_q = std::max(worst_q, std::abs(f / exact - 1.0));
+        worst_k = std::max(worst_k, std::abs(k / exact - 1.0));
+      }
+  std::printf("[ quarters ] 2.5-5 D: worst error %.2e (point kernel %.2e), %d cases\n", worst_q,
+              worst_k, used);
+  EXPECT_GT(used, 30);
+  EXPECT_LT(worst_q, 2e-3);
+  EXPECT_LT(worst_q, 0.1 * worst_k);
+  // Too close for the quarters: -1 (exact formula).
+  EXPECT_EQ(quarter_kernel_form_factor({0, 0, -1}, {0, 0, 1}, sq, {0, 0, 0}, q, m, A, D,
+                                       std::pow(2.5 * D, 2)),
+            -1.0);
 }
 
 TEST(FormFactor, RowsOfAClosedBoxSumToOne) {
@@ -705,7 +739,7 @@ TEST(SphereLikeRoom, FirstBounceIsNearlyUniform) {
   double area = 0.0;
   for (size_t i = 0; i < F.n; ++i) {
     double e1 = 0.0;
-    for (size_t j = 0; j < F.n; ++j) e1 += F.gather[i * F.n + j] * fb.vpl_flux_lm[j];
+    for (size_t j = 0; j < F.n; ++j) e1 += F.at(i, j) * fb.vpl_flux_lm[j];
     const auto& p = mesh.patches[i];
     auto& f = faces[{static_cast<int>(p.face), p.face_index}];
     f[0] += fb.incident_flux_lm[i];
