@@ -225,8 +225,9 @@ constexpr GaussRule kGauss3{3, {kG3, 0.5, 1.0 - kG3}, {5.0 / 18.0, 8.0 / 18.0, 5
 
 // Budget of the near tier per receiver point (intensity lookups). A tabulated profile is
 // bilinear between its angles, so the indicator keeps seeing its kinks; measured on the
-// protocol, the worst point (a narrow spot 0.1 below the emitter) is within 1.2e-3 of its value
-// after 2000 lookups, where the indicator still asks for more.
+// protocol, the worst point (the arcos3 spot 0.1 below the emitter) is within 1.2e-3 of its
+// value after 2000 lookups, where the indicator still asks for more; with 1000 it is 7e-3, with
+// 500 9 %.
 constexpr long kNearMaxLookups = 2000;
 
 struct SinhTriangle {
@@ -237,7 +238,7 @@ struct SinhTriangle {
 struct SinhCell {
   int tri = 0;
   double t0 = 0.0, t1 = 1.0, s0 = 0.0, s1 = 1.0;
-  double qi = 0.0;   // 3 x 3 rule: integral of I cos_r / d^2 dA, cd sr... (lx m^2)
+  double qi = 0.0;   // 3 x 3 rule: integral of I cos_r / d^2 dA (cd; / A gives lx)
   double qg = 0.0;   // 3 x 3 rule: integral of cos_e cos_r / d^2 dA (sr)
   double error = 0.0;
 };
@@ -310,6 +311,7 @@ class SinhRule {
 
 double sinh_adaptive(const Emitter& e, const Vec3& point, const Vec3& normal, double rel_tol,
                      long max_lookups, bool* converged = nullptr) {
+  if (converged) *converged = true;
   if (e.is_point()) return far_field_illuminance(e, point, normal);
   const ReceiverFan fan = build_fan(e, point, normal, horizon_shift_m(e));
   if (fan.triangles == 0) return 0.0;
@@ -361,24 +363,29 @@ double sinh_adaptive(const Emitter& e, const Vec3& point, const Vec3& normal, do
 
 }  // namespace
 
-// quality "standard" (docs/nearfield.md): the globally adaptive rung with the two-kernel rule
-// (exact for Lambertian and isotropic emitters), refined until the summed |coarse - fine|
-// indicators are below kStandardRelTol of E. The indicator overstates the error of the finer
-// sum; on the paper's protocol (1 x 1 emitter, h = 0.1/1/2.5, 5 orientations, +-2.5 region,
-// Lambertian, batwing, cos^10, isotropic) this gives at most 0.38 % error (RMS 0.06 %), while
-// 1e-2 gives 4.8 % (bench/accuracy_bench, docs/accuracy.md).
+// quality "standard" (docs/nearfield.md, "The standard rung"), without an occluder:
+//  - near (receiver closer than kStandardAreaFormStart x largest dimension to the centroid): the
+//    Duffy-sinh adaptive cubature above, until the summed indicators are below kStandardRelTol
+//    of E or kNearMaxLookups lookups are spent. It replaces the two-kernel adaptive rung here,
+//    which needed 8000 to 20000 lookups (the budget) at a tabulated spot 0.1 below the emitter
+//    for the same accuracy (issue 5: standard cost 620x the far field, 46 us per point).
+//  - far: first the same cubature without splits (one 3 x 3 + 2 x 2 cell per fan triangle,
+//    13 lookups each); when its indicator is already below kStandardRelTol of E (every
+//    Lambertian point, where it is exact, and most smooth profiles) that is the value, else the
+//    area-form reference at kStandardAreaFormRelTol, whose 7-point rule samples each triangle
+//    more densely: on the tabulated spots the sinh indicator, small on the emitter's smooth
+//    parts, can miss a kink between its nodes at a dim point (measured 3.8 % at 1 % of the
+//    peak, zumtobel_intro, h = 2.5), while the reference's stays within 1 % of every point above
+//    1e-3 of the peak (0.84 % worst, 10 data sets of the protocol).
+// With an occluder the two-kernel adaptive rung is kept everywhere: its mixed-cell rule refines
+// shadow edges (the Duffy-sinh cells know nothing of visibility).
+// Tolerance: the indicator overstates the error of the finer sum; on the paper's protocol 3e-3
+// gives at most 0.38 % error (two-kernel rung), while 1e-2 gives 4.8 %.
 inline constexpr double kStandardRelTol = 3e-3;
 
-
-// Beyond this distance from the centroid (x largest dimension) `standard` switches to the
-// area-form reference at kStandardAreaFormRelTol: there the integrand is smooth over the
-// emitter, the degree-5 rule converges in one or two levels and its error estimate is sharp,
-// while the two-kernel fit of a peaked profile (cos^10) keeps splitting for a tolerance it has
-// long met. Measured on the protocol (1 x 1 emitter, h 0.1 / 1 / 2.5, 5 orientations, 21 x 21
-// points over +-2.5, Lambertian, batwing, cos^10, isotropic; reference at 1e-7): max 0.31 %,
-// RMS 0.018 % (was 0.34 % / 0.063 %), about 6x less time. At 0.5 D the switch would give 1.7 %.
-// With an occluder the adaptive rung is kept everywhere: its mixed-cell rule refines shadow
-// edges, which the 7-point rule can step over.
+// Beyond this distance from the centroid (x largest dimension) `standard` uses the far tier:
+// there the integrand is smooth over the emitter, the degree-5 rule converges in a few levels and
+// its error estimate is sharp. At 0.5 D the switch would give 1.7 % (two-kernel era measurement).
 inline constexpr double kStandardAreaFormStart = 0.75;  // x largest dimension
 inline constexpr double kStandardAreaFormRelTol = 3e-3;
 
@@ -386,8 +393,8 @@ double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& nor
                             const Occluder* occluder) {
   if (!occluder && !e.is_point() &&
       glm::length(point - e.centroid) >= kStandardAreaFormStart * e.largest_dimension_m) {
-    // First the two-kernel fan without splits (1 + 4 m lookups): where its fit is exact
-    // (Lambertian, isotropic) the indicator is at rounding level and the value is exact.
+    // First the Duffy-sinh cubature without splits: exact for a Lambertian emitter (the
+    // indicator is then at rounding level), and enough for most smooth profiles.
     bool converged = false;
     const double first = sinh_adaptive(e, point, normal, kStandardRelTol, 0, &converged);
     if (converged) return first;
