@@ -80,8 +80,12 @@ void check_and_print(const std::string& what, const Emitter& e) {
     // band, 4.3 % at worst here at 4 D): 0.32 %, below the 0.5 % bar (measured: 0.13 %).
     EXPECT_LT(f.max_extra_step_plot, 0.005) << what << " ray " << r;
     EXPECT_LE(f.max_extra_step_plot, 0.075 * f.max_far_error + 1e-6) << what << " ray " << r;
-    // Between receivers 0.002 D apart the same bound gives 0.0015 x the far-field error.
-    EXPECT_LE(f.max_extra_step, 0.0015 * f.max_far_error + 1e-6) << what << " ray " << r;
+    // Between receivers 0.002 D apart the blend adds at most 0.0015 x the far-field error, but
+    // E_auto - E_near also carries w x (the near rung's own step): `standard` is adaptive with
+    // tolerance 3e-3, and a refinement decision flipping between neighbours moves its value by
+    // up to that much (measured 0.12 % once, ray 1 of the linear luminaire). Bound: the blend's
+    // share plus the rung's tolerance.
+    EXPECT_LE(f.max_extra_step, 0.0015 * f.max_far_error + 3e-3) << what << " ray " << r;
     // A convex blend never strays further from the near model than the far field itself does.
     EXPECT_LE(f.max_deviation, f.max_far_error + 1e-12) << what << " ray " << r;
   }
