@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include "calc/direct.h"
+#include "calc/indirect/box_bounds.h"
 #include "calc/indirect/first_bounce.h"
 #include "calc/indirect/prism_visibility.h"
 #include "calc/indirect/radiosity.h"
@@ -277,23 +278,22 @@ GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
   return set;
 }
 
-// Largest (smallest) of n . (v - x) over the box [lo, hi].
-double box_max_height(const Vec3& n, const Vec3& x, const Vec3& lo, const Vec3& hi) {
-  const Vec3 a = lo - x, b = hi - x;
-  return std::max(n.x * a.x, n.x * b.x) + std::max(n.y * a.y, n.y * b.y) + std::max(n.z * a.z, n.z * b.z);
-}
-double box_min_height(const Vec3& n, const Vec3& x, const Vec3& lo, const Vec3& hi) {
-  const Vec3 a = lo - x, b = hi - x;
-  return std::min(n.x * a.x, n.x * b.x) + std::min(n.y * a.y, n.y * b.y) + std::min(n.z * a.z, n.z * b.z);
-}
-// Squared distance from x to the box [lo, hi].
-double box_distance2(const Vec3& x, const Vec3& lo, const Vec3& hi) {
-  const Vec3 d = glm::max(glm::max(lo - x, x - hi), Vec3(0.0));
-  return glm::dot(d, d);
-}
 
 // gather_point over a GatherSet: the same sum, term for term, with whole groups and chunks
 // skipped where every term is 0 and the far kernel written out (no square root).
+// Form factor from the point (x, n) to patch p in the final gather: the point kernel when the
+// patch is far (`far`: beyond far_ratio x its diameter), the kernel on its quarters between
+// far_ratio x D / 2 and far_ratio x D, Lambert's exact polygon formula closer (and whenever the
+// quarter rule declines: non-parallelogram patches, patches crossing the horizon).
+double gather_form_factor(const Vec3& x, const Vec3& n, const Patch& p, double far_ratio, bool far) {
+  if (far) return point_kernel_form_factor(x, n, p.centroid, p.normal, p.area_m2);
+  const double half = 0.5 * far_ratio * p.diameter_m;
+  const double f = p.has_quarters ? quarter_kernel_form_factor(x, n, p.polygon, p.centroid, p.quarter_centroid,
+                                                               p.normal, p.area_m2, p.diameter_m, half * half)
+                                  : -1.0;
+  return f < 0.0 ? point_polygon_form_factor(x, n, p.polygon) : f;
+}
+
 double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3& x, const Vec3& n,
                         double far_ratio, const OcclusionFn& occluded) {
   double near = 0.0, far = 0.0;
@@ -337,16 +337,7 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
           continue;
         }
         const Patch& p = mesh.patches[set.patch[k]];
-        double f;
-        if (d2 > set.near_d2[k]) {
-          f = point_kernel_form_factor(x, n, p.centroid, p.normal, p.area_m2);
-        } else {
-          const double half = 0.5 * far_ratio * p.diameter_m;
-          f = p.has_quarters ? quarter_kernel_form_factor(x, n, p.polygon, p.centroid, p.quarter_centroid, p.normal,
-                                                          p.area_m2, p.diameter_m, half * half)
-                             : -1.0;
-          if (f < 0.0) f = point_polygon_form_factor(x, n, p.polygon);
-        }
+        double f = gather_form_factor(x, n, p, far_ratio, d2 > set.near_d2[k]);
         if (f > 0.0 && occluded) f *= gather_visible_fraction(x, n, p, occluded);
         near += flux[k] / p.area_m2 * f;
       }
@@ -453,17 +444,7 @@ double gather_point(const PatchMesh& mesh, size_t begin, size_t end,
     const Patch& p = mesh.patches[j];
     if (!(glm::dot(p.normal, x - p.centroid) > kGatherPlaneDistance_m)) continue;
     const double d = glm::length(x - p.centroid);
-    double f;
-    if (d > far_ratio * p.diameter_m) {
-      f = point_kernel_form_factor(x, n, p.centroid, p.normal, p.area_m2);
-    } else {
-      // Between far_ratio x D / 2 and far_ratio x D: the kernel on the quarters; closer: exact.
-      const double half = 0.5 * far_ratio * p.diameter_m;
-      f = p.has_quarters ? quarter_kernel_form_factor(x, n, p.polygon, p.centroid, p.quarter_centroid, p.normal,
-                                                      p.area_m2, p.diameter_m, half * half)
-                         : -1.0;
-      if (f < 0.0) f = point_polygon_form_factor(x, n, p.polygon);
-    }
+    double f = gather_form_factor(x, n, p, far_ratio, d > far_ratio * p.diameter_m);
     if (f > 0.0 && occluded) f *= gather_visible_fraction(x, n, p, occluded);
     e += flux / p.area_m2 * f;  // exitance M = flux / area; E = M F
   }

@@ -12,6 +12,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "calc/indirect/box_bounds.h"
+
 namespace luxgrid::calc::indirect {
 
 namespace {
@@ -52,19 +54,6 @@ double dot(const float* row, const double* v, size_t b, size_t e) {
 // Tile size of the source chunks, in units of the largest patch diameter of a coplanar run.
 constexpr double kChunkTile = 4.0;
 
-// Largest (smallest) of n . (v - x) over the box [lo, hi]; squared distance from x to the box.
-double box_max_height(const Vec3& n, const Vec3& x, const Vec3& lo, const Vec3& hi) {
-  const Vec3 a = lo - x, b = hi - x;
-  return std::max(n.x * a.x, n.x * b.x) + std::max(n.y * a.y, n.y * b.y) + std::max(n.z * a.z, n.z * b.z);
-}
-double box_min_height(const Vec3& n, const Vec3& x, const Vec3& lo, const Vec3& hi) {
-  const Vec3 a = lo - x, b = hi - x;
-  return std::min(n.x * a.x, n.x * b.x) + std::min(n.y * a.y, n.y * b.y) + std::min(n.z * a.z, n.z * b.z);
-}
-double box_distance2(const Vec3& x, const Vec3& lo, const Vec3& hi) {
-  const Vec3 d = glm::max(glm::max(lo - x, x - hi), Vec3(0.0));
-  return glm::dot(d, d);
-}
 
 // Fraction of `target` visible from `from`: its centroid and the midpoints between centroid and
 // each vertex.
