@@ -71,6 +71,27 @@ def midpoint_E(poly_rect, L, p, n, m=400):
     return L * s * hx * hy
 # -------------------------------------------------------------------------------------------------
 
+# --- the case files shared by the Lambertian-rectangle cases ---
+def black_hall_panel_project(name, I0, centre, a, b, points):
+    """A 20 x 20 x 3 m black hall (no reflected light) with one downward Lambertian a x b panel
+    of intensity I0 centred at `centre`, and the probe points as the one surface "probes"."""
+    return {
+        "format": "luxgrid-project/1", "name": name,
+        "settings": {"quality": "standard", "indirect": "off"},
+        "photometry": {"panel": {"builtin": "lambertian", "intensity_cd": I0}},
+        "rooms": [{"name": "black hall", "outline": [[0, 0], [20, 0], [20, 20], [0, 20]], "height": 3.0,
+                   "reflectance": {"floor": 0, "walls": 0, "ceiling": 0}}],
+        "luminaires": [{"photometry": "panel", "position": list(centre),
+                        "emitter": {"shape": "rectangle", "size": [a, b]}}],
+        "surfaces": [{"name": "probes", "points": points}],
+    }
+
+def write_case(here, project, cases):
+    """Writes project.json and expected.json of the case folder `here`."""
+    import json
+    (here / "project.json").write_text(json.dumps(project, indent=1) + "\n")
+    (here / "expected.json").write_text(json.dumps({"cases": cases}, indent=1) + "\n")
+
 # `from lambert import *` in the derive scripts also needs the small vector helpers.
 __all__ = ["math", "_sub", "_dot", "_cross", "_norm", "clip_by_horizon", "lambert_E", "rectangle",
-           "corner_factor", "parallel_factor", "midpoint_E"]
+           "corner_factor", "parallel_factor", "midpoint_E", "black_hall_panel_project", "write_case"]

@@ -42,17 +42,6 @@ for k, (label, p) in enumerate(named.items()):
                   "source": f"{label}: Lambert contour integral = Howell B-3 superposition; "
                             f"far field {ff:.6g} lx ({100 * (ff / E - 1):+.2f} %)"})
 here = pathlib.Path(__file__).parent
-project = {
-    "format": "luxgrid-project/1", "name": "Lambertian rectangle over parallel planes",
-    "settings": {"quality": "standard", "indirect": "off"},
-    "photometry": {"panel": {"builtin": "lambertian", "intensity_cd": I0}},
-    "rooms": [{"name": "black hall", "outline": [[0, 0], [20, 0], [20, 20], [0, 20]], "height": 3.0,
-               "reflectance": {"floor": 0, "walls": 0, "ceiling": 0}}],
-    "luminaires": [{"photometry": "panel", "position": list(C),
-                    "emitter": {"shape": "rectangle", "size": [a, b]}}],
-    "surfaces": [{"name": "probes", "points": points}],
-}
-(here / "project.json").write_text(json.dumps(project, indent=1) + "\n")
-(here / "expected.json").write_text(json.dumps({"cases": cases}, indent=1) + "\n")
+write_case(here, black_hall_panel_project("Lambertian rectangle over parallel planes", I0, C, a, b, points), cases)
 for label, p, E, ff in table:
     print(f"| {label} | ({p[0]:g}, {p[1]:g}, {p[2]:g}) | {E:.6g} | {ff:.6g} | {100 * (ff / E - 1):+.2f} % |")
