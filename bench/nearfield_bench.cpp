@@ -15,41 +15,28 @@
 #include "calc/nearfield/illuminance.h"
 #include "calc/nearfield/models.h"
 #include "photometry/builtin.h"
+#include "photometry/tabular_distribution.h"
 
 namespace {
 
 using namespace luxgrid;
 using namespace luxgrid::nearfield;
 
-// A 5-degree C x 2.5-degree gamma table, bilinear: the cost of a real file lookup (angles by
-// atan2, two binary-search-free index computations, four table reads).
-class TableDistribution final : public photometry::IntensityDistribution {
- public:
-  TableDistribution() : table_(kC * kG) {
-    for (int c = 0; c < kC; ++c)
-      for (int g = 0; g < kG; ++g) {
-        const double gamma = g * kDg, cc = c * kDc;
-        table_[c * kG + g] = gamma < kPi / 2 ? 1000.0 * std::cos(gamma) * (1 + 2 * std::pow(std::sin(gamma), 2)) *
-                                                   (1.0 + 0.2 * std::cos(2 * cc))
-                                             : 0.0;
-      }
-  }
-  double intensity(const Vec3& d) const override {
-    const photometry::PhotometricAngles a = photometry::angles_of(d);
-    const double fc = a.c / kDc, fg = a.gamma / kDg;
-    const int c0 = std::min(int(fc), kC - 1), g0 = std::min(int(fg), kG - 2);
-    const int c1 = (c0 + 1) % kC;
-    const double tc = fc - c0, tg = fg - g0;
-    const double v0 = table_[c0 * kG + g0] * (1 - tg) + table_[c0 * kG + g0 + 1] * tg;
-    const double v1 = table_[c1 * kG + g0] * (1 - tg) + table_[c1 * kG + g0 + 1] * tg;
-    return v0 * (1 - tc) + v1 * tc;
-  }
-
- private:
-  static constexpr int kC = 72, kG = 73;
-  static constexpr double kDc = 2 * kPi / kC, kDg = kPi / (kG - 1);
-  std::vector<double> table_;
-};
+// A 5-degree C x 2.5-degree gamma table, bilinear, as the photometry reader builds it
+// (photometry::TabularDistribution): a lookup costs what a file's does (two atan2, the cell by a
+// multiplication, four table reads), and `standard` sees its table (the table rung).
+photometry::DistributionPtr table_distribution() {
+  constexpr int kC = 72, kG = 73;
+  photometry::SphericalGrid grid;
+  for (int c = 0; c < kC; ++c) grid.c_rad.push_back(c * 2 * kPi / kC);
+  for (int g = 0; g < kG; ++g) grid.gamma_rad.push_back(g * kPi / (kG - 1));
+  for (double cc : grid.c_rad)
+    for (double gamma : grid.gamma_rad)
+      grid.cd.push_back(gamma < kPi / 2 ? 1000.0 * std::cos(gamma) * (1 + 2 * std::pow(std::sin(gamma), 2)) *
+                                              (1.0 + 0.2 * std::cos(2 * cc))
+                                        : 0.0);
+  return std::make_shared<photometry::TabularDistribution>(std::move(grid));
+}
 
 struct Point {
   const Emitter* e;
@@ -60,8 +47,8 @@ const std::vector<Emitter>& emitters(bool table) {
   static std::vector<Emitter> analytic, tabulated;
   std::vector<Emitter>& out = table ? tabulated : analytic;
   if (out.empty()) {
-    photometry::DistributionPtr d = table ? photometry::DistributionPtr(std::make_shared<TableDistribution>())
-                                          : std::make_shared<BatwingDistribution>(1000.0);
+    photometry::DistributionPtr d =
+        table ? table_distribution() : photometry::DistributionPtr(std::make_shared<BatwingDistribution>(1000.0));
     photometry::LuminousOpening o;
     o.shape = photometry::LuminousOpening::Shape::rectangle;
     o.length = o.width = 1.0;

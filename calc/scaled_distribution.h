@@ -9,6 +9,11 @@ class ScaledDistribution final : public photometry::IntensityDistribution {
   ScaledDistribution(photometry::DistributionPtr inner, double factor)
       : inner_(std::move(inner)), factor_(factor) {}
   double intensity(const Vec3& d) const override { return factor_ * inner_->intensity(d); }
+  photometry::TableView table_view() const override {
+    photometry::TableView v = inner_->table_view();
+    v.scale *= factor_;
+    return v;
+  }
 
  private:
   photometry::DistributionPtr inner_;

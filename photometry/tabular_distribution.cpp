@@ -106,26 +106,24 @@ double TabularDistribution::c_of(long k) const {
   return grid_.c_rad[static_cast<std::size_t>(k - wraps * n)] + kTwoPi * static_cast<double>(wraps);
 }
 
-bool TabularDistribution::locate(double c, double g, Cell& cell) const {
+bool TabularDistribution::gamma_cell(double g, std::size_t& j, double& tg) const {
   if (!(g >= g_front_ - kAngleEps && g <= g_back_ + kAngleEps)) return false;
   g = std::clamp(g, g_front_, g_back_);
-  // gamma row
   if (g_uniform_) {
-    cell.j = std::min(static_cast<std::size_t>(g * inv_dg_), ng_ - 2);
+    j = std::min(static_cast<std::size_t>(g * inv_dg_), ng_ - 2);
   } else {
     auto it = std::upper_bound(grid_.gamma_rad.begin(), grid_.gamma_rad.end(), g);
-    cell.j = std::min(static_cast<std::size_t>(std::max<std::ptrdiff_t>(
-                          it - grid_.gamma_rad.begin() - 1, 0)),
-                      ng_ - 2);
+    j = std::min(static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - grid_.gamma_rad.begin() - 1, 0)),
+                 ng_ - 2);
   }
-  const double g0 = grid_.gamma_rad[cell.j], g1 = grid_.gamma_rad[cell.j + 1];
-  cell.tg = std::clamp((g - g0) / (g1 - g0), 0.0, 1.0);
-  // C plane (periodic)
-  if (nc_ == 1) {
-    cell.i = 0;
-    cell.tc = 0.0;
-    return true;
-  }
+  const double g0 = grid_.gamma_rad[j], g1 = grid_.gamma_rad[j + 1];
+  tg = std::clamp((g - g0) / (g1 - g0), 0.0, 1.0);
+  return true;
+}
+
+TabularDistribution::CPosition TabularDistribution::c_position(double c) const {
+  CPosition out;
+  if (nc_ == 1) return out;
   if (!(c >= 0.0 && c < kTwoPi)) {
     c = std::fmod(c, kTwoPi);
     if (c < 0.0) c += kTwoPi;
@@ -133,21 +131,34 @@ bool TabularDistribution::locate(double c, double g, Cell& cell) const {
   }
   double c0, c1;
   if (c_uniform_) {
-    cell.i = std::min(static_cast<std::size_t>(c * inv_dc_), nc_ - 1);
-    c0 = grid_.c_rad[cell.i];
-    c1 = cell.i + 1 < nc_ ? grid_.c_rad[cell.i + 1] : kTwoPi;
+    out.i = std::min(static_cast<std::size_t>(c * inv_dc_), nc_ - 1);
+    c0 = grid_.c_rad[out.i];
+    c1 = out.i + 1 < nc_ ? grid_.c_rad[out.i + 1] : kTwoPi;
   } else if (c < grid_.c_rad.front()) {  // wrap cell before the first plane
-    cell.i = nc_ - 1;
+    out.i = nc_ - 1;
     c0 = grid_.c_rad.back() - kTwoPi;
     c1 = grid_.c_rad.front();
   } else {
     auto it = std::upper_bound(grid_.c_rad.begin(), grid_.c_rad.end(), c);
-    cell.i = static_cast<std::size_t>(it - grid_.c_rad.begin() - 1);
-    c0 = grid_.c_rad[cell.i];
-    c1 = cell.i + 1 < nc_ ? grid_.c_rad[cell.i + 1] : grid_.c_rad.front() + kTwoPi;
+    out.i = static_cast<std::size_t>(it - grid_.c_rad.begin() - 1);
+    c0 = grid_.c_rad[out.i];
+    c1 = out.i + 1 < nc_ ? grid_.c_rad[out.i + 1] : grid_.c_rad.front() + kTwoPi;
   }
-  cell.tc = std::clamp((c - c0) / (c1 - c0), 0.0, 1.0);
+  out.tc = std::clamp((c - c0) / (c1 - c0), 0.0, 1.0);
+  return out;
+}
+
+bool TabularDistribution::locate(double c, double g, Cell& cell) const {
+  if (!gamma_cell(g, cell.j, cell.tg)) return false;
+  const CPosition p = c_position(c);
+  cell.i = p.i;
+  cell.tc = p.tc;
   return true;
+}
+
+double TabularDistribution::intensity_at(const CPosition& c, std::size_t j, double tg) const {
+  const Cell cell{c.i, c.tc, j, tg};
+  return mode_ == Interpolation::bilinear ? bilinear(cell) : bicubic(cell);
 }
 
 double TabularDistribution::bilinear(const Cell& k) const {

@@ -43,8 +43,22 @@ class TabularDistribution final : public IntensityDistribution {
                                const glm::dmat3& table_from_luminaire = glm::dmat3(1.0));
 
   double intensity(const Vec3& direction) const override;
+  // Itself for type C; a type A/B grid's angles are not the luminaire frame's, so none.
+  TableView table_view() const override { return has_frame_ ? TableView{} : TableView{this, 1.0}; }
   // Lookup by angles of the grid's own frame (radians; c any real, gamma in [0, pi]).
   double intensity_at(double c_rad, double gamma_rad) const;
+
+  // Walking the table along one C (calc/nearfield/table_cubature.cpp): the C position is found
+  // once per ray, and a lookup whose gamma cell is known (row j, fraction tg in [0, 1]) reads the
+  // table directly. Same values as intensity_at(c, gamma).
+  struct CPosition {
+    std::size_t i = 0;  // C plane below (periodic)
+    double tc = 0.0;    // fraction towards the next plane
+  };
+  CPosition c_position(double c_rad) const;
+  double intensity_at(const CPosition& c, std::size_t j, double tg) const;
+  // The gamma cell of an angle: false outside the table's gamma range (intensity zero there).
+  bool gamma_cell(double gamma_rad, std::size_t& j, double& tg) const;
 
   Interpolation interpolation() const { return mode_; }
   std::shared_ptr<const TabularDistribution> with_interpolation(Interpolation mode) const;

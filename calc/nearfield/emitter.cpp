@@ -29,6 +29,8 @@ Emitter make_polygon_emitter(std::vector<Vec3> vertices, const glm::dmat3& rotat
   e.world_to_local = glm::transpose(rotation);
   e.normal = glm::normalize(rotation * Vec3(0.0, 0.0, -1.0));
   e.distribution = std::move(distribution);
+  if (const photometry::TableView view = e.distribution->table_view(); view.table)
+    e.table_cells = make_table_gamma_cells(*view.table);
   Vec3 c{0.0};
   for (const Vec3& v : vertices) c += v;
   if (!vertices.empty()) c /= static_cast<double>(vertices.size());

@@ -7,6 +7,7 @@
 
 #include <glm/mat3x3.hpp>
 
+#include "calc/nearfield/table_cells.h"
 #include "photometry/intensity_distribution.h"
 #include "photometry/photometry.h"
 #include "util/robust_math.h"
@@ -30,6 +31,8 @@ struct Emitter {
   glm::dmat3 world_to_local{1.0};    // R^T, cached for the lookups on the hot path
   double largest_dimension_m = 0.0;  // largest distance between two vertices (five-times rule)
   photometry::DistributionPtr distribution;
+  // The table rung's gamma cells when `distribution` has a table view (table_cells.h).
+  std::shared_ptr<const TableGammaCells> table_cells;
 
   bool is_point() const { return vertices.size() < 3 || area_m2 <= 0.0; }
   // Intensity (cd) sent along the world direction `dir_world` (unit, pointing away from the

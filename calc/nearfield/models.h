@@ -57,6 +57,16 @@ double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& nor
 double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                             const Occluder* occluder = nullptr);
 
+// The table rung (docs/nearfield.md, "The table rung"), calc/nearfield/table_cubature.cpp: for
+// a distribution with a TableView (a type C table, possibly scaled), the area form in polar
+// coordinates around the receiver's foot on the emitter plane, where the table's C and gamma
+// lines are coordinate lines, with a 2 x 2 Gauss-Legendre rule on every table cell the emitter
+// covers. Converges like a smooth integrand where the adaptive rungs meet kinks. Returns false
+// (`lux` untouched) without a table view or for a point emitter; `nodes` (optional) receives
+// the number of intensity lookups.
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double& lux,
+                               long* nodes = nullptr);
+
 // Exact illuminance from a uniform (Lambertian) emitter of luminance `luminance_cd_m2`:
 // Lambert's polygon formula E = L/2 |n . sum_edges theta g| on the horizon-clipped polygon.
 // Only the emitting side is lit. No horizon shift.

@@ -1,0 +1,81 @@
+#include "calc/nearfield/table_cells.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "util/robust_math.h"
+
+namespace luxgrid::nearfield {
+namespace {
+
+constexpr double kG2 = 0.21132486540518711775;  // 2-point Gauss-Legendre node on [0, 1]
+constexpr double kHalfPi = 0.5 * kPi;
+
+// Gauss nodes of one piece [p0, p1] of gamma' (receiver-side angle, < pi / 2).
+void append_piece(const photometry::TabularDistribution& table, double p0, double p1, bool back,
+                  std::vector<TableGammaNode>& out) {
+  const double w = 0.5 * (p1 - p0);
+  for (double x : {kG2, 1.0 - kG2}) {
+    const double gp = p0 + (p1 - p0) * x;
+    const double s = std::sin(gp), c = std::cos(gp);
+    TableGammaNode node{back ? kPi - gp : gp, s, c, w * s / c};
+    std::size_t j = 0;
+    if (table.gamma_cell(node.gamma, j, node.tg)) node.row = static_cast<long>(j);
+    out.push_back(node);
+  }
+}
+
+}  // namespace
+
+void append_gamma_nodes(const photometry::TabularDistribution& table, double a, double b, double tan_a,
+                        double tan_b, std::vector<TableGammaNode>& out) {
+  if (!(b - a > 1e-12)) return;
+  const bool back = a >= kHalfPi;
+  const double lo = back ? kPi - b : a, hi = back ? kPi - a : b;  // gamma' interval
+  const int wide = std::max(1, static_cast<int>(std::ceil((hi - lo) / kTableMaxGammaCell)));
+  for (int k = 0; k < wide; ++k) {
+    const double p0 = lo + (hi - lo) * k / wide, p1 = k + 1 == wide ? hi : lo + (hi - lo) * (k + 1) / wide;
+    // |tan| at the piece's ends in gamma' order (the caller's values are in table order).
+    const double known_lo = back ? tan_b : tan_a, known_hi = back ? tan_a : tan_b;
+    const double t0 = k == 0 && known_lo >= 0.0 ? known_lo : std::tan(p0);
+    const double t1 = k + 1 == wide && known_hi >= 0.0 ? known_hi : std::tan(p1);
+    if (!(t0 > 0.0) || !(t1 > kTableTanRatio * t0) || !std::isfinite(t1)) {
+      append_piece(table, p0, p1, back, out);
+      continue;
+    }
+    const int pieces = static_cast<int>(std::ceil(std::log(t1 / t0) / std::log(kTableTanRatio)));
+    const double ratio = std::pow(t1 / t0, 1.0 / pieces);
+    double q0 = p0, t = t0;
+    for (int q = 1; q <= pieces; ++q) {
+      t *= ratio;
+      const double q1 = q == pieces ? p1 : std::atan(t);
+      append_piece(table, q0, q1, back, out);
+      q0 = q1;
+    }
+  }
+}
+
+std::shared_ptr<const TableGammaCells> make_table_gamma_cells(const photometry::TabularDistribution& table) {
+  auto cells = std::make_shared<TableGammaCells>();
+  cells->table = &table;
+  cells->lines = table.grid().gamma_rad;
+  if (std::find(cells->lines.begin(), cells->lines.end(), kHalfPi) == cells->lines.end()) {
+    cells->lines.push_back(kHalfPi);
+    std::sort(cells->lines.begin(), cells->lines.end());
+  }
+  const std::vector<double>& L = cells->lines;
+  for (double g : L) cells->line_tan.push_back(g == kHalfPi ? std::numeric_limits<double>::infinity() : std::abs(std::tan(g)));
+  cells->first.assign(L.size(), 0);
+  for (std::size_t k = 0; k + 1 < L.size(); ++k) {
+    cells->first[k] = static_cast<int>(cells->nodes.size());
+    // A cell touching pi / 2 is never crossed whole by a ray (the receiver is off the plane),
+    // and tan is unbounded there: the rung integrates it as an end cell.
+    if (L[k] != kHalfPi && L[k + 1] != kHalfPi)
+      append_gamma_nodes(table, L[k], L[k + 1], cells->line_tan[k], cells->line_tan[k + 1], cells->nodes);
+  }
+  cells->first.back() = static_cast<int>(cells->nodes.size());
+  return cells;
+}
+
+}  // namespace luxgrid::nearfield

@@ -1,0 +1,49 @@
+#pragma once
+// The gamma side of the table rung's cells (calc/nearfield/table_cubature.cpp), computed once per
+// emitter: every cell between two gamma lines of a table, split where it is wide or where
+// tan(gamma') grows fast, with its Gauss-Legendre nodes and their sines and cosines. They do not
+// depend on the receiver, so a ray of the rung only computes trigonometry for its two end cells.
+#include <memory>
+#include <vector>
+
+#include "photometry/tabular_distribution.h"
+
+namespace luxgrid::nearfield {
+
+// Largest gamma width of a cell (rad, 5 deg) when the table has no line inside it: the weight
+// tan(gamma') cos_r must still be resolved.
+inline constexpr double kTableMaxGammaCell = 5.0 * 3.14159265358979323846 / 180.0;
+// Towards the emitter plane (gamma' -> 90 deg) tan(gamma') grows without bound; a cell over which
+// it grows by more than this ratio is cut at equal ratios, so the weight is nearly linear in
+// each piece.
+inline constexpr double kTableTanRatio = 1.25;
+
+struct TableGammaNode {
+  double gamma;       // table angle, rad
+  double sin_g;       // sin(gamma) = sin(gamma')
+  double abs_cos_g;   // |cos(gamma)| = cos(gamma') on the receiver's side
+  double weight_tan;  // Gauss weight (in rad) x tan(gamma')
+  // The table's gamma cell of `gamma` (TabularDistribution::gamma_cell); row < 0: outside the
+  // table's gamma range, intensity zero.
+  long row = -1;
+  double tg = 0.0;
+};
+
+struct TableGammaCells {
+  const photometry::TabularDistribution* table = nullptr;  // built from this table
+  std::vector<double> lines;  // the table's gamma lines and pi / 2, ascending, rad
+  std::vector<double> line_tan;  // |tan| of each line (of gamma' = gamma or pi - gamma); inf at pi / 2
+  std::vector<int> first;     // the nodes of cell k (lines[k], lines[k + 1]) are
+                              // nodes[first[k]] .. nodes[first[k + 1] - 1]
+  std::vector<TableGammaNode> nodes;
+};
+
+// Appends the 2-point Gauss-Legendre nodes of the table-angle interval [a, b] (on one side of
+// pi / 2), split by kTableMaxGammaCell and kTableTanRatio, each with its cell in `table`.
+// tan_a, tan_b: |tan| at a and b when the caller knows them (else negative: computed here).
+void append_gamma_nodes(const photometry::TabularDistribution& table, double a, double b, double tan_a,
+                        double tan_b, std::vector<TableGammaNode>& out);
+
+std::shared_ptr<const TableGammaCells> make_table_gamma_cells(const photometry::TabularDistribution& table);
+
+}  // namespace luxgrid::nearfield

@@ -1,0 +1,275 @@
+// The table rung (docs/nearfield.md, "The table rung"): the area form of the illuminance
+//   E = (1/A) integral over the clipped polygon of I(C, gamma) cos_r / d^2 dA
+// in polar coordinates around the receiver's foot F on the emitter plane.
+//
+// Why polar around F: seen from an emitter point y, the receiver x lies at photometric angles
+// gamma = angle between the emitter's axis and (x - y), C = azimuth of (x - y). With y at
+// in-plane offset rho (cos psi, sin psi) from F and sigma the receiver's signed distance from
+// the plane, gamma' = atan(rho / |sigma|) is gamma (front) or pi - gamma (back) and C = psi + pi.
+// So the table's C lines are rays from F and its gamma lines are circles around F: the cells
+// of (psi, gamma') between them are exactly the table's cells, inside which a bilinear
+// (bicubic) interpolant is smooth. The adaptive rungs sample across those kinks and their error
+// indicators misjudge them (docs/accuracy.md); here every kink is a cell boundary and a
+// 2 x 2 Gauss-Legendre rule per cell converges like on a smooth function.
+//
+// The measure: dA / d^2 = rho d rho d psi / d^2 = tan(gamma') d gamma' d psi, and
+// cos_r = sin(gamma') (n_x cos psi + n_y sin psi) + sign(sigma) n_z cos(gamma') with n the
+// receiver normal in the luminaire frame. tan(gamma') grows without bound towards the plane
+// (gamma' -> 90 deg); cells there are split so tan grows by at most kTableTanRatio across each
+// (table_cells.h).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "calc/nearfield/fan_sample.h"
+#include "calc/nearfield/models.h"
+#include "calc/nearfield/receiver_fan.h"
+#include "calc/nearfield/table_cells.h"
+#include "photometry/tabular_distribution.h"
+
+namespace luxgrid::nearfield {
+namespace {
+
+constexpr double kTwoPi = 2.0 * kPi;
+
+// Gauss-Legendre, 2 points on [0, 1]: exact for cubics, so for a bilinear cell times a smooth
+// weight the error is the weight's fourth derivative times the cell size^4 / 4320.
+constexpr double kG2 = 0.21132486540518711775;  // (1 - 1/sqrt(3)) / 2
+
+// Largest angular width of a psi cell (rad, 7.5 deg) when the table has no C line inside it
+// (rotationally symmetric files have none): the outline rho(psi) and the weight must still be
+// resolved. The gamma side's limits are in table_cells.h.
+constexpr double kMaxPsiCell = 7.5 * kPi / 180.0;
+// Cells narrower than this (rad) are dropped: two breaks that coincide up to rounding.
+constexpr double kMinCell = 1e-12;
+
+struct Polygon2 {
+  std::array<glm::dvec2, kMaxPolygonVertices> v;
+  int n = 0;
+};
+
+bool contains_origin(const Polygon2& p) {
+  double area2 = 0.0;
+  for (int i = 0; i < p.n; ++i) {
+    const glm::dvec2 a = p.v[i], b = p.v[(i + 1) % p.n];
+    area2 += a.x * b.y - a.y * b.x;
+  }
+  for (int i = 0; i < p.n; ++i) {
+    const glm::dvec2 a = p.v[i], b = p.v[(i + 1) % p.n];
+    // Origin strictly on the outer side of an edge: outside.
+    if ((a.x * b.y - a.y * b.x) * area2 < 0.0) return false;
+  }
+  return true;
+}
+
+// Distances along the ray from the origin at angle psi where it enters and leaves the convex
+// polygon. False when the ray misses it (only at the rim of the angular range, by rounding).
+bool ray_interval(const Polygon2& p, double cos_psi, double sin_psi, bool origin_inside,
+                  double& rho_min, double& rho_max) {
+  rho_min = std::numeric_limits<double>::infinity();
+  rho_max = 0.0;
+  bool hit = false;
+  for (int i = 0; i < p.n; ++i) {
+    const glm::dvec2 a = p.v[i], b = p.v[(i + 1) % p.n];
+    const glm::dvec2 e = b - a;
+    // origin + t (c, s) = a + u e  ->  t (c, s) - u e = a
+    const double det = -cos_psi * e.y + sin_psi * e.x;
+    if (det == 0.0) continue;
+    const double t = (-a.x * e.y + a.y * e.x) / det;
+    const double u = (cos_psi * a.y - sin_psi * a.x) / det;
+    if (u < -1e-12 || u > 1.0 + 1e-12 || t < 0.0) continue;
+    rho_min = std::min(rho_min, t);
+    rho_max = std::max(rho_max, t);
+    hit = true;
+  }
+  if (origin_inside) rho_min = 0.0;
+  return hit && rho_max > rho_min;
+}
+
+// Appends every copy (period 2 pi) of the angle x that falls strictly inside (lo, hi).
+void add_periodic_break(double x, double lo, double hi, std::vector<double>& out) {
+  x -= kTwoPi * std::floor((x - lo) / kTwoPi);  // first copy >= lo
+  for (; x < hi; x += kTwoPi)
+    if (x > lo) out.push_back(x);
+}
+
+// Appends the directions (as breaks inside (lo, hi)) where the circle of radius r around the
+// origin crosses the polygon's edges.
+void add_circle_crossings(const Polygon2& p, double r, double lo, double hi, std::vector<double>& out) {
+  const double r2 = r * r;
+  for (int i = 0; i < p.n; ++i) {
+    const glm::dvec2 a = p.v[i], e = p.v[(i + 1) % p.n] - a;
+    // |a + u e|^2 = r^2, u in [0, 1]
+    const double qa = glm::dot(e, e), qb = glm::dot(a, e), qc = glm::dot(a, a) - r2;
+    if (!(qa > 0.0)) continue;
+    const double disc = qb * qb - qa * qc;
+    if (!(disc > 0.0)) continue;
+    const double root = std::sqrt(disc);
+    for (double u : {(-qb - root) / qa, (-qb + root) / qa})
+      if (u > 0.0 && u < 1.0) {
+        const glm::dvec2 x = a + u * e;
+        add_periodic_break(std::atan2(x.y, x.x), lo, hi, out);
+      }
+  }
+}
+
+// Sorted breaks of [lo, hi] with no cell wider than max_cell (`out` is scratch space).
+void finish_breaks(std::vector<double>& b, std::vector<double>& out, double lo, double hi, double max_cell) {
+  b.push_back(lo);
+  b.push_back(hi);
+  std::sort(b.begin(), b.end());
+  out.clear();
+  out.push_back(b.front());
+  for (std::size_t i = 1; i < b.size(); ++i) {
+    const double a = out.back(), z = b[i];
+    if (!(z - a > kMinCell)) continue;
+    const int pieces = static_cast<int>(std::ceil((z - a) / max_cell));
+    for (int k = 1; k < pieces; ++k) out.push_back(a + (z - a) * k / pieces);
+    out.push_back(z);
+  }
+  b.swap(out);
+}
+
+// The psi cells of one receiver, as sorted breaks in `out`: the angular range of the polygon seen
+// from F (all around when F is inside), cut at the polygon's vertex directions (rho(psi) has a
+// corner there), at the table's C lines (C = psi + pi), and where a gamma line (a circle of
+// radius |sigma| tan gamma' around F) crosses the outline: there a ray's first or last gamma
+// cell changes, a kink in psi. False when the range is empty.
+bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, double reach,
+               const TableGammaCells& cells, const std::vector<double>& c_lines, std::vector<double>& out) {
+  thread_local std::vector<double> scratch;
+  out.clear();
+  double psi_lo, psi_hi;
+  if (inside) {
+    psi_lo = std::atan2(poly.v[0].y, poly.v[0].x);
+    psi_hi = psi_lo + kTwoPi;
+  } else {
+    glm::dvec2 mid(0.0);
+    for (int i = 0; i < poly.n; ++i) mid += poly.v[i];
+    const double psi_mid = std::atan2(mid.y, mid.x);
+    double lo = 0.0, hi = 0.0;
+    for (int i = 0; i < poly.n; ++i) {
+      double d = std::atan2(poly.v[i].y, poly.v[i].x) - psi_mid;
+      d -= kTwoPi * std::round(d / kTwoPi);
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+    }
+    psi_lo = psi_mid + lo;
+    psi_hi = psi_mid + hi;
+  }
+  if (!(psi_hi - psi_lo > kMinCell)) return false;
+  for (int i = 0; i < poly.n; ++i) add_periodic_break(std::atan2(poly.v[i].y, poly.v[i].x), psi_lo, psi_hi, out);
+  if (c_lines.size() > 1)
+    for (double c : c_lines) add_periodic_break(c - kPi, psi_lo, psi_hi, out);
+  for (std::size_t k = 0; k < cells.lines.size(); ++k) {
+    const double gp = front ? cells.lines[k] : kPi - cells.lines[k];
+    if (!(gp > 0.0 && gp < 0.5 * kPi)) continue;
+    const double r = abs_sigma * cells.line_tan[k];
+    if (r < reach) add_circle_crossings(poly, r, psi_lo, psi_hi, out);
+  }
+  finish_breaks(out, scratch, psi_lo, psi_hi, kMaxPsiCell);
+  return true;
+}
+
+}  // namespace
+
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double& lux,
+                               long* nodes) {
+  if (nodes) *nodes = 0;
+  const photometry::TableView view = e.distribution ? e.distribution->table_view() : photometry::TableView{};
+  if (!view.table || e.is_point() || !e.table_cells || e.table_cells->table != view.table) return false;
+  lux = 0.0;
+  const ReceiverFan fan = build_fan(e, point, normal, horizon_shift_m(e));
+  if (fan.triangles == 0) return true;
+  const SmallPolygon clipped = clip_to_horizon(e, fan.receiver, normal);
+  if (clipped.n < 3) return true;
+
+  // Luminaire frame, origin at the (shifted) receiver: a vertex's x, y are its offset from F,
+  // its z is sigma (the same for all, up to rounding).
+  Polygon2 poly;
+  poly.n = clipped.n;
+  double sigma = 0.0, reach2 = 0.0;
+  for (int i = 0; i < clipped.n; ++i) {
+    const Vec3 q = e.world_to_local * clipped.v[i];
+    poly.v[i] = glm::dvec2(q.x, q.y);
+    sigma += q.z;
+    reach2 = std::max(reach2, glm::dot(poly.v[i], poly.v[i]));
+  }
+  sigma /= clipped.n;
+  const double abs_sigma = std::abs(sigma);
+  if (!(abs_sigma > 0.0)) return true;  // excluded by the horizon shift
+  const bool front = sigma > 0.0;
+  const Vec3 n = e.world_to_local * normal;
+  const double n_z = front ? n.z : -n.z;
+
+  const photometry::TabularDistribution& table = *view.table;
+  const TableGammaCells& cells = *e.table_cells;
+  const std::vector<double>& lines = cells.lines;
+
+  const bool inside = contains_origin(poly);
+  thread_local std::vector<double> psi_breaks;
+  thread_local std::vector<TableGammaNode> end_nodes;
+  if (!psi_cells(poly, inside, front, abs_sigma, std::sqrt(reach2), cells, table.grid().c_rad, psi_breaks))
+    return true;
+
+  long count = 0;
+  double sum = 0.0;
+  // The nodes of one ray: weight x cos_r x intensity, the table read with the ray's C position.
+  auto node_sum = [&](const TableGammaNode* q, const TableGammaNode* end,
+                      const photometry::TabularDistribution::CPosition& c, double radial) {
+    double v = 0.0;
+    for (; q != end; ++q) {
+      const double cos_r = q->sin_g * radial + n_z * q->abs_cos_g;
+      if (!(cos_r > 0.0) || q->row < 0) continue;
+      v += q->weight_tan * cos_r * table.intensity_at(c, static_cast<std::size_t>(q->row), q->tg);
+      ++count;
+    }
+    return v;
+  };
+  // One end cell of a ray: table angles [a, b] with |tan| ta, tb, nodes computed here.
+  auto end_cell = [&](double a, double b, double ta, double tb,
+                      const photometry::TabularDistribution::CPosition& c, double radial) {
+    end_nodes.clear();
+    append_gamma_nodes(table, a, b, ta, tb, end_nodes);
+    return node_sum(end_nodes.data(), end_nodes.data() + end_nodes.size(), c, radial);
+  };
+  for (std::size_t k = 0; k + 1 < psi_breaks.size(); ++k) {
+    const double pa = psi_breaks[k], pw = psi_breaks[k + 1] - pa;
+    for (double xp : {kG2, 1.0 - kG2}) {
+      const double psi = pa + pw * xp;
+      const double cp = std::cos(psi), sp = std::sin(psi);
+      double rho_min, rho_max;
+      if (!ray_interval(poly, cp, sp, inside, rho_min, rho_max)) continue;
+      // The ray's range of table angles.
+      const double g_near = std::atan2(rho_min, abs_sigma), g_far = std::atan2(rho_max, abs_sigma);
+      const double t_lo = front ? g_near : kPi - g_far, t_hi = front ? g_far : kPi - g_near;
+      const double radial = n.x * cp + n.y * sp;
+      double c = psi + kPi;
+      c -= kTwoPi * std::floor(c / kTwoPi);
+      const photometry::TabularDistribution::CPosition cpos = table.c_position(c);
+      const double tan_near = rho_min / abs_sigma, tan_far = rho_max / abs_sigma;
+      const double tan_lo = front ? tan_near : tan_far, tan_hi = front ? tan_far : tan_near;
+      // Lines strictly inside (t_lo, t_hi): [k_lo, k_hi).
+      const std::size_t k_lo = static_cast<std::size_t>(std::upper_bound(lines.begin(), lines.end(), t_lo) - lines.begin());
+      const std::size_t k_hi = static_cast<std::size_t>(std::lower_bound(lines.begin(), lines.end(), t_hi) - lines.begin());
+      double ray = 0.0;
+      if (k_lo >= k_hi) {
+        ray = end_cell(t_lo, t_hi, tan_lo, tan_hi, cpos, radial);
+      } else {
+        ray = end_cell(t_lo, lines[k_lo], tan_lo, cells.line_tan[k_lo], cpos, radial) +
+              end_cell(lines[k_hi - 1], t_hi, cells.line_tan[k_hi - 1], tan_hi, cpos, radial);
+        // The whole cells between: nodes precomputed per emitter (table_cells.h).
+        const TableGammaNode* base = cells.nodes.data();
+        ray += node_sum(base + cells.first[k_lo], base + cells.first[k_hi - 1], cpos, radial);
+      }
+      sum += 0.5 * pw * ray;
+    }
+  }
+  if (nodes) *nodes = count;
+  lux = sanitize_illuminance(view.scale * sum / e.area_m2);
+  return true;
+}
+
+}  // namespace luxgrid::nearfield
