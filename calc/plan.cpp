@@ -27,20 +27,21 @@ nearfield::Model near_model_for(const Settings& settings) {
     switch (settings.quality) {
       case Quality::draft: return Model::far_field();
       case Quality::standard: return Model::standard();
-      case Quality::high: return Model::adaptive(1e-3);
+      case Quality::high: return Model::high();
       case Quality::reference: return Model::reference();
     }
   }
   if (name == "paper") return Model::paper_cubature();
   if (name == "far-field") return Model::far_field();
   if (name == "standard") return Model::standard();
-  if (name == "high" || name == "adaptive") return Model::adaptive(1e-3);
+  if (name == "high") return Model::high();
+  if (name == "adaptive") return Model::adaptive(1e-3);
   if (name == "reference") return Model::reference();
   if (int k = suffix_number(name, "subdivided-"); k >= 0 && k <= 6) return Model::subdivided(k);
   if (int k = suffix_number(name, "lambert-"); k >= 0 && k <= 6) return Model::lambert_subdivided(k);
   if (int n = suffix_number(name, "monte-carlo-"); n >= 1 && n <= 1000000) return Model::monte_carlo(n);
   throw InputError("/settings/near_field_model: unknown model \"" + name +
-                   "\" (expected paper, far-field, standard, adaptive, reference, subdivided-K or "
+                   "\" (expected paper, far-field, standard, high, adaptive, reference, subdivided-K or "
                    "lambert-K with K from 0 to 6, monte-carlo-N)");
 }
 

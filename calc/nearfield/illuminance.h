@@ -17,6 +17,8 @@ enum class ModelKind {
   lambert_subdivided,  // same split, exact projected solid angle and product average
   adaptive,        // adaptive rung, local tolerance `tolerance`
   standard,        // quality standard: within 1 % of the reference on the paper's protocol
+  high,            // quality high: the table rung for a measured table (exact to its
+                   // interpolant), else the adaptive rung at 1e-3
   reference,       // converged area-form integrator, tolerance `tolerance` (quality reference)
   structured_sampling,        // study baselines (Sec. 4)
   most_representative_point,
@@ -35,6 +37,7 @@ struct Model {
   static Model lambert_subdivided(int k) { return {ModelKind::lambert_subdivided, k}; }
   static Model adaptive(double rel_tol) { return {ModelKind::adaptive, 0, rel_tol}; }
   static Model standard() { return {ModelKind::standard}; }
+  static Model high() { return {ModelKind::high}; }
   static Model reference(double rel_tol = 0.0) { return {ModelKind::reference, 0, rel_tol}; }
   static Model structured_sampling() { return {ModelKind::structured_sampling}; }
   static Model most_representative_point() { return {ModelKind::most_representative_point}; }

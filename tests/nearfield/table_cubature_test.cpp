@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "calc/nearfield/illuminance.h"
 #include "calc/nearfield/models.h"
 #include "calc/scaled_distribution.h"
 #include "nearfield_test_support.h"
@@ -93,6 +94,20 @@ double brute_force(const Emitter& e, const Vec3& p, const Vec3& n, int n_psi, in
     }
   }
   return sum / e.area_m2;
+}
+
+TEST(TableRung, IsStandardAndHighForTablesOnly) {
+  // quality standard and high both use the table rung on a measured table (it is the most
+  // accurate rung there); on an analytic profile high stays the adaptive rung at 1e-3.
+  const Emitter table = testing::paper_emitter(0.3, 3 * kPi / 4, corpus("ldt/zumtobel_mirel_isym4.ldt"));
+  const Emitter analytic = testing::paper_emitter(0.3, 3 * kPi / 4, testing::batwing());
+  for (const Vec3 p : {Vec3(0.2, 0.1, 0.0), Vec3(-1.0, 0.7, 0.0)}) {
+    const double rung = table_rung(table, p, testing::kUp);
+    EXPECT_EQ(illuminance(table, p, testing::kUp, Model::standard()), rung);
+    EXPECT_EQ(illuminance(table, p, testing::kUp, Model::high()), rung);
+    EXPECT_EQ(illuminance(analytic, p, testing::kUp, Model::high()),
+              illuminance(analytic, p, testing::kUp, Model::adaptive(1e-3)));
+  }
 }
 
 TEST(TableRung, MatchesTheReferenceOnRandomConfigurations) {
