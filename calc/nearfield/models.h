@@ -62,10 +62,8 @@ double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& nor
 // coordinates around the receiver's foot on the emitter plane, where the table's C and gamma
 // lines are coordinate lines, with a 2 x 2 Gauss-Legendre rule on every table cell the emitter
 // covers. Converges like a smooth integrand where the adaptive rungs meet kinks. Returns false
-// (`lux` untouched) without a table view or for a point emitter; `nodes` (optional) receives
-// the number of intensity lookups.
-bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double& lux,
-                               long* nodes = nullptr);
+// (`lux` untouched) without a table view or for a point emitter.
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double& lux);
 
 // Exact illuminance from a uniform (Lambertian) emitter of luminance `luminance_cd_m2`:
 // Lambert's polygon formula E = L/2 |n . sum_edges theta g| on the horizon-clipped polygon.

@@ -48,15 +48,21 @@ SmallPolygon clip_to_horizon(const Emitter& e, const Vec3& point, const Vec3& no
   return out;
 }
 
-ReceiverFan build_fan(const Emitter& e, const Vec3& point, const Vec3& normal, double shift_m) {
-  ReceiverFan fan;
-  fan.normal = normal;
+ShiftedReceiver shift_off_emitter_plane(const Emitter& e, const Vec3& point, double shift_m) {
   const double s = glm::dot(point - e.centroid, e.normal);
   double s_shifted = s;
   if (std::abs(s) < shift_m) s_shifted = (s < 0.0 ? -shift_m : shift_m);
-  fan.receiver = point + (s_shifted - s) * e.normal;
-  fan.plane_distance = std::abs(s_shifted);
-  fan.front = s_shifted >= 0.0;
+  return {point + (s_shifted - s) * e.normal, std::abs(s_shifted), s_shifted >= 0.0};
+}
+
+ReceiverFan build_fan(const Emitter& e, const Vec3& point, const Vec3& normal, double shift_m) {
+  ReceiverFan fan;
+  fan.normal = normal;
+  const ShiftedReceiver shifted = shift_off_emitter_plane(e, point, shift_m);
+  fan.receiver = shifted.point;
+  fan.plane_distance = shifted.plane_distance;
+  fan.front = shifted.front;
+  const double s_shifted = shifted.front ? shifted.plane_distance : -shifted.plane_distance;
 
   const SmallPolygon poly = clip_to_horizon(e, fan.receiver, normal);
   const int n = poly.n;

@@ -52,6 +52,15 @@ struct ReceiverFan {
 // once. Fewer than three vertices means nothing is visible.
 SmallPolygon clip_to_horizon(const Emitter& e, const Vec3& point, const Vec3& normal);
 
+// The receiver moved off the emitter's plane by the horizon shift when closer than `shift_m`
+// (0 disables it), on its own side (the emitting side when exactly in the plane).
+struct ShiftedReceiver {
+  Vec3 point{0.0};             // world
+  double plane_distance = 0.0; // |signed distance| to the emitter plane after the shift
+  bool front = true;           // on the emitting side
+};
+ShiftedReceiver shift_off_emitter_plane(const Emitter& e, const Vec3& point, double shift_m);
+
 // Applies the horizon shift `shift_m` (0 disables it), clips, finds CP and builds the fan.
 // `normal` must be a unit vector. Returns triangles == 0 when no part of the emitter is above
 // the horizon.

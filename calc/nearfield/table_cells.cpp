@@ -4,19 +4,17 @@
 #include <cmath>
 #include <limits>
 
-#include "util/robust_math.h"
 
 namespace luxgrid::nearfield {
 namespace {
 
-constexpr double kG2 = 0.21132486540518711775;  // 2-point Gauss-Legendre node on [0, 1]
 constexpr double kHalfPi = 0.5 * kPi;
 
 // Gauss nodes of one piece [p0, p1] of gamma' (receiver-side angle, < pi / 2).
 void append_piece(const photometry::TabularDistribution& table, double p0, double p1, bool back,
                   std::vector<TableGammaNode>& out) {
   const double w = 0.5 * (p1 - p0);
-  for (double x : {kG2, 1.0 - kG2}) {
+  for (double x : {kGauss2Node, 1.0 - kGauss2Node}) {
     const double gp = p0 + (p1 - p0) * x;
     const double s = std::sin(gp), c = std::cos(gp);
     TableGammaNode node{back ? kPi - gp : gp, s, c, w * s / c};

@@ -7,16 +7,22 @@
 #include <vector>
 
 #include "photometry/tabular_distribution.h"
+#include "util/robust_math.h"
 
 namespace luxgrid::nearfield {
 
 // Largest gamma width of a cell (rad, 5 deg) when the table has no line inside it: the weight
 // tan(gamma') cos_r must still be resolved.
-inline constexpr double kTableMaxGammaCell = 5.0 * 3.14159265358979323846 / 180.0;
+inline constexpr double kTableMaxGammaCell = 5.0 * kPi / 180.0;
 // Towards the emitter plane (gamma' -> 90 deg) tan(gamma') grows without bound; a cell over which
 // it grows by more than this ratio is cut at equal ratios, so the weight is nearly linear in
 // each piece.
 inline constexpr double kTableTanRatio = 1.25;
+
+// The table rung's rule on every cell: 2-point Gauss-Legendre, nodes kGauss2Node and
+// 1 - kGauss2Node on [0, 1], weights 1/2. Exact for cubics, so for a bilinear cell times a smooth
+// weight the error is the weight's fourth derivative times the cell size^4 / 4320.
+inline constexpr double kGauss2Node = 0.21132486540518711775;  // (1 - 1/sqrt(3)) / 2
 
 struct TableGammaNode {
   double gamma;       // table angle, rad

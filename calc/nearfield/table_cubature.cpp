@@ -34,10 +34,6 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * kPi;
 
-// Gauss-Legendre, 2 points on [0, 1]: exact for cubics, so for a bilinear cell times a smooth
-// weight the error is the weight's fourth derivative times the cell size^4 / 4320.
-constexpr double kG2 = 0.21132486540518711775;  // (1 - 1/sqrt(3)) / 2
-
 // Largest angular width of a psi cell (rad, 7.5 deg) when the table has no C line inside it
 // (rotationally symmetric files have none): the outline rho(psi) and the weight must still be
 // resolved. The gamma side's limits are in table_cells.h.
@@ -175,15 +171,12 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
 
 }  // namespace
 
-bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double& lux,
-                               long* nodes) {
-  if (nodes) *nodes = 0;
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double& lux) {
   const photometry::TableView view = e.distribution ? e.distribution->table_view() : photometry::TableView{};
   if (!view.table || e.is_point() || !e.table_cells || e.table_cells->table != view.table) return false;
   lux = 0.0;
-  const ReceiverFan fan = build_fan(e, point, normal, horizon_shift_m(e));
-  if (fan.triangles == 0) return true;
-  const SmallPolygon clipped = clip_to_horizon(e, fan.receiver, normal);
+  const ShiftedReceiver receiver = shift_off_emitter_plane(e, point, horizon_shift_m(e));
+  const SmallPolygon clipped = clip_to_horizon(e, receiver.point, normal);
   if (clipped.n < 3) return true;
 
   // Luminaire frame, origin at the (shifted) receiver: a vertex's x, y are its offset from F,
@@ -214,7 +207,6 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& 
   if (!psi_cells(poly, inside, front, abs_sigma, std::sqrt(reach2), cells, table.grid().c_rad, psi_breaks))
     return true;
 
-  long count = 0;
   double sum = 0.0;
   // The nodes of one ray: weight x cos_r x intensity, the table read with the ray's C position.
   auto node_sum = [&](const TableGammaNode* q, const TableGammaNode* end,
@@ -224,7 +216,6 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& 
       const double cos_r = q->sin_g * radial + n_z * q->abs_cos_g;
       if (!(cos_r > 0.0) || q->row < 0) continue;
       v += q->weight_tan * cos_r * table.intensity_at(c, static_cast<std::size_t>(q->row), q->tg);
-      ++count;
     }
     return v;
   };
@@ -237,7 +228,7 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& 
   };
   for (std::size_t k = 0; k + 1 < psi_breaks.size(); ++k) {
     const double pa = psi_breaks[k], pw = psi_breaks[k + 1] - pa;
-    for (double xp : {kG2, 1.0 - kG2}) {
+    for (double xp : {kGauss2Node, 1.0 - kGauss2Node}) {
       const double psi = pa + pw * xp;
       const double cp = std::cos(psi), sp = std::sin(psi);
       double rho_min, rho_max;
@@ -267,7 +258,6 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& 
       sum += 0.5 * pw * ray;
     }
   }
-  if (nodes) *nodes = count;
   lux = sanitize_illuminance(view.scale * sum / e.area_m2);
   return true;
 }

@@ -40,7 +40,6 @@ project = {
                     "emitter": {"shape": "rectangle", "size": [a, a]}}],
     "surfaces": [{"name": "axis", "points": points}],
 }
-(here / "project.json").write_text(json.dumps(project, indent=1) + "\n")
-(here / "expected.json").write_text(json.dumps({"cases": cases}, indent=1) + "\n")
+write_case(here, project, cases)
 for m, d, E, ff, err in table:
     print(f"| {m:g} | {d:.3f} | {d / (a * math.sqrt(2)):.2f} | {E:.4f} | {ff:.4f} | {100 * err:+.3f} % |")
