@@ -38,6 +38,15 @@ LoadedProject load_project_with_requirements(const std::filesystem::path& projec
   return out;
 }
 
+std::vector<std::filesystem::path> input_files(const calc::Scene& scene) {
+  std::vector<std::filesystem::path> out{scene.project_file};
+  const std::filesystem::path dir = scene.project_file.parent_path();
+  for (const auto& [name, p] : scene.photometry) {
+    if (p.format != "builtin") out.push_back(dir / p.source);
+  }
+  return out;
+}
+
 RunOutcome run_project(const std::filesystem::path& project, const std::filesystem::path& out_dir,
                        const RunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -47,7 +56,7 @@ RunOutcome run_project(const std::filesystem::path& project, const std::filesyst
   const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   // Everything that can reject the input has run: only now does an output folder appear.
-  report::OutputFolder folder(out_dir);
+  report::OutputFolder folder(out_dir, input_files(scene));
   RunOutcome outcome;
   outcome.results = calc::run_scene(scene, options.show_progress ? make_progress("calculating") : calc::Progress{});
   end_progress();

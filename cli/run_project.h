@@ -44,6 +44,9 @@ RunOutcome run_project(const std::filesystem::path& project, const std::filesyst
 // The scene at draft, standard, high and reference; differences against the reference run.
 report::CostTable run_cost(const calc::Scene& scene, bool show_progress);
 
+// The files a run reads (project, photometric files): the output folder may not replace them.
+std::vector<std::filesystem::path> input_files(const calc::Scene& scene);
+
 // `<project without extension>.out`, beside the project file.
 std::filesystem::path default_output_dir(const std::filesystem::path& project);
 

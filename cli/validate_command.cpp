@@ -19,7 +19,7 @@ void add_validate_command(CLI::App& app, Runner& run) {
       ->capture_default_str();
   cmd->callback([opt, &run] {
     run = [opt] {
-      report::OutputFolder folder(opt->out);
+      report::OutputFolder folder(opt->out, {opt->cases});
       const ValidationReport report = run_validation(opt->cases, folder.staging());
       const std::string md = report.markdown();
       report::write_text_file(folder.file("validation.md"), md);

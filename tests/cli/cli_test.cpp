@@ -10,34 +10,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/cli/cli_support.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandResult {
-  int code;
-  std::string output;  // stdout + stderr
-};
+using luxgrid::test::CommandResult;
+using luxgrid::test::scratch;
+CommandResult run(const std::string& args) { return luxgrid::test::luxgrid(args); }
 
-CommandResult run(const std::string& args) {
-  const std::string cmd = std::string(LUXGRID_BINARY) + " " + args + " 2>&1";
-  CommandResult r{-1, ""};
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf{};
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "luxgrid_cli_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+void write(const fs::path& p, const std::string& text) { luxgrid::test::write_file(p, text); }
 
 const char* kGood = R"({
   "format": "luxgrid-project/1", "name": "cli test",

@@ -15,42 +15,19 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/cli/cli_support.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int code;
-  std::string output;  // stdout + stderr
-};
-
-Outcome shell(const std::string& cmd) {
-  Outcome r{-1, ""};
-  FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
-  std::array<char, 4096> buf{};
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-Outcome luxgrid(const std::string& args) { return shell(std::string(LUXGRID_BINARY) + " " + args); }
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "luxgrid_report_cli_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using Outcome = luxgrid::test::CommandResult;
+using luxgrid::test::quote;
+using luxgrid::test::scratch;
+using luxgrid::test::shell;
+Outcome luxgrid(const std::string& args) { return luxgrid::test::luxgrid(args); }
+void write(const fs::path& p, const std::string& text) { luxgrid::test::write_file(p, text); }
+std::string read(const fs::path& p) { return luxgrid::test::read_file(p); }
 
 // An isotropic 1000 cd source 3 m above the centre of a black 4 x 4 m room's floor (no reflected
 // light, so the values are I h / d^3 by hand), 1 m grid: 16 points.
@@ -66,7 +43,6 @@ std::string project(const std::string& requirements, double intensity_cd = 1000)
 })";
 }
 
-std::string quote(const fs::path& p) { return "'" + p.string() + "'"; }
 
 TEST(ReportCli, ReportIsWrittenByDefaultAndSkippedOnRequest) {
   const fs::path dir = scratch("report");
