@@ -42,9 +42,9 @@ double coordinate(const JsonValue& v) {
   return x;
 }
 
-// An array of at most `limit` entries, checked before any entry is read.
+// An array or object of at most `limit` entries, checked before any entry is read.
 void check_count(const JsonValue& v, std::size_t limit, const char* what) {
-  if (v.is_array() && v.raw().size() > limit) {
+  if ((v.is_array() || v.is_object()) && v.raw().size() > limit) {
     v.fail(std::to_string(v.raw().size()) + " " + what + ", more than the limit of " + std::to_string(limit));
   }
 }
@@ -719,10 +719,7 @@ Scene parse_project(const nlohmann::json& doc, const std::string& label,
   const FilePolicy files{base_dir, scene.settings.allow_files_outside_project};
   const auto ph = root.at("photometry");
   if (!ph.is_object()) ph.fail("expected an object of named entries, got " + json_type_name(ph.raw()));
-  if (ph.raw().size() > kMaxPhotometryEntries) {
-    ph.fail(std::to_string(ph.raw().size()) + " photometry entries, more than the limit of " +
-            std::to_string(kMaxPhotometryEntries));
-  }
+  check_count(ph, kMaxPhotometryEntries, "photometry entries");
   for (const auto& [key, _] : ph.raw().items()) {
     auto p = parse_photometry_entry(ph.at(key.c_str()), files);
     // The reader's warnings name the file; say which entry loaded it, once per entry.
