@@ -7,9 +7,7 @@
 
 namespace luxgrid::calc {
 
-namespace {
-// RFC 6901 escaping of a key inside a JSON pointer.
-std::string escape_key(const std::string& key) {
+std::string json_pointer_escape(const std::string& key) {
   std::string out;
   for (char c : key) {
     if (c == '~') out += "~0";
@@ -18,7 +16,12 @@ std::string escape_key(const std::string& key) {
   }
   return out;
 }
-}  // namespace
+
+std::string number_text(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
 
 std::string json_type_name(const nlohmann::json& j) {
   if (j.is_number()) return "a number";
@@ -43,7 +46,7 @@ void JsonValue::expect_object(std::initializer_list<const char*> allowed) const 
     if (!known) {
       std::string list;
       for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
-      throw InputError(file_ + " " + pointer_ + "/" + escape_key(key) + ": unknown key \"" + key +
+      throw InputError(file_ + " " + pointer_ + "/" + json_pointer_escape(key) + ": unknown key \"" + key +
                        "\" (expected one of: " + list + ")");
     }
   }
@@ -53,7 +56,7 @@ bool JsonValue::has(const char* key) const { return value_->is_object() && value
 
 JsonValue JsonValue::at(const char* key) const {
   if (!has(key)) fail(std::string("missing required key \"") + key + "\"");
-  return JsonValue((*value_)[key], file_, pointer_ + "/" + escape_key(key));
+  return JsonValue((*value_)[key], file_, pointer_ + "/" + json_pointer_escape(key));
 }
 
 std::optional<JsonValue> JsonValue::find(const char* key) const {
@@ -98,12 +101,7 @@ bool JsonValue::as_bool() const {
 double JsonValue::as_number_in(double lo, double hi) const {
   const double x = as_number();
   if (x < lo || x > hi) {
-    auto text = [](double v) {  // 0 and 1 print as "0" and "1", not "0.0"
-      char buf[32];
-      std::snprintf(buf, sizeof buf, "%g", v);
-      return std::string(buf);
-    };
-    fail("expected a number in [" + text(lo) + ", " + text(hi) + "], got " + value_->dump());
+    fail("expected a number in [" + number_text(lo) + ", " + number_text(hi) + "], got " + value_->dump());
   }
   return x;
 }

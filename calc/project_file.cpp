@@ -1,29 +1,72 @@
 #include "calc/project_file.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
-#include <fstream>
-#include <sstream>
+#include <map>
+#include <set>
 
 #include "calc/json_reader.h"
 #include "calc/luminaire_tilt.h"
+#include "calc/project_limits.h"
+#include "calc/safe_json.h"
 #include "calc/scaled_distribution.h"
 #include "calc/visibility.h"
 #include "geometry/workplane.h"
 #include "photometry/builtin.h"
+#include "photometry/tabular_distribution.h"
 #include "util/error.h"
+#include "util/output_names.h"
 
 namespace luxgrid::calc {
 
 namespace {
 
-// Grids larger than this are refused before any memory is spent on them: 4 million points is
-// ~200 MB of points, normals and results, far beyond any lighting grid (a 100 x 100 m hall at
-// 0.1 m is 1 M points).
-constexpr double kMaxGridPoints = 4e6;
+// A count computed in double (a 1e-300 m spacing gives 1e300 points per side): exact below
+// 1e15, then in exponent form; never converted to an integer type, where it would overflow.
+std::string count_text(double n) {
+  if (!std::isfinite(n)) return "over 1e308";
+  if (n >= 1e15) return number_text(n);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.0f", n);
+  return buf;
+}
+
+// Coordinates and lengths in metres, within kMaxCoordinate_m of the origin.
+double coordinate(const JsonValue& v) {
+  const double x = v.as_number();
+  if (std::abs(x) > kMaxCoordinate_m) {
+    v.fail(number_text(x) + " m is beyond the limit of " + number_text(kMaxCoordinate_m) +
+           " m for coordinates and lengths");
+  }
+  return x;
+}
+
+// An array or object of at most `limit` entries, checked before any entry is read.
+void check_count(const JsonValue& v, std::size_t limit, const char* what) {
+  if ((v.is_array() || v.is_object()) && v.raw().size() > limit) {
+    v.fail(std::to_string(v.raw().size()) + " " + what + ", more than the limit of " + std::to_string(limit));
+  }
+}
+
+Vec3 point3(const JsonValue& v) {
+  v.as_numbers(3);  // the count and types, with their own messages
+  return {coordinate(v.item(0)), coordinate(v.item(1)), coordinate(v.item(2))};
+}
+
+Vec2 point2(const JsonValue& v) {
+  v.as_numbers(2);
+  return {coordinate(v.item(0)), coordinate(v.item(1))};
+}
+
+double positive_length(const JsonValue& v) {
+  v.as_positive();
+  return coordinate(v);
+}
 
 Settings parse_settings(const JsonValue& s) {
   s.expect_object({"quality", "near_field", "near_field_model", "indirect", "bounces",
-                   "maintenance_factor"});
+                   "maintenance_factor", "allow_files_outside_project"});
   Settings out;
   if (auto q = s.find("quality")) {
     const auto parsed = quality_from_string(q->as_string());
@@ -47,25 +90,35 @@ Settings parse_settings(const JsonValue& s) {
     else i->fail("expected \"auto\", \"off\" or \"on\", got \"" + v + "\"");
   }
   if (auto b = s.find("bounces")) {
+    const std::string expected =
+        "expected \"auto\" or a whole number from 1 to " + std::to_string(kMaxBounces);
     if (b->is_string()) {
-      if (b->as_string() != "auto") b->fail("expected \"auto\" or a whole number >= 1");
+      if (b->as_string() != "auto") b->fail(expected);
       out.bounces = 0;
     } else {
+      // Range first, in double: as_int would take 1e9, which then hangs the iteration.
+      const double n = b->as_number();
+      if (!(n >= 1.0 && n <= kMaxBounces)) b->fail(expected + ", got " + b->raw().dump());
       out.bounces = b->as_int();
-      if (out.bounces < 1) b->fail("expected \"auto\" or a whole number >= 1, got " + b->raw().dump());
     }
   }
   if (auto m = s.find("maintenance_factor")) {
     out.maintenance_factor = m->as_number_in(0.0, 1.0);
     if (out.maintenance_factor == 0.0) m->fail("expected a number in (0, 1], got 0");
   }
+  if (auto a = s.find("allow_files_outside_project")) out.allow_files_outside_project = a->as_bool();
   return out;
 }
 
 photometry::Photometry parse_builtin(const JsonValue& e) {
   e.expect_object({"builtin", "intensity_cd"});
   const auto kind = e.at("builtin");
-  const double i0 = e.at("intensity_cd").as_non_negative();
+  const auto i0_v = e.at("intensity_cd");
+  const double i0 = i0_v.as_non_negative();
+  if (i0 > kMaxIntensity_cd) {
+    i0_v.fail("expected at most " + number_text(kMaxIntensity_cd) + " cd (the intensity limit), got " +
+              number_text(i0));
+  }
   photometry::Photometry p;
   p.format = "builtin";
   const std::string name = kind.as_string();
@@ -80,36 +133,104 @@ photometry::Photometry parse_builtin(const JsonValue& e) {
   return p;
 }
 
+// Where photometry files may come from: the project file's folder tree, unless the project
+// says otherwise (settings.allow_files_outside_project).
+struct FilePolicy {
+  std::filesystem::path base_dir;  // relative paths start here
+  bool allow_outside = false;
+};
+
+// True when `path` (after resolving symbolic links and "..") lies inside the folder `root`.
+bool inside_folder(const std::filesystem::path& root, const std::filesystem::path& path) {
+  std::error_code ec1, ec2;
+  const auto r = std::filesystem::weakly_canonical(root, ec1);
+  const auto p = std::filesystem::weakly_canonical(path, ec2);
+  if (ec1 || ec2) return false;
+  const auto rel = p.lexically_relative(r);
+  return !rel.empty() && *rel.begin() != "..";
+}
+
 photometry::Photometry load_file_entry(const JsonValue& where, const std::string& relative,
-                                       const std::filesystem::path& base_dir) {
-  const std::filesystem::path path = base_dir / relative;
+                                       const FilePolicy& policy) {
+  const std::filesystem::path path = policy.base_dir / relative;
+  const std::filesystem::path root = policy.base_dir.empty() ? "." : policy.base_dir;
+  // Checked before looking at the file, so a refused path tells nothing about what exists there.
+  if (!policy.allow_outside && !inside_folder(root, path)) {
+    where.fail("the photometry file " + relative +
+               " lies outside the project folder; to allow it, set \"settings\": "
+               "{\"allow_files_outside_project\": true}");
+  }
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
     where.fail("photometry file not found: " + path.string());
   }
+  // MERGE (photometry LoadOptions, h12 photometry branch): TILT=<file> must obey the same rule.
+  // Pass the root here once photometry::LoadOptions exists:
+  //   photometry::load_photometry_file(path, {.allowed_root = policy.allow_outside
+  //                                                            ? std::filesystem::path{} : root});
   auto p = photometry::load_photometry_file(path);
   p.source = relative;
   return p;
 }
 
-photometry::Photometry parse_photometry_entry(const JsonValue& e,
-                                              const std::filesystem::path& base_dir) {
-  if (e.is_string()) return load_file_entry(e, e.as_string(), base_dir);
+// The brightest direction of a distribution as loaded, cd: the largest table value (the
+// interpolants stay within their neighbours' range up to bicubic overshoot, far below the
+// limit's margin), or a 1-degree scan for anything without a table.
+double peak_intensity_cd(const photometry::Photometry& p) {
+  if (p.table) {
+    const auto& cd = p.table->grid().cd;
+    return cd.empty() ? 0.0 : *std::max_element(cd.begin(), cd.end());
+  }
+  double peak = 0.0;
+  for (int g = 0; g <= 180; ++g) {
+    for (int c = 0; c < 360; ++c) {
+      peak = std::max(peak, p.distribution->intensity(photometry::direction_of(c * kDegToRad, g * kDegToRad)));
+    }
+  }
+  return peak;
+}
+
+// The scaled peak must stay finite and below kMaxIntensity_cd (util/limits.h).
+void check_peak(const JsonValue& where, double peak_cd, double factor) {
+  const double scaled = peak_cd * factor;
+  if (!(scaled <= kMaxIntensity_cd)) {
+    where.fail("the peak intensity would be " + number_text(scaled) + " cd (" + number_text(peak_cd) +
+               " cd x " + number_text(factor) + "), more than the limit of " +
+               number_text(kMaxIntensity_cd) + " cd");
+  }
+}
+
+photometry::Photometry parse_photometry_entry(const JsonValue& e, const FilePolicy& policy) {
+  if (e.is_string()) return load_file_entry(e, e.as_string(), policy);
   if (!e.is_object()) e.fail("expected a file path or an object, got " + json_type_name(e.raw()));
   if (e.has("builtin")) return parse_builtin(e);
   e.expect_object({"file", "flux_lm", "multiplier"});
   const auto file = e.at("file");
-  auto p = load_file_entry(file, file.as_string(), base_dir);
+  auto p = load_file_entry(file, file.as_string(), policy);
+  const double peak_cd = peak_intensity_cd(p);
+  double factor = 1.0;  // everything applied so far
   if (auto m = e.find("multiplier")) {
-    p.distribution = std::make_shared<ScaledDistribution>(p.distribution, m->as_positive());
+    factor = m->as_positive();
+    check_peak(*m, peak_cd, factor);
+    p.distribution = std::make_shared<ScaledDistribution>(p.distribution, factor);
   }
   if (auto f = e.find("flux_lm")) {
     const double target = f->as_positive();
     const double have = luminous_flux(*p.distribution);
     if (!(have > 0.0)) f->fail("cannot rescale to flux_lm: the distribution emits no light");
+    check_peak(*f, peak_cd, factor * (target / have));
     p.distribution = std::make_shared<ScaledDistribution>(p.distribution, target / have);
   }
   return p;
+}
+
+// An emitter's side or diameter, m, within [kMinEmitterSize_m, kMaxEmitterSize_m].
+void check_emitter_size(const JsonValue& where, double size_m) {
+  if (size_m < kMinEmitterSize_m || size_m > kMaxEmitterSize_m) {
+    where.fail("expected an emitter size from " + number_text(kMinEmitterSize_m) + " to " +
+               number_text(kMaxEmitterSize_m) + " m, got " + number_text(size_m) +
+               " m (a smaller source is a \"point\")");
+  }
 }
 
 photometry::LuminousOpening parse_emitter(const JsonValue& e) {
@@ -122,13 +243,17 @@ photometry::LuminousOpening parse_emitter(const JsonValue& e) {
     const auto size = e.at("size");
     const auto v = size.as_numbers(2);
     if (!(v[0] > 0.0 && v[1] > 0.0)) size.fail("expected two positive sizes in metres");
+    check_emitter_size(size.item(0), v[0]);
+    check_emitter_size(size.item(1), v[1]);
     o.shape = photometry::LuminousOpening::Shape::rectangle;
     o.length = v[0];
     o.width = v[1];
   } else if (s == "disk") {
     if (e.has("size")) e.at("size").fail("a disk takes \"diameter\", not \"size\"");
     o.shape = photometry::LuminousOpening::Shape::disk;
-    o.length = o.width = e.at("diameter").as_positive();
+    const auto diameter = e.at("diameter");
+    o.length = o.width = diameter.as_positive();
+    check_emitter_size(diameter, o.length);
   } else if (s == "point") {
     if (e.has("size") || e.has("diameter")) e.fail("a point emitter has no size");
     o.shape = photometry::LuminousOpening::Shape::point;
@@ -162,7 +287,7 @@ geometry::Obstacle parse_obstacle(const JsonValue& o, size_t index, const Room& 
   geometry::Obstacle out;
   if (auto b = o.find("box")) {
     b->expect_object({"min", "max", "rotation_z"});
-    const Vec3 lo = b->at("min").as_vec3(), hi = b->at("max").as_vec3();
+    const Vec3 lo = point3(b->at("min")), hi = point3(b->at("max"));
     const double rot = b->has("rotation_z") ? b->at("rotation_z").as_number() * kDegToRad : 0.0;
     out = at_place(*b, [&] { return geometry::make_box(name, lo, hi, rot, rho); });
   } else {
@@ -170,8 +295,9 @@ geometry::Obstacle parse_obstacle(const JsonValue& o, size_t index, const Room& 
     p.expect_object({"outline", "z0", "z1"});
     const auto outline_v = p.at("outline");
     geometry::Polygon2 outline;
-    for (const auto& c : outline_v.items()) outline.push_back(c.as_vec2());
-    const double z0 = p.at("z0").as_number(), z1 = p.at("z1").as_number();
+    check_count(outline_v, kMaxOutlineCorners, "corners");
+    for (const auto& c : outline_v.items()) outline.push_back(point2(c));
+    const double z0 = coordinate(p.at("z0")), z1 = coordinate(p.at("z1"));
     bool reversed = false;
     out = at_place(outline_v, [&] {
       return geometry::make_prism(name, outline, z0, z1, rho, &reversed);
@@ -193,7 +319,8 @@ Room parse_room(const JsonValue& r, std::vector<std::string>& warnings) {
   Room room;
   room.name = r.at("name").as_string();
   const auto outline = r.at("outline");
-  for (const auto& p : outline.items()) room.outline.push_back(p.as_vec2());
+  check_count(outline, kMaxOutlineCorners, "corners");
+  for (const auto& p : outline.items()) room.outline.push_back(point2(p));
   if (room.outline.size() < 3) {
     outline.fail("expected at least 3 corners, got " + std::to_string(room.outline.size()));
   }
@@ -203,8 +330,8 @@ Room parse_room(const JsonValue& r, std::vector<std::string>& warnings) {
   if (reversed) {
     warnings.push_back("room \"" + room.name + "\": the outline is clockwise; reversed to counter-clockwise");
   }
-  if (auto z = r.find("floor_z")) room.floor_z = z->as_number();
-  room.height = r.at("height").as_positive();
+  if (auto z = r.find("floor_z")) room.floor_z = coordinate(*z);
+  room.height = positive_length(r.at("height"));
   if (auto refl = r.find("reflectance")) {
     refl->expect_object({"floor", "walls", "ceiling"});
     if (auto f = refl->find("floor")) room.reflectance.floor = f->as_number_in(0.0, 1.0);
@@ -231,6 +358,14 @@ glm::dmat3 parse_rotation(const JsonValue& rot) {
   return rotation_xyz(v[0] * kDegToRad, v[1] * kDegToRad, v[2] * kDegToRad);
 }
 
+// The project's luminaires, arrays expanded, would number `total`.
+void check_luminaire_count(const JsonValue& where, size_t total) {
+  if (total > kMaxLuminaires) {
+    where.fail("the project would have " + std::to_string(total) + " luminaires, more than the limit of " +
+               std::to_string(kMaxLuminaires));
+  }
+}
+
 void parse_luminaire(const JsonValue& l, size_t index, const Scene& scene,
                      std::vector<Luminaire>& out) {
   l.expect_object({"name", "photometry", "position", "rotation", "array", "emitter"});
@@ -251,22 +386,44 @@ void parse_luminaire(const JsonValue& l, size_t index, const Scene& scene,
   const bool has_array = l.has("array");
   if (has_position == has_array) l.fail("expected exactly one of \"position\" or \"array\"");
   if (has_position) {
-    base.pose.position = l.at("position").as_vec3();
+    base.pose.position = point3(l.at("position"));
+    check_luminaire_count(l, out.size() + 1);
     out.push_back(base);
     return;
   }
   const auto a = l.at("array");
   a.expect_object({"origin", "count", "spacing"});
-  const Vec3 origin = a.at("origin").as_vec3();
+  const Vec3 origin = point3(a.at("origin"));
   const auto count_v = a.at("count");
-  const auto counts = count_v.as_numbers(2);
+  count_v.as_numbers(2);
   int n[2];
   for (int k = 0; k < 2; ++k) {
-    n[k] = count_v.item(k).as_int();
-    if (n[k] < 1 || n[k] > 10000) count_v.item(k).fail("expected a count from 1 to 10000");
+    const auto c = count_v.item(k);
+    // In double first: as_int refuses only beyond 1e9, and the product could overflow an int.
+    const double x = c.as_number();
+    if (!(x >= 1.0 && x <= kMaxArrayCount)) {
+      c.fail("expected a count from 1 to " + std::to_string(kMaxArrayCount));
+    }
+    n[k] = c.as_int();
   }
-  (void)counts;
-  const Vec2 spacing = a.at("spacing").as_vec2();
+  // Counted before a single copy is made (10 000 x 10 000 copies took 2.2 GB, then bad_alloc).
+  const double members = static_cast<double>(n[0]) * n[1];
+  if (members > static_cast<double>(kMaxLuminaires)) {
+    count_v.fail("the array has " + count_text(members) + " luminaires, more than the limit of " +
+                 std::to_string(kMaxLuminaires) + " in a project");
+  }
+  check_luminaire_count(count_v, out.size() + static_cast<size_t>(members));
+  const auto spacing_v = a.at("spacing");
+  const Vec2 spacing = point2(spacing_v);
+  // The far corner, too, must lie within the coordinate limit.
+  const Vec3 last = origin + Vec3(spacing.x * (n[0] - 1), spacing.y * (n[1] - 1), 0.0);
+  for (int k = 0; k < 2; ++k) {
+    if (std::abs(last[k]) > kMaxCoordinate_m) {
+      spacing_v.fail("the array reaches " + std::string(k == 0 ? "x" : "y") + " = " +
+                     number_text(last[k]) + " m, beyond the limit of " +
+                     number_text(kMaxCoordinate_m) + " m for coordinates");
+    }
+  }
   for (int j = 0; j < n[1]; ++j) {
     for (int i = 0; i < n[0]; ++i) {
       Luminaire lum = base;
@@ -287,14 +444,30 @@ double parse_spacing(const JsonValue& s, const std::optional<JsonValue>& spacing
   return spacing->as_positive();
 }
 
-void check_grid_budget(const JsonValue& where, double size_u, double size_v, double spacing) {
-  const double points = std::ceil(size_u / spacing) * std::ceil(size_v / spacing);
-  if (points > kMaxGridPoints) {
-    where.fail("the grid would have " + std::to_string(static_cast<long long>(points)) +
-               " points, more than the limit of " +
-               std::to_string(static_cast<long long>(kMaxGridPoints)) + "; use a larger spacing");
+// Grid points promised so far over all surfaces. Each surface is charged its point count,
+// computed in double, before its grid is built: nothing is allocated for a refused grid.
+class GridBudget {
+ public:
+  void spend(const JsonValue& where, double points, const char* grids = "grid") {
+    if (!(points <= kMaxGridPoints)) {
+      where.fail(std::string("the ") + grids + " would have " + count_text(points) +
+                 " points, more than the limit of " + count_text(kMaxGridPoints) +
+                 "; use a larger spacing");
+    }
+    if (used_ + points > kMaxTotalGridPoints) {
+      where.fail("the surfaces would have " + count_text(used_ + points) +
+                 " points together, more than the limit of " + count_text(kMaxTotalGridPoints) +
+                 "; use larger spacings or fewer surfaces");
+    }
+    used_ += points;
   }
-}
+  void spend_cells(const JsonValue& where, double size_u, double size_v, double spacing) {
+    spend(where, std::ceil(size_u / spacing) * std::ceil(size_v / spacing));
+  }
+
+ private:
+  double used_ = 0.0;
+};
 
 const Room& find_room(const JsonValue& where, const Scene& scene, const std::string& name) {
   for (const auto& r : scene.rooms) {
@@ -356,7 +529,7 @@ void apply_quantity(const JsonValue& s, std::vector<geometry::SurfaceGrid>& grid
 }
 
 std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const Scene& scene,
-                                                      const std::string& name) {
+                                                      const std::string& name, GridBudget& budget) {
   if (auto w = s.find("workplane")) {
     w->expect_object({"room", "height", "border"});
     const auto room_v = w->at("room");
@@ -364,14 +537,14 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
     const auto height_v = w->at("height");
     const double height = height_v.as_non_negative();
     if (height > room.height) height_v.fail("the workplane is above the ceiling of the room");
-    const double border = w->has("border") ? w->at("border").as_non_negative() : 0.0;
+    const double border = w->has("border") ? (w->at("border").as_non_negative(), coordinate(w->at("border"))) : 0.0;
     // The outline inset by the border (straight skeleton: L-shapes and notches inset right).
     const auto region = geometry::inset_outline(room.outline, border);
     if (region.empty()) w->at("border").fail("the border leaves no workplane inside the room");
     const auto box = geometry::bounds(region);
     const double su = box.hi.x - box.lo.x, sv = box.hi.y - box.lo.y;
     const double spacing = parse_spacing(s, s.find("spacing"), std::max(su, sv));
-    check_grid_budget(s, su, sv, spacing);
+    budget.spend_cells(s, su, sv, spacing);
     auto g = geometry::make_region_grid(name, region, room.floor_z + height, spacing, room.obstacles);
     if (active_points(g) == 0) {
       s.fail("no grid point lies inside the workplane and outside obstacles; use a smaller spacing");
@@ -404,39 +577,36 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
     const double points =
         2.0 * std::ceil((box.hi.x - box.lo.x) / p) * std::ceil((box.hi.y - box.lo.y) / p) +
         std::ceil(wall_length / p + static_cast<double>(room.outline.size())) * std::ceil(room.height / p);
-    if (points > kMaxGridPoints) {
-      s.fail("the grids would have " + std::to_string(static_cast<long long>(points)) +
-             " points, more than the limit of " +
-             std::to_string(static_cast<long long>(kMaxGridPoints)) + "; use a larger spacing");
-    }
+    budget.spend(s, points, "grids");
     return geometry::make_room_surface_grids(name, shape, spacing, room.obstacles);
   }
   if (auto p = s.find("plane")) {
     p->expect_object({"origin", "u", "v", "size"});
-    const Vec3 origin = p->at("origin").as_vec3();
+    const Vec3 origin = point3(p->at("origin"));
     const auto u_v = p->at("u"), v_v = p->at("v");
-    const Vec3 u = u_v.as_vec3(), v = v_v.as_vec3();
+    const Vec3 u = point3(u_v), v = point3(v_v);
     if (glm::length(u) == 0.0) u_v.fail("expected a non-zero direction");
     if (glm::length(v) == 0.0) v_v.fail("expected a non-zero direction");
     const Vec3 un = glm::normalize(u), vn = glm::normalize(v);
     if (std::abs(glm::dot(un, vn)) > 1e-9) v_v.fail("u and v must be perpendicular");
     const auto size_v = p->at("size");
-    const Vec2 size = size_v.as_vec2();
+    const Vec2 size = point2(size_v);
     if (!(size.x > 0.0 && size.y > 0.0)) size_v.fail("expected two positive sizes in metres");
     const double spacing = parse_spacing(s, s.find("spacing"), std::max(size.x, size.y));
-    check_grid_budget(s, size.x, size.y, spacing);
+    budget.spend_cells(s, size.x, size.y, spacing);
     return {geometry::make_plane_grid(name, origin, un, vn, size.x, size.y, spacing)};
   }
   const auto pts = s.at("points");
   if (s.has("spacing")) s.at("spacing").fail("a points surface has no spacing");
+  if (pts.is_array()) budget.spend(pts, static_cast<double>(pts.raw().size()), "points surface");
   geometry::SurfaceGrid g;
   g.name = name;
   g.kind = geometry::SurfaceGrid::Kind::points;
   for (const auto& p : pts.items()) {
     p.expect_object({"at", "normal"});
-    g.points.push_back(p.at("at").as_vec3());
+    g.points.push_back(point3(p.at("at")));
     const auto nv = p.at("normal");
-    const Vec3 n = nv.as_vec3();
+    const Vec3 n = point3(nv);
     if (glm::length(n) == 0.0) nv.fail("expected a non-zero normal");
     g.normals.push_back(glm::normalize(n));
   }
@@ -448,12 +618,56 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
 }
 
 // One surface entry gives one grid, or several for room_surfaces ("<name> floor", ...).
-std::vector<geometry::SurfaceGrid> parse_surface(const JsonValue& s, const Scene& scene) {
+// A surface's name becomes its output file names; kMaxSurfaceNameLength keeps them short enough.
+void check_name_length(const JsonValue& where, const std::string& name) {
+  if (name.size() > kMaxSurfaceNameLength) {
+    where.fail("the surface name is " + std::to_string(name.size()) +
+               " characters long, more than the limit of " + std::to_string(kMaxSurfaceNameLength) +
+               " (it names the surface's output files)");
+  }
+}
+
+// The output files claimed so far (util/output_names.h), compared ignoring case: on a
+// case-insensitive file system A.csv and a.csv are one file, and one surface's results would
+// silently replace another's.
+class OutputNames {
+ public:
+  void claim(const JsonValue& where, const std::string& surface) {
+    const SurfaceOutputFiles files = surface_output_files(surface);
+    for (const std::string* file : files.all()) {
+      std::string key = *file;
+      for (char& c : key) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (key.front() == '.') {
+        where.fail("surface \"" + surface + "\" would write the hidden file " + *file +
+                   "; start its name with a letter or digit");
+      }
+      for (const char* reserved : kFolderOutputFiles) {
+        if (key == reserved) {
+          where.fail("surface \"" + surface + "\" would write " + *file +
+                     ", which the output folder uses for itself; rename the surface");
+        }
+      }
+      const auto [it, fresh] = owner_.emplace(key, surface);
+      if (!fresh) {
+        where.fail("surface \"" + surface + "\" would write " + *file + ", which surface \"" +
+                   it->second + "\" also writes (output file names ignore case and turn characters " +
+                   "other than letters, digits, '-', '_' and '.' into '_'); rename one of them");
+      }
+    }
+  }
+
+ private:
+  std::map<std::string, std::string> owner_;  // lower-case file name -> surface name
+};
+
+std::vector<geometry::SurfaceGrid> parse_surface(const JsonValue& s, const Scene& scene,
+                                                 GridBudget& budget) {
   // "requirements" (EN 12464-1 checks) belongs to the report: report::parse_requirements reads
   // and validates it from the raw document; the scene does not need it.
   s.expect_object({"name", "workplane", "plane", "points", "room_surfaces", "spacing", "quantity",
                    "facing", "requirements"});
   const std::string name = s.at("name").as_string();
+  check_name_length(s.at("name"), name);
   const int kinds = s.has("workplane") + s.has("plane") + s.has("points") + s.has("room_surfaces");
   if (kinds != 1) {
     if (s.has("room_surfaces")) {
@@ -461,7 +675,7 @@ std::vector<geometry::SurfaceGrid> parse_surface(const JsonValue& s, const Scene
     }
     s.fail("expected exactly one of \"workplane\", \"plane\" or \"points\"");
   }
-  auto grids = parse_surface_kind(s, scene, name);
+  auto grids = parse_surface_kind(s, scene, name, budget);
   apply_quantity(s, grids);
   return grids;
 }
@@ -502,12 +716,28 @@ Scene parse_project(const nlohmann::json& doc, const std::string& label,
   scene.name = root.has("name") ? root.at("name").as_string() : "unnamed project";
   if (auto s = root.find("settings")) scene.settings = parse_settings(*s);
 
+  const FilePolicy files{base_dir, scene.settings.allow_files_outside_project};
   const auto ph = root.at("photometry");
   if (!ph.is_object()) ph.fail("expected an object of named entries, got " + json_type_name(ph.raw()));
+  check_count(ph, kMaxPhotometryEntries, "photometry entries");
   for (const auto& [key, _] : ph.raw().items()) {
-    scene.photometry.emplace(key, parse_photometry_entry(ph.at(key.c_str()), base_dir));
+    auto p = parse_photometry_entry(ph.at(key.c_str()), files);
+    // The reader's warnings name the file; say which entry loaded it, once per entry.
+    for (const auto& w : p.warnings) scene.warnings.push_back("photometry \"" + key + "\": " + w);
+    scene.photometry.emplace(key, std::move(p));
   }
-  for (const auto& r : root.at("rooms").items()) {
+  const auto rooms = root.at("rooms");
+  check_count(rooms, kMaxRooms, "rooms");
+  size_t obstacles = 0;
+  for (const auto& r : rooms.items()) {
+    // Counted before any is built: each is CGAL geometry.
+    if (auto o = r.find("obstacles"); o && o->is_array()) {
+      obstacles += o->raw().size();
+      if (obstacles > kMaxObstacles) {
+        o->fail("the project would have " + std::to_string(obstacles) +
+                " obstacles, more than the limit of " + std::to_string(kMaxObstacles));
+      }
+    }
     Room room = parse_room(r, scene.warnings);
     for (const auto& other : scene.rooms) {
       if (other.name == room.name) r.at("name").fail("a room named \"" + room.name + "\" already exists");
@@ -518,13 +748,31 @@ Scene parse_project(const nlohmann::json& doc, const std::string& label,
   for (const auto& l : root.at("luminaires").items()) parse_luminaire(l, index++, scene, scene.luminaires);
   warn_about_luminaires(scene);
   const auto surfaces = root.at("surfaces");
+  check_count(surfaces, kMaxSurfaces, "surfaces");
+  GridBudget budget;
+  OutputNames outputs;
+  std::set<std::string> names;
+  double points = 0.0;
   for (const auto& s : surfaces.items()) {
-    for (auto& grid : parse_surface(s, scene)) {
-      for (const auto& other : scene.surfaces) {
-        if (other.name == grid.name) s.at("name").fail("a surface named \"" + grid.name + "\" already exists");
+    for (auto& grid : parse_surface(s, scene, budget)) {
+      const auto name_v = s.at("name");
+      if (!names.insert(grid.name).second) name_v.fail("a surface named \"" + grid.name + "\" already exists");
+      if (names.size() > kMaxSurfaceGrids) {
+        name_v.fail("the surfaces would give " + std::to_string(names.size()) +
+                    " grids, more than the limit of " + std::to_string(kMaxSurfaceGrids));
       }
+      check_name_length(name_v, grid.name);  // room_surfaces: "<name> wall 12"
+      outputs.claim(name_v, grid.name);
+      points += static_cast<double>(grid.points.size());
       scene.surfaces.push_back(std::move(grid));
     }
+  }
+  // The direct calculation's work, checked before it starts.
+  const double pairs = static_cast<double>(scene.luminaires.size()) * points;
+  if (pairs > kMaxLuminairePointPairs) {
+    surfaces.fail(std::to_string(scene.luminaires.size()) + " luminaires x " + count_text(points) +
+                  " points = " + number_text(pairs) + " luminaire-point pairs, more than the limit of " +
+                  number_text(kMaxLuminairePointPairs) + "; use fewer luminaires or larger spacings");
   }
   if (scene.surfaces.empty()) surfaces.fail("expected at least one calculation surface");
   // IES TILT tables hold for the lamp as measured; a luminaire turned in the scene gets its
@@ -533,27 +781,14 @@ Scene parse_project(const nlohmann::json& doc, const std::string& label,
   return scene;
 }
 
+Scene parse_project_text(std::string_view text, const std::string& label,
+                         const std::filesystem::path& base_dir) {
+  return parse_project(parse_json_text(text, label), label, base_dir);
+}
+
 Scene load_project(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot open the project file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(buffer.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    // nlohmann reports a byte offset; turn it into line:column for people.
-    const std::string text = buffer.str();
-    size_t line = 1, column = 1;
-    for (size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-      if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
-    }
-    std::string what = e.what();
-    const auto colon = what.find("syntax error");
-    throw InputError(file.string() + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                     ": malformed JSON: " + (colon != std::string::npos ? what.substr(colon) : what));
-  }
-  Scene scene = parse_project(doc, file.filename().string(), file.parent_path());
+  // JSON-level messages name the file as given; the scene's name only its file name.
+  Scene scene = parse_project(read_json_file(file), file.filename().string(), file.parent_path());
   scene.project_file = file;
   return scene;
 }

@@ -29,6 +29,9 @@ struct Settings {
   std::string near_field_model;  // empty: the quality's rung; else a rung by name (docs/nearfield.md)
   int bounces = 0;  // 0 means "auto" (iterate until converged)
   double maintenance_factor = 1.0;
+  // Photometry files may lie outside the project file's folder (absolute paths, ../); off by
+  // default, so a project received from elsewhere cannot read arbitrary files.
+  bool allow_files_outside_project = false;
 };
 
 struct Reflectances {

@@ -1,11 +1,10 @@
 #include "cli/run_project.h"
 
 #include <chrono>
-#include <fstream>
-#include <sstream>
 
 #include "calc/pipeline.h"
 #include "calc/project_file.h"
+#include "calc/safe_json.h"
 #include "cli/progress.h"
 #include "report/output_folder.h"
 #include "report/write_outputs.h"
@@ -19,17 +18,8 @@ std::filesystem::path default_output_dir(const std::filesystem::path& project) {
 }
 
 LoadedProject load_project_with_requirements(const std::filesystem::path& project) {
-  std::ifstream in(project, std::ios::binary);
-  nlohmann::json doc;
-  bool parsed = false;
-  if (in) {
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    doc = nlohmann::json::parse(buffer.str(), nullptr, /*allow_exceptions=*/false);
-    parsed = !doc.is_discarded();
-  }
-  // Unreadable or malformed: the loader reports it with line and column.
-  if (!parsed) return {calc::load_project(project), {}};
+  // One safe parse (size, depth, duplicate keys, number range) feeds both readers.
+  const nlohmann::json doc = calc::read_json_file(project);
   const std::string label = project.filename().string();
   LoadedProject out;
   out.scene = calc::parse_project(report::without_requirements(doc), label, project.parent_path());

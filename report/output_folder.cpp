@@ -250,12 +250,4 @@ void write_text_file(const fs::path& path, const std::string& text) {
   if (ec) throw CalculationError(path.string() + ": cannot write the file: " + ec.message());
 }
 
-std::string safe_file_name(const std::string& name) {
-  std::string out;
-  for (unsigned char c : name) {
-    out += (std::isalnum(c) || c == '-' || c == '_' || c == '.') ? static_cast<char>(c) : '_';
-  }
-  return out.empty() ? "surface" : out;
-}
-
 }  // namespace luxgrid::report

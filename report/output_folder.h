@@ -53,7 +53,4 @@ class OutputFolder {
 // Writes `text` to `path` atomically (temporary file + rename).
 void write_text_file(const std::filesystem::path& path, const std::string& text);
 
-// A file-system-safe name for a surface: letters, digits, '-', '_' and '.' kept, others '_'.
-std::string safe_file_name(const std::string& name);
-
 }  // namespace luxgrid::report

@@ -12,6 +12,7 @@
 #include "report/html_report.h"
 #include "report/results_json.h"
 #include "util/error.h"
+#include "util/output_names.h"
 
 namespace luxgrid::report {
 
@@ -63,11 +64,11 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   for (const auto& s : results.surfaces)
     for (double e : s.E_indirect) indirect_ran = indirect_ran || e > 0.0;
   for (const auto& s : results.surfaces) {
-    const std::string base = safe_file_name(s.grid.name);
-    write_text_file(folder.file(base + ".csv"), surface_csv(s));
+    const SurfaceOutputFiles names = surface_output_files(s.grid.name);
+    write_text_file(folder.file(names.csv), surface_csv(s));
     if (s.grid.kind == geometry::SurfaceGrid::Kind::grid) {
       const ColourScale scale = options.scale ? *options.scale : auto_scale(s.stats.Emax);
-      const auto png = folder.file(base + ".png");
+      const auto png = folder.file(names.png);
       const std::string w = write_false_colour_png(s, scale, png, overlay);
       if (!w.empty()) warnings.push_back(w);
       if (options.report) report.png[s.grid.name] = read_bytes(png);
@@ -82,7 +83,7 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
           part.stats = calc::compute_statistics(part.E, s.grid.active);
           const ColourScale part_scale = options.scale ? *options.scale : auto_scale(part.stats.Emax);
           const std::string pw = write_false_colour_png(
-              part, part_scale, folder.file(base + (direct ? "_direct.png" : "_indirect.png")),
+              part, part_scale, folder.file(direct ? names.direct_png : names.indirect_png),
               overlay);
           if (!pw.empty() && std::find(warnings.begin(), warnings.end(), pw) == warnings.end())
             warnings.push_back(pw);
@@ -90,7 +91,7 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
       }
     }
   }
-  if (options.report) write_text_file(folder.file("report.html"), html_report(report));
+  if (options.report) write_text_file(folder.file(kReportFile), html_report(report));
   results.timing_s.emplace_back(
       "report", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   nlohmann::json j = results_to_json(results);
@@ -103,7 +104,7 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
     }
     j["requirements_met"] = all_met(options.checks);
   }
-  write_text_file(folder.file("results.json"), j.dump(1) + "\n");
+  write_text_file(folder.file(kResultsFile), j.dump(1) + "\n");
   return warnings;
 }
 

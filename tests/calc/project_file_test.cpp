@@ -6,7 +6,10 @@
 #include <fstream>
 
 #include "calc/project_file.h"
+#include "calc/project_limits.h"
+#include "calc/scaled_distribution.h"
 #include "geometry/polygon.h"
+#include "temp_folder.h"
 #include "util/error.h"
 
 namespace luxgrid::calc {
@@ -143,7 +146,41 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"bad_quality", "/settings", "{\"quality\": \"best\"}",
                 "p.json /settings/quality: expected \"draft\", \"standard\", \"high\" or \"reference\", got \"best\""},
         BadCase{"bounces_zero", "/settings", "{\"bounces\": 0}",
-                "p.json /settings/bounces: expected \"auto\" or a whole number >= 1, got 0"},
+                "p.json /settings/bounces: expected \"auto\" or a whole number from 1 to 1000, got 0"},
+        BadCase{"bounces_billion", "/settings", "{\"bounces\": 1e9}",
+                "p.json /settings/bounces: expected \"auto\" or a whole number from 1 to 1000, got 1000000000.0"},
+        BadCase{"array_10000_by_10000", "/luminaires/0", "{\"photometry\": \"iso\", \"array\": {\"origin\": [0,0,2], \"count\": [10000, 10000], \"spacing\": [0.1, 0.1]}}",
+                "p.json /luminaires/0/array/count: the array has 100000000 luminaires, more than the limit of 20000 in a project"},
+        BadCase{"array_count_above_limit", "/luminaires/0", "{\"photometry\": \"iso\", \"array\": {\"origin\": [0,0,2], \"count\": [10001, 1], \"spacing\": [0.1, 0.1]}}",
+                "p.json /luminaires/0/array/count/0: expected a count from 1 to 10000"},
+        BadCase{"luminaires_in_total", "/luminaires/1", "{\"photometry\": \"iso\", \"array\": {\"origin\": [0,0,2], \"count\": [200, 100], \"spacing\": [0.01, 0.01]}}",
+                "p.json /luminaires/1/array/count: the project would have 20001 luminaires, more than the limit of 20000"},
+        BadCase{"array_beyond_coordinates", "/luminaires/0", "{\"photometry\": \"iso\", \"array\": {\"origin\": [0,0,2], \"count\": [10000, 1], \"spacing\": [100, 1]}}",
+                "p.json /luminaires/0/array/spacing: the array reaches x = 999900 m, beyond the limit of 100000 m for coordinates"},
+        BadCase{"position_far_away", "/luminaires/0/position", "[1e6, 0, 2]",
+                "p.json /luminaires/0/position/0: 1e+06 m is beyond the limit of 100000 m for coordinates and lengths"},
+        BadCase{"outline_far_away", "/rooms/0/outline/2", "[4, -3e5]",
+                "p.json /rooms/0/outline/2/1: -300000 m is beyond the limit of 100000 m for coordinates and lengths"},
+        BadCase{"room_too_high", "/rooms/0/height", "1e300",
+                "p.json /rooms/0/height: 1e+300 m is beyond the limit of 100000 m for coordinates and lengths"},
+        BadCase{"spacing_1e_300", "/surfaces/0/spacing", "1e-300",
+                "p.json /surfaces/0: the grid would have over 1e308 points, more than the limit of 4000000; use a larger spacing"},
+        BadCase{"spacing_1e_100", "/surfaces/0/spacing", "1e-100",
+                "p.json /surfaces/0: the grid would have 6e+200 points, more than the limit of 4000000; use a larger spacing"},
+        BadCase{"emitter_one_nanometre", "/luminaires/0/emitter", "{\"shape\": \"disk\", \"diameter\": 1e-9}",
+                "p.json /luminaires/0/emitter/diameter: expected an emitter size from 0.001 to 1000 m, got 1e-09 m (a smaller source is a \"point\")"},
+        BadCase{"emitter_two_kilometres", "/luminaires/0/emitter", "{\"shape\": \"rectangle\", \"size\": [0.6, 2000]}",
+                "p.json /luminaires/0/emitter/size/1: expected an emitter size from 0.001 to 1000 m, got 2000 m (a smaller source is a \"point\")"},
+        BadCase{"builtin_too_bright", "/photometry/iso/intensity_cd", "1e12",
+                "p.json /photometry/iso/intensity_cd: expected at most 1e+09 cd (the intensity limit), got 1e+12"},
+        BadCase{"surface_name_too_long", "/surfaces/0/name", "\"xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx\"",
+                "p.json /surfaces/0/name: the surface name is 101 characters long, more than the limit of 100 (it names the surface's output files)"},
+        BadCase{"hidden_output_file", "/surfaces/0/name", "\".wp\"",
+                "p.json /surfaces/0/name: surface \".wp\" would write the hidden file .wp.csv; start its name with a letter or digit"},
+        BadCase{"absolute_photometry_path", "/photometry/iso", "\"/etc/passwd\"",
+                "p.json /photometry/iso: the photometry file /etc/passwd lies outside the project folder; to allow it, set \"settings\": {\"allow_files_outside_project\": true}"},
+        BadCase{"photometry_path_climbs_out", "/photometry/iso", "{\"file\": \"../../x.ies\"}",
+                "p.json /photometry/iso/file: the photometry file ../../x.ies lies outside the project folder; to allow it, set \"settings\": {\"allow_files_outside_project\": true}"},
         BadCase{"unknown_room", "/surfaces/0/workplane/room", "\"hall\"",
                 "p.json /surfaces/0/workplane/room: no room named \"hall\""},
         BadCase{"border_too_wide", "/surfaces/0/workplane/border", "1.5",
@@ -278,13 +315,9 @@ TEST(ProjectFile, QuantitiesSetReceiverNormals) {
 }
 
 TEST(ProjectFile, MalformedJsonNamesLineAndColumn) {
-  const auto dir = std::filesystem::temp_directory_path() / "luxgrid_project_file_test";
-  std::filesystem::create_directories(dir);
-  const auto file = dir / "broken.json";
-  {
-    std::ofstream out(file);
-    out << "{\n  \"format\": \"luxgrid-project/1\",\n  \"name\": \"x\"\n  \"rooms\": []\n}\n";
-  }
+  const testing_support::TempFolder dir;
+  const auto file = dir.write("broken.json",
+                              "{\n  \"format\": \"luxgrid-project/1\",\n  \"name\": \"x\"\n  \"rooms\": []\n}\n");
   try {
     load_project(file);
     FAIL() << "expected an error";
@@ -293,6 +326,212 @@ TEST(ProjectFile, MalformedJsonNamesLineAndColumn) {
     // nlohmann stops at the end of the offending token: the "rooms" string ending in column 9.
     EXPECT_EQ(msg, file.string() + ":4:9: malformed JSON: syntax error while parsing object - "
                    "unexpected string literal; expected '}'");
+  }
+}
+
+// A small plane surface named `name` (1 point).
+nlohmann::json plane_surface(const std::string& name) {
+  return {{"name", name},
+          {"plane", {{"origin", {0, 0, 0}}, {"u", {1, 0, 0}}, {"v", {0, 1, 0}}, {"size", {1, 1}}}},
+          {"spacing", 1}};
+}
+
+std::string error_with_surfaces(const std::vector<std::string>& names) {
+  auto doc = minimal();
+  doc["surfaces"] = nlohmann::json::array();
+  for (const auto& n : names) doc["surfaces"].push_back(plane_surface(n));
+  return error_of(doc);
+}
+
+const char* kRenameHint =
+    " also writes (output file names ignore case and turn characters other than letters, digits, "
+    "'-', '_' and '.' into '_'); rename one of them";
+
+TEST(ProjectFile, SurfacesWritingTheSameFileAreRefused) {
+  EXPECT_EQ(error_with_surfaces({"a/b", "a_b"}),
+            std::string("p.json /surfaces/1/name: surface \"a_b\" would write a_b.csv, which surface \"a/b\"") +
+                kRenameHint);
+  // x's direct-light plot is x_direct.png, the plot of a surface named x_direct.
+  EXPECT_EQ(error_with_surfaces({"x", "x_direct"}),
+            std::string("p.json /surfaces/1/name: surface \"x_direct\" would write x_direct.png, which surface \"x\"") +
+                kRenameHint);
+  // Case-insensitive file systems (macOS, Windows) make Hall.csv and hall.csv one file.
+  EXPECT_EQ(error_with_surfaces({"Hall", "hall"}),
+            std::string("p.json /surfaces/1/name: surface \"hall\" would write hall.csv, which surface \"Hall\"") +
+                kRenameHint);
+  EXPECT_EQ(error_with_surfaces({"a b", "a-b", "a.b", "ab"}), "(no error)");
+}
+
+TEST(ProjectFile, RoomSurfaceGridsAreCheckedForCollisionsAndLength) {
+  auto doc = minimal();
+  doc["surfaces"] = nlohmann::json::array({plane_surface("R FLOOR"),
+                                           {{"name", "r"}, {"room_surfaces", {{"room", "r"}}}, {"spacing", 1}}});
+  EXPECT_EQ(error_of(doc), std::string("p.json /surfaces/1/name: surface \"r floor\" would write r_floor.csv, which surface \"R FLOOR\"") +
+                               kRenameHint);
+  // 95 characters are fine for the entry, but its first grid, "<name> floor", has 101.
+  doc["surfaces"] = nlohmann::json::array(
+      {{{"name", std::string(95, 'r')}, {"room_surfaces", {{"room", "r"}}}, {"spacing", 1}}});
+  EXPECT_EQ(error_of(doc), "p.json /surfaces/0/name: the surface name is 101 characters long, more than "
+                           "the limit of 100 (it names the surface's output files)");
+}
+
+TEST(ProjectFile, RoomAndObstacleCountsAreCheckedBeforeBuilding) {
+  auto doc = minimal();
+  doc["rooms"] = nlohmann::json::array();
+  for (size_t k = 0; k <= kMaxRooms; ++k) doc["rooms"].push_back(nullptr);
+  EXPECT_EQ(error_of(doc), "p.json /rooms: 1001 rooms, more than the limit of 1000");
+  doc = minimal();
+  doc["rooms"][0]["obstacles"] = nlohmann::json::array();
+  for (size_t k = 0; k <= kMaxObstacles; ++k) doc["rooms"][0]["obstacles"].push_back(nullptr);
+  EXPECT_EQ(error_of(doc), "p.json /rooms/0/obstacles: the project would have 10001 obstacles, more than the limit of 10000");
+}
+
+TEST(ProjectFile, OutlineSurfaceAndPhotometryCountsAreLimited) {
+  auto doc = minimal();
+  doc["rooms"][0]["outline"] = nlohmann::json::array();
+  for (size_t k = 0; k <= kMaxOutlineCorners; ++k) doc["rooms"][0]["outline"].push_back({k, 0});
+  EXPECT_EQ(error_of(doc), "p.json /rooms/0/outline: 1001 corners, more than the limit of 1000");
+  doc = minimal();
+  for (size_t k = 0; k < kMaxSurfaces; ++k) doc["surfaces"].push_back(nullptr);
+  EXPECT_EQ(error_of(doc), "p.json /surfaces: 1001 surfaces, more than the limit of 1000");
+  doc = minimal();
+  for (size_t k = 0; k < kMaxPhotometryEntries; ++k) doc["photometry"]["p" + std::to_string(k)] = nullptr;
+  EXPECT_EQ(error_of(doc), "p.json /photometry: 1001 photometry entries, more than the limit of 1000");
+}
+
+TEST(ProjectFile, LuminairePointPairsAreLimited) {
+  auto doc = minimal();
+  // 20 000 luminaires (the limit) and a 224 x 224 m plane at 1 m: 50 176 points.
+  doc["luminaires"][0] = {{"photometry", "iso"},
+                          {"array", {{"origin", {0, 0, 2}}, {"count", {200, 100}}, {"spacing", {0.01, 0.01}}}}};
+  doc["surfaces"][0] = plane_surface("big");
+  doc["surfaces"][0]["plane"]["size"] = {224, 224};
+  EXPECT_EQ(error_of(doc), "p.json /surfaces: 20000 luminaires x 50176 points = 1.00352e+09 luminaire-point "
+                           "pairs, more than the limit of 1e+09; use fewer luminaires or larger spacings");
+  doc["surfaces"][0]["plane"]["size"] = {250, 200};  // 50 000 points: exactly at the limit
+  EXPECT_EQ(error_of(doc), "(no error)");
+}
+
+TEST(ProjectFile, DeeplyNestedUnknownKeyFailsWithoutCrashing) {
+  // The measured segfault: 100 000 nested objects under an unknown key.
+  std::string text = R"({"format": "luxgrid-project/1", "extra": )";
+  const size_t prefix = text.size();
+  for (int i = 0; i < 100000; ++i) text += "{\"a\":";
+  text += "1" + std::string(100000, '}') + "}";
+  try {
+    parse_project_text(text, "p.json", ".");
+    FAIL() << "expected an error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "p.json:1:" + std::to_string(prefix + 63 * 5 + 1) +
+                                         ": objects and arrays nested deeper than the limit of 64 levels");
+  }
+}
+
+TEST(ProjectFile, DuplicateLuminairesKeyIsAnError) {
+  // Last-wins used to give `"luminaires": []`: 0 lx and exit 0.
+  std::string text = minimal().dump();
+  text.insert(text.size() - 1, ",\n\"luminaires\": []");
+  try {
+    parse_project_text(text, "p.json", ".");
+    FAIL() << "expected an error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "p.json:2:12 /luminaires: duplicate key \"luminaires\" (first given on line 1)");
+  }
+}
+
+// A small absolute IES file: peak 1000 cd at nadir, 3 vertical angles, one C plane.
+std::string small_ies(const std::string& version_tag = "IESNA:LM-63-2002") {
+  return version_tag + "\nTILT=NONE\n1 -1 1 3 1 1 2 0 0 0\n1 1 100\n0 45 90\n0\n1000 800 100\n";
+}
+
+nlohmann::json with_file_photometry(const nlohmann::json& entry) {
+  auto doc = minimal();
+  doc["photometry"]["lamp"] = entry;
+  doc["luminaires"][0]["photometry"] = "lamp";
+  return doc;
+}
+
+std::string error_in(const nlohmann::json& doc, const std::filesystem::path& base_dir) {
+  try {
+    parse_project(doc, "p.json", base_dir);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(ProjectFile, MultiplierAndFluxMayNotScaleBeyondTheIntensityLimit) {
+  const testing_support::TempFolder dir;
+  dir.write("lamp.ies", small_ies());
+  EXPECT_EQ(error_in(with_file_photometry({{"file", "lamp.ies"}, {"multiplier", 1e7}}), dir.path()),
+            "p.json /photometry/lamp/multiplier: the peak intensity would be 1e+10 cd (1000 cd x 1e+07), "
+            "more than the limit of 1e+09 cd");
+  // At the limit exactly it loads.
+  EXPECT_EQ(error_in(with_file_photometry({{"file", "lamp.ies"}, {"multiplier", 1e6}}), dir.path()), "(no error)");
+  // flux_lm: the factor is the target over the distribution's own flux.
+  const Scene plain = parse_project(with_file_photometry("lamp.ies"), "p.json", dir.path());
+  const double flux = luminous_flux(*plain.photometry.at("lamp").distribution);
+  char factor[32];
+  std::snprintf(factor, sizeof factor, "%g", 1e15 / flux);
+  char peak[32];
+  std::snprintf(peak, sizeof peak, "%g", 1000 * (1e15 / flux));
+  EXPECT_EQ(error_in(with_file_photometry({{"file", "lamp.ies"}, {"flux_lm", 1e15}}), dir.path()),
+            std::string("p.json /photometry/lamp/flux_lm: the peak intensity would be ") + peak +
+                " cd (1000 cd x " + factor + "), more than the limit of 1e+09 cd");
+}
+
+TEST(ProjectFile, PhotometryWarningsReachTheSceneOncePerEntry) {
+  const testing_support::TempFolder dir;
+  dir.write("old.ies", small_ies("IESNA95"));
+  auto doc = with_file_photometry("old.ies");
+  doc["photometry"]["again"] = "old.ies";
+  const Scene s = parse_project(doc, "p.json", dir.path());
+  const auto& file_warnings = s.photometry.at("lamp").warnings;
+  ASSERT_EQ(file_warnings.size(), 1u);
+  ASSERT_EQ(s.warnings.size(), 2u);
+  // Entries in key order (std::map): "again", then "lamp".
+  EXPECT_EQ(s.warnings[0], "photometry \"again\": " + file_warnings[0]);
+  EXPECT_EQ(s.warnings[1], "photometry \"lamp\": " + file_warnings[0]);
+}
+
+TEST(ProjectFile, PhotometryOutsideTheProjectFolderNeedsTheSetting) {
+  const testing_support::TempFolder dir;
+  dir.write("shared/lamp.ies", small_ies());
+  const auto project_dir = dir.path() / "project";
+  std::filesystem::create_directories(project_dir / "sub");
+  const auto doc = with_file_photometry("../shared/lamp.ies");
+  EXPECT_EQ(error_in(doc, project_dir),
+            "p.json /photometry/lamp: the photometry file ../shared/lamp.ies lies outside the project folder; "
+            "to allow it, set \"settings\": {\"allow_files_outside_project\": true}");
+  const std::string absolute = (dir.path() / "shared/lamp.ies").string();
+  EXPECT_EQ(error_in(with_file_photometry(absolute), project_dir),
+            "p.json /photometry/lamp: the photometry file " + absolute + " lies outside the project folder; "
+            "to allow it, set \"settings\": {\"allow_files_outside_project\": true}");
+  // A ../ that stays inside the tree is fine.
+  dir.write("project/lamp.ies", small_ies());
+  EXPECT_EQ(error_in(with_file_photometry("sub/../lamp.ies"), project_dir), "(no error)");
+  // With the setting, both load.
+  auto allowed = doc;
+  allowed["settings"] = {{"allow_files_outside_project", true}};
+  EXPECT_EQ(parse_project(allowed, "p.json", project_dir).photometry.at("lamp").source, "../shared/lamp.ies");
+  allowed["photometry"]["lamp"] = absolute;
+  EXPECT_EQ(parse_project(allowed, "p.json", project_dir).photometry.at("lamp").source, absolute);
+}
+
+TEST(ProjectFile, LoadProjectReadsThroughTheSafeParse) {
+  const testing_support::TempFolder dir;
+  std::string text = minimal().dump();
+  const auto file = dir.write("p.json", text);
+  EXPECT_EQ(load_project(file).name, "t");
+  text.insert(text.size() - 1, R"(,"name": "u")");
+  const auto dup = dir.write("dup.json", text);
+  try {
+    load_project(dup);
+    FAIL() << "expected an error";
+  } catch (const InputError& e) {
+    const size_t closing_quote = text.rfind("\"name\"") + 5;
+    EXPECT_EQ(std::string(e.what()), dup.string() + ":1:" + std::to_string(closing_quote + 1) +
+                                         " /name: duplicate key \"name\" (first given on line 1)");
   }
 }
 

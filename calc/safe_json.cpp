@@ -1,0 +1,207 @@
+#include "calc/safe_json.h"
+
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <vector>
+
+#include "calc/json_reader.h"
+#include "util/error.h"
+
+namespace luxgrid::calc {
+
+namespace {
+
+// A character iterator that publishes how far the parser has read. nlohmann's SAX events carry
+// no position; the lexer reads through this iterator, so at each event `*read` is just past the
+// token that caused it (the '{' of an object, the closing quote of a key).
+class CountingIterator {
+ public:
+  using iterator_category = std::forward_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char*;
+  using reference = const char&;
+
+  CountingIterator() = default;
+  CountingIterator(const char* p, const char** read) : p_(p), read_(read) {}
+  reference operator*() const { return *p_; }
+  CountingIterator& operator++() {
+    *read_ = ++p_;
+    return *this;
+  }
+  CountingIterator operator++(int) {
+    CountingIterator old = *this;
+    ++*this;
+    return old;
+  }
+  bool operator==(const CountingIterator& o) const { return p_ == o.p_; }
+
+ private:
+  const char* p_ = nullptr;
+  const char** read_ = nullptr;
+};
+
+// "line:column" of the last character read when `consumed` characters have been read (the same
+// convention as nlohmann's parse_error::byte).
+std::string line_column(std::string_view text, std::size_t consumed) {
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i + 1 < consumed && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
+// nlohmann's DOM builder with three checks in front of it. It tracks where it is (one frame per
+// open object or array: the key or index of the child being read, and an object's keys so far
+// with where each was read), so the checks can name the JSON pointer.
+class CheckedDomBuilder {
+ public:
+  using json = nlohmann::json;
+
+  CheckedDomBuilder(json& root, std::string_view text, const std::string& label,
+                    const char* const* read)
+      : dom_(root), text_(text), label_(label), read_(read) {}
+
+  bool null() { return next_value() && dom_.null(); }
+  bool boolean(bool v) { return next_value() && dom_.boolean(v); }
+  bool number_integer(json::number_integer_t v) { return next_value() && dom_.number_integer(v); }
+  bool number_unsigned(json::number_unsigned_t v) { return next_value() && dom_.number_unsigned(v); }
+  bool number_float(json::number_float_t v, const std::string& s) {
+    return next_value() && dom_.number_float(v, s);
+  }
+  bool string(std::string& v) { return next_value() && dom_.string(v); }
+  bool binary(json::binary_t& v) { return next_value() && dom_.binary(v); }
+
+  bool start_object(std::size_t n) {
+    open(false);
+    return dom_.start_object(n);
+  }
+  bool key(std::string& k) {
+    Frame& f = frames_.back();
+    f.child = json_pointer_escape(k);
+    const auto [it, fresh] = f.keys.emplace(k, consumed());
+    if (!fresh) {
+      fail(consumed(), " " + pointer() + ": duplicate key \"" + k + "\" (first given on line " +
+                           line_of(it->second) + ")");
+    }
+    return dom_.key(k);
+  }
+  bool end_object() {
+    frames_.pop_back();
+    return dom_.end_object();
+  }
+  bool start_array(std::size_t n) {
+    open(true);
+    return dom_.start_array(n);
+  }
+  bool end_array() {
+    frames_.pop_back();
+    return dom_.end_array();
+  }
+
+  bool parse_error(std::size_t byte, const std::string& /*last_token*/,
+                   const nlohmann::detail::exception& ex) {
+    std::string what = ex.what();
+    // nlohmann's 406: a number that is not a finite double (1e400). Name it and its place.
+    if (ex.id == 406) {
+      const auto quote = what.find('\'');
+      const std::string number =
+          quote == std::string::npos ? "" : what.substr(quote + 1, what.size() - quote - 2);
+      fail(byte, " " + pointer_of_next_value() + ": the number " + number +
+                     " is out of range (a number must fit a double, |x| < 1.8e308)");
+    }
+    const auto syntax = what.find("syntax error");
+    fail(byte, ": malformed JSON: " + (syntax != std::string::npos ? what.substr(syntax) : what));
+  }
+
+ private:
+  struct Frame {
+    bool is_array = false;
+    std::size_t next_index = 0;
+    std::string child;  // escaped key or index of the value being read
+    std::map<std::string, std::size_t> keys;  // object keys so far -> characters read at each
+  };
+
+  std::size_t consumed() const { return static_cast<std::size_t>(*read_ - text_.data()); }
+  std::string line_of(std::size_t consumed) const {
+    const std::string lc = line_column(text_, consumed);
+    return lc.substr(0, lc.find(':'));
+  }
+
+  [[noreturn]] void fail(std::size_t at, const std::string& what) const {
+    throw InputError(label_ + ":" + line_column(text_, at) + what);
+  }
+
+  // A value starts: in an array, it is the next element.
+  bool next_value() {
+    if (!frames_.empty() && frames_.back().is_array) {
+      frames_.back().child = std::to_string(frames_.back().next_index++);
+    }
+    return true;
+  }
+
+  void open(bool is_array) {
+    next_value();
+    if (frames_.size() >= static_cast<std::size_t>(kMaxJsonDepth)) {
+      fail(consumed(), ": objects and arrays nested deeper than the limit of " +
+                           std::to_string(kMaxJsonDepth) + " levels");
+    }
+    frames_.push_back(Frame{is_array, 0, {}, {}});
+  }
+
+  std::string pointer() const {
+    std::string p;
+    for (const auto& f : frames_) p += "/" + f.child;
+    return p.empty() ? "/" : p;
+  }
+  // Where a value being read now goes (before its event was delivered).
+  std::string pointer_of_next_value() {
+    if (!frames_.empty() && frames_.back().is_array) {
+      frames_.back().child = std::to_string(frames_.back().next_index);
+    }
+    return pointer();
+  }
+
+  nlohmann::detail::json_sax_dom_parser<json> dom_;
+  std::string_view text_;
+  const std::string& label_;
+  const char* const* read_;
+  std::vector<Frame> frames_;
+};
+
+}  // namespace
+
+nlohmann::json parse_json_text(std::string_view text, const std::string& label) {
+  nlohmann::json doc;
+  const char* read = text.data();
+  CheckedDomBuilder builder(doc, text, label, &read);
+  nlohmann::json::sax_parse(CountingIterator(text.data(), &read),
+                            CountingIterator(text.data() + text.size(), &read), &builder);
+  return doc;
+}
+
+nlohmann::json read_json_file(const std::filesystem::path& file) {
+  std::error_code ec;
+  const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
+  if (ec) throw InputError(file.string() + ": cannot open the project file");
+  if (bytes > kMaxProjectFileBytes) {
+    throw InputError(file.string() + ": the file is " + std::to_string(bytes) +
+                     " bytes, more than the limit of " + std::to_string(kMaxProjectFileBytes) +
+                     " bytes (" + std::to_string(kMaxProjectFileBytes >> 20) +
+                     " MiB) for a project file");
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string() + ": cannot open the project file");
+  std::string text(static_cast<std::size_t>(bytes), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return parse_json_text(text, file.string());
+}
+
+}  // namespace luxgrid::calc
