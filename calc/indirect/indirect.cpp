@@ -14,6 +14,7 @@
 
 #include "calc/direct.h"
 #include "calc/indirect/box_bounds.h"
+#include "calc/indirect/emitter_cells.h"
 #include "calc/indirect/first_bounce.h"
 #include "calc/indirect/prism_visibility.h"
 #include "calc/indirect/radiosity.h"
@@ -37,6 +38,9 @@ constexpr double kRoomTolerance_m = 1e-3;
 // corner's light missing); 1 mm inside, the field is continuous and differs from the limit by far
 // less than any tolerance (the analogue of the Luksch horizon shift).
 constexpr double kReceiverInset_m = 1e-3;
+// The plan line gives the flux of the whole openings beside the flux entering the rooms when
+// they differ by more than this (rounding of the clip planes, emitter_cells.h).
+constexpr double kOutsideFluxFraction = 1e-6;
 // Auto-mode estimate of the direct light: at most this many far-field points per surface.
 constexpr size_t kDecisionSamplesPerSurface = 256;
 
@@ -378,16 +382,18 @@ IndirectDecision decide_indirect(const Scene& scene) {
   }
   // Integrating-sphere estimate per room: rho Phi / (A (1 - rho)), rho area-weighted.
   // luminous_flux integrates the whole distribution: once per distinct one.
+  // Phi is the flux entering the room: the part of each opening inside it (emitter_cells.h).
   std::map<const photometry::IntensityDistribution*, double>& flux_of = d.luminous_flux_lm;
+  std::vector<double> room_flux_lm(scene.rooms.size(), 0.0);
+  for (const auto& lum : scene.luminaires)
+    for (const RoomCells& part : emitter_cells(scene, lum)) {
+      auto [it, fresh] = flux_of.try_emplace(lum.distribution.get(), 0.0);
+      if (fresh) it->second = luminous_flux(*lum.distribution);
+      room_flux_lm[part.room] += part.weight * it->second;
+    }
   for (size_t r = 0; r < scene.rooms.size(); ++r) {
     const Room& room = scene.rooms[r];
-    double flux = 0.0;
-    for (const auto& lum : scene.luminaires)
-      if (room_containing(scene, lum.pose.position, 0.0) == static_cast<int>(r)) {
-        auto [it, fresh] = flux_of.try_emplace(lum.distribution.get(), 0.0);
-        if (fresh) it->second = luminous_flux(*lum.distribution);
-        flux += it->second;
-      }
+    const double flux = room_flux_lm[r];
     const double rho = mean_reflectance(room);
     const double area = room_surface_area(room);
     const double e = rho < 1.0 && area > 0.0 ? rho * flux / (area * (1.0 - rho))
@@ -504,6 +510,7 @@ IndirectResult compute_indirect(const Scene& scene,
   for (const auto& n : fb.notes) res.notes.push_back(n);
   res.vpls = fb.vpl_count;
   res.emitted_flux_lm = fb.emitted_flux_lm;
+  res.luminaire_flux_lm = fb.luminaire_flux_lm;
   res.received_flux_lm = fb.received_flux_lm;
   for (double f : fb.vpl_flux_lm) res.vpl_flux_lm += f;
 
@@ -563,7 +570,11 @@ IndirectResult compute_indirect(const Scene& scene,
                 fmt("%.3g", res.patch_size_m) + " m, " + std::to_string(res.vpls) +
                 " virtual point lights, residual " + fmt("%.2g", res.residual) + "; direct flux on room faces " +
                 fmt("%.6g", res.received_flux_lm) + " lm of " + fmt("%.6g", res.emitted_flux_lm) +
-                " lm emitted" + (prism ? "; visibility: walls of non-convex rooms" : "") +
+                " lm emitted into the rooms" +
+                (res.emitted_flux_lm < res.luminaire_flux_lm * (1.0 - kOutsideFluxFraction)
+                     ? " (of " + fmt("%.6g", res.luminaire_flux_lm) + " lm from the whole openings)"
+                     : std::string()) +
+                (prism ? "; visibility: walls of non-convex rooms" : "") +
                 (options.occluded ? "; visibility: occlusion callback" : "") +
                 (own_tree ? "; visibility: AABB tree of room and obstacle faces" : "") +
                 (obstacle_count ? "; " + std::to_string(obstacle_count) + " obstacle" +

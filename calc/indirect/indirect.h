@@ -66,7 +66,8 @@ struct IndirectResult {
   bool tail_added = false;
   double residual = 0.0;    // largest over rooms, relative
   double patch_size_m = 0.0;
-  double emitted_flux_lm = 0.0;   // luminaires inside rooms
+  double emitted_flux_lm = 0.0;   // entering the rooms (the parts of the openings inside them)
+  double luminaire_flux_lm = 0.0; // of the luminaires that reach a room, whole
   double received_flux_lm = 0.0;  // direct lumens landing on patches
   double vpl_flux_lm = 0.0;       // sum over VPLs (= sum rho x received)
   double max_row_correction = 0.0;
