@@ -90,10 +90,56 @@ double mean_reflectance(const Room& room) {
           a_walls * room.reflectance.walls) / a;
 }
 
+// The patch size at which the rooms' patch counts are estimated (surface area / size^2, the
+// count of a box room) to fit the per-room budget and kMaxTotalPatches: checked before the mesh
+// is built, so that a huge room is never meshed at a fine size first (1 km^2 at 0.5 m would be
+// 8 million patches, gigabytes, before the budget is checked). With an explicit size an excess
+// is an error naming the room or the total.
+double size_within_limits(const Scene& scene, const IndirectOptions& o, double size,
+                          std::vector<std::string>& notes) {
+  double total_area = 0.0, worst_area = 0.0;
+  int worst_room = 0;
+  for (size_t r = 0; r < scene.rooms.size(); ++r) {
+    const double a = room_surface_area(scene.rooms[r]);
+    total_area += a;
+    if (a > worst_area) worst_area = a, worst_room = static_cast<int>(r);
+  }
+  const double worst = worst_area / (size * size), total = total_area / (size * size);
+  const double budget = static_cast<double>(o.max_patches_per_room);
+  const double limit = static_cast<double>(kMaxTotalPatches);
+  if (!(worst > budget) && !(total > limit)) return size;
+  if (o.patch_size_m > 0.0) {
+    if (worst > budget)
+      throw InputError("room '" + scene.rooms[worst_room].name + "': " + std::to_string(std::llround(worst)) +
+                       " patches at a patch size of " + fmt("%.3g", size) + " m exceed the budget of " +
+                       std::to_string(o.max_patches_per_room) + " patches per room");
+    throw InputError(std::to_string(std::llround(total)) + " patches in " + std::to_string(scene.rooms.size()) +
+                     " rooms at a patch size of " + fmt("%.3g", size) + " m exceed the limit of " +
+                     std::to_string(kMaxTotalPatches) + " patches in all rooms");
+  }
+  const double grow = std::sqrt(std::max(worst / budget, total / limit));
+  notes.push_back((worst / budget >= total / limit
+                       ? "room '" + scene.rooms[worst_room].name + "': patch size raised from "
+                       : "all " + std::to_string(scene.rooms.size()) + " rooms: patch size raised from ") +
+                  fmt("%.3g", size) + " m to " + fmt("%.3g", size * grow) + " m to stay within " +
+                  (worst / budget >= total / limit ? std::to_string(o.max_patches_per_room) + " patches per room"
+                                                   : std::to_string(kMaxTotalPatches) + " patches in all rooms"));
+  return size * grow;
+}
+
 // Rooms' patch mesh at the requested size, coarsened to fit the budget when the size was not
 // given explicitly.
-PatchMesh mesh_within_budget(const Scene& scene, const IndirectOptions& o, double size,
+PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, double size,
                              std::vector<std::string>& notes) {
+  if (o.max_patches_per_room > kMaxPatchesPerRoom) {
+    notes.push_back("indirect: the budget of " + std::to_string(o.max_patches_per_room) +
+                    " patches per room is above the limit of " + std::to_string(kMaxPatchesPerRoom) +
+                    " (a form-factor matrix of " +
+                    std::to_string(kMaxFormFactorMatrixBytes / kBytesPerMegabyte) + " MB); " +
+                    std::to_string(kMaxPatchesPerRoom) + " used");
+    o.max_patches_per_room = kMaxPatchesPerRoom;
+  }
+  size = size_within_limits(scene, o, size, notes);
   for (int attempt = 0;; ++attempt) {
     PatchMesh mesh = build_patch_mesh(scene, size);
     size_t worst = 0;
@@ -102,7 +148,21 @@ PatchMesh mesh_within_budget(const Scene& scene, const IndirectOptions& o, doubl
       const size_t c = mesh.room_begin[r + 1] - mesh.room_begin[r];
       if (c > worst) worst = c, worst_room = static_cast<int>(r);
     }
-    if (worst <= o.max_patches_per_room) return mesh;
+    const size_t total = mesh.patches.size();
+    if (worst <= o.max_patches_per_room && total <= kMaxTotalPatches) return mesh;
+    if (worst <= o.max_patches_per_room) {
+      // Obstacles and clipped boundary cells beyond the estimate of size_within_limits.
+      if (o.patch_size_m > 0.0 || attempt > 20)
+        throw InputError(std::to_string(total) + " patches in " + std::to_string(scene.rooms.size()) +
+                         " rooms at a patch size of " + fmt("%.3g", size) + " m exceed the limit of " +
+                         std::to_string(kMaxTotalPatches) + " patches in all rooms");
+      const double grow = std::sqrt(static_cast<double>(total) / kMaxTotalPatches) * 1.05;
+      notes.push_back("all rooms: patch size raised from " + fmt("%.3g", size) + " m to " +
+                      fmt("%.3g", size * grow) + " m to stay within " + std::to_string(kMaxTotalPatches) +
+                      " patches in all rooms");
+      size *= grow;
+      continue;
+    }
     if (o.patch_size_m > 0.0 || attempt > 20)
       throw InputError(
           "room '" + scene.rooms[worst_room].name + "': " + std::to_string(worst) +
