@@ -3,6 +3,7 @@
 // and the solve ends at kMaxBounces even when the series never converges (reflectance 1).
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 
 #include "calc/indirect/indirect.h"
@@ -55,6 +56,8 @@ TEST(Limits, TheSolverRefusesARoomAboveTheMatrixLimit) {
 
 TEST(Limits, ManyRoomsCoarsenToTheTotalPatchLimit) {
   const IndirectResult r = compute_indirect(many_rooms(), {}, IndirectOptions{});
+  std::printf("%zu patches of %.3g m\n", r.patches, r.patch_size_m);
+  for (const auto& n : r.notes) std::printf("note: %s\n", n.c_str());
   EXPECT_LE(r.patches, kMaxTotalPatches);
   EXPECT_GT(r.patches, kMaxTotalPatches * 8 / 10);  // coarsened just enough, not to a few patches
   ASSERT_FALSE(r.notes.empty());
