@@ -53,6 +53,28 @@ Polygon3 clip_to_prism(Polygon3 poly, const Polygon2& piece, double z0, double z
   return poly;
 }
 
+// True when `part` lies in the plane of one of the room's faces (within twice kOpeningOnFace_m:
+// the clip tolerance) and `emitting` (the opening's emitting normal) points out of the room
+// through it. Such an opening is flush with the face and emits into the room on the other side
+// (a downlight in the ceiling that is the floor of the room above belongs to the room below),
+// so it is counted once, where it emits, as room_containing counted a point once.
+bool flush_emitting_out(const Polygon3& part, const Room& room, const Vec3& emitting) {
+  auto in_plane = [&](const Vec3& origin, const Vec3& inward) {
+    for (const Vec3& v : part)
+      if (std::abs(glm::dot(v - origin, inward)) > 2.0 * kOpeningOnFace_m) return false;
+    return glm::dot(emitting, inward) < 0.0;
+  };
+  if (in_plane(Vec3(0.0, 0.0, room.floor_z), Vec3(0.0, 0.0, 1.0))) return true;
+  if (in_plane(Vec3(0.0, 0.0, room.floor_z + room.height), Vec3(0.0, 0.0, -1.0))) return true;
+  for (size_t k = 0; k < room.outline.size(); ++k) {
+    const Vec2 a = room.outline[k], b = room.outline[(k + 1) % room.outline.size()];
+    const double len = glm::length(b - a);
+    if (len > 0.0 && in_plane(Vec3(a.x, a.y, 0.0), Vec3(-(b.y - a.y) / len, (b.x - a.x) / len, 0.0)))
+      return true;
+  }
+  return false;
+}
+
 bool inside_obstacle(const Room& room, const Vec3& p) {
   for (const auto& o : room.obstacles)
     if (p.z > o.z0 && p.z < o.z1 && point_in_polygon(o.footprint, Vec2(p.x, p.y))) return true;
@@ -113,7 +135,7 @@ std::vector<RoomCells> emitter_cells(const Scene& scene, const Luminaire& lum) {
     double inside_area = 0.0;
     for (const Polygon2& piece : pieces) {
       Polygon3 part = clip_to_prism(e.vertices, piece, room.floor_z, top);
-      if (part.size() < 3) continue;
+      if (part.size() < 3 || flush_emitting_out(part, room, e.normal)) continue;
       const double a = glm::length(area_vector(part));
       if (!(a > kMinPieceFraction * e.area_m2)) continue;
       inside_area += a;

@@ -46,7 +46,10 @@ inline constexpr int kMaxCellsPerSide = 16;
 
 // The parts of the luminaire's opening inside each room of the scene (rooms it does not reach
 // are left out). A point opening (or a zero-size one) is one cell of weight 1 in the room
-// containing its position (flush with a face counts as inside, within kOpeningOnFace_m).
+// containing its position. An opening flush with a face (within kOpeningOnFace_m) counts as
+// inside the room its emitting side (local -z) faces, only: a downlight in a ceiling that is
+// also the floor of the room above lights the room below, once. (Light a distribution sends
+// backwards from such an opening is lost, as it was with the point model.)
 std::vector<RoomCells> emitter_cells(const Scene& scene, const Luminaire& luminaire);
 
 // An opening flush with a room face (a recessed downlight, whose opening lies in the ceiling
