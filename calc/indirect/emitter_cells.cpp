@@ -13,8 +13,11 @@ namespace luxgrid::calc::indirect {
 
 namespace {
 
-// A part of the opening smaller than this fraction of it is rounding at a clip plane, not light.
-constexpr double kMinPieceFraction = 1e-12;
+// A part of the opening no wider than this multiple of kOpeningOnFace_m (area <= width x its
+// diameter) is the sliver the moved clip planes leave of an opening flush with the room's
+// outside, not light entering. (Not a fraction of the opening: the 4 x 4 m part of a 1e9 m
+// emitter is 1.6e-17 of it, and real.)
+constexpr double kSliverWidths = 2.0;
 // Openings with less than this fraction outside their rooms get no note (rounding of the clip).
 constexpr double kOutsideNoteFraction = 1e-6;
 
@@ -137,7 +140,7 @@ std::vector<RoomCells> emitter_cells(const Scene& scene, const Luminaire& lum) {
       Polygon3 part = clip_to_prism(e.vertices, piece, room.floor_z, top);
       if (part.size() < 3 || flush_emitting_out(part, room, e.normal)) continue;
       const double a = glm::length(area_vector(part));
-      if (!(a > kMinPieceFraction * e.area_m2)) continue;
+      if (!(a > kSliverWidths * kOpeningOnFace_m * polygon_diameter(part))) continue;
       inside_area += a;
       parts.push_back(std::move(part));
     }
@@ -167,10 +170,11 @@ std::string outside_note(const Luminaire& lum, const std::vector<RoomCells>& par
   if (!(outside > kOutsideNoteFraction) || parts.empty()) return {};
   char buf[256];
   std::snprintf(buf, sizeof buf,
-                "%s: %.4g %% of its luminous opening (%s, %.4g x %.4g m) lies outside its room "
+                "%s: %.4g %% of its luminous opening (%s %.4g x %.4g m) lies outside its room "
                 "or inside an obstacle; that light does not enter the room: %.6g lm of %.6g lm "
                 "enter",
-                lum.label.c_str(), 100.0 * outside, lum.opening.description.c_str(),
+                lum.label.c_str(), 100.0 * outside,
+                lum.opening.shape == photometry::LuminousOpening::Shape::disk ? "disk" : "rectangle",
                 lum.opening.length, lum.opening.width, inside * luminous_flux_lm, luminous_flux_lm);
   std::string note = buf;
   for (size_t k = 0; k < parts.size(); ++k)

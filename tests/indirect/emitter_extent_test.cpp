@@ -169,7 +169,8 @@ TEST(EmitterExtent, AnOpeningPartlyOutsideItsRoomSaysSo) {
   const PatchMesh mesh = build_patch_mesh(scene, 0.5);
   const FirstBounce fb = first_bounce(scene, mesh, std::vector<OcclusionFn>(1));
   ASSERT_EQ(fb.notes.size(), 1u);
-  EXPECT_NE(fb.notes[0].find("99.84 % of its luminous opening"), std::string::npos) << fb.notes[0];
+  EXPECT_NE(fb.notes[0].find("99.84 % of its luminous opening (rectangle 100 x 100 m)"), std::string::npos)
+      << fb.notes[0];
   EXPECT_NE(fb.notes[0].find("room 'box'"), std::string::npos) << fb.notes[0];
 }
 
@@ -217,6 +218,19 @@ TEST(EmitterExtent, LShapedRoomsAndObstaclesCutTheOpening) {
   EXPECT_NEAR(parts[0].weight, 14.0 / 100.0, 8e-3);
   for (const auto& c : parts[0].cells)
     EXPECT_FALSE(c.position.x < 2.0 && c.position.y < 2.0) << c.position.x << " " << c.position.y;
+}
+
+// The 1e9 m emitter of the issue: its 4 x 4 m part inside (1.6e-17 of it) is real light, not
+// rounding: pi I0 x 1.6e-17 enters, and lands on the patches.
+TEST(EmitterExtent, AGigametreEmitterLetsInItsPartInside) {
+  const Scene scene = extent_scene("rectangle", 1e9);
+  const Balance b = first_bounce_balance(scene);
+  const double entering = b.luminaire_lm * 16.0 / 1e18;
+  EXPECT_NEAR(b.emitted_lm / entering, 1.0, 1e-5);
+  EXPECT_NEAR(b.received_lm / b.emitted_lm, 1.0, 5e-4);
+  // The same cells as the 100 m emitter's, at 1e-14 of its intensity.
+  const Balance hundred = first_bounce_balance(extent_scene("rectangle", 100.0));
+  EXPECT_NEAR(b.floor_lm / (hundred.floor_lm * 1e-14), 1.0, 1e-5);
 }
 
 TEST(EmitterExtent, OrdinaryOpeningsStayOnePoint) {
