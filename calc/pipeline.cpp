@@ -1,8 +1,12 @@
 #include "calc/pipeline.h"
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "calc/indirect/indirect.h"
+#include "util/error.h"
 
 namespace luxgrid::calc {
 
@@ -52,6 +56,34 @@ void run_indirect(const Scene& scene, Results& results) {
   results.plan.indirect = r.summary;
   for (const auto& n : r.notes) results.plan.notes.push_back(n);
 }
+// "1.8e+308" / "inf" / "nan", for the messages below.
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+// Results never hold NaN or an infinity (a photometric file with absurd candela values, an
+// overflow in a sum): a written number that is not a number would be read as an answer. Throws
+// CalculationError naming the surface and the first bad point (index and position) or
+// statistic, so nothing is written.
+void check_finite(const SurfaceResult& r) {
+  const std::string surface = "surface '" + r.grid.name + "': ";
+  for (size_t i = 0; i < r.E.size(); ++i) {
+    if (std::isfinite(r.E_direct[i]) && std::isfinite(r.E_indirect[i]) && std::isfinite(r.E[i])) continue;
+    const Vec3 p = i < r.grid.points.size() ? r.grid.points[i] : Vec3(0.0);
+    throw CalculationError(surface + "the illuminance at point " + std::to_string(i) + " (" + number(p.x) +
+                           ", " + number(p.y) + ", " + number(p.z) + ") m is not a finite number (E_direct " +
+                           number(r.E_direct[i]) + " lx, E_indirect " + number(r.E_indirect[i]) + " lx, E " +
+                           number(r.E[i]) + " lx); the results are not written");
+  }
+  const std::pair<const char*, double> stats[] = {
+      {"Emin", r.stats.Emin}, {"Eavg", r.stats.Eavg}, {"Emax", r.stats.Emax}, {"U0", r.stats.U0}, {"Ud", r.stats.Ud}};
+  for (const auto& [name, value] : stats)
+    if (!std::isfinite(value))
+      throw CalculationError(surface + name + " is " + number(value) +
+                             " (the point values are finite but too large to sum); the results are not written");
+}
 }  // namespace
 
 Results run_scene(const Scene& scene, const Progress& progress) {
@@ -72,6 +104,7 @@ Results run_scene(const Scene& scene, const Progress& progress) {
     r.E.resize(r.E_direct.size());
     for (size_t i = 0; i < r.E.size(); ++i) r.E[i] = (r.E_direct[i] + r.E_indirect[i]) * mf;
     r.stats = compute_statistics(r.E, r.grid.active);
+    check_finite(r);
   }
   return results;
 }

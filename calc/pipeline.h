@@ -5,6 +5,8 @@
 
 namespace luxgrid::calc {
 
+// Throws CalculationError naming the surface and the first point (index, position) or
+// statistic that is not a finite number: results never hold NaN or infinities.
 Results run_scene(const Scene& scene, const Progress& progress = {});
 
 }  // namespace luxgrid::calc

@@ -5,6 +5,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "calc/indirect/emitter_cells.h"
 #include "calc/scaled_distribution.h"
 
 namespace luxgrid::calc::indirect {
@@ -22,8 +23,16 @@ constexpr int kMaxLevel = 6;
 // shadow edge is then resolved to 1/4 of the piece size per extra level... 1/2 per level).
 constexpr int kShadowExtraLevels = 2;
 
+// One cell of a luminaire's opening (emitter_cells.h): a point source of weight x the
+// luminaire's intensity.
+struct Source {
+  Vec3 position{0.0};
+  const Luminaire* lum = nullptr;
+  double weight = 1.0;
+};
+
 struct Sampler {
-  const Luminaire& lum;
+  const Source& src;
   const OcclusionFn& occluded;
   Vec3 normal;
   mutable int visible = 0, hidden = 0;
@@ -34,7 +43,7 @@ struct Sampler {
       return triangle(a, ab, ca, level - 1) + triangle(ab, b, bc, level - 1) +
              triangle(ca, bc, c, level - 1) + triangle(ab, bc, ca, level - 1);
     }
-    const Vec3 s = lum.pose.position;
+    const Vec3 s = src.position;
     const Vec3 centre = (a + b + c) / 3.0;
     if (occluded && occluded(s, centre + normal * kSampleLift_m)) {
       ++hidden;
@@ -43,14 +52,14 @@ struct Sampler {
     ++visible;
     const double omega = triangle_solid_angle_from(s, a, b, c);
     const Vec3 dir = glm::normalize(centre - s);
-    const Vec3 local = glm::transpose(lum.pose.rotation) * dir;
-    return lum.distribution->intensity(local) * omega;
+    const Vec3 local = glm::transpose(src.lum->pose.rotation) * dir;
+    return src.weight * src.lum->distribution->intensity(local) * omega;
   }
 };
 
-double patch_flux(const Luminaire& lum, const Patch& p, const OcclusionFn& occluded,
+double patch_flux(const Source& src, const Patch& p, const OcclusionFn& occluded,
                   double max_angle_rad) {
-  const Vec3 s = lum.pose.position;
+  const Vec3 s = src.position;
   const double h = glm::dot(p.normal, s - p.centroid);
   if (!(h > kMinPlaneDistance_m)) return 0.0;
   // Distance from the luminaire to the nearest point of the patch is at least h; use the
@@ -60,7 +69,7 @@ double patch_flux(const Luminaire& lum, const Patch& p, const OcclusionFn& occlu
   int level = 0;
   // Each fan triangle spans about half the patch; each level halves a piece.
   while (level < kMaxLevel && 0.5 * angle / std::ldexp(1.0, level) > max_angle_rad) ++level;
-  Sampler sampler{lum, occluded, p.normal};
+  Sampler sampler{src, occluded, p.normal};
   auto integrate = [&](int lv) {
     double flux = 0.0;
     for (size_t k = 0, n = p.polygon.size(); k < n; ++k)
@@ -89,18 +98,24 @@ FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
   // members of an array share theirs), not once per luminaire.
   std::map<const photometry::IntensityDistribution*, double> flux_of;
   if (known_flux_lm) flux_of = *known_flux_lm;
-  // The luminaires of each room (in scene order)...
-  std::vector<std::vector<const Luminaire*>> in_room(scene.rooms.size());
+  // The sources of each room (the cells of the luminaires' openings inside it, in scene
+  // order)...
+  std::vector<std::vector<Source>> in_room(scene.rooms.size());
   for (const auto& lum : scene.luminaires) {
-    const int r = room_containing(scene, lum.pose.position, 0.0);
-    if (r < 0) {
+    const std::vector<RoomCells> parts = emitter_cells(scene, lum);
+    if (parts.empty()) {
       fb.notes.push_back(lum.label + ": not inside any room, its light is not reflected");
       continue;
     }
     auto [it, fresh] = flux_of.try_emplace(lum.distribution.get(), 0.0);
     if (fresh) it->second = luminous_flux(*lum.distribution);
-    fb.emitted_flux_lm += it->second;
-    in_room[r].push_back(&lum);
+    fb.luminaire_flux_lm += it->second;
+    for (const RoomCells& part : parts) {
+      fb.emitted_flux_lm += part.weight * it->second;
+      for (const EmitterCell& cell : part.cells) in_room[part.room].push_back({cell.position, &lum, cell.weight});
+    }
+    if (std::string note = outside_note(lum, parts, scene, it->second); !note.empty())
+      fb.notes.push_back(std::move(note));
   }
   // ...then one parallel loop over the patches, each adding its room's luminaires in that order
   // (one loop instead of one per luminaire; the same sums).
@@ -109,7 +124,7 @@ FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
     const OcclusionFn& occ = occlusion[r];
     tbb::parallel_for(mesh.room_begin[r], mesh.room_begin[r + 1], [&](size_t i) {
       double sum = 0.0;
-      for (const Luminaire* lum : in_room[r]) sum += patch_flux(*lum, mesh.patches[i], occ, max_angle_rad);
+      for (const Source& src : in_room[r]) sum += patch_flux(src, mesh.patches[i], occ, max_angle_rad);
       fb.incident_flux_lm[i] = sum;
     });
   }

@@ -9,6 +9,10 @@
 // per piece. Because the patches of a closed room tile the sphere around the luminaire, the exact
 // solid angles sum to 4 pi, so the received flux equals the emitted flux up to the quadrature
 // error of I alone (zero for an isotropic source).
+//
+// A luminaire is not one point: its luminous opening, clipped to the room, is cut into cells
+// (emitter_cells.h), each a point source carrying its area fraction of the intensity; ordinary
+// openings, small against the room, stay one point at their centre.
 #include <map>
 #include <string>
 #include <vector>
@@ -22,7 +26,10 @@ namespace luxgrid::calc::indirect {
 struct FirstBounce {
   std::vector<double> incident_flux_lm;  // per patch: direct lumens received
   std::vector<double> vpl_flux_lm;       // per patch: reflectance x incident
-  double emitted_flux_lm = 0.0;          // sum of luminous_flux over luminaires inside a room
+  // Flux entering the rooms: each luminaire's luminous_flux times the fraction of its opening
+  // inside a room (emitter_cells.h); light from the part outside never enters.
+  double emitted_flux_lm = 0.0;
+  double luminaire_flux_lm = 0.0;        // sum of luminous_flux over luminaires reaching a room
   double received_flux_lm = 0.0;         // sum of incident_flux_lm
   size_t vpl_count = 0;                  // patches with vpl flux > 0
   std::vector<std::string> notes;        // e.g. luminaires outside every room

@@ -14,6 +14,7 @@
 
 #include "calc/direct.h"
 #include "calc/indirect/box_bounds.h"
+#include "calc/indirect/emitter_cells.h"
 #include "calc/indirect/first_bounce.h"
 #include "calc/indirect/prism_visibility.h"
 #include "calc/indirect/radiosity.h"
@@ -37,6 +38,9 @@ constexpr double kRoomTolerance_m = 1e-3;
 // corner's light missing); 1 mm inside, the field is continuous and differs from the limit by far
 // less than any tolerance (the analogue of the Luksch horizon shift).
 constexpr double kReceiverInset_m = 1e-3;
+// The plan line gives the flux of the whole openings beside the flux entering the rooms when
+// they differ by more than this (rounding of the clip planes, emitter_cells.h).
+constexpr double kOutsideFluxFraction = 1e-6;
 // Auto-mode estimate of the direct light: at most this many far-field points per surface.
 constexpr size_t kDecisionSamplesPerSurface = 256;
 
@@ -86,10 +90,56 @@ double mean_reflectance(const Room& room) {
           a_walls * room.reflectance.walls) / a;
 }
 
+// The patch size at which the rooms' patch counts are estimated (surface area / size^2, the
+// count of a box room) to fit the per-room budget and kMaxTotalPatches: checked before the mesh
+// is built, so that a huge room is never meshed at a fine size first (1 km^2 at 0.5 m would be
+// 8 million patches, gigabytes, before the budget is checked). With an explicit size an excess
+// is an error naming the room or the total.
+double size_within_limits(const Scene& scene, const IndirectOptions& o, double size,
+                          std::vector<std::string>& notes) {
+  double total_area = 0.0, worst_area = 0.0;
+  int worst_room = 0;
+  for (size_t r = 0; r < scene.rooms.size(); ++r) {
+    const double a = room_surface_area(scene.rooms[r]);
+    total_area += a;
+    if (a > worst_area) worst_area = a, worst_room = static_cast<int>(r);
+  }
+  const double worst = worst_area / (size * size), total = total_area / (size * size);
+  const double budget = static_cast<double>(o.max_patches_per_room);
+  const double limit = static_cast<double>(kMaxTotalPatches);
+  if (!(worst > budget) && !(total > limit)) return size;
+  if (o.patch_size_m > 0.0) {
+    if (worst > budget)
+      throw InputError("room '" + scene.rooms[worst_room].name + "': " + std::to_string(std::llround(worst)) +
+                       " patches at a patch size of " + fmt("%.3g", size) + " m exceed the budget of " +
+                       std::to_string(o.max_patches_per_room) + " patches per room");
+    throw InputError(std::to_string(std::llround(total)) + " patches in " + std::to_string(scene.rooms.size()) +
+                     " rooms at a patch size of " + fmt("%.3g", size) + " m exceed the limit of " +
+                     std::to_string(kMaxTotalPatches) + " patches in all rooms");
+  }
+  const double grow = std::sqrt(std::max(worst / budget, total / limit));
+  notes.push_back((worst / budget >= total / limit
+                       ? "room '" + scene.rooms[worst_room].name + "': patch size raised from "
+                       : "all " + std::to_string(scene.rooms.size()) + " rooms: patch size raised from ") +
+                  fmt("%.3g", size) + " m to " + fmt("%.3g", size * grow) + " m to stay within " +
+                  (worst / budget >= total / limit ? std::to_string(o.max_patches_per_room) + " patches per room"
+                                                   : std::to_string(kMaxTotalPatches) + " patches in all rooms"));
+  return size * grow;
+}
+
 // Rooms' patch mesh at the requested size, coarsened to fit the budget when the size was not
 // given explicitly.
-PatchMesh mesh_within_budget(const Scene& scene, const IndirectOptions& o, double size,
+PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, double size,
                              std::vector<std::string>& notes) {
+  if (o.max_patches_per_room > kMaxPatchesPerRoom) {
+    notes.push_back("indirect: the budget of " + std::to_string(o.max_patches_per_room) +
+                    " patches per room is above the limit of " + std::to_string(kMaxPatchesPerRoom) +
+                    " (a form-factor matrix of " +
+                    std::to_string(kMaxFormFactorMatrixBytes / kBytesPerMegabyte) + " MB); " +
+                    std::to_string(kMaxPatchesPerRoom) + " used");
+    o.max_patches_per_room = kMaxPatchesPerRoom;
+  }
+  size = size_within_limits(scene, o, size, notes);
   for (int attempt = 0;; ++attempt) {
     PatchMesh mesh = build_patch_mesh(scene, size);
     size_t worst = 0;
@@ -98,7 +148,21 @@ PatchMesh mesh_within_budget(const Scene& scene, const IndirectOptions& o, doubl
       const size_t c = mesh.room_begin[r + 1] - mesh.room_begin[r];
       if (c > worst) worst = c, worst_room = static_cast<int>(r);
     }
-    if (worst <= o.max_patches_per_room) return mesh;
+    const size_t total = mesh.patches.size();
+    if (worst <= o.max_patches_per_room && total <= kMaxTotalPatches) return mesh;
+    if (worst <= o.max_patches_per_room) {
+      // Obstacles and clipped boundary cells beyond the estimate of size_within_limits.
+      if (o.patch_size_m > 0.0 || attempt > 20)
+        throw InputError(std::to_string(total) + " patches in " + std::to_string(scene.rooms.size()) +
+                         " rooms at a patch size of " + fmt("%.3g", size) + " m exceed the limit of " +
+                         std::to_string(kMaxTotalPatches) + " patches in all rooms");
+      const double grow = std::sqrt(static_cast<double>(total) / kMaxTotalPatches) * 1.05;
+      notes.push_back("all rooms: patch size raised from " + fmt("%.3g", size) + " m to " +
+                      fmt("%.3g", size * grow) + " m to stay within " + std::to_string(kMaxTotalPatches) +
+                      " patches in all rooms");
+      size *= grow;
+      continue;
+    }
     if (o.patch_size_m > 0.0 || attempt > 20)
       throw InputError(
           "room '" + scene.rooms[worst_room].name + "': " + std::to_string(worst) +
@@ -378,16 +442,18 @@ IndirectDecision decide_indirect(const Scene& scene) {
   }
   // Integrating-sphere estimate per room: rho Phi / (A (1 - rho)), rho area-weighted.
   // luminous_flux integrates the whole distribution: once per distinct one.
+  // Phi is the flux entering the room: the part of each opening inside it (emitter_cells.h).
   std::map<const photometry::IntensityDistribution*, double>& flux_of = d.luminous_flux_lm;
+  std::vector<double> room_flux_lm(scene.rooms.size(), 0.0);
+  for (const auto& lum : scene.luminaires)
+    for (const RoomCells& part : emitter_cells(scene, lum)) {
+      auto [it, fresh] = flux_of.try_emplace(lum.distribution.get(), 0.0);
+      if (fresh) it->second = luminous_flux(*lum.distribution);
+      room_flux_lm[part.room] += part.weight * it->second;
+    }
   for (size_t r = 0; r < scene.rooms.size(); ++r) {
     const Room& room = scene.rooms[r];
-    double flux = 0.0;
-    for (const auto& lum : scene.luminaires)
-      if (room_containing(scene, lum.pose.position, 0.0) == static_cast<int>(r)) {
-        auto [it, fresh] = flux_of.try_emplace(lum.distribution.get(), 0.0);
-        if (fresh) it->second = luminous_flux(*lum.distribution);
-        flux += it->second;
-      }
+    const double flux = room_flux_lm[r];
     const double rho = mean_reflectance(room);
     const double area = room_surface_area(room);
     const double e = rho < 1.0 && area > 0.0 ? rho * flux / (area * (1.0 - rho))
@@ -504,6 +570,7 @@ IndirectResult compute_indirect(const Scene& scene,
   for (const auto& n : fb.notes) res.notes.push_back(n);
   res.vpls = fb.vpl_count;
   res.emitted_flux_lm = fb.emitted_flux_lm;
+  res.luminaire_flux_lm = fb.luminaire_flux_lm;
   res.received_flux_lm = fb.received_flux_lm;
   for (double f : fb.vpl_flux_lm) res.vpl_flux_lm += f;
 
@@ -563,7 +630,11 @@ IndirectResult compute_indirect(const Scene& scene,
                 fmt("%.3g", res.patch_size_m) + " m, " + std::to_string(res.vpls) +
                 " virtual point lights, residual " + fmt("%.2g", res.residual) + "; direct flux on room faces " +
                 fmt("%.6g", res.received_flux_lm) + " lm of " + fmt("%.6g", res.emitted_flux_lm) +
-                " lm emitted" + (prism ? "; visibility: walls of non-convex rooms" : "") +
+                " lm emitted into the rooms" +
+                (res.emitted_flux_lm < res.luminaire_flux_lm * (1.0 - kOutsideFluxFraction)
+                     ? " (of " + fmt("%.6g", res.luminaire_flux_lm) + " lm from the whole openings)"
+                     : std::string()) +
+                (prism ? "; visibility: walls of non-convex rooms" : "") +
                 (options.occluded ? "; visibility: occlusion callback" : "") +
                 (own_tree ? "; visibility: AABB tree of room and obstacle faces" : "") +
                 (obstacle_count ? "; " + std::to_string(obstacle_count) + " obstacle" +

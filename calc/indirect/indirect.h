@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "calc/indirect/form_factor.h"
+#include "calc/indirect/limits.h"
 #include "calc/indirect/patches.h"
 #include "calc/scene.h"
 #include "geometry/surface_grid.h"
@@ -26,7 +27,10 @@ struct IndirectOptions {
   Quality quality = Quality::standard;
   int bounces = 0;              // 0: auto (converged; draft: 1); N >= 1: exactly N reflections
   double patch_size_m = 0.0;    // 0: the quality's (draft 1.0, standard 0.5, high 0.25, ref 0.2 m)
-  size_t max_patches_per_room = 4000;  // budget: the patch size grows to fit, unless set above
+  // Budget: the patch size grows to fit, unless set above. At most kMaxPatchesPerRoom (the
+  // form-factor matrix's memory; a larger value is lowered to it, with a note); all rooms
+  // together at most kMaxTotalPatches (limits.h).
+  size_t max_patches_per_room = kDefaultPatchesPerRoom;
   double far_ratio = 0.0;       // 0: the quality's (draft 3, standard 5, high 8, reference: never)
   double tolerance = 0.0;       // 0: the quality's (draft 1e-2, standard 1e-3, high 1e-4, ref 1e-6)
   // Occlusion between two points of a room (true = blocked), e.g. geometry/'s AABB tree. Empty:
@@ -66,7 +70,8 @@ struct IndirectResult {
   bool tail_added = false;
   double residual = 0.0;    // largest over rooms, relative
   double patch_size_m = 0.0;
-  double emitted_flux_lm = 0.0;   // luminaires inside rooms
+  double emitted_flux_lm = 0.0;   // entering the rooms (the parts of the openings inside them)
+  double luminaire_flux_lm = 0.0; // of the luminaires that reach a room, whole
   double received_flux_lm = 0.0;  // direct lumens landing on patches
   double vpl_flux_lm = 0.0;       // sum over VPLs (= sum rho x received)
   double max_row_correction = 0.0;
@@ -74,7 +79,8 @@ struct IndirectResult {
 };
 
 // E_indirect at every point of every surface (inactive points get 0). Throws
-// InputError naming the room for a bad room or a patch budget the scene exceeds.
+// InputError naming the room for a bad room or a patch budget the scene exceeds (with an
+// explicit patch size; else the patches grow), or a budget above the limits of limits.h.
 IndirectResult compute_indirect(const Scene& scene,
                                 const std::vector<geometry::SurfaceGrid>& surfaces,
                                 const IndirectOptions& options);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -13,6 +14,7 @@
 #include <tbb/parallel_for.h>
 
 #include "calc/indirect/box_bounds.h"
+#include "util/error.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -89,6 +91,12 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn
   F.n = mesh.room_begin[room + 1] - F.begin;
   F.renormalised = renormalise;
   const size_t n = F.n;
+  if (n > kMaxPatchesPerRoom)
+    throw CalculationError("indirect: room " + std::to_string(room) + " has " + std::to_string(n) +
+                           " patches; its form-factor matrix would take " +
+                           std::to_string(sizeof(float) * n * n / kBytesPerMegabyte) + " MB, above the limit of " +
+                           std::to_string(kMaxFormFactorMatrixBytes / kBytesPerMegabyte) + " MB (" +
+                           std::to_string(kMaxPatchesPerRoom) + " patches)");
   // Centroids and normals side by side: the inner loop below streams through them n^2 times.
   std::vector<Vec3> centroid(n), normal(n);
   for (size_t k = 0; k < n; ++k) {
@@ -238,6 +246,9 @@ RadiosityResult solve_radiosity(const FormFactorMatrix& F, const std::vector<dou
                                 const std::vector<double>& incident_flux_lm, int bounces,
                                 double tolerance, int max_bounces) {
   const size_t n = F.n;
+  if (bounces > kMaxBounces || max_bounces > kMaxBounces)
+    throw CalculationError("indirect: " + std::to_string(std::max(bounces, max_bounces)) +
+                           " bounces requested, at most " + std::to_string(kMaxBounces));
   RadiosityResult res;
   std::vector<double> delta(n), next(n);
   for (size_t i = 0; i < n; ++i) delta[i] = reflectance[i] * incident_flux_lm[i];

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "calc/indirect/form_factor.h"
+#include "calc/indirect/limits.h"
 #include "calc/indirect/patches.h"
 
 namespace luxgrid::calc::indirect {
@@ -82,7 +83,8 @@ struct FormFactorMatrix {
 // closer (infinity: always exact). Rows of the gather layout are filled in parallel; each
 // receiver takes the sources in tiles, and a tile wholly far and in front (most of a big room)
 // in one branch-free loop. `renormalise`: scale rows to 1 (closed
-// rooms).
+// rooms). Throws CalculationError naming the room index when the matrix would exceed
+// kMaxFormFactorMatrixBytes (limits.h), before allocating it.
 FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn& occluded,
                               double far_ratio, bool renormalise = true);
 
@@ -96,9 +98,11 @@ struct RadiosityResult {
 };
 
 // `bounces` = 0: auto, until the remaining flux < tolerance x total (with the geometric tail);
-// N >= 1: exactly N reflections. `max_bounces` caps auto mode (rho = 1 never converges).
+// N >= 1: exactly N reflections. `max_bounces` caps auto mode (rho = 1 never converges); the
+// residual then says how much was left. Throws CalculationError for N or max_bounces above
+// kMaxBounces (limits.h): the solve always ends.
 RadiosityResult solve_radiosity(const FormFactorMatrix& F, const std::vector<double>& reflectance,
                                 const std::vector<double>& incident_flux_lm, int bounces,
-                                double tolerance, int max_bounces = 10000);
+                                double tolerance, int max_bounces = kMaxBounces);
 
 }  // namespace luxgrid::calc::indirect

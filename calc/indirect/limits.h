@@ -1,0 +1,29 @@
+#pragma once
+// The limits of the indirect calculation (docs/indirect.md, "Limits"): each bounds the memory or
+// the time of one stage, whatever the project asks for.
+#include <cstddef>
+
+namespace luxgrid::calc::indirect {
+
+// The default budget of patches per room (IndirectOptions::max_patches_per_room): the dense
+// form-factor matrix of a room holds n^2 floats, 64 MB at 4000 patches, which the solve streams
+// once per bounce (about 5 ms a sweep on two cores); the size grows to fit it.
+inline constexpr size_t kDefaultPatchesPerRoom = 4000;
+// The largest budget a caller may set (a larger one is lowered to it, with a note): 10 000
+// patches, a matrix of 400 MB (0.25 m patches on a 25 x 25 x 3 m room), ~30 ms a sweep.
+inline constexpr size_t kMaxPatchesPerRoom = 10000;
+// Rooms are solved one after the other and each matrix is freed before the next is built, so
+// this is the most the matrices ever take, however many rooms there are.
+inline constexpr size_t kMaxFormFactorMatrixBytes = sizeof(float) * kMaxPatchesPerRoom * kMaxPatchesPerRoom;
+// For messages: decimal megabytes, as the figures above are given.
+inline constexpr size_t kBytesPerMegabyte = 1000000;
+// Patches in all rooms together at most. A patch with its polygon, first-bounce and gather
+// entries takes about 0.5 kB, so 100 000 patches (25 rooms at the full per-room budget) take
+// about 50 MB beside the one matrix; and the final gather visits every patch of a point's room.
+inline constexpr size_t kMaxTotalPatches = 100000;
+// Reflections at most, explicit (`bounces: N`, also checked by the project loader) or auto: a
+// room of reflectance 1 absorbs nothing and the series never converges, so auto mode stops here
+// and reports the remainder as its residual. 1000 sweeps of the largest matrix take ~5 s.
+inline constexpr int kMaxBounces = 1000;
+
+}  // namespace luxgrid::calc::indirect
