@@ -186,10 +186,15 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
   const double lum_width = L.optional_number(14, "the luminaire width");
   const double lum_height = L.optional_number(15, "the luminaire height");
   const double area_length = L.optional_number(16, "the luminous area length");
+  check_opening_size(src, 16, "the luminous area length", area_length / 1000.0);
   const double area_width = L.optional_number(17, "the luminous area width");
+  check_opening_size(src, 17, "the luminous area width", area_width / 1000.0);
   double area_height = 0.0;
-  for (int n = 18; n <= 21; ++n)
-    area_height = std::max(area_height, L.optional_number(n, "a luminous area height"));
+  for (int n = 18; n <= 21; ++n) {
+    const double h = L.optional_number(n, "a luminous area height");
+    check_opening_size(src, n, "a luminous area height", h / 1000.0);
+    area_height = std::max(area_height, h);
+  }
   const double dff = L.number(22, "the downward flux fraction DFF");
   const double lor = L.number(23, "the light output ratio LORL");
   const double conv = L.number(24, "the conversion factor for luminous intensities");

@@ -263,9 +263,13 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
                                  " x " + std::to_string(nh));
   const long type = in.count("the photometric type (1 = C, 2 = B, 3 = A)", 1, 3);
   const long units = in.count("the units type (1 = feet, 2 = metres)", 1, 2);
+  const double unit = units == 1 ? kFeetToMetres : 1.0;
   const double width = in.number("the luminous opening width");
+  check_opening_size(src, in.last_line(), "the luminous opening width", width * unit);
   const double length = in.number("the luminous opening length");
+  check_opening_size(src, in.last_line(), "the luminous opening length", length * unit);
   const double height = in.number("the luminous opening height");
+  check_opening_size(src, in.last_line(), "the luminous opening height", height * unit);
   // Line 11.
   const Token& bf_tok = in.take("ballast factor");
   const double ballast = parse_number(src, bf_tok, "ballast factor");
@@ -402,7 +406,6 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
                            format_number(lumens) +
                            " is neither -1 nor a rated flux; read as absolute photometry");
   }
-  const double unit = units == 1 ? kFeetToMetres : 1.0;
   std::string opening_warning;
   p.opening = ies_opening(width * unit, length * unit, height * unit, opening_warning);
   if (!opening_warning.empty()) p.warnings.push_back(name + ": " + opening_warning);

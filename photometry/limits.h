@@ -44,6 +44,11 @@ inline constexpr double kMaxLampFluxLm = 4.0 * kPi * kMaxIntensityCd;
 // is a typo, and it would blow the LOR (integrated flux / lamp flux) up towards infinity.
 inline constexpr double kMinLampFluxLm = 1e-3;
 
+// The largest luminous openings in photometric files are luminous ceilings and LED walls of a few
+// metres. An opening beyond 100 m is a unit error (a 600 mm panel written as 600 in a metre
+// file) and would put the near-field quadrature far outside any room; it is refused.
+inline constexpr double kMaxOpeningM = 100.0;
+
 // Messages quote at most one word of a file, only when it is printable ASCII and this short: a
 // number field holds at most ~12 characters ("-1.23456e+05"), and a short quote cannot carry a
 // line of someone else's file (the first line of /etc/passwd, a key in /proc/self/environ) into

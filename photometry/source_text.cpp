@@ -135,6 +135,12 @@ void check_lamp_flux(const SourceText& src, int line, const std::string& what, d
                      " cd), found " + format_number(flux_lm) + " lm");
 }
 
+void check_opening_size(const SourceText& src, int line, const std::string& what, double metres) {
+  if (!(std::abs(metres) > kMaxOpeningM)) return;
+  src.fail(line, "expected " + what + " to be at most " + format_number(kMaxOpeningM) +
+                     " m, found " + format_number(metres) + " m");
+}
+
 std::string_view trim(std::string_view s) {
   auto blank = [](char c) {
     return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\0' || c == '\f' || c == '\v';

@@ -51,6 +51,9 @@ void check_intensity(const SourceText& src, int line, const std::string& what, d
 // Fails at `line` when a stated lamp flux is above 0 but outside [kMinLampFluxLm,
 // kMaxLampFluxLm] (limits.h); 0 and below are the callers' to judge (absolute photometry).
 void check_lamp_flux(const SourceText& src, int line, const std::string& what, double flux_lm);
+// Fails at `line` when |metres| (a luminous opening dimension, converted) exceeds
+// kMaxOpeningM (limits.h).
+void check_opening_size(const SourceText& src, int line, const std::string& what, double metres);
 // Parses without throwing; false if not a finite number.
 bool try_parse_number(std::string_view s, double& out);
 

@@ -59,7 +59,7 @@ INSTANTIATE_TEST_SUITE_P(TestsDataBad, BadInput, ::testing::ValuesIn(bad_files()
                            return n;
                          });
 
-TEST(BadInputDir, HasTheHostileFiles) { EXPECT_EQ(bad_files().size(), 54u); }
+TEST(BadInputDir, HasTheHostileFiles) { EXPECT_EQ(bad_files().size(), 56u); }
 
 TEST(BadInput, MissingFileNamesIt) {
   try {
