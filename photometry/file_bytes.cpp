@@ -14,7 +14,8 @@ constexpr std::size_t kMaxControlBytesPerTen = 1;
 constexpr std::size_t kReadChunkBytes = 64u << 10;
 }  // namespace
 
-void check_size(std::size_t size, const std::string& name, std::size_t max_bytes, const char* kind) {
+void check_size(std::size_t size, const std::string& name, std::size_t max_bytes,
+                const char* kind) {
   if (size > max_bytes)
     throw InputError(name + ": file is " + std::to_string(size) + " bytes; " + kind +
                      " files are expected below " + std::to_string(max_bytes) + " bytes");

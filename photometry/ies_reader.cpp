@@ -44,9 +44,7 @@ struct Version {
   bool has_tag_line = false;
 };
 
-std::string_view first_word(std::string_view s) {
-  return s.substr(0, s.find_first_of(" \t"));
-}
+std::string_view first_word(std::string_view s) { return s.substr(0, s.find_first_of(" \t")); }
 
 Version detect_version(std::string_view first, std::vector<std::string>& warnings,
                        const std::string& name) {
@@ -245,10 +243,10 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
   const Token& lumens_tok = in.take("lumens per lamp");
   const double lumens = parse_number(src, lumens_tok, "lumens per lamp");
   if (lumens > 0)
-    check_lamp_flux(src, lumens_tok.line,
-                    "the lamp flux (" + std::to_string(lamps) + " x " + format_number(lumens) +
-                        " lm)",
-                    lumens * static_cast<double>(lamps));
+    check_lamp_flux(
+        src, lumens_tok.line,
+        "the lamp flux (" + std::to_string(lamps) + " x " + format_number(lumens) + " lm)",
+        lumens * static_cast<double>(lamps));
   const Token& mult_tok = in.take("candela multiplier");
   const double multiplier = parse_number(src, mult_tok, "candela multiplier");
   if (!(multiplier > 0))
@@ -394,10 +392,11 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
     p.flux_convention = "relative photometry (IES: " + std::to_string(lamps) + " x " +
                         format_number(lumens) + " lm rated lamp flux)";
   } else {
-    p.flux_convention = lumens == -1.0 ? "absolute photometry (IES lumens per lamp = -1)"
-                        : lumens > 0   ? "absolute photometry (IES: 0 lamps, read as lumens per lamp = -1)"
-                                       : "absolute photometry (IES lumens per lamp = " +
-                                           format_number(lumens) + ", read as -1)";
+    p.flux_convention =
+        lumens == -1.0 ? "absolute photometry (IES lumens per lamp = -1)"
+        : lumens > 0   ? "absolute photometry (IES: 0 lamps, read as lumens per lamp = -1)"
+                       : "absolute photometry (IES lumens per lamp = " + format_number(lumens) +
+                           ", read as -1)";
     if (lumens > 0)
       p.warnings.push_back(src.where(lumens_tok.line) + ": 0 lamps of " + format_number(lumens) +
                            " lm give no lamp flux; read as absolute photometry");

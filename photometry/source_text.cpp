@@ -130,9 +130,10 @@ void check_lamp_flux(const SourceText& src, int line, const std::string& what, d
   if (!(flux_lm > 0) || (flux_lm >= kMinLampFluxLm && flux_lm <= kMaxLampFluxLm)) return;
   char limit[32];
   std::snprintf(limit, sizeof limit, "%.3g", kMaxLampFluxLm);
-  src.fail(line, "expected " + what + " to be from " + format_number(kMinLampFluxLm) + " to " + limit +
-                     " lm (4 pi x the intensity limit of " + format_number(kMaxIntensityCd) +
-                     " cd), found " + format_number(flux_lm) + " lm");
+  src.fail(line, "expected " + what + " to be from " + format_number(kMinLampFluxLm) + " to " +
+                     limit + " lm (4 pi x the intensity limit of " +
+                     format_number(kMaxIntensityCd) + " cd), found " + format_number(flux_lm) +
+                     " lm");
 }
 
 void check_opening_size(const SourceText& src, int line, const std::string& what, double metres) {

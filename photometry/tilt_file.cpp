@@ -11,9 +11,11 @@ namespace luxgrid::photometry {
 bool lies_within(const std::filesystem::path& path, const std::filesystem::path& root) {
   if (root.empty()) return true;
   std::error_code ec;
-  const std::filesystem::path p = std::filesystem::weakly_canonical(std::filesystem::absolute(path), ec);
+  const std::filesystem::path p =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(path), ec);
   if (ec) return false;
-  const std::filesystem::path r = std::filesystem::weakly_canonical(std::filesystem::absolute(root), ec);
+  const std::filesystem::path r =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(root), ec);
   if (ec) return false;
   // Component by component, so "/data/project2" is not inside "/data/project".
   auto pi = p.begin();

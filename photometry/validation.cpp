@@ -52,8 +52,8 @@ void check_pole(const StoredPlanes& pl, std::size_t j, const std::string& name,
     hi = std::max(hi, pl.cd[i * ng + j]);
   }
   if (!(hi - lo > kPoleSpreadFraction * hi)) return;
-  warnings.push_back(name + ": the C planes disagree at gamma " + format_number(pl.v_deg[j]) + " (" +
-                     cd_text(lo) + " to " + cd_text(hi) + " cd" +
+  warnings.push_back(name + ": the C planes disagree at gamma " + format_number(pl.v_deg[j]) +
+                     " (" + cd_text(lo) + " to " + cd_text(hi) + " cd" +
                      (lo > 0 ? ", " + percent_text((hi - lo) / lo) : std::string()) +
                      "); the pole is taken as their mean");
 }

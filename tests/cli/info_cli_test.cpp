@@ -1,13 +1,12 @@
 // `luxgrid info` end to end: the checking-tool warnings in text and in --json, the flux
 // convention named, and a TILT file outside the file's folder refused with exit 2.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sys/wait.h>
-
 #include <nlohmann/json.hpp>
 
 namespace {
@@ -56,7 +55,8 @@ TEST(InfoCli, WarningsAndTheFluxConventionInJson) {
   EXPECT_EQ(j["flux_convention"],
             "absolute photometry (EULUMDAT lamp count -2 < 0; 1000 lm is the luminaire flux)");
   // A clean file has an empty array, not a missing key.
-  const auto clean = nlohmann::json::parse(info(kCorpus + "ldt/zumtobel_mirel_isym4.ldt --json").out);
+  const auto clean =
+      nlohmann::json::parse(info(kCorpus + "ldt/zumtobel_mirel_isym4.ldt --json").out);
   EXPECT_EQ(clean["warnings"], nlohmann::json::array());
 }
 
@@ -65,8 +65,8 @@ TEST(InfoCli, ATiltFileOutsideTheFilesFolderIsRefused) {
   fs::remove_all(dir);
   fs::create_directories(dir / "sub");
   std::ofstream(dir / "lamp.tilt") << "1\n2\n0 90\n1 1\n";
-  std::ofstream(dir / "sub/panel.ies")
-      << "IESNA:LM-63-2002\n[TEST] x\nTILT=../lamp.tilt\n1 -1 1 2 1 1 2 0 0 0\n1 1 10\n0 90\n0\n10 0\n";
+  std::ofstream(dir / "sub/panel.ies") << "IESNA:LM-63-2002\n[TEST] x\nTILT=../lamp.tilt\n1 -1 1 2 "
+                                          "1 1 2 0 0 0\n1 1 10\n0 90\n0\n10 0\n";
   const Result r = info((dir / "sub/panel.ies").string());
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(r.out, "luxgrid: error: " + (dir / "sub/panel.ies").string() +

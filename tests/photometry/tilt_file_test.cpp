@@ -2,8 +2,9 @@
 // relative to the IES file's folder whatever the current directory, inside the allowed root
 // after "..", and symbolic links, a regular file below kMaxTiltFileBytes. Each case builds its own
 // folder, so the messages are exact.
-#include <gtest/gtest.h>
+#include "photometry/tilt_file.h"
 
+#include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -14,7 +15,6 @@
 #include "photometry/file_bytes.h"
 #include "photometry/photometry.h"
 #include "photometry/tilt.h"
-#include "photometry/tilt_file.h"
 #include "util/error.h"
 
 namespace luxgrid::photometry {

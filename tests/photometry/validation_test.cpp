@@ -27,9 +27,14 @@ std::string ies(const std::string& lumens, const std::string& v, const std::stri
 // EULUMDAT, Isym 1, gamma 0, 90, 180 all at `cd_per_klm`, 1000 lm lamp flux (count `lamps`).
 std::string ldt(const std::string& dff, const std::string& lor, const std::string& lamps = "1",
                 const std::string& cd_per_klm = "70") {
-  std::vector<std::string> l = {"luxgrid tests", "1", "1", "1", "0", "3", "90", "", "ratios", "",
-                                "", "", "100", "0", "50", "80", "0", "0", "0", "0", "0", dff, lor,
-                                "1", "0", "1", lamps, "LED", "1000", "3000", "80", "10"};
+  // Lines 1-21: header, names, dimensions; 22-26: DFF, LOR, conversion, tilt, one lamp set.
+  std::vector<std::string> l = {"luxgrid tests", "1", "1", "1", "0", "3", "90", "", "ratios"};
+  for (const char* x : {"", "", "", "100", "0", "50", "80", "0", "0", "0", "0", "0"}) l.push_back(x);
+  for (const std::string& x : {dff, lor, std::string("1"), std::string("0"), std::string("1")})
+    l.push_back(x);
+  for (const std::string& x : {lamps, std::string("LED"), std::string("1000"), std::string("3000"),
+                               std::string("80"), std::string("10")})
+    l.push_back(x);
   for (int k = 0; k < 10; ++k) l.push_back("0.5");
   for (const char* a : {"0", "0", "90", "180"}) l.push_back(a);
   for (int k = 0; k < 3; ++k) l.push_back(cd_per_klm);
@@ -45,13 +50,15 @@ std::vector<std::string> warnings_of(const std::string& text, const std::string&
 using Warnings = std::vector<std::string>;
 
 TEST(PoleWarning, NamesTheSpreadAndTheMean) {
-  EXPECT_EQ(warnings_of(ies("-1", "0 45 90", "0 90 180", "100 50 0 110 50 0 105 50 0", 3, 3), "pole.ies"),
-            Warnings{"pole.ies: the C planes disagree at gamma 0 (100 to 110 cd, 10.0 %); the pole "
-                     "is taken as their mean"});
+  EXPECT_EQ(
+      warnings_of(ies("-1", "0 45 90", "0 90 180", "100 50 0 110 50 0 105 50 0", 3, 3), "pole.ies"),
+      Warnings{"pole.ies: the C planes disagree at gamma 0 (100 to 110 cd, 10.0 %); the pole "
+               "is taken as their mean"});
   // An upper pole too, when the table reaches gamma 180.
-  EXPECT_EQ(warnings_of(ies("-1", "0 90 180", "0 90 180", "0 0 100 0 0 100 0 0 90", 3, 3), "up.ies"),
-            Warnings{"up.ies: the C planes disagree at gamma 180 (90 to 100 cd, 11.1 %); the pole "
-                     "is taken as their mean"});
+  EXPECT_EQ(
+      warnings_of(ies("-1", "0 90 180", "0 90 180", "0 0 100 0 0 100 0 0 90", 3, 3), "up.ies"),
+      Warnings{"up.ies: the C planes disagree at gamma 180 (90 to 100 cd, 11.1 %); the pole "
+               "is taken as their mean"});
   // A dark plane at the pole: no percentage of zero.
   EXPECT_EQ(warnings_of(ies("-1", "0 45 90", "0 90 180", "0 50 0 4 50 0 0 50 0", 3, 3), "dark.ies"),
             Warnings{"dark.ies: the C planes disagree at gamma 0 (0 to 4 cd); the pole is taken as "
@@ -59,13 +66,14 @@ TEST(PoleWarning, NamesTheSpreadAndTheMean) {
 }
 
 TEST(PoleWarning, RoundingSpreadsUnderTwoPercentStayQuiet) {
-  EXPECT_EQ(warnings_of(ies("-1", "0 45 90", "0 90 180", "100 50 0 101.9 50 0 101 50 0", 3, 3), "ok.ies"),
-            Warnings{});
+  EXPECT_EQ(
+      warnings_of(ies("-1", "0 45 90", "0 90 180", "100 50 0 101.9 50 0 101 50 0", 3, 3), "ok.ies"),
+      Warnings{});
 }
 
 TEST(PoleWarning, TheCorpusIsym3FileDisagreesByWhatItsTableSays) {
-  const Photometry p = load_photometry_file(std::string(LUXGRID_SOURCE_DIR) +
-                                            "/tests/data/photometry/ldt/synthetic_isym3_c90c270.ldt");
+  const Photometry p = load_photometry_file(
+      std::string(LUXGRID_SOURCE_DIR) + "/tests/data/photometry/ldt/synthetic_isym3_c90c270.ldt");
   ASSERT_FALSE(p.warnings.empty());
   EXPECT_NE(p.warnings.front().find("synthetic_isym3_c90c270.ldt: the C planes disagree at gamma 0 "
                                     "(2200 to 2866 cd, 30.3 %); the pole is taken as their mean"),
@@ -74,12 +82,14 @@ TEST(PoleWarning, TheCorpusIsym3FileDisagreesByWhatItsTableSays) {
 }
 
 TEST(CutOffWarning, NonZeroAtTheLastAngle90) {
-  EXPECT_EQ(warnings_of(ies("-1", "0 45 90", "0", "100 50 10", 3, 1), "down.ies"),
-            Warnings{"down.ies: the table ends at gamma 90 with intensities up to 10 cd there (10.0 "
-                     "% of the maximum); the light is cut off abruptly at the horizon"});
-  EXPECT_EQ(warnings_of(ies("-1", "90 135 180", "0", "4 50 100", 3, 1), "up.ies"),
-            Warnings{"up.ies: the table starts at gamma 90 with intensities up to 4 cd there (4.0 % "
-                     "of the maximum); the light is cut off abruptly at the horizon"});
+  EXPECT_EQ(
+      warnings_of(ies("-1", "0 45 90", "0", "100 50 10", 3, 1), "down.ies"),
+      Warnings{"down.ies: the table ends at gamma 90 with intensities up to 10 cd there (10.0 "
+               "% of the maximum); the light is cut off abruptly at the horizon"});
+  EXPECT_EQ(
+      warnings_of(ies("-1", "90 135 180", "0", "4 50 100", 3, 1), "up.ies"),
+      Warnings{"up.ies: the table starts at gamma 90 with intensities up to 4 cd there (4.0 % "
+               "of the maximum); the light is cut off abruptly at the horizon"});
   // Stray light under 1 % of the maximum is what every goniometer sees at the horizon.
   EXPECT_EQ(warnings_of(ies("-1", "0 45 90", "0", "100 50 0.9", 3, 1), "stray.ies"), Warnings{});
   // A table that goes on past 90 states no cut-off.
@@ -102,21 +112,26 @@ TEST(StatedRatioWarning, LorAndDffMoreThanTwoPointsFromTheIntegral) {
 TEST(FluxConvention, IsNamedForEachWayAFileStatesIt) {
   EXPECT_EQ(load_photometry_text(ies("-1", "0 90", "0", "10 0", 2, 1), "a.ies").flux_convention,
             "absolute photometry (IES lumens per lamp = -1)");
-  EXPECT_EQ(load_photometry_text(ies("1000", "0 90", "0", "10 0", 2, 1, "2"), "r.ies").flux_convention,
-            "relative photometry (IES: 2 x 1000 lm rated lamp flux)");
+  EXPECT_EQ(
+      load_photometry_text(ies("1000", "0 90", "0", "10 0", 2, 1, "2"), "r.ies").flux_convention,
+      "relative photometry (IES: 2 x 1000 lm rated lamp flux)");
   EXPECT_EQ(load_photometry_text(ldt("50", "88", "-1"), "a.ldt").flux_convention,
             "absolute photometry (EULUMDAT lamp count -1 < 0; 1000 lm is the luminaire flux)");
   EXPECT_EQ(load_photometry_text(ldt("50", "88"), "r.ldt").flux_convention,
             "relative photometry (EULUMDAT: 1 lamp, 1000 lm rated lamp flux)");
-  const Photometry none = load_photometry_text(ies("1000", "0 90", "0", "10 0", 2, 1, "0"), "z.ies");
+  const Photometry none =
+      load_photometry_text(ies("1000", "0 90", "0", "10 0", 2, 1, "0"), "z.ies");
   EXPECT_FALSE(none.lamp_flux_lm);
-  EXPECT_EQ(none.flux_convention, "absolute photometry (IES: 0 lamps, read as lumens per lamp = -1)");
-  EXPECT_EQ(none.warnings, Warnings{"z.ies:4: 0 lamps of 1000 lm give no lamp flux; read as absolute "
-                                    "photometry"});
+  EXPECT_EQ(none.flux_convention,
+            "absolute photometry (IES: 0 lamps, read as lumens per lamp = -1)");
+  EXPECT_EQ(none.warnings,
+            Warnings{"z.ies:4: 0 lamps of 1000 lm give no lamp flux; read as absolute "
+                     "photometry"});
 }
 
 TEST(IntensityLimit, AFileAtTheLimitReadsWithAFiniteFlux) {
-  const Photometry p = load_photometry_text(ies("-1", "0 90 180", "0", "1e9 1e9 1e9", 3, 1), "max.ies");
+  const Photometry p =
+      load_photometry_text(ies("-1", "0 90 180", "0", "1e9 1e9 1e9", 3, 1), "max.ies");
   const DerivedPhotometry d = derive(p);
   EXPECT_NEAR(d.flux_lm, 4 * kPi * kMaxIntensityCd, 1e-9 * d.flux_lm);
   EXPECT_EQ(d.max_cd, kMaxIntensityCd);
@@ -125,7 +140,8 @@ TEST(IntensityLimit, AFileAtTheLimitReadsWithAFiniteFlux) {
 // The corpus stays quiet: of its 66 files, only these give a checking-tool warning, each for a
 // reason its MANIFEST row or the comments of validation.cpp give.
 TEST(CorpusWarnings, OnlyTheFilesThatDeserveOne) {
-  const std::filesystem::path dir = std::filesystem::path(LUXGRID_SOURCE_DIR) / "tests/data/photometry";
+  const std::filesystem::path dir =
+      std::filesystem::path(LUXGRID_SOURCE_DIR) / "tests/data/photometry";
   std::vector<std::string> got;
   for (const char* sub : {"ies", "ldt"})
     for (const auto& e : std::filesystem::directory_iterator(dir / sub)) {
@@ -136,10 +152,10 @@ TEST(CorpusWarnings, OnlyTheFilesThatDeserveOne) {
     }
   std::sort(got.begin(), got.end());
   EXPECT_EQ(got, (Warnings{
-                     "sample06_spot_coarse.ldt: : the stated ",         // LOR 100.1 % vs 102.5 %
-                     "synthetic_isym3_c90c270.ldt: cut off abruptly",   // 24.5 % at gamma 90
-                     "synthetic_isym3_c90c270.ldt: disagree at gamma",  // 2200 to 2866 cd
-                     "synthetic_multiple_lamp_sets.ldt: : the stated ", // LOR 100 % vs 90.5 %
+                     "sample06_spot_coarse.ldt: : the stated ",            // LOR 100.1 % vs 102.5 %
+                     "synthetic_isym3_c90c270.ldt: cut off abruptly",      // 24.5 % at gamma 90
+                     "synthetic_isym3_c90c270.ldt: disagree at gamma",     // 2200 to 2866 cd
+                     "synthetic_multiple_lamp_sets.ldt: : the stated ",    // LOR 100 % vs 90.5 %
                      "synthetic_tilt_include_lm02.ies: cut off abruptly",  // 10 % at gamma 90
                  }));
 }
