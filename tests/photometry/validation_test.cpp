@@ -29,7 +29,8 @@ std::string ldt(const std::string& dff, const std::string& lor, const std::strin
                 const std::string& cd_per_klm = "70") {
   // Lines 1-21: header, names, dimensions; 22-26: DFF, LOR, conversion, tilt, one lamp set.
   std::vector<std::string> l = {"luxgrid tests", "1", "1", "1", "0", "3", "90", "", "ratios"};
-  for (const char* x : {"", "", "", "100", "0", "50", "80", "0", "0", "0", "0", "0"}) l.push_back(x);
+  for (const char* x : {"", "", "", "100", "0", "50", "80", "0", "0", "0", "0", "0"})
+    l.push_back(x);
   for (const std::string& x : {dff, lor, std::string("1"), std::string("0"), std::string("1")})
     l.push_back(x);
   for (const std::string& x : {lamps, std::string("LED"), std::string("1000"), std::string("3000"),
@@ -49,26 +50,72 @@ std::vector<std::string> warnings_of(const std::string& text, const std::string&
 
 using Warnings = std::vector<std::string>;
 
-TEST(PoleWarning, NamesTheSpreadAndTheMean) {
-  EXPECT_EQ(
-      warnings_of(ies("-1", "0 45 90", "0 90 180", "100 50 0 110 50 0 105 50 0", 3, 3), "pole.ies"),
-      Warnings{"pole.ies: the C planes disagree at gamma 0 (100 to 110 cd, 10.0 %); the pole "
-               "is taken as their mean"});
-  // An upper pole too, when the table reaches gamma 180.
-  EXPECT_EQ(
-      warnings_of(ies("-1", "0 90 180", "0 90 180", "0 0 100 0 0 100 0 0 90", 3, 3), "up.ies"),
-      Warnings{"up.ies: the C planes disagree at gamma 180 (90 to 100 cd, 11.1 %); the pole "
-               "is taken as their mean"});
-  // A dark plane at the pole: no percentage of zero.
-  EXPECT_EQ(warnings_of(ies("-1", "0 45 90", "0 90 180", "0 50 0 4 50 0 0 50 0", 3, 3), "dark.ies"),
-            Warnings{"dark.ies: the C planes disagree at gamma 0 (0 to 4 cd); the pole is taken as "
-                     "their mean"});
-}
+// One synthetic type C file per case: its vertical and horizontal angles and values, and the
+// exact warnings it must give (none on the quiet side of a threshold).
+struct PlaneCase {
+  const char* name;
+  const char* v;
+  const char* h;
+  const char* values;
+  int nv, nh;
+  Warnings expected;
+};
 
-TEST(PoleWarning, RoundingSpreadsUnderTwoPercentStayQuiet) {
-  EXPECT_EQ(
-      warnings_of(ies("-1", "0 45 90", "0 90 180", "100 50 0 101.9 50 0 101 50 0", 3, 3), "ok.ies"),
-      Warnings{});
+// clang-format off: one case a row reads as a table
+const PlaneCase kPlaneCases[] = {
+    {"pole.ies",
+     "0 45 90",
+     "0 90 180",
+     "100 50 0 110 50 0 105 50 0",
+     3,
+     3,
+     {"pole.ies: the C planes disagree at gamma 0 (100 to 110 cd, 10.0 %); the pole is taken as "
+      "their mean"}},
+    // An upper pole too, when the table reaches gamma 180.
+    {"up.ies",
+     "0 90 180",
+     "0 90 180",
+     "0 0 100 0 0 100 0 0 90",
+     3,
+     3,
+     {"up.ies: the C planes disagree at gamma 180 (90 to 100 cd, 11.1 %); the pole is taken as "
+      "their mean"}},
+    // A dark plane at the pole: no percentage of zero.
+    {"dark.ies",
+     "0 45 90",
+     "0 90 180",
+     "0 50 0 4 50 0 0 50 0",
+     3,
+     3,
+     {"dark.ies: the C planes disagree at gamma 0 (0 to 4 cd); the pole is taken as their mean"}},
+    // Rounding spreads under 2 % of the larger value stay quiet.
+    {"round.ies", "0 45 90", "0 90 180", "100 50 0 101.9 50 0 101 50 0", 3, 3, {}},
+    {"down.ies",
+     "0 45 90",
+     "0",
+     "100 50 10",
+     3,
+     1,
+     {"down.ies: the table ends at gamma 90 with intensities up to 10 cd there (10.0 % of the "
+      "maximum); the light is cut off abruptly at the horizon"}},
+    {"uplight.ies",
+     "90 135 180",
+     "0",
+     "4 50 100",
+     3,
+     1,
+     {"uplight.ies: the table starts at gamma 90 with intensities up to 4 cd there (4.0 % of the "
+      "maximum); the light is cut off abruptly at the horizon"}},
+    // Stray light under 1 % of the maximum is what every goniometer sees at the horizon.
+    {"stray.ies", "0 45 90", "0", "100 50 0.9", 3, 1, {}},
+    // A table that goes on past 90 states no cut-off.
+    {"full.ies", "0 90 180", "0", "100 50 10", 3, 1, {}},
+};
+// clang-format on
+
+TEST(PlaneWarnings, PoleAndCutOffOnBothSidesOfTheirThresholds) {
+  for (const PlaneCase& c : kPlaneCases)
+    EXPECT_EQ(warnings_of(ies("-1", c.v, c.h, c.values, c.nv, c.nh), c.name), c.expected) << c.name;
 }
 
 TEST(PoleWarning, TheCorpusIsym3FileDisagreesByWhatItsTableSays) {
@@ -79,21 +126,6 @@ TEST(PoleWarning, TheCorpusIsym3FileDisagreesByWhatItsTableSays) {
                                     "(2200 to 2866 cd, 30.3 %); the pole is taken as their mean"),
             std::string::npos)
       << p.warnings.front();
-}
-
-TEST(CutOffWarning, NonZeroAtTheLastAngle90) {
-  EXPECT_EQ(
-      warnings_of(ies("-1", "0 45 90", "0", "100 50 10", 3, 1), "down.ies"),
-      Warnings{"down.ies: the table ends at gamma 90 with intensities up to 10 cd there (10.0 "
-               "% of the maximum); the light is cut off abruptly at the horizon"});
-  EXPECT_EQ(
-      warnings_of(ies("-1", "90 135 180", "0", "4 50 100", 3, 1), "up.ies"),
-      Warnings{"up.ies: the table starts at gamma 90 with intensities up to 4 cd there (4.0 % "
-               "of the maximum); the light is cut off abruptly at the horizon"});
-  // Stray light under 1 % of the maximum is what every goniometer sees at the horizon.
-  EXPECT_EQ(warnings_of(ies("-1", "0 45 90", "0", "100 50 0.9", 3, 1), "stray.ies"), Warnings{});
-  // A table that goes on past 90 states no cut-off.
-  EXPECT_EQ(warnings_of(ies("-1", "0 90 180", "0", "100 50 10", 3, 1), "full.ies"), Warnings{});
 }
 
 TEST(StatedRatioWarning, LorAndDffMoreThanTwoPointsFromTheIntegral) {
