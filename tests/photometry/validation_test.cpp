@@ -61,49 +61,25 @@ struct PlaneCase {
   Warnings expected;
 };
 
-// clang-format off: one case a row reads as a table
+// One case a row reads as a table:
+// clang-format off
 const PlaneCase kPlaneCases[] = {
-    {"pole.ies",
-     "0 45 90",
-     "0 90 180",
-     "100 50 0 110 50 0 105 50 0",
-     3,
-     3,
+    {"pole.ies", "0 45 90", "0 90 180", "100 50 0 110 50 0 105 50 0", 3, 3,
      {"pole.ies: the C planes disagree at gamma 0 (100 to 110 cd, 10.0 %); the pole is taken as "
       "their mean"}},
     // An upper pole too, when the table reaches gamma 180.
-    {"up.ies",
-     "0 90 180",
-     "0 90 180",
-     "0 0 100 0 0 100 0 0 90",
-     3,
-     3,
+    {"up.ies", "0 90 180", "0 90 180", "0 0 100 0 0 100 0 0 90", 3, 3,
      {"up.ies: the C planes disagree at gamma 180 (90 to 100 cd, 11.1 %); the pole is taken as "
       "their mean"}},
     // A dark plane at the pole: no percentage of zero.
-    {"dark.ies",
-     "0 45 90",
-     "0 90 180",
-     "0 50 0 4 50 0 0 50 0",
-     3,
-     3,
+    {"dark.ies", "0 45 90", "0 90 180", "0 50 0 4 50 0 0 50 0", 3, 3,
      {"dark.ies: the C planes disagree at gamma 0 (0 to 4 cd); the pole is taken as their mean"}},
     // Rounding spreads under 2 % of the larger value stay quiet.
     {"round.ies", "0 45 90", "0 90 180", "100 50 0 101.9 50 0 101 50 0", 3, 3, {}},
-    {"down.ies",
-     "0 45 90",
-     "0",
-     "100 50 10",
-     3,
-     1,
+    {"down.ies", "0 45 90", "0", "100 50 10", 3, 1,
      {"down.ies: the table ends at gamma 90 with intensities up to 10 cd there (10.0 % of the "
       "maximum); the light is cut off abruptly at the horizon"}},
-    {"uplight.ies",
-     "90 135 180",
-     "0",
-     "4 50 100",
-     3,
-     1,
+    {"uplight.ies", "90 135 180", "0", "4 50 100", 3, 1,
      {"uplight.ies: the table starts at gamma 90 with intensities up to 4 cd there (4.0 % of the "
       "maximum); the light is cut off abruptly at the horizon"}},
     // Stray light under 1 % of the maximum is what every goniometer sees at the horizon.
