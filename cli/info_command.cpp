@@ -146,7 +146,10 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
              const std::string& plot, const std::string& interpolation) {
   std::vector<At> at;
   for (const auto& s : at_args) at.push_back(parse_at(s));
-  Photometry p = load_photometry_file(file);
+  // A TILT file named by FILE must lie in FILE's folder or below it (docs/photometry.md).
+  LoadOptions options;
+  options.allowed_root = std::filesystem::absolute(file).parent_path();
+  Photometry p = load_photometry_file(file, options);
   if (interpolation == "bicubic" && p.table) {
     p.table = p.table->with_interpolation(Interpolation::bicubic);
     p.distribution = p.table;
@@ -168,6 +171,7 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
     j["flux_lm"] = d.flux_lm;
     j["downward_flux_lm"] = d.downward_flux_lm;
     j["lamp_flux_lm"] = optional_number(p.lamp_flux_lm);
+    j["flux_convention"] = p.flux_convention;
     j["lor"] = optional_number(d.lor);
     j["dff"] = d.dff;
     j["stated_lor"] = optional_number(p.stated_lor);
@@ -208,6 +212,7 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
                   l.flux_lm, l.power_w, l.count < 0 ? " (absolute photometry)" : "");
     if (p.lamp_flux_lm) std::printf("  lamp flux     %.1f lm (stated)\n", *p.lamp_flux_lm);
     else std::printf("  lamp flux     - (absolute photometry)\n");
+    if (!p.flux_convention.empty()) std::printf("  photometry    %s\n", p.flux_convention.c_str());
     std::printf("  flux          %.1f lm (integrated, %s)\n", d.flux_lm,
                 p.table ? to_string(p.table->interpolation()) : "-");
     if (d.lor) std::printf("  LOR           %.4f%s\n", *d.lor,

@@ -119,6 +119,13 @@ BeamAngles beam_angles(const IntensityDistribution& d, double c_deg) {
   return out;
 }
 
+FluxRatios flux_ratios(const Photometry& p, const FluxResult& flux) {
+  FluxRatios r;
+  r.dff = flux.total_lm > 0 ? flux.downward_lm / flux.total_lm : 0.0;
+  if (p.lamp_flux_lm && *p.lamp_flux_lm > 0) r.lor = flux.total_lm / *p.lamp_flux_lm;
+  return r;
+}
+
 DerivedPhotometry derive(const Photometry& p) {
   DerivedPhotometry r;
   if (p.table) {
@@ -150,8 +157,9 @@ DerivedPhotometry derive(const Photometry& p) {
       }
   }
   if (!p.distribution) return r;
-  r.dff = r.flux_lm > 0 ? r.downward_flux_lm / r.flux_lm : 0.0;
-  if (p.lamp_flux_lm && *p.lamp_flux_lm > 0) r.lor = r.flux_lm / *p.lamp_flux_lm;
+  const FluxRatios ratios = flux_ratios(p, {r.flux_lm, r.downward_flux_lm});
+  r.dff = ratios.dff;
+  r.lor = ratios.lor;
   const PhotometricAngles a = angles_of(r.max_direction);
   r.max_c_deg = a.c * kRadToDeg;
   r.max_gamma_deg = a.gamma * kRadToDeg;

@@ -35,6 +35,15 @@ struct FluxResult {
 };
 FluxResult integrate_flux(const TabularDistribution& table);
 
+// DFF = downward / total (0 for a dark table) and LOR = total / stated lamp flux (none for
+// absolute photometry): the one place these ratios are formed, for derive() and for the
+// stated-versus-integrated check (validation.h).
+struct FluxRatios {
+  double dff = 0.0;
+  std::optional<double> lor;
+};
+FluxRatios flux_ratios(const Photometry& p, const FluxResult& flux);
+
 // Beam (50 %) and field (10 %) angles in the vertical plane through C = c_deg and c_deg + 180,
 // measured from the plane's peak outwards on both sides, sampled every 0.05 deg of the
 // interpolant with linear interpolation of the crossing.

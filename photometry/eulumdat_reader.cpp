@@ -30,6 +30,7 @@
 #include "photometry/source_text.h"
 #include "photometry/symmetry.h"
 #include "photometry/tabular_distribution.h"
+#include "photometry/validation.h"
 #include "util/error.h"
 
 namespace luxgrid::photometry {
@@ -67,9 +68,7 @@ class LdtLines {
     double v;
     if (!try_number(n, v)) {
       const std::string_view t = trim(src_.line(n));
-      src_.fail(n, "expected a number for " + what + ", found " +
-                       (t.empty() ? std::string("an empty line")
-                                  : "'" + clean_text(t.substr(0, 40)) + "'"));
+      src_.fail(n, "expected a number for " + what + ", found " + describe_line(t));
     }
     return v;
   }
@@ -82,8 +81,7 @@ class LdtLines {
     const double v = number(n, what);
     if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi))
       src_.fail(n, "expected " + what + " to be a whole number from " + std::to_string(lo) +
-                       " to " + std::to_string(hi) + ", found '" + clean_text(trim(src_.line(n))) +
-                       "'");
+                       " to " + std::to_string(hi) + ", found " + describe_line(src_.line(n)));
     return static_cast<long>(v);
   }
 
@@ -188,10 +186,15 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
   const double lum_width = L.optional_number(14, "the luminaire width");
   const double lum_height = L.optional_number(15, "the luminaire height");
   const double area_length = L.optional_number(16, "the luminous area length");
+  check_opening_size(src, 16, "the luminous area length", area_length / 1000.0);
   const double area_width = L.optional_number(17, "the luminous area width");
+  check_opening_size(src, 17, "the luminous area width", area_width / 1000.0);
   double area_height = 0.0;
-  for (int n = 18; n <= 21; ++n)
-    area_height = std::max(area_height, L.optional_number(n, "a luminous area height"));
+  for (int n = 18; n <= 21; ++n) {
+    const double h = L.optional_number(n, "a luminous area height");
+    check_opening_size(src, n, "a luminous area height", h / 1000.0);
+    area_height = std::max(area_height, h);
+  }
   const double dff = L.number(22, "the downward flux fraction DFF");
   const double lor = L.number(23, "the light output ratio LORL");
   const double conv = L.number(24, "the conversion factor for luminous intensities");
@@ -205,6 +208,8 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
                                          -1000000, 1000000));
     set.type = L.text(base + 1);
     set.flux_lm = L.number(base + 2, "the total lamp flux of set " + std::to_string(s + 1));
+    check_lamp_flux(src, base + 2, "the total lamp flux of set " + std::to_string(s + 1),
+                    set.flux_lm);
     set.colour = L.text(base + 3);
     set.cri = L.text(base + 4);
     set.power_w = L.optional_number(base + 5, "the wattage of set " + std::to_string(s + 1));
@@ -291,6 +296,9 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
                      format_number(p.lamp_sets.empty() ? 0.0 : p.lamp_sets.front().flux_lm));
   const double flux1 = p.lamp_sets.front().flux_lm;
   const double factor = flux1 / 1000.0 * conv;
+  if (!(factor <= kMaxIntensityCd))
+    src.fail(24, "expected the lamp flux / 1000 x the conversion factor to be at most " +
+                     format_number(kMaxIntensityCd) + ", found " + format_number(factor));
   p.candela_multiplier = factor;
   const std::size_t total = planes.h_deg.size() * static_cast<std::size_t>(ng);
   if (in.left() < total)
@@ -305,6 +313,7 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
                              format_number(planes.v_deg[static_cast<std::size_t>(j)]);
       const double v = in.take(at);
       if (v < 0) src.fail(in.line(), "expected " + at + " to be >= 0, found " + format_number(v));
+      check_intensity(src, in.line(), at, v, factor);
       planes.cd.push_back(v * factor);
     }
   if (!in.done())
@@ -313,6 +322,7 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
 
   p.symmetry = sym;
   p.photometric_type = PhotometricType::C;
+  check_stored_planes(planes, name, p.warnings);
   std::vector<std::string> notes;
   auto table = std::make_shared<TabularDistribution>(expand_type_c(planes, sym, &notes));
   for (auto& n : notes) p.warnings.push_back(name + ": " + n);
@@ -323,7 +333,18 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
 
   p.stated_dff = dff / 100.0;
   p.stated_lor = lor / 100.0;
-  if (p.lamp_sets.front().count >= 0) p.lamp_flux_lm = flux1;
+  // EULUMDAT: a negative lamp count means absolute photometry (set 1's flux is then the
+  // luminaire's own, and the cd/klm values are scaled by it all the same).
+  const int count1 = p.lamp_sets.front().count;
+  if (count1 >= 0) {
+    p.lamp_flux_lm = flux1;
+    p.flux_convention = "relative photometry (EULUMDAT: " + std::to_string(count1) +
+                        (count1 == 1 ? " lamp, " : " lamps, ") + format_number(flux1) +
+                        " lm rated lamp flux)";
+  } else {
+    p.flux_convention = "absolute photometry (EULUMDAT lamp count " + std::to_string(count1) +
+                        " < 0; " + format_number(flux1) + " lm is the luminaire flux)";
+  }
   p.opening = eulumdat_opening(area_length / 1000.0, area_width / 1000.0, area_height / 1000.0);
   p.keywords["_ITYP"] = std::to_string(ityp);
   p.keywords["_ISYM"] = std::to_string(isym);

@@ -21,8 +21,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "photometry/opening.h"
 #include "photometry/readers.h"
@@ -30,6 +28,8 @@
 #include "photometry/symmetry.h"
 #include "photometry/tabular_distribution.h"
 #include "photometry/tilt.h"
+#include "photometry/tilt_file.h"
+#include "photometry/validation.h"
 #include "util/error.h"
 
 namespace luxgrid::photometry {
@@ -43,6 +43,8 @@ struct Version {
   std::string tag;  // as written, "" for 1986
   bool has_tag_line = false;
 };
+
+std::string_view first_word(std::string_view s) { return s.substr(0, s.find_first_of(" \t")); }
 
 Version detect_version(std::string_view first, std::vector<std::string>& warnings,
                        const std::string& name) {
@@ -60,16 +62,16 @@ Version detect_version(std::string_view first, std::vector<std::string>& warning
       v.year = 1991;
     } else if (upper.rfind("IESNA95", 0) == 0) {
       v.year = 1995;
-      warnings.push_back(name + ":1: non-standard version tag '" + clean_text(t) +
-                         "'; read as LM-63-1995");
+      warnings.push_back(name + ":1: non-standard version tag " + quote_word(first_word(t)) +
+                         "; read as LM-63-1995");
     } else {
       v.year = 1995;
-      warnings.push_back(name + ":1: unknown version tag '" + clean_text(t) +
-                         "'; read as LM-63-1995");
+      warnings.push_back(name + ":1: unknown version tag " + quote_word(first_word(t)) +
+                         "; read as LM-63-1995");
     }
     if (v.year != 1991 && v.year != 1995 && v.year != 2002 && v.year != 2019) {
-      warnings.push_back(name + ":1: unknown LM-63 year in '" + clean_text(t) +
-                         "'; read with the rules of the nearest version");
+      warnings.push_back(name + ":1: unknown LM-63 year in " + quote_word(first_word(t)) +
+                         "; read with the rules of the nearest version");
       v.year = v.year < 1991 ? 1991 : v.year < 1995 ? 1995 : v.year < 2002 ? 2002 : 2019;
     }
   }
@@ -155,28 +157,23 @@ TiltTable read_tilt_items(const SourceText& src, Numbers& in, std::string source
   t.source = std::move(source);
   t.lamp_to_luminaire_geometry =
       static_cast<int>(in.count("the TILT lamp-to-luminaire geometry (1, 2 or 3)", 1, 3));
-  const long n = in.count("the number of TILT angle/factor pairs", 1, 10000);
+  const long n = in.count("the number of TILT angle/factor pairs", 1, kMaxTiltPairs);
   t.angle_deg = read_angles(src, in, n, "TILT", -180.0, 180.0);
   for (long k = 0; k < n; ++k) {
     const Token& tok = in.take("TILT multiplying factor");
     const double f = parse_number(src, tok, "TILT multiplying factor " + std::to_string(k + 1));
-    if (f < 0) src.fail(tok.line, "expected a TILT multiplying factor >= 0, found " + format_number(f));
+    if (f < 0 || f > kMaxTiltFactor)
+      src.fail(tok.line, "expected a TILT multiplying factor from 0 to " +
+                             format_number(kMaxTiltFactor) + ", found " + format_number(f));
     t.factor.push_back(f);
   }
   return t;
 }
 
-std::string read_file_bytes(const std::filesystem::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
 }  // namespace
 
 Photometry read_ies(std::string_view bytes, const std::string& name,
-                    const std::filesystem::path& tilt_dir) {
+                    const std::filesystem::path& tilt_dir, const LoadOptions& options) {
   const SourceText src(bytes, name);
   Photometry p;
   p.source = name;
@@ -228,36 +225,49 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
     p.tilt = std::make_shared<TiltTable>(read_tilt_items(src, in, "INCLUDE"));
   } else if (tilt_upper != "NONE") {
     if (tilt_value.empty()) src.fail(tilt_line, "expected NONE, INCLUDE or a file name after TILT=");
-    const std::filesystem::path tilt_path = tilt_dir / tilt_value;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(tilt_path, ec))
-      src.fail(tilt_line, "TILT file '" + clean_text(tilt_value) + "' not found (looked for " +
-                              tilt_path.string() + ")");
-    const std::string tilt_bytes = read_file_bytes(tilt_path);
-    const SourceText tilt_src(tilt_bytes, tilt_path.string());
-    Numbers tin(tilt_src, tilt_src.tokens_from(1), 0);
-    p.tilt = std::make_shared<TiltTable>(read_tilt_items(tilt_src, tin, tilt_path.string()));
+    std::filesystem::path tilt_path;
+    const std::string tilt_bytes =
+        read_tilt_file(src, tilt_line, tilt_value, tilt_dir, options.allowed_root, tilt_path);
+    try {
+      const SourceText tilt_src(tilt_bytes, tilt_path.string());
+      Numbers tin(tilt_src, tilt_src.tokens_from(1), 0);
+      p.tilt = std::make_shared<TiltTable>(read_tilt_items(tilt_src, tin, tilt_path.string()));
+    } catch (const InputError& e) {
+      // Both places: the IES line that named the file, then the line inside it.
+      src.fail(tilt_line, "TILT file '" + tilt_value + "': " + e.what());
+    }
   }
 
   // Line 10.
   const long lamps = in.count("the number of lamps", 0, 1000000);
   const Token& lumens_tok = in.take("lumens per lamp");
   const double lumens = parse_number(src, lumens_tok, "lumens per lamp");
+  if (lumens > 0)
+    check_lamp_flux(
+        src, lumens_tok.line,
+        "the lamp flux (" + std::to_string(lamps) + " x " + format_number(lumens) + " lm)",
+        lumens * static_cast<double>(lamps));
   const Token& mult_tok = in.take("candela multiplier");
   const double multiplier = parse_number(src, mult_tok, "candela multiplier");
   if (!(multiplier > 0))
     src.fail(mult_tok.line, "expected a candela multiplier > 0, found " + format_number(multiplier));
   const long nv = in.count("the number of vertical angles", 1, kMaxAngles);
+  const int nv_line = in.last_line();
   const long nh = in.count("the number of horizontal angles", 1, kMaxAngles);
+  const int nh_line = in.last_line();
   if (nv * nh > kMaxValues)
     src.fail(in.last_line(), "expected at most " + std::to_string(kMaxValues) +
                                  " candela values, the header claims " + std::to_string(nv) +
                                  " x " + std::to_string(nh));
   const long type = in.count("the photometric type (1 = C, 2 = B, 3 = A)", 1, 3);
   const long units = in.count("the units type (1 = feet, 2 = metres)", 1, 2);
+  const double unit = units == 1 ? kFeetToMetres : 1.0;
   const double width = in.number("the luminous opening width");
+  check_opening_size(src, in.last_line(), "the luminous opening width", width * unit);
   const double length = in.number("the luminous opening length");
+  check_opening_size(src, in.last_line(), "the luminous opening length", length * unit);
   const double height = in.number("the luminous opening height");
+  check_opening_size(src, in.last_line(), "the luminous opening height", height * unit);
   // Line 11.
   const Token& bf_tok = in.take("ballast factor");
   const double ballast = parse_number(src, bf_tok, "ballast factor");
@@ -268,8 +278,18 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
   const double f2 = parse_number(src, f2_tok, "line 11 second value");
   const double watts = in.number("input watts");
 
-  if (nv < 2 && type == 1)
-    src.fail(in.last_line(), "expected at least 2 vertical angles, found " + std::to_string(nv));
+  // One vertical angle spans no solid angle: no flux, nothing to interpolate. Types A and B have
+  // no rotational symmetry either, so they need two horizontal angles as well (type C: one
+  // horizontal angle is a rotationally symmetric file).
+  const char* type_name = type == 1 ? "C" : type == 2 ? "B" : "A";
+  if (nv < 2)
+    src.fail(nv_line, "expected at least 2 vertical angles for a type " + std::string(type_name) +
+                          " file, found " + std::to_string(nv) +
+                          " (one angle describes no distribution)");
+  if (nh < 2 && type != 1)
+    src.fail(nh_line, "expected at least 2 horizontal angles for a type " + std::string(type_name) +
+                          " file, found " + std::to_string(nh) +
+                          " (types A and B have no rotational symmetry)");
 
   // Factors: multiplier x ballast factor, and the ballast-lamp factor where it is one.
   double factor = multiplier * ballast;
@@ -283,6 +303,14 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
   } else if (ver.year >= 2019) {
     p.keywords["_FILE_GENERATION_TYPE"] = format_number(f2);
   }
+  // Every factor at once, with the largest TILT factor the luminaire may be tilted into.
+  const double max_tilt =
+      p.tilt ? *std::max_element(p.tilt->factor.begin(), p.tilt->factor.end()) : 1.0;
+  if (!std::isfinite(factor) || !(factor <= kMaxIntensityCd))
+    src.fail(bf_tok.line, "expected the candela multiplier x ballast factor" +
+                              std::string(ver.year <= 1995 ? " x ballast-lamp factor" : "") +
+                              " to be at most " + format_number(kMaxIntensityCd) + ", found " +
+                              format_number(factor));
   p.candela_multiplier = factor;
 
   // Angles and values.
@@ -312,12 +340,13 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
                              ", vertical " + format_number(planes.v_deg[static_cast<std::size_t>(j)]);
       const double v = parse_number(src, t, at);
       if (v < 0) src.fail(t.line, "expected " + at + " to be >= 0, found " + format_number(v));
+      check_intensity(src, t.line, at, v, factor * std::max(max_tilt, 1.0));
       planes.cd.push_back(v * factor);
     }
   if (!in.done())
     src.fail(in.peek().line, "expected " + std::to_string(total) + " candela values (" +
                                  std::to_string(nv) + " vertical x " + std::to_string(nh) +
-                                 " horizontal), found more: '" + clean_text(in.peek().text) + "'");
+                                 " horizontal), found more: " + quote_word(in.peek().text));
 
   // Symmetry and expansion.
   SphericalGrid grid;
@@ -330,6 +359,7 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
                            " fit no symmetry (expected 0; 0..90; 0..180; 90..270; or 0 to "
                            "more than 180, up to 360)");
     p.symmetry = sym;
+    check_stored_planes(planes, name, p.warnings);
     std::vector<std::string> notes;
     grid = expand_type_c(planes, sym, &notes);
     for (auto& n : notes) p.warnings.push_back(src.where(h_line) + ": " + n);
@@ -355,13 +385,26 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
   set.power_w = watts;
   if (auto it = p.keywords.find("LAMP"); it != p.keywords.end()) set.type = it->second;
   p.lamp_sets.push_back(set);
-  if (lumens > 0) {
+  // LM-63: lumens per lamp = -1 means absolute photometry (the candela values are the
+  // luminaire's own); otherwise the values are for lamps of that rated flux.
+  if (lumens > 0 && lamps > 0) {
     p.lamp_flux_lm = lumens * static_cast<double>(lamps);
-  } else if (lumens != -1.0) {
-    p.warnings.push_back(src.where(lumens_tok.line) + ": lumens per lamp " + format_number(lumens) +
-                         " is neither -1 nor a rated flux; read as absolute photometry");
+    p.flux_convention = "relative photometry (IES: " + std::to_string(lamps) + " x " +
+                        format_number(lumens) + " lm rated lamp flux)";
+  } else {
+    p.flux_convention =
+        lumens == -1.0 ? "absolute photometry (IES lumens per lamp = -1)"
+        : lumens > 0   ? "absolute photometry (IES: 0 lamps, read as lumens per lamp = -1)"
+                       : "absolute photometry (IES lumens per lamp = " + format_number(lumens) +
+                           ", read as -1)";
+    if (lumens > 0)
+      p.warnings.push_back(src.where(lumens_tok.line) + ": 0 lamps of " + format_number(lumens) +
+                           " lm give no lamp flux; read as absolute photometry");
+    else if (lumens != -1.0)
+      p.warnings.push_back(src.where(lumens_tok.line) + ": lumens per lamp " +
+                           format_number(lumens) +
+                           " is neither -1 nor a rated flux; read as absolute photometry");
   }
-  const double unit = units == 1 ? kFeetToMetres : 1.0;
   std::string opening_warning;
   p.opening = ies_opening(width * unit, length * unit, height * unit, opening_warning);
   if (!opening_warning.empty()) p.warnings.push_back(name + ": " + opening_warning);

@@ -2,12 +2,12 @@
 // then by extension, and refuses what is not text at all.
 #include <algorithm>
 #include <cctype>
-#include <fstream>
-#include <sstream>
 
+#include "photometry/file_bytes.h"
 #include "photometry/photometry.h"
 #include "photometry/readers.h"
 #include "photometry/source_text.h"
+#include "photometry/validation.h"
 #include "util/error.h"
 
 namespace luxgrid::photometry {
@@ -54,42 +54,23 @@ bool looks_like_ies(std::string_view bytes) {
 
 }  // namespace
 
-Photometry load_photometry_text(std::string_view bytes, const std::string& name) {
+Photometry load_photometry_text(std::string_view bytes, const std::string& name,
+                                const LoadOptions& options) {
   if (bytes.empty()) throw InputError(name + ": file is empty");
   // Photometric files are text: NUL bytes or mostly control bytes mean something else.
-  const std::string_view head = bytes.substr(0, 4096);
-  std::size_t control = 0;
-  for (char ch : head) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c == 0) throw InputError(name + ": expected a text file (IES or EULUMDAT), found binary data");
-    if (c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f') ++control;
-  }
-  if (control * 10 > head.size())
-    throw InputError(name + ": expected a text file (IES or EULUMDAT), found binary data");
-
-  const std::string ext = lower_extension(name);
+  check_is_text(bytes, name, "IES or EULUMDAT");
   const std::filesystem::path dir = std::filesystem::path(name).parent_path();
-  if (looks_like_ies(bytes)) return read_ies(bytes, name, dir);
-  if (ext == ".ies") return read_ies(bytes, name, dir);
-  return read_eulumdat(bytes, name);
+  Photometry p = looks_like_ies(bytes) || lower_extension(name) == ".ies"
+                     ? read_ies(bytes, name, dir, options)
+                     : read_eulumdat(bytes, name);
+  check_stated_ratios(p);
+  return p;
 }
 
-Photometry load_photometry_file(const std::filesystem::path& file) {
+Photometry load_photometry_file(const std::filesystem::path& file, const LoadOptions& options) {
   const std::string name = file.string();
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) throw InputError(name + ": file not found");
-  if (!std::filesystem::is_regular_file(file, ec))
-    throw InputError(name + ": not a regular file");
-  const auto size = std::filesystem::file_size(file, ec);
-  if (!ec && size > kMaxPhotometryFileBytes)
-    throw InputError(name + ": file is " + std::to_string(size) +
-                     " bytes; photometric files are expected below " +
-                     std::to_string(kMaxPhotometryFileBytes) + " bytes");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(name + ": cannot open the file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return load_photometry_text(s.str(), name);
+  return load_photometry_text(read_bounded_file(file, name, kMaxPhotometryFileBytes, "photometric"),
+                              name, options);
 }
 
 }  // namespace luxgrid::photometry

@@ -70,15 +70,27 @@ struct Photometry {
   std::shared_ptr<const TiltTable> tilt;  // IES TILT=INCLUDE / TILT=<file>; null for NONE
   int counts_vertical = 0;    // IES: vertical angles; EULUMDAT: Ng
   int counts_horizontal = 0;  // IES: horizontal angles; EULUMDAT: stored C planes
+  // How the file states its flux, in words: "relative: 2 lamps x 1000 lm ..." or "absolute:
+  // IES lumens per lamp = -1" (validation.h; `luxgrid info` prints it).
+  std::string flux_convention;
   std::vector<std::string> warnings;  // legal but suspicious input, each naming the file
+};
+
+struct LoadOptions {
+  // Files a photometric file names (IES TILT=<file>) must lie in this folder or below it, after
+  // resolving "..", "." and symbolic links (std::filesystem::weakly_canonical); empty = anywhere.
+  // The project loader passes the project's folder; `luxgrid info FILE` the file's own folder.
+  std::filesystem::path allowed_root;
 };
 
 // Reads an IES LM-63 (.ies) or EULUMDAT (.ldt) file, chosen by content/extension.
 // Throws InputError naming the file and line on anything it cannot read.
-Photometry load_photometry_file(const std::filesystem::path& file);
+Photometry load_photometry_file(const std::filesystem::path& file, const LoadOptions& options = {});
 
-// The same from bytes already in memory (`name` is used in messages and to pick the reader by
-// extension when the content does not say). Used by the fuzzers and tests.
-Photometry load_photometry_text(std::string_view bytes, const std::string& name);
+// The same from bytes already in memory (`name` is used in messages, to pick the reader by
+// extension when the content does not say, and its folder to find a TILT file). Used by the
+// fuzzers and tests.
+Photometry load_photometry_text(std::string_view bytes, const std::string& name,
+                                const LoadOptions& options = {});
 
 }  // namespace luxgrid::photometry

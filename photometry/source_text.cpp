@@ -1,18 +1,17 @@
 #include "photometry/source_text.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 
+#include "photometry/file_bytes.h"
 #include "util/error.h"
 
 namespace luxgrid::photometry {
 
 SourceText::SourceText(std::string_view bytes, std::string name) : name_(std::move(name)) {
-  if (bytes.size() > kMaxPhotometryFileBytes)
-    throw InputError(name_ + ": file is " + std::to_string(bytes.size()) +
-                     " bytes; photometric files are expected below " +
-                     std::to_string(kMaxPhotometryFileBytes) + " bytes");
+  check_size(bytes.size(), name_, kMaxPhotometryFileBytes, "photometric");
   if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);  // UTF-8 BOM (erco_sample17)
   text_.assign(bytes);
   std::string_view all(text_);
@@ -80,15 +79,30 @@ std::string format_number(double v) {
   return ec == std::errc() ? std::string(buf, ptr) : std::string("?");
 }
 
-static std::string quoted(std::string_view s) {
-  std::string c = clean_text(s.substr(0, 40));
-  return "'" + c + (s.size() > 40 ? "...'" : "'");
+std::string quote_word(std::string_view word, std::size_t max_chars) {
+  const bool printable = std::all_of(word.begin(), word.end(), [](char ch) {
+    return static_cast<unsigned char>(ch) > 0x20 && static_cast<unsigned char>(ch) < 0x7F;
+  });
+  if (!printable)
+    return "a " + std::to_string(word.size()) + "-byte word that is not printable ASCII";
+  if (word.size() > max_chars) return "a " + std::to_string(word.size()) + "-character word";
+  return "'" + std::string(word) + "'";
+}
+
+std::string describe_line(std::string_view line) {
+  line = trim(line);
+  if (line.empty()) return "an empty line";
+  std::size_t words = 0;
+  for (std::size_t i = 0; i < line.size(); ++i)
+    if (line[i] != ' ' && line[i] != '\t' && (i == 0 || line[i - 1] == ' ' || line[i - 1] == '\t'))
+      ++words;
+  return words == 1 ? quote_word(line) : std::to_string(words) + " words";
 }
 
 double parse_number(const SourceText& src, const Token& t, const std::string& what) {
   double v = 0.0;
   if (!try_parse_number(t.text, v))
-    src.fail(t.line, "expected a number for " + what + ", found " + quoted(t.text));
+    src.fail(t.line, "expected a number for " + what + ", found " + quote_word(t.text));
   return v;
 }
 
@@ -96,11 +110,36 @@ long parse_count(const SourceText& src, const Token& t, const std::string& what,
                  long hi) {
   const double v = parse_number(src, t, what);
   if (v != std::floor(v))
-    src.fail(t.line, "expected a whole number for " + what + ", found " + quoted(t.text));
+    src.fail(t.line, "expected a whole number for " + what + ", found " + quote_word(t.text));
   if (v < static_cast<double>(lo) || v > static_cast<double>(hi))
     src.fail(t.line, "expected " + what + " between " + std::to_string(lo) + " and " +
-                         std::to_string(hi) + ", found " + quoted(t.text));
+                         std::to_string(hi) + ", found " + quote_word(t.text));
   return static_cast<long>(v);
+}
+
+void check_intensity(const SourceText& src, int line, const std::string& what, double value,
+                     double scale) {
+  const double cd = value * scale;
+  if (!(cd <= kMaxIntensityCd))
+    src.fail(line, "expected " + what + " to be at most " + format_number(kMaxIntensityCd) +
+                       " cd after the multipliers, found " + format_number(value) + " x " +
+                       format_number(scale) + " = " + format_number(cd) + " cd");
+}
+
+void check_lamp_flux(const SourceText& src, int line, const std::string& what, double flux_lm) {
+  if (!(flux_lm > 0) || (flux_lm >= kMinLampFluxLm && flux_lm <= kMaxLampFluxLm)) return;
+  char limit[32];
+  std::snprintf(limit, sizeof limit, "%.3g", kMaxLampFluxLm);
+  src.fail(line, "expected " + what + " to be from " + format_number(kMinLampFluxLm) + " to " +
+                     limit + " lm (4 pi x the intensity limit of " +
+                     format_number(kMaxIntensityCd) + " cd), found " + format_number(flux_lm) +
+                     " lm");
+}
+
+void check_opening_size(const SourceText& src, int line, const std::string& what, double metres) {
+  if (!(std::abs(metres) > kMaxOpeningM)) return;
+  src.fail(line, "expected " + what + " to be at most " + format_number(kMaxOpeningM) +
+                     " m, found " + format_number(metres) + " m");
 }
 
 std::string_view trim(std::string_view s) {

@@ -7,11 +7,9 @@
 #include <string_view>
 #include <vector>
 
-namespace luxgrid::photometry {
+#include "photometry/limits.h"
 
-// Files larger than this are not photometry; refusing them bounds memory for hostile input.
-// The largest real file seen (a 360 x 181 EULUMDAT) is 0.5 MB.
-inline constexpr std::size_t kMaxPhotometryFileBytes = 32u << 20;
+namespace luxgrid::photometry {
 
 struct Token {
   std::string_view text;
@@ -46,8 +44,27 @@ class SourceText {
 double parse_number(const SourceText& src, const Token& t, const std::string& what);
 // As parse_number, and the value must be a whole number within [lo, hi].
 long parse_count(const SourceText& src, const Token& t, const std::string& what, long lo, long hi);
+// Fails at `line` unless value x scale (a stored intensity times every multiplier) is at most
+// kMaxIntensityCd (limits.h); NaN and infinity fail too. `what` names the value.
+void check_intensity(const SourceText& src, int line, const std::string& what, double value,
+                     double scale);
+// Fails at `line` when a stated lamp flux is above 0 but outside [kMinLampFluxLm,
+// kMaxLampFluxLm] (limits.h); 0 and below are the callers' to judge (absolute photometry).
+void check_lamp_flux(const SourceText& src, int line, const std::string& what, double flux_lm);
+// Fails at `line` when |metres| (a luminous opening dimension, converted) exceeds
+// kMaxOpeningM (limits.h).
+void check_opening_size(const SourceText& src, int line, const std::string& what, double metres);
 // Parses without throwing; false if not a finite number.
 bool try_parse_number(std::string_view s, double& out);
+
+// What a message may show of a word of the file (limits.h, kMaxQuotedWordChars): the word
+// quoted ("'abc'") when it is printable ASCII and at most `max_chars` long, otherwise a
+// description that quotes nothing ("a 47-character word", "a 3-byte word that is not printable
+// ASCII"). Messages never quote more of a file than this.
+std::string quote_word(std::string_view word, std::size_t max_chars = kMaxQuotedWordChars);
+// The same for a whole line, which may hold several words: "an empty line", one word as
+// quote_word, or "4 words" (quoting none: a line of words is rarely a number gone wrong).
+std::string describe_line(std::string_view line);
 
 // Text from the file made printable and valid UTF-8 (bytes that are not UTF-8 are read as
 // Latin-1, which is what cp1252 degree signs and no-break spaces in the corpus are), trimmed.

@@ -85,6 +85,96 @@ n_lines = len(ldt().split("\n")) - 1
 cases["ldt_truncated.ldt"] = (cases["ldt_truncated.ldt"],
                               f"ldt_truncated.ldt:{n_lines - 2}: expected 5 intensities (1 C planes x 5 gamma), found 3 (the file ends)")
 
+
+# --- TILT files (ies/tilt_file.h): the helper TILT files end in .tilt, so bad_input_test (which
+# reads *.ies and *.ldt with this folder as the allowed root) only meets them through an IES file.
+def tilt(value):
+    return ies(head=IES_HEAD.replace("TILT=NONE", "TILT=" + value)).encode()
+
+def tilt_error(name, value, message):
+    return f"{name}:4: TILT file '{value}': {message}"
+
+helpers = {
+    "bad_geometry.tilt": b"7\n2\n0 90\n1 1\n",
+    "passwd_like.tilt": b"root:x:0:0:root:/root:/bin/bash\ndaemon:x:1:1:daemon:/usr/sbin:/usr/sbin/nologin\n",
+    "binary.tilt": bytes(range(256)),
+    "truncated.tilt": b"1\n3\n0 45 90\n1 0.9\n",
+    "empty.tilt": b"",
+}
+OUTSIDE = "lies outside the project folder; refused (a TILT file must be in the folder of the project or below it)"
+cases.update({
+    "tilt_outside_absolute.ies": (tilt("/etc/passwd"),
+                                  f"tilt_outside_absolute.ies:4: TILT file '/etc/passwd' {OUTSIDE}"),
+    "tilt_outside_climbs.ies": (tilt("../photometry/lamp.tilt"),
+                                f"tilt_outside_climbs.ies:4: TILT file '../photometry/lamp.tilt' {OUTSIDE}"),
+    "tilt_directory.ies": (tilt("."), tilt_error("tilt_directory.ies", ".", ".: not a regular file")),
+    "tilt_bad_geometry_file.ies": (tilt("bad_geometry.tilt"), tilt_error(
+        "tilt_bad_geometry_file.ies", "bad_geometry.tilt",
+        "bad_geometry.tilt:1: expected the TILT lamp-to-luminaire geometry (1, 2 or 3) between 1 and 3, found '7'")),
+    "tilt_passwd_file.ies": (tilt("passwd_like.tilt"), tilt_error(
+        "tilt_passwd_file.ies", "passwd_like.tilt",
+        "passwd_like.tilt:1: expected a number for the TILT lamp-to-luminaire geometry (1, 2 or 3), found a 31-character word")),
+    "tilt_binary_file.ies": (tilt("binary.tilt"), tilt_error(
+        "tilt_binary_file.ies", "binary.tilt", "binary.tilt: expected a text file (TILT data), found binary data")),
+    "tilt_truncated_file.ies": (tilt("truncated.tilt"), tilt_error(
+        "tilt_truncated_file.ies", "truncated.tilt", "truncated.tilt:4: expected TILT multiplying factor, found the end of the file")),
+    "tilt_empty_file.ies": (tilt("empty.tilt"), tilt_error("tilt_empty_file.ies", "empty.tilt", "empty.tilt: file is empty")),
+    "tilt_name_too_long.ies": (tilt("a" * 70 + ".tilt"),
+                               "tilt_name_too_long.ies:4: expected NONE, INCLUDE or a file name of at most 64 printable ASCII characters after TILT=, found a 75-character name"),
+    "tilt_factor_too_big.ies": (tilt("INCLUDE\n1\n2\n0 90\n1 1e6"),
+                                "tilt_factor_too_big.ies:8: expected a TILT multiplying factor from 0 to 10, found 1e+06"),
+    # 100 x 5e6 = 5e8 cd is within the limit, but tilted to where the TILT factor is 5 it is not.
+    "tilt_product_over_limit.ies": (ies(head=IES_HEAD.replace("TILT=NONE", "TILT=INCLUDE\n1\n2\n0 90\n5 5")
+                                        .replace("1 1000 1 5 3", "1 1000 5e6 5 3")).encode(),
+                                    "tilt_product_over_limit.ies:13: expected the candela value at horizontal 0, vertical 0 to be at most 1e+09 cd after the multipliers, found 100 x 2.5e+07 = 2.5e+09 cd"),
+})
+
+# --- No leaks: a message quotes at most one short printable word of a file (limits.h).
+cases.update({
+    "passwd_as_value.ies": (ies(values=["100 90 root:x:0:0:root:/root:/bin/bash 40 10\n"] + VALUES[1:]).encode(),
+                            "passwd_as_value.ies:9: expected a number for the candela value at horizontal 0, vertical 45, found a 31-character word"),
+    "non_ascii_value.ies": (ies(values=["100 90 7\xe90 40 10\n"] + VALUES[1:]).encode("latin-1"),
+                            "non_ascii_value.ies:9: expected a number for the candela value at horizontal 0, vertical 45, found a 3-byte word that is not printable ASCII"),
+    "ldt_passwd_line.ldt": (ldt(mc="root:x:0:0:root:/root:/bin/bash").encode(),
+                            "ldt_passwd_line.ldt:4: expected a number for the number of C planes Mc, found a 31-character word"),
+    "ldt_words_line.ldt": (ldt(mc="twelve C planes").encode(),
+                           "ldt_words_line.ldt:4: expected a number for the number of C planes Mc, found 3 words"),
+})
+
+# --- Numbers that stay numbers: intensities, multipliers and their products within the limits.
+cases.update({
+    "intensity_over_limit.ies": (ies(values=["100 90 2e9 40 10\n"] + VALUES[1:]).encode(),
+                                 "intensity_over_limit.ies:9: expected the candela value at horizontal 0, vertical 45 to be at most 1e+09 cd after the multipliers, found 2e+09 x 1 = 2e+09 cd"),
+    "multiplier_product_over_limit.ies": (ies(head=IES_HEAD.replace("1 1000 1 5 3", "1 1000 2e7 5 3")).encode(),
+                                          "multiplier_product_over_limit.ies:9: expected the candela value at horizontal 0, vertical 0 to be at most 1e+09 cd after the multipliers, found 100 x 2e+07 = 2e+09 cd"),
+    "multiplier_overflow.ies": (ies(head=IES_HEAD.replace("1 1000 1 5 3", "1 1000 1e300 5 3").replace("\n1 1 10\n", "\n1e10 1 10\n")).encode(),
+                                "multiplier_overflow.ies:6: expected the candela multiplier x ballast factor to be at most 1e+09, found inf"),
+    "lamp_flux_over_limit.ies": (ies(head=IES_HEAD.replace("1 1000 1 5 3", "2 1e300 1 5 3")).encode(),
+                                 "lamp_flux_over_limit.ies:5: expected the lamp flux (2 x 1e+300 lm) to be from 0.001 to 1.26e+10 lm (4 pi x the intensity limit of 1e+09 cd), found 2e+300 lm"),
+    "lamp_flux_tiny.ies": (ies(head=IES_HEAD.replace("1 1000 1 5 3", "1 1e-300 1 5 3")).encode(),
+                           "lamp_flux_tiny.ies:5: expected the lamp flux (1 x 1e-300 lm) to be from 0.001 to 1.26e+10 lm (4 pi x the intensity limit of 1e+09 cd), found 1e-300 lm"),
+    "single_vertical_type_c.ies": (ies(head=IES_HEAD.replace("1 1000 1 5 3", "1 1000 1 1 3"), v="0\n", values=["100\n"] * 3).encode(),
+                                   "single_vertical_type_c.ies:5: expected at least 2 vertical angles for a type C file, found 1 (one angle describes no distribution)"),
+    "single_vertical_type_b.ies": (ies(head=IES_HEAD.replace("1 1000 1 5 3 1 2", "1 1000 1 1 3 2 2"), v="0\n", values=["100\n"] * 3).encode(),
+                                   "single_vertical_type_b.ies:5: expected at least 2 vertical angles for a type B file, found 1 (one angle describes no distribution)"),
+    "single_horizontal_type_a.ies": (ies(head=IES_HEAD.replace("1 1000 1 5 3 1 2", "1 1000 1 5 1 3 2"), h="0\n", values=VALUES[:1]).encode(),
+                                     "single_horizontal_type_a.ies:5: expected at least 2 horizontal angles for a type A file, found 1 (types A and B have no rotational symmetry)"),
+    "opening_in_mm.ies": (ies(head=IES_HEAD.replace("0.1 0.1 0\n", "600 600 0\n")).encode(),
+                          "opening_in_mm.ies:5: expected the luminous opening width to be at most 100 m, found 600 m"),
+    "ldt_opening_too_large.ldt": (ldt().replace("\n100\n0\n50\n80\n0\n", "\n100\n0\n50\n2e6\n0\n").encode(),
+                                  "ldt_opening_too_large.ldt:16: expected the luminous area length to be at most 100 m, found 2000 m"),
+    "ldt_intensity_over_limit.ldt": (ldt(values=("100", "90", "2e9", "40", "10")).encode(),
+                                     "ldt_intensity_over_limit.ldt:54: expected the intensity at C0, gamma 45 to be at most 1e+09 cd after the multipliers, found 2e+09 x 1 = 2e+09 cd"),
+    "ldt_flux_over_limit.ldt": (ldt().replace("\nLED\n1000\n", "\nLED\n1e300\n").encode(),
+                                "ldt_flux_over_limit.ldt:29: expected the total lamp flux of set 1 to be from 0.001 to 1.26e+10 lm (4 pi x the intensity limit of 1e+09 cd), found 1e+300 lm"),
+    "ldt_conversion_over_limit.ldt": (ldt().replace("\n100\n90\n1\n0\n1\n", "\n100\n90\n1e12\n0\n1\n").encode(),
+                                      "ldt_conversion_over_limit.ldt:24: expected the lamp flux / 1000 x the conversion factor to be at most 1e+09, found 1e+12"),
+})
+
+for name, data in helpers.items():
+    with open(os.path.join(HERE, name), "wb") as f:
+        f.write(data)
+
 for name, (data, message) in cases.items():
     with open(os.path.join(HERE, name), "wb") as f:
         f.write(data)

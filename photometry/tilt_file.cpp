@@ -1,0 +1,64 @@
+#include "photometry/tilt_file.h"
+
+#include <algorithm>
+
+#include "photometry/file_bytes.h"
+#include "photometry/limits.h"
+#include "util/error.h"
+
+namespace luxgrid::photometry {
+
+bool lies_within(const std::filesystem::path& path, const std::filesystem::path& root) {
+  if (root.empty()) return true;
+  std::error_code ec;
+  const std::filesystem::path p =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(path), ec);
+  if (ec) return false;
+  const std::filesystem::path r =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(root), ec);
+  if (ec) return false;
+  // Component by component, so "/data/project2" is not inside "/data/project".
+  auto pi = p.begin();
+  for (auto ri = r.begin(); ri != r.end(); ++ri, ++pi) {
+    if (ri->empty()) continue;  // the trailing "" of a root written with a final slash
+    if (pi == p.end() || *pi != *ri) return false;
+  }
+  return true;
+}
+
+std::string read_tilt_file(const SourceText& ies, int tilt_line, std::string_view value,
+                           const std::filesystem::path& ies_dir,
+                           const std::filesystem::path& allowed_root,
+                           std::filesystem::path& path_out) {
+  // The name is quoted in every message below, so it must be safe to quote (limits.h).
+  const bool printable = std::all_of(value.begin(), value.end(), [](char ch) {
+    return static_cast<unsigned char>(ch) >= 0x20 && static_cast<unsigned char>(ch) < 0x7F;
+  });
+  if (!printable || value.size() > kMaxTiltNameChars)
+    ies.fail(tilt_line, "expected NONE, INCLUDE or a file name of at most " +
+                            std::to_string(kMaxTiltNameChars) +
+                            " printable ASCII characters after TILT=, found " +
+                            (printable ? "a " + std::to_string(value.size()) + "-character name"
+                                       : std::string("bytes that are not printable ASCII")));
+  const std::string quoted = "'" + std::string(value) + "'";
+  // operator/ keeps an absolute name as it is; a relative one is read beside the IES file.
+  const std::filesystem::path path = ies_dir / std::filesystem::path(value);
+  if (!lies_within(path, allowed_root))
+    ies.fail(tilt_line, "TILT file " + quoted +
+                            " lies outside the project folder; refused (a TILT file must be in "
+                            "the folder of the project or below it)");
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+    ies.fail(tilt_line, "TILT file " + quoted + " not found (looked for " + path.string() + ")");
+  path_out = path;
+  try {
+    std::string bytes = read_bounded_file(path, path.string(), kMaxTiltFileBytes, "TILT");
+    if (bytes.empty()) throw InputError(path.string() + ": file is empty");
+    check_is_text(bytes, path.string(), "TILT data");
+    return bytes;
+  } catch (const InputError& e) {
+    ies.fail(tilt_line, "TILT file " + quoted + ": " + e.what());
+  }
+}
+
+}  // namespace luxgrid::photometry
