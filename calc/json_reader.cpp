@@ -77,7 +77,19 @@ JsonValue JsonValue::item(size_t index) const {
 
 std::string JsonValue::as_string() const {
   if (!value_->is_string()) fail("expected a string, got " + json_type_name(*value_));
-  return value_->get<std::string>();
+  std::string text = value_->get<std::string>();
+  // Names become file names and messages, paths are opened: a control character (an escaped
+  // \u0000 ends a C path early, so "a.ies\u0000.txt" would open a.ies) is never meant.
+  for (size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c < 0x20 || c == 0x7F) {
+      char code[8];
+      std::snprintf(code, sizeof code, "U+%04X", c);
+      fail(std::string("expected text without control characters, found ") + code + " at byte " +
+           std::to_string(i + 1));
+    }
+  }
+  return text;
 }
 
 double JsonValue::as_number() const {

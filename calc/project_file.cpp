@@ -16,6 +16,7 @@
 #include "photometry/builtin.h"
 #include "photometry/tabular_distribution.h"
 #include "util/error.h"
+#include "util/paths.h"
 #include "util/output_names.h"
 
 namespace luxgrid::calc {
@@ -103,8 +104,7 @@ Settings parse_settings(const JsonValue& s) {
     }
   }
   if (auto m = s.find("maintenance_factor")) {
-    out.maintenance_factor = m->as_number_in(0.0, 1.0);
-    if (out.maintenance_factor == 0.0) m->fail("expected a number in (0, 1], got 0");
+    out.maintenance_factor = m->as_number_in(kMinMaintenanceFactor, 1.0);
   }
   if (auto a = s.find("allow_files_outside_project")) out.allow_files_outside_project = a->as_bool();
   return out;
@@ -140,14 +140,16 @@ struct FilePolicy {
   bool allow_outside = false;
 };
 
-// True when `path` (after resolving symbolic links and "..") lies inside the folder `root`.
-bool inside_folder(const std::filesystem::path& root, const std::filesystem::path& path) {
-  std::error_code ec1, ec2;
-  const auto r = std::filesystem::weakly_canonical(root, ec1);
-  const auto p = std::filesystem::weakly_canonical(path, ec2);
-  if (ec1 || ec2) return false;
-  const auto rel = p.lexically_relative(r);
-  return !rel.empty() && *rel.begin() != "..";
+// Geometry checks throw InputError("room \"L\": ..."), the photometry readers
+// InputError("panel.ies:14: ..."); re-throw them at the JSON value they concern, so the message
+// names both the place in the project and the object or file.
+template <class F>
+auto at_place(const JsonValue& where, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    where.fail(e.what());
+  }
 }
 
 photometry::Photometry load_file_entry(const JsonValue& where, const std::string& relative,
@@ -155,7 +157,7 @@ photometry::Photometry load_file_entry(const JsonValue& where, const std::string
   const std::filesystem::path path = policy.base_dir / relative;
   const std::filesystem::path root = policy.base_dir.empty() ? "." : policy.base_dir;
   // Checked before looking at the file, so a refused path tells nothing about what exists there.
-  if (!policy.allow_outside && !inside_folder(root, path)) {
+  if (!policy.allow_outside && !lies_within(path, root)) {
     where.fail("the photometry file " + relative +
                " lies outside the project folder; to allow it, set \"settings\": "
                "{\"allow_files_outside_project\": true}");
@@ -164,11 +166,11 @@ photometry::Photometry load_file_entry(const JsonValue& where, const std::string
   if (!std::filesystem::is_regular_file(path, ec)) {
     where.fail("photometry file not found: " + path.string());
   }
-  // MERGE (photometry LoadOptions, h12 photometry branch): TILT=<file> must obey the same rule.
-  // Pass the root here once photometry::LoadOptions exists:
-  //   photometry::load_photometry_file(path, {.allowed_root = policy.allow_outside
-  //                                                            ? std::filesystem::path{} : root});
-  auto p = photometry::load_photometry_file(path);
+  // TILT=<file> obeys the same rule, inside the photometry reader.
+  photometry::LoadOptions options;
+  if (!policy.allow_outside) options.allowed_root = root;
+  // The reader's message names the photometric file and line; put the project's place first.
+  auto p = at_place(where, [&] { return photometry::load_photometry_file(path, options); });
   p.source = relative;
   return p;
 }
@@ -190,13 +192,17 @@ double peak_intensity_cd(const photometry::Photometry& p) {
   return peak;
 }
 
-// The scaled peak must stay finite and below kMaxIntensity_cd (util/limits.h).
+// The scaled peak must stay finite, below kMaxIntensity_cd (util/limits.h) and, for a file that
+// emits light, above kMinScaledIntensity_cd.
 void check_peak(const JsonValue& where, double peak_cd, double factor) {
   const double scaled = peak_cd * factor;
+  const std::string would = "the peak intensity would be " + number_text(scaled) + " cd (" +
+                            number_text(peak_cd) + " cd x " + number_text(factor) + "), ";
   if (!(scaled <= kMaxIntensity_cd)) {
-    where.fail("the peak intensity would be " + number_text(scaled) + " cd (" + number_text(peak_cd) +
-               " cd x " + number_text(factor) + "), more than the limit of " +
-               number_text(kMaxIntensity_cd) + " cd");
+    where.fail(would + "more than the limit of " + number_text(kMaxIntensity_cd) + " cd");
+  }
+  if (peak_cd > 0.0 && scaled < kMinScaledIntensity_cd) {
+    where.fail(would + "less than the limit of " + number_text(kMinScaledIntensity_cd) + " cd");
   }
 }
 
@@ -263,16 +269,6 @@ photometry::LuminousOpening parse_emitter(const JsonValue& e) {
   return o;
 }
 
-// Geometry checks throw InputError("room \"L\": ..."); re-throw them at the JSON value they
-// concern, so the message names both the place in the file and the object.
-template <class F>
-auto at_place(const JsonValue& where, F&& f) -> decltype(f()) {
-  try {
-    return f();
-  } catch (const InputError& e) {
-    where.fail(e.what());
-  }
-}
 
 geometry::Obstacle parse_obstacle(const JsonValue& o, size_t index, const Room& room,
                                   std::vector<std::string>& warnings) {
@@ -620,6 +616,7 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
 // One surface entry gives one grid, or several for room_surfaces ("<name> floor", ...).
 // A surface's name becomes its output file names; kMaxSurfaceNameLength keeps them short enough.
 void check_name_length(const JsonValue& where, const std::string& name) {
+  if (name.empty()) where.fail("expected a surface name, got an empty one (it names the surface's output files)");
   if (name.size() > kMaxSurfaceNameLength) {
     where.fail("the surface name is " + std::to_string(name.size()) +
                " characters long, more than the limit of " + std::to_string(kMaxSurfaceNameLength) +

@@ -62,4 +62,14 @@ inline constexpr double kMaxEmitterSize_m = 1000.0;
 // geometry tests lose their meaning and products of lengths approach overflow.
 inline constexpr double kMaxCoordinate_m = 1e5;
 
+// The dimmest peak intensity a multiplier or flux_lm may scale a file to, cd: an indicator LED
+// gives about 1e-3 cd. Below, the values reach the subnormal range of a double (1e-308), where
+// every product is slow and loses its digits, and the results round to 0 lx.
+inline constexpr double kMinScaledIntensity_cd = 1e-6;
+
+// The smallest maintenance factor, EN 12464-1 section 4.10: real plans use 0.5 to 0.9 (0.4 in
+// very dirty spaces); a factor below 0.1 would mean losing nine tenths of the light before
+// maintenance, a typo (0.08 for 0.8) rather than a plan.
+inline constexpr double kMinMaintenanceFactor = 0.1;
+
 }  // namespace luxgrid::calc

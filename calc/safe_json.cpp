@@ -116,8 +116,13 @@ class CheckedDomBuilder {
       fail(byte, " " + pointer_of_next_value() + ": the number " + number +
                      " is out of range (a number must fit a double, |x| < 1.8e308)");
     }
+    // nlohmann ends with "; last read: '<bytes>'": those bytes are not shown (they may be any
+    // file's), only what was wrong.
     const auto syntax = what.find("syntax error");
-    fail(byte, ": malformed JSON: " + (syntax != std::string::npos ? what.substr(syntax) : what));
+    std::string message = syntax != std::string::npos ? what.substr(syntax) : what;
+    const auto last_read = message.find("; last read:");
+    if (last_read != std::string::npos) message.erase(last_read);
+    fail(byte, ": malformed JSON: " + message);
   }
 
  private:
@@ -175,9 +180,26 @@ class CheckedDomBuilder {
   std::vector<Frame> frames_;
 };
 
+// JSON is UTF-8 text (RFC 8259 section 8.1): say so for a UTF-16 or UTF-32 file (what Windows
+// editors save as "Unicode") and for binary data, instead of a syntax error at 1:1.
+void check_is_utf8_text(std::string_view text, const std::string& label) {
+  const auto starts = [&](std::string_view bom) { return text.substr(0, bom.size()) == bom; };
+  if (starts("\xFF\xFE") || starts("\xFE\xFF") || starts(std::string_view("\0\0\xFE\xFF", 4)))
+    throw InputError(label + ": the file is UTF-16 or UTF-32 text; save it as UTF-8");
+  // NUL and the other C0 controls but tab, LF and CR never occur in JSON text (RFC 8259
+  // section 7: inside strings they must be escaped).
+  const std::string_view head = text.substr(0, 4096);
+  for (char ch : head) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r')
+      throw InputError(label + ": expected a JSON text file, found binary data");
+  }
+}
+
 }  // namespace
 
 nlohmann::json parse_json_text(std::string_view text, const std::string& label) {
+  check_is_utf8_text(text, label);
   nlohmann::json doc;
   const char* read = text.data();
   CheckedDomBuilder builder(doc, text, label, &read);

@@ -8,6 +8,7 @@
 #include "cli/progress.h"
 #include "report/output_folder.h"
 #include "report/write_outputs.h"
+#include "util/error.h"
 
 namespace luxgrid::cli {
 
@@ -48,7 +49,13 @@ RunOutcome run_project(const std::filesystem::path& project, const std::filesyst
   // Everything that can reject the input has run: only now does an output folder appear.
   report::OutputFolder folder(out_dir, input_files(scene));
   RunOutcome outcome;
-  outcome.results = calc::run_scene(scene, options.show_progress ? make_progress("calculating") : calc::Progress{});
+  try {
+    outcome.results = calc::run_scene(scene, options.show_progress ? make_progress("calculating") : calc::Progress{});
+  } catch (const InputError& e) {
+    // Found only while calculating (a room whose faces exceed the patch budget): name the file.
+    end_progress();
+    throw InputError(project.filename().string() + ": " + e.what());
+  }
   end_progress();
   outcome.results.timing_s.insert(outcome.results.timing_s.begin(), {"load", load_s});
   outcome.checks = report::check_requirements(outcome.results, loaded.requirements);

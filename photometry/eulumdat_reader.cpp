@@ -296,9 +296,9 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
                      format_number(p.lamp_sets.empty() ? 0.0 : p.lamp_sets.front().flux_lm));
   const double flux1 = p.lamp_sets.front().flux_lm;
   const double factor = flux1 / 1000.0 * conv;
-  if (!(factor <= kMaxIntensityCd))
+  if (!(factor <= kMaxIntensity_cd))
     src.fail(24, "expected the lamp flux / 1000 x the conversion factor to be at most " +
-                     format_number(kMaxIntensityCd) + ", found " + format_number(factor));
+                     format_number(kMaxIntensity_cd) + ", found " + format_number(factor));
   p.candela_multiplier = factor;
   const std::size_t total = planes.h_deg.size() * static_cast<std::size_t>(ng);
   if (in.left() < total)

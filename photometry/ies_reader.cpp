@@ -306,10 +306,10 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
   // Every factor at once, with the largest TILT factor the luminaire may be tilted into.
   const double max_tilt =
       p.tilt ? *std::max_element(p.tilt->factor.begin(), p.tilt->factor.end()) : 1.0;
-  if (!std::isfinite(factor) || !(factor <= kMaxIntensityCd))
+  if (!std::isfinite(factor) || !(factor <= kMaxIntensity_cd))
     src.fail(bf_tok.line, "expected the candela multiplier x ballast factor" +
                               std::string(ver.year <= 1995 ? " x ballast-lamp factor" : "") +
-                              " to be at most " + format_number(kMaxIntensityCd) + ", found " +
+                              " to be at most " + format_number(kMaxIntensity_cd) + ", found " +
                               format_number(factor));
   p.candela_multiplier = factor;
 

@@ -5,6 +5,7 @@
 // distribution that was read always answers finite intensities and a finite flux.
 #include <cstddef>
 
+#include "util/limits.h"
 #include "util/robust_math.h"
 
 namespace luxgrid::photometry {
@@ -25,21 +26,16 @@ inline constexpr long kMaxValues = 10000000;
 inline constexpr long kMaxTiltPairs = 10000;
 inline constexpr std::size_t kMaxTiltFileBytes = 1u << 20;
 
-// The brightest luminaires built are searchlights of about 1e9 cd (the 1.5 m carbon-arc and
-// xenon searchlights; lighthouse beams stay near 1e7 cd). A luminaire file claiming more,
-// after every multiplier, is a typo in a multiplier or unit, or hostile: refused, so that the
-// products luxgrid forms later (intensity x TILT factor x 4 pi, illuminance sums over many
-// luminaires) stay far from overflow.
-inline constexpr double kMaxIntensityCd = 1e9;
+// kMaxIntensity_cd, the brightest intensity accepted after every multiplier: util/limits.h.
 
 // A TILT factor scales the lamp's output with its tilt; real tables stay within 0.5..1.1 (the
 // lamp's output at tilt 0 is the reference). A factor above 10 is not a tilt correction.
 inline constexpr double kMaxTiltFactor = 10.0;
 
 // The flux of an isotropic source at the intensity limit, 4 pi x 1e9 cd: a stated lamp flux
-// beyond it cannot belong to a luminaire within kMaxIntensityCd (relative photometry scales
+// beyond it cannot belong to a luminaire within kMaxIntensity_cd (relative photometry scales
 // intensities by it), so it is refused too.
-inline constexpr double kMaxLampFluxLm = 4.0 * kPi * kMaxIntensityCd;
+inline constexpr double kMaxLampFluxLm = 4.0 * kPi * kMaxIntensity_cd;
 // The dimmest lamps photometered (indicator LEDs) give about 0.01 lm. A rated flux below 1 mlm
 // is a typo, and it would blow the LOR (integrated flux / lamp flux) up towards infinity.
 inline constexpr double kMinLampFluxLm = 1e-3;

@@ -120,8 +120,8 @@ long parse_count(const SourceText& src, const Token& t, const std::string& what,
 void check_intensity(const SourceText& src, int line, const std::string& what, double value,
                      double scale) {
   const double cd = value * scale;
-  if (!(cd <= kMaxIntensityCd))
-    src.fail(line, "expected " + what + " to be at most " + format_number(kMaxIntensityCd) +
+  if (!(cd <= kMaxIntensity_cd))
+    src.fail(line, "expected " + what + " to be at most " + format_number(kMaxIntensity_cd) +
                        " cd after the multipliers, found " + format_number(value) + " x " +
                        format_number(scale) + " = " + format_number(cd) + " cd");
 }
@@ -132,7 +132,7 @@ void check_lamp_flux(const SourceText& src, int line, const std::string& what, d
   std::snprintf(limit, sizeof limit, "%.3g", kMaxLampFluxLm);
   src.fail(line, "expected " + what + " to be from " + format_number(kMinLampFluxLm) + " to " +
                      limit + " lm (4 pi x the intensity limit of " +
-                     format_number(kMaxIntensityCd) + " cd), found " + format_number(flux_lm) +
+                     format_number(kMaxIntensity_cd) + " cd), found " + format_number(flux_lm) +
                      " lm");
 }
 

@@ -45,7 +45,7 @@ double parse_number(const SourceText& src, const Token& t, const std::string& wh
 // As parse_number, and the value must be a whole number within [lo, hi].
 long parse_count(const SourceText& src, const Token& t, const std::string& what, long lo, long hi);
 // Fails at `line` unless value x scale (a stored intensity times every multiplier) is at most
-// kMaxIntensityCd (limits.h); NaN and infinity fail too. `what` names the value.
+// kMaxIntensity_cd (limits.h); NaN and infinity fail too. `what` names the value.
 void check_intensity(const SourceText& src, int line, const std::string& what, double value,
                      double scale);
 // Fails at `line` when a stated lamp flux is above 0 but outside [kMinLampFluxLm,

@@ -8,23 +8,6 @@
 
 namespace luxgrid::photometry {
 
-bool lies_within(const std::filesystem::path& path, const std::filesystem::path& root) {
-  if (root.empty()) return true;
-  std::error_code ec;
-  const std::filesystem::path p =
-      std::filesystem::weakly_canonical(std::filesystem::absolute(path), ec);
-  if (ec) return false;
-  const std::filesystem::path r =
-      std::filesystem::weakly_canonical(std::filesystem::absolute(root), ec);
-  if (ec) return false;
-  // Component by component, so "/data/project2" is not inside "/data/project".
-  auto pi = p.begin();
-  for (auto ri = r.begin(); ri != r.end(); ++ri, ++pi) {
-    if (ri->empty()) continue;  // the trailing "" of a root written with a final slash
-    if (pi == p.end() || *pi != *ri) return false;
-  }
-  return true;
-}
 
 std::string read_tilt_file(const SourceText& ies, int tilt_line, std::string_view value,
                            const std::filesystem::path& ies_dir,

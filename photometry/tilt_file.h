@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "photometry/source_text.h"
+#include "util/paths.h"
 
 namespace luxgrid::photometry {
 
@@ -22,9 +23,5 @@ std::string read_tilt_file(const SourceText& ies, int tilt_line, std::string_vie
                            const std::filesystem::path& ies_dir,
                            const std::filesystem::path& allowed_root,
                            std::filesystem::path& path_out);
-
-// True when `path` lies in `root` or below it, both taken through weakly_canonical (so ".." and
-// symbolic links cannot climb out). An empty root allows everything.
-bool lies_within(const std::filesystem::path& path, const std::filesystem::path& root);
 
 }  // namespace luxgrid::photometry

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "util/error.h"
+#include "util/paths.h"
 
 namespace luxgrid::report {
 
@@ -30,15 +31,6 @@ fs::path normalised(const fs::path& target) {
   fs::path p = fs::absolute(target).lexically_normal();
   if (p.filename().empty()) p = p.parent_path();  // a trailing separator
   return p;
-}
-
-// Whether `inner` is `outer` or lies inside it, comparing resolved paths component by component.
-bool is_within(const fs::path& inner, const fs::path& outer) {
-  auto i = inner.begin(), o = outer.begin();
-  for (; o != outer.end(); ++o, ++i) {
-    if (i == inner.end() || *i != *o) return false;
-  }
-  return true;
 }
 
 std::set<std::string> marker_entries(const fs::path& marker) {
@@ -71,10 +63,8 @@ void write_marker(const fs::path& folder, const std::string& header) {
 // Throws InputError unless `target` may be replaced by a new output folder.
 void check_replaceable(const fs::path& target, const std::vector<fs::path>& inputs) {
   std::error_code ec;
-  const fs::path resolved = fs::weakly_canonical(target, ec);
   for (const auto& input : inputs) {
-    const fs::path in = fs::weakly_canonical(fs::absolute(input), ec);
-    if (!ec && is_within(in, resolved)) {
+    if (lies_within(input, target)) {
       throw InputError(target.string() + ": the output folder would replace " + input.string() +
                        ", an input of this run; choose another output folder (-o)");
     }

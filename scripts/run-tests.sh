@@ -1,9 +1,14 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs the whole test suite: every GoogleTest suite and the
-# validation cases (ctest), then the fuzzers for a short fixed time when clang is there.
+# validation cases (ctest), then the sanitized job (fuzz/run.sh: the readers' and the loader's
+# tests under ASan + UBSan, and each fuzzer for a short fixed time) when clang is there.
+# Every part runs even when an earlier one failed; the exit status is non-zero if any failed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 LUXGRID_EXTRA_PACKAGES="clang ${LUXGRID_EXTRA_PACKAGES:-}" bash scripts/install-deps.sh
 bash scripts/build.sh
-ctest --test-dir build --output-on-failure -j"$(nproc)"
-if [ -x fuzz/run.sh ] || [ -f fuzz/run.sh ]; then bash fuzz/run.sh; fi
+status=0
+ctest --test-dir build --output-on-failure -j"$(nproc)" || status=1
+bash fuzz/run.sh || status=1
+if [ "$status" -ne 0 ]; then echo "run-tests.sh: some tests failed (see above)" >&2; fi
+exit "$status"

@@ -140,6 +140,7 @@ PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, double size,
     o.max_patches_per_room = kMaxPatchesPerRoom;
   }
   size = size_within_limits(scene, o, size, notes);
+  size_t previous_worst = 0;
   for (int attempt = 0;; ++attempt) {
     PatchMesh mesh = build_patch_mesh(scene, size);
     size_t worst = 0;
@@ -150,6 +151,17 @@ PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, double size,
     }
     const size_t total = mesh.patches.size();
     if (worst <= o.max_patches_per_room && total <= kMaxTotalPatches) return mesh;
+    // Every face is at least one patch: once larger patches no longer lower the count, the
+    // room's faces alone exceed the budget (thousands of small obstacles).
+    if (attempt > 0 && worst > o.max_patches_per_room && worst >= previous_worst) {
+      const Room& room = scene.rooms[worst_room];
+      throw InputError("room \"" + room.name + "\": its walls and " + std::to_string(room.obstacles.size()) +
+                       " obstacles have " + std::to_string(worst) +
+                       " faces, each at least one patch, more than the budget of " +
+                       std::to_string(o.max_patches_per_room) +
+                       " patches per room; use fewer obstacles, or \"indirect\": \"off\"");
+    }
+    previous_worst = worst;
     if (worst <= o.max_patches_per_room) {
       // Obstacles and clipped boundary cells beyond the estimate of size_within_limits.
       if (o.patch_size_m > 0.0 || attempt > 20)

@@ -441,7 +441,7 @@ TEST(ProjectFile, DuplicateLuminairesKeyIsAnError) {
 
 // A small absolute IES file: peak 1000 cd at nadir, 3 vertical angles, one C plane.
 std::string small_ies(const std::string& version_tag = "IESNA:LM-63-2002") {
-  return version_tag + "\nTILT=NONE\n1 -1 1 3 1 1 2 0 0 0\n1 1 100\n0 45 90\n0\n1000 800 100\n";
+  return version_tag + "\nTILT=NONE\n1 -1 1 3 1 1 2 0 0 0\n1 1 100\n0 45 90\n0\n1000 800 0\n";
 }
 
 nlohmann::json with_file_photometry(const nlohmann::json& entry) {

@@ -220,17 +220,18 @@ TEST(EmitterExtent, LShapedRoomsAndObstaclesCutTheOpening) {
     EXPECT_FALSE(c.position.x < 2.0 && c.position.y < 2.0) << c.position.x << " " << c.position.y;
 }
 
-// The 1e9 m emitter of the issue: its 4 x 4 m part inside (1.6e-17 of it) is real light, not
-// rounding: pi I0 x 1.6e-17 enters, and lands on the patches.
-TEST(EmitterExtent, AGigametreEmitterLetsInItsPartInside) {
-  const Scene scene = extent_scene("rectangle", 1e9);
+// The largest emitter a project may give (1000 m, calc/project_file's limit; the issue's 1e9 m
+// one is refused at load): its 4 x 4 m part inside (1.6e-5 of it) is real light: pi I0 x 1.6e-5
+// enters, and lands on the patches.
+TEST(EmitterExtent, AKilometreEmitterLetsInItsPartInside) {
+  const Scene scene = extent_scene("rectangle", 1000.0);
   const Balance b = first_bounce_balance(scene);
-  const double entering = b.luminaire_lm * 16.0 / 1e18;
+  const double entering = b.luminaire_lm * 16.0 / 1e6;
   EXPECT_NEAR(b.emitted_lm / entering, 1.0, 1e-5);
   EXPECT_NEAR(b.received_lm / b.emitted_lm, 1.0, 5e-4);
-  // The same cells as the 100 m emitter's, at 1e-14 of its intensity.
+  // The same cells as the 100 m emitter's, at 1e-2 of its intensity per area.
   const Balance hundred = first_bounce_balance(extent_scene("rectangle", 100.0));
-  EXPECT_NEAR(b.floor_lm / (hundred.floor_lm * 1e-14), 1.0, 1e-5);
+  EXPECT_NEAR(b.floor_lm / (hundred.floor_lm * 1e-2), 1.0, 1e-5);
 }
 
 TEST(EmitterExtent, OrdinaryOpeningsStayOnePoint) {

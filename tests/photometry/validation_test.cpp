@@ -141,8 +141,8 @@ TEST(IntensityLimit, AFileAtTheLimitReadsWithAFiniteFlux) {
   const Photometry p =
       load_photometry_text(ies("-1", "0 90 180", "0", "1e9 1e9 1e9", 3, 1), "max.ies");
   const DerivedPhotometry d = derive(p);
-  EXPECT_NEAR(d.flux_lm, 4 * kPi * kMaxIntensityCd, 1e-9 * d.flux_lm);
-  EXPECT_EQ(d.max_cd, kMaxIntensityCd);
+  EXPECT_NEAR(d.flux_lm, 4 * kPi * kMaxIntensity_cd, 1e-9 * d.flux_lm);
+  EXPECT_EQ(d.max_cd, kMaxIntensity_cd);
 }
 
 // The corpus stays quiet: of its 66 files, only these give a checking-tool warning, each for a
