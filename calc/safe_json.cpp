@@ -208,18 +208,18 @@ nlohmann::json parse_json_text(std::string_view text, const std::string& label) 
   return doc;
 }
 
-nlohmann::json read_json_file(const std::filesystem::path& file) {
+nlohmann::json read_json_file(const std::filesystem::path& file, std::uintmax_t max_bytes,
+                              const std::string& kind) {
   std::error_code ec;
   const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
-  if (ec) throw InputError(file.string() + ": cannot open the project file");
-  if (bytes > kMaxProjectFileBytes) {
+  if (ec) throw InputError(file.string() + ": cannot open the " + kind);
+  if (bytes > max_bytes) {
     throw InputError(file.string() + ": the file is " + std::to_string(bytes) +
-                     " bytes, more than the limit of " + std::to_string(kMaxProjectFileBytes) +
-                     " bytes (" + std::to_string(kMaxProjectFileBytes >> 20) +
-                     " MiB) for a project file");
+                     " bytes, more than the limit of " + std::to_string(max_bytes) + " bytes (" +
+                     std::to_string(max_bytes >> 20) + " MiB) for a " + kind);
   }
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot open the project file");
+  if (!in) throw InputError(file.string() + ": cannot open the " + kind);
   std::string text(static_cast<std::size_t>(bytes), '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<std::size_t>(in.gcount()));

@@ -28,8 +28,13 @@ inline constexpr int kMaxJsonDepth = 64;
 // line of the first one) and numbers beyond the range of a double (with their pointer).
 nlohmann::json parse_json_text(std::string_view text, const std::string& label);
 
-// Reads `file` (refused before reading when larger than kMaxProjectFileBytes) and parses it as
-// above; messages name the file as given.
-nlohmann::json read_json_file(const std::filesystem::path& file);
+// The largest results.json read back (`luxgrid diff`), bytes: about 1.6 million points.
+inline constexpr std::uintmax_t kMaxResultsFileBytes = 256u << 20;
+
+// Reads `file` (refused before reading when larger than `max_bytes`) and parses it as above;
+// messages name the file as given and call it `kind`.
+nlohmann::json read_json_file(const std::filesystem::path& file,
+                              std::uintmax_t max_bytes = kMaxProjectFileBytes,
+                              const std::string& kind = "project file");
 
 }  // namespace luxgrid::calc

@@ -64,6 +64,22 @@ std::unique_ptr<Visibility> make_visibility(const Scene& scene, std::string& rea
     }
     if (outside == 1) why.push_back(first + " outside every room");
     if (outside > 1) why.push_back(std::to_string(outside) + " luminaires outside every room");
+    // An opening that reaches through a wall: the walls must hide its part outside the room
+    // (the corners of its bounding rectangle, in the luminaire's local z = 0 plane).
+    size_t reaching = 0;
+    for (const auto& l : scene.luminaires) {
+      if (l.opening.shape == photometry::LuminousOpening::Shape::point || !in_some_room(l.pose.position)) continue;
+      bool out = false;
+      for (const double sx : {-0.5, 0.5}) {
+        for (const double sy : {-0.5, 0.5}) {
+          const Vec3 corner = l.pose.position + l.pose.rotation * Vec3(sx * l.opening.length, sy * l.opening.width, 0.0);
+          out = out || !in_some_room(corner);
+        }
+      }
+      if (out && reaching++ == 0) first = l.label;
+    }
+    if (reaching == 1) why.push_back("the opening of " + first + " reaches outside its room");
+    if (reaching > 1) why.push_back("the openings of " + std::to_string(reaching) + " luminaires reach outside their rooms");
     size_t points_outside = 0;
     for (const auto& s : scene.surfaces) {
       for (size_t i = 0; i < s.points.size(); ++i) {

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "calc/json_reader.h"
+#include "calc/safe_json.h"
 #include "calc/statistics.h"
 #include "cli/run_project.h"
 #include "util/error.h"
@@ -57,13 +58,7 @@ double stat_value(const calc::JsonValue& where, const calc::SurfaceResult& s,
 void check_case(const fs::path& dir, const fs::path& out_dir, ValidationReport& report) {
   const std::string name = dir.filename().string();
   const fs::path expected_file = dir / "expected.json";
-  std::ifstream in(expected_file);
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(expected_file.string() + ": malformed JSON: " + e.what());
-  }
+  const nlohmann::json doc = calc::read_json_file(expected_file, calc::kMaxProjectFileBytes, "expected-values file");
   RunOptions options;
   const auto outcome = run_project(dir / "project.json", out_dir / name, options);
   const calc::JsonValue root(doc, name + "/expected.json", "");

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "calc/safe_json.h"
 #include "report/results_json.h"
 #include "util/error.h"
 
@@ -122,15 +123,7 @@ ResultsDiff diff_results(const nlohmann::json& a, const std::string& label_a,
 nlohmann::json read_results_file(const fs::path& path) {
   fs::path file = path;
   if (fs::is_directory(file)) file /= "results.json";
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot open the results file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  try {
-    return nlohmann::json::parse(buffer.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(file.string() + ": malformed JSON: " + e.what());
-  }
+  return calc::read_json_file(file, calc::kMaxResultsFileBytes, "results file");
 }
 
 std::string format_diff(const ResultsDiff& d) {

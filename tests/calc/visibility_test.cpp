@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "calc/direct.h"
+#include "calc/pipeline.h"
 #include "calc/project_file.h"
 #include "calc/visibility.h"
 
@@ -136,6 +137,37 @@ TEST(Visibility, LShapeExampleLoads) {
   // arithmetic: the column gives 2 (its faces lie on rows of centres, so rounding decides), the
   // cabinet (1.6 x 0.5 m about (2, 3.75), turned 20 degrees) 19.
   EXPECT_EQ(wp.points_in_obstacles, 21u);
+}
+
+
+// An opening larger than its convex room (a 6 x 6 m Lambertian panel under the ceiling of a
+// 4 x 4 m room) reaches through the walls: the walls must hide its part outside. Its luminance is
+// I0 / A, so the part inside (16 of its 36 m^2) gives exactly 16/36 of the light of a 4 x 4 m
+// panel of the same I0 filling the ceiling. Tolerance 0.5 %: the reference near field resolves
+// the visibility edge at the walls to its quadrature cells.
+TEST(Visibility, OpeningReachingThroughTheWallsIsClippedByThem) {
+  auto scene_with = [](double size_m) {
+    return parse_project(nlohmann::json::parse(R"({
+      "format": "luxgrid-project/1", "settings": { "quality": "reference", "indirect": "off" },
+      "photometry": { "panel": { "builtin": "lambertian", "intensity_cd": 1000 } },
+      "rooms": [ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3 } ],
+      "luminaires": [ { "photometry": "panel", "position": [2, 2, 2.999],
+                        "emitter": { "shape": "rectangle", "size": [)" + std::to_string(size_m) + ", " +
+                                               std::to_string(size_m) + R"(] } } ],
+      "surfaces": [ { "name": "p", "points": [ { "at": [2, 2, 0], "normal": [0, 0, 1] },
+                                              { "at": [0.5, 1, 0.8], "normal": [0, 0, 1] } ] } ]
+    })"), "v.json", ".");
+  };
+  const Scene big = scene_with(6.0), filling = scene_with(4.0);
+  std::string reason;
+  EXPECT_TRUE(make_visibility(big, reason));
+  EXPECT_EQ(reason, "on: the opening of luminaire 0 reaches outside its room");
+  EXPECT_FALSE(make_visibility(filling, reason));
+  const Results rb = run_scene(big), rf = run_scene(filling);
+  for (size_t i = 0; i < 2; ++i) {
+    const double expected = 16.0 / 36.0 * rf.surfaces[0].E_direct[i];
+    EXPECT_NEAR(rb.surfaces[0].E_direct[i] / expected, 1.0, 5e-3) << "point " << i;
+  }
 }
 
 }  // namespace
