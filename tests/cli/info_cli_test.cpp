@@ -1,13 +1,12 @@
 // `luxgrid info` end to end: the checking-tool warnings in text and in --json, the flux
 // convention named, and a TILT file outside the file's folder refused with exit 2.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+
+#include "tests/cli/cli_support.h"
 
 namespace {
 
@@ -19,14 +18,8 @@ struct Result {
 };
 
 Result info(const std::string& args) {
-  const std::string cmd = std::string(LUXGRID_BINARY) + " info " + args + " 2>&1";
-  Result r{-1, ""};
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf{};
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  const auto r = luxgrid::test::luxgrid("info " + args);
+  return {r.code, r.output};
 }
 
 const std::string kCorpus = std::string(LUXGRID_SOURCE_DIR) + "/tests/data/photometry/";
@@ -61,8 +54,7 @@ TEST(InfoCli, WarningsAndTheFluxConventionInJson) {
 }
 
 TEST(InfoCli, ATiltFileOutsideTheFilesFolderIsRefused) {
-  const fs::path dir = fs::temp_directory_path() / "luxgrid_info_cli_test";
-  fs::remove_all(dir);
+  const fs::path dir = luxgrid::test::scratch("tilt");
   fs::create_directories(dir / "sub");
   std::ofstream(dir / "lamp.tilt") << "1\n2\n0 90\n1 1\n";
   std::ofstream(dir / "sub/panel.ies") << "IESNA:LM-63-2002\n[TEST] x\nTILT=../lamp.tilt\n1 -1 1 2 "
