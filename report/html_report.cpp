@@ -139,15 +139,7 @@ std::string html_report(const ReportInput& in) {
   h += "<tr><th>Reflected light</th><td>" + html_escape(r.plan.indirect) + "</td></tr>";
   h += "<tr><th>Visibility</th><td>" + html_escape(r.plan.visibility) + "</td></tr>";
   for (const auto& n : r.plan.notes) h += "<tr><th>Note</th><td>" + html_escape(n) + "</td></tr>";
-  h += "</table>\n<h3>Time per phase</h3><table><tr>";
-  double total = 0.0;
-  for (const auto& [phase, s] : r.timing_s) h += "<th class=\"num\">" + html_escape(phase) + "</th>";
-  h += "<th class=\"num\">total</th></tr><tr>";
-  for (const auto& [phase, s] : r.timing_s) {
-    total += s;
-    h += "<td class=\"num\">" + fmt("%.3f", s) + " s</td>";
-  }
-  h += "<td class=\"num\">" + fmt("%.3f", total) + " s</td></tr></table>\n";
+  h += "</table>\n\n";
 
   // --- plan views ---------------------------------------------------------------------------
   if (scene && !scene->rooms.empty()) {

@@ -96,7 +96,7 @@ void check_replaceable(const fs::path& target, const std::vector<fs::path>& inpu
 }
 
 // Staging folders `.NAME.tmp-PID-SEQ` (and `.old` ones) of processes that no longer run: a run killed
-// before it could clean up. Only folders with luxgrid's marker inside are removed.
+// before it could clean up. Only folders with luxgrid's marker inside, or empty ones, are removed.
 void remove_stale_staging(const fs::path& parent, const std::string& name) {
   const std::string prefix = "." + name + ".tmp-";
   std::error_code ec;
@@ -118,7 +118,10 @@ void remove_stale_staging(const fs::path& parent, const std::string& name) {
     if (kill(pid, 0) == 0 || errno != ESRCH) continue;  // alive (or not ours to judge)
     std::error_code sub;
     if (!fs::is_directory(fs::symlink_status(e.path(), sub))) continue;
-    if (!fs::is_regular_file(fs::symlink_status(e.path() / kOutputMarker, sub))) continue;
+    // Ours if it holds the marker, or is still empty (killed between creating it and writing
+    // the marker): removing an empty folder destroys nothing.
+    const bool marked = fs::is_regular_file(fs::symlink_status(e.path() / kOutputMarker, sub));
+    if (!marked && !fs::is_empty(e.path(), sub)) continue;
     fs::remove_all(e.path(), sub);
   }
 }

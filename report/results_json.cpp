@@ -48,7 +48,12 @@ nlohmann::json results_to_json(const calc::Results& results, const std::vector<s
   j["warnings"] = warnings;
   j["surfaces"] = json::array();
   for (const auto& s : results.surfaces) j["surfaces"].push_back(surface_json(s));
-  j["timing_s"] = json::object();
+  return j;
+}
+
+nlohmann::json timing_to_json(const calc::Results& results) {
+  nlohmann::json j;
+  j["timing_s"] = nlohmann::json::object();
   for (const auto& [phase, seconds] : results.timing_s) j["timing_s"][phase] = seconds;
   return j;
 }

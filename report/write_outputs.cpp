@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <ctime>
 #include <fstream>
 #include <sstream>
@@ -26,8 +27,15 @@ std::string read_bytes(const std::filesystem::path& p) {
   return s.str();
 }
 
+// The calculation's date for the report: now, or SOURCE_DATE_EPOCH (seconds since 1970, the
+// reproducible-builds convention) when set, so that two runs can write byte-identical reports.
 std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
+  std::time_t t = std::time(nullptr);
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) {
+    char* end = nullptr;
+    const long long v = std::strtoll(epoch, &end, 10);
+    if (end != epoch && *end == '\0' && v >= 0) t = static_cast<std::time_t>(v);
+  }
   std::tm tm{};
   gmtime_r(&t, &tm);
   char buf[32];
@@ -94,7 +102,10 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   if (options.report) write_text_file(folder.file(kReportFile), html_report(report));
   results.timing_s.emplace_back(
       "report", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  nlohmann::json j = results_to_json(results);
+  // The scene's warnings (legal but suspicious input) and the outputs', as the terminal shows them.
+  std::vector<std::string> all_warnings = options.scene ? options.scene->warnings : std::vector<std::string>{};
+  all_warnings.insert(all_warnings.end(), warnings.begin(), warnings.end());
+  nlohmann::json j = results_to_json(results, all_warnings);
   if (!options.checks.empty()) {
     // Per surface, each requirement with its verdict and margin; at the top, the overall verdict.
     for (auto& s : j["surfaces"]) {
@@ -105,6 +116,7 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
     j["requirements_met"] = all_met(options.checks);
   }
   write_text_file(folder.file(kResultsFile), j.dump(1) + "\n");
+  write_text_file(folder.file(kTimingFile), timing_to_json(results).dump(1) + "\n");
   return warnings;
 }
 

@@ -33,6 +33,7 @@ inline SurfaceOutputFiles surface_output_files(const std::string& surface_name) 
 // Files of the folder itself, which no surface may overwrite.
 inline constexpr const char* kResultsFile = "results.json";
 inline constexpr const char* kReportFile = "report.html";
-inline constexpr const char* kFolderOutputFiles[] = {kResultsFile, kReportFile};
+inline constexpr const char* kTimingFile = "timing.json";  // phase times, apart from the results
+inline constexpr const char* kFolderOutputFiles[] = {kResultsFile, kReportFile, kTimingFile};
 
 }  // namespace luxgrid

@@ -192,6 +192,7 @@ TEST_F(OutputFolderTest, StagingOfDeadProcessesIsRemovedOthersKept) {
   staging(".out.tmp-" + std::to_string(getppid()) + "-0", true);          // a live process's
   staging(".out.tmp-" + dead + "-0-mine", true);                          // not our pattern
   staging(".out.tmp-" + dead + "-1", false);                              // no marker: not ours
+  fs::create_directory(dir_ / (".out.tmp-" + dead + "-2"));                // killed before its marker
   write_run(dir_ / "out", "{}");
   std::vector<std::string> kept{".out.tmp-" + dead + "-0-mine", ".out.tmp-" + dead + "-1",
                                 ".out.tmp-" + std::to_string(getppid()) + "-0", "out"};

@@ -1,0 +1,43 @@
+// Identical inputs give byte-identical outputs: two runs of the example office write the same
+// bytes into every file but timing.json (the phase times; the report's date follows
+// SOURCE_DATE_EPOCH when it is set, the reproducible-builds convention).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+
+#include "tests/cli/cli_support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using luxgrid::test::quote;
+using luxgrid::test::read_file;
+using luxgrid::test::scratch;
+
+std::set<std::string> entries(const fs::path& folder) {
+  std::set<std::string> out;
+  for (const auto& e : fs::directory_iterator(folder)) out.insert(e.path().filename().string());
+  return out;
+}
+
+TEST(Reproducible, TwoRunsOfTheOfficeWriteIdenticalFiles) {
+  const fs::path dir = scratch("office");
+  const fs::path project = fs::path(LUXGRID_SOURCE_DIR) / "examples/office/project.json";
+  for (const char* run : {"a", "b"}) {
+    const auto r = luxgrid::test::shell("SOURCE_DATE_EPOCH=1764547200 " + std::string(LUXGRID_BINARY) +
+                                        " calc " + quote(project) + " -o " + quote(dir / run));
+    ASSERT_EQ(r.code, 0) << r.output;
+  }
+  const auto files = entries(dir / "a");
+  ASSERT_EQ(files, entries(dir / "b"));
+  EXPECT_TRUE(files.count("report.html") && files.count("results.json") && files.count("timing.json"));
+  for (const auto& f : files) {
+    if (f == "timing.json") continue;
+    EXPECT_EQ(luxgrid::test::shell("cmp " + quote(dir / "a" / f) + " " + quote(dir / "b" / f)).code, 0) << f;
+  }
+  // The date is the one given: 2025-12-01 00:00 UTC.
+  EXPECT_NE(read_file(dir / "a" / "report.html").find("2025-12-01 00:00 UTC"), std::string::npos);
+}
+
+}  // namespace
