@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -81,5 +82,12 @@ inline std::string read_file(const std::filesystem::path& p) {
 }
 
 inline std::string quote(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+// The names in a folder (not recursing), sorted.
+inline std::set<std::string> entries(const std::filesystem::path& folder) {
+  std::set<std::string> out;
+  for (const auto& e : std::filesystem::directory_iterator(folder)) out.insert(e.path().filename().string());
+  return out;
+}
 
 }  // namespace luxgrid::test

@@ -108,12 +108,6 @@ std::vector<fs::path> files(const fs::path& dir, const std::set<std::string>& ex
   return out;
 }
 
-std::set<std::string> listing(const fs::path& dir) {
-  std::set<std::string> out;
-  for (const auto& e : fs::directory_iterator(dir)) out.insert(e.path().filename().string());
-  return out;
-}
-
 struct Peak {
   long kib = 0;
   std::string file;
@@ -134,7 +128,7 @@ void expect_refused(const Outcome& r, const fs::path& file, const std::string& f
 TEST(HostileCorpus, ProjectsAreRefusedInBoundedMemory) {
   const fs::path dir = kBad / "projects";
   const fs::path tmp = scratch("projects");
-  const auto before = listing(dir);
+  const auto before = luxgrid::test::entries(dir);
   Peak peak;
   const auto projects = files(dir, {".json"});
   const auto runs = run_all(projects, tmp, [](const fs::path& p, const fs::path& work) {
@@ -145,7 +139,7 @@ TEST(HostileCorpus, ProjectsAreRefusedInBoundedMemory) {
     EXPECT_FALSE(fs::exists(tmp / std::to_string(k) / "out")) << projects[k].filename() << " wrote an output folder";
     peak.add(runs[k], projects[k]);
   }
-  EXPECT_EQ(listing(dir), before) << "a refused project wrote beside itself";
+  EXPECT_EQ(luxgrid::test::entries(dir), before) << "a refused project wrote beside itself";
   std::printf("hostile projects: %zu refused with exit 2; peak resident memory %.1f MiB (%s)\n",
               projects.size(), peak.kib / 1024.0, peak.file.c_str());
   EXPECT_GE(projects.size(), 60u);

@@ -18,6 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using luxgrid::test::luxgrid;
+using luxgrid::test::entries;
 using luxgrid::test::quote;
 using luxgrid::test::read_file;
 using luxgrid::test::scratch;
@@ -36,12 +37,6 @@ std::string project(const std::string& name, double spacing = 1.0, const std::st
   "surfaces": [ { "name": ")" + name + R"(", "workplane": { "room": "r", "height": 0.8, "border": 0 },
                   "spacing": )" + std::to_string(spacing) + R"( } ]
 })";
-}
-
-std::set<std::string> entries(const fs::path& folder) {
-  std::set<std::string> out;
-  for (const auto& e : fs::directory_iterator(folder)) out.insert(e.path().filename().string());
-  return out;
 }
 
 TEST(OutputSafety, ExistingFileIsRefusedAndKept) {

@@ -11,15 +11,10 @@
 namespace {
 
 namespace fs = std::filesystem;
+using luxgrid::test::entries;
 using luxgrid::test::quote;
 using luxgrid::test::read_file;
 using luxgrid::test::scratch;
-
-std::set<std::string> entries(const fs::path& folder) {
-  std::set<std::string> out;
-  for (const auto& e : fs::directory_iterator(folder)) out.insert(e.path().filename().string());
-  return out;
-}
 
 TEST(Reproducible, TwoRunsOfTheOfficeWriteIdenticalFiles) {
   const fs::path dir = scratch("office");
