@@ -102,19 +102,20 @@ SphericalGrid expand_type_c(const StoredPlanes& p, Symmetry symmetry,
 
 SphericalGrid expand_type_ab(const StoredPlanes& p, PhotometricType type,
                              glm::dmat3& table_from_luminaire) {
+  // The luminaire's axes in luxgrid's frame (symmetry.h; derivation in docs/photometry.md).
+  const Vec3 aim(0.0, 0.0, -1.0), up(1.0, 0.0, 0.0), lateral(0.0, -1.0, 0.0);
   // Grid frame (x', y', z'): pole -z' is the hinge axis, C' = 0 is the photometric axis.
-  // glm matrices are column-major: m[col][row]; rows give x', y', z' as functions of (x, y, z).
+  //   type B: x' = d.A, y' = d.U, z' = -d.L  (pole at L, C' = V, gamma' = 90 - H)
+  //   type A: x' = d.A, y' = d.L, z' = -d.U  (pole at U, C' = H, gamma' = 90 - V)
+  const bool type_b = type == PhotometricType::B;
+  const Vec3 row_y = type_b ? up : lateral;
+  const Vec3 row_z = -(type_b ? lateral : up);
+  // glm matrices are column-major: m[col][row].
   glm::dmat3 m(0.0);
-  if (type == PhotometricType::B) {
-    // x' = d.A = -z, y' = d.U = y, z' = -d.L = -x  (pole at L = +x, C' = V)
-    m[2][0] = -1.0;
-    m[1][1] = 1.0;
-    m[0][2] = -1.0;
-  } else {
-    // x' = d.A = -z, y' = d.L = x, z' = -d.U = -y  (pole at U = +y, C' = H)
-    m[2][0] = -1.0;
-    m[0][1] = 1.0;
-    m[1][2] = -1.0;
+  for (int k = 0; k < 3; ++k) {
+    m[k][0] = aim[k];
+    m[k][1] = row_y[k];
+    m[k][2] = row_z[k];
   }
   table_from_luminaire = m;
 
@@ -138,7 +139,7 @@ SphericalGrid expand_type_ab(const StoredPlanes& p, PhotometricType type,
   auto value = [&](std::size_t ih, std::size_t iv) { return cd[ih * nv + iv]; };
 
   // The pole-bearing angle becomes gamma' = 90 - angle, the other becomes C'.
-  const bool b = type == PhotometricType::B;
+  const bool b = type_b;
   const std::vector<double>& lat = b ? h : p.v_deg;  // latitude-like: -> gamma'
   const std::vector<double>& lon = b ? p.v_deg : h;  // longitude-like: -> C'
   SphericalGrid g;

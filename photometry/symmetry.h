@@ -11,13 +11,19 @@
 //   none               0..<=360: a closing 360 plane is merged with 0 (mean, so the seam is
 //                      continuous); an open range (0..345) wraps back to 0.
 //
-// Types A and B are mapped into luxgrid's frame with the photometric axis (H = V = 0) at nadir
-// (-z), the lateral axis (H > 0) along +x and the B/A "up" direction (V > 0) along +y: a
-// floodlight aimed horizontally along +y with +z up, turned 90 deg about x to point down.
-//   type B (H, V): d = cos H (cos V A + sin V U) + sin H L   (B planes hinge on L)
-//   type A (H, V): d = cos V (cos H A + sin H L) + sin V U   (A planes hinge on U)
-// with A = -z, L = +x, U = +y. Each is stored as a C-style grid whose pole is L (type B) or U
-// (type A); where the file has no data (behind the luminaire) the intensity is zero.
+// Types A and B are mapped into luxgrid's frame turned so that the photometric axis (H = V = 0)
+// points to nadir. The luminaire's own axes, the same for both types (derivation with sources in
+// docs/photometry.md, "Types A and B"):
+//   A = -z  aim, photometric zero (H = 0, V = 0)
+//   U = +x  H = 0, V = +90: LM-63's "photometric horizontal", along which the luminous opening's
+//           length is measured, so it lies where type C puts length (C0, +x)
+//   L = -y  H = +90: horizontal angles increase clockwise seen from U (LM-63-2002), so
+//           L = A x U; it is the type B polar axis (the floodlight's tilt axis, its width)
+//   type B (H, V): d = cos H (cos V A + sin V U) + sin H L   (V planes hinge on L)
+//   type A (H, V): d = cos V (cos H A + sin H L) + sin V U   (H planes hinge on U)
+// In luxgrid's coordinates type B is sin H = -d.y, tan V = d.x / -d.z. Each is stored as a
+// C-style grid whose pole is L (type B) or U (type A); where the file has no data (behind the
+// luminaire) the intensity is zero.
 #include <string>
 #include <vector>
 

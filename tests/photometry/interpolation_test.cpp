@@ -224,16 +224,16 @@ TEST(Flux, IsotropicTwoPlaneFileIsFourPi) {
 
 TEST(TypeB, MapsIntoTheLuminaireFrame) {
   // mdl_test: V {-90, 90} x H {-90, -45, 0, 45, 90}; values 0.1 .. 1.0 in H-major order.
-  // Frame (symmetry.h): aim A = -z, lateral L = +x (H > 0), up U = +y (V > 0).
+  // Frame (symmetry.h): aim A = -z, up U = +x (V > 0), lateral L = -y (H > 0).
   const Photometry p = load_photometry_file(std::filesystem::path(LUXGRID_SOURCE_DIR) /
                                             "tests/data/photometry/ies/mdl_test_iesna91_typeb.ies");
   const auto& t = *p.distribution;
   const double s = std::sqrt(0.5);
-  EXPECT_NEAR(t.intensity({0, 1, 0}), 0.6, 1e-12);     // H 0, V 90
-  EXPECT_NEAR(t.intensity({0, -1, 0}), 0.5, 1e-12);    // H 0, V -90
-  EXPECT_NEAR(t.intensity({s, s, 0}), 0.8, 1e-12);     // H 45, V 90
-  EXPECT_NEAR(t.intensity({-s, -s, 0}), 0.3, 1e-12);   // H -45, V -90
-  EXPECT_NEAR(t.intensity({1, 0, 0}), 0.95, 1e-12);    // H 90 is one direction: the mean
+  EXPECT_NEAR(t.intensity({1, 0, 0}), 0.6, 1e-12);     // H 0, V 90
+  EXPECT_NEAR(t.intensity({-1, 0, 0}), 0.5, 1e-12);    // H 0, V -90
+  EXPECT_NEAR(t.intensity({s, -s, 0}), 0.8, 1e-12);    // H 45, V 90
+  EXPECT_NEAR(t.intensity({-s, s, 0}), 0.3, 1e-12);    // H -45, V -90
+  EXPECT_NEAR(t.intensity({0, -1, 0}), 0.95, 1e-12);   // H 90 is one direction: the mean
   EXPECT_NEAR(t.intensity({0, 0, -1}), 0.55, 1e-12);   // the aim, halfway between V = -+90
   EXPECT_NEAR(t.intensity({0, 0, 1}), 0.0, 1e-12);     // behind the floodlight: no data
   EXPECT_EQ(p.photometric_type, PhotometricType::B);
