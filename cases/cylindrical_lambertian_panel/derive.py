@@ -2,13 +2,18 @@
 """Expected values for cylindrical_lambertian_panel (see README.md). Standard library only.
 
 A 1 x 0.5 m Lambertian panel (builtin lambertian, I0 = 1000 cd, so L = I0 / A = 2000 cd/m^2)
-facing down at (2, 2, 3) in a black 4 x 4 x 3 m room. Cylindrical and semi-cylindrical
+facing down at (2, 2, 3) in a black 20 x 20 x 3 m hall. Cylindrical and semi-cylindrical
 illuminance by brute force: a composite Gauss-Legendre product rule over the opening of
   E = integral of L cos_e w / d^2 dA,
 w = sin(eps) / pi (cylinder) or sin(eps) (1 + cos(alpha)) / pi (half cylinder facing f),
 eps the angle of the element's direction from the vertical, alpha the angle between f and the
 horizontal direction towards the element (EN 13201-2 / EN 12464-1 definitions)."""
-import json, math, pathlib
+import math, pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "_derive"))
+from gauss import gauss_legendre  # noqa: E402
+from lambert import black_hall_panel_project, write_case  # noqa: E402
 
 I0, A_X, A_Y, H = 1000.0, 1.0, 0.5, 3.0   # cd, panel sides (m), room height = panel height (m)
 CX, CY = 2.0, 2.0
@@ -16,25 +21,6 @@ L = I0 / (A_X * A_Y)                      # cd/m^2: builtin lambertian I(gamma) 
 # quality standard on an analytic profile: the area-form cubature at 3e-3 (docs/nearfield.md,
 # "Cylindrical and semi-cylindrical illuminance"); measured errors are below 0.07 % (README).
 REL_TOL = 3e-3
-
-
-def gauss_legendre(n):
-    """Nodes and weights on [0, 1] by Newton's iteration on P_n."""
-    nodes, weights = [], []
-    for k in range(1, n + 1):
-        x = math.cos(math.pi * (k - 0.25) / (n + 0.5))
-        for _ in range(100):
-            p0, p1 = 1.0, x
-            for j in range(2, n + 1):
-                p0, p1 = p1, ((2 * j - 1) * x * p1 - (j - 1) * p0) / j
-            dp = n * (x * p1 - p0) / (x * x - 1)
-            dx = p1 / dp
-            x -= dx
-            if abs(dx) < 1e-16:
-                break
-        nodes.append(0.5 * (1 - x))
-        weights.append(1.0 / ((1 - x * x) * dp * dp))
-    return nodes, weights
 
 
 def weight(rx, ry, rz, facing):
@@ -49,7 +35,8 @@ def weight(rx, ry, rz, facing):
 
 def brute_force(p, facing, cells, order=8):
     """Composite Gauss-Legendre: cells x cells squares (scaled to the panel), order^2 nodes each."""
-    t, wt = gauss_legendre(order)
+    xs, ws = gauss_legendre(order)
+    t, wt = [0.5 * (1 + x) for x in xs], [0.5 * w for w in ws]  # on [0, 1]
     hx, hy = A_X / cells, A_Y / cells
     total = 0.0
     for i in range(cells):
@@ -89,19 +76,10 @@ for name, quantity, facing in surfaces_def:
                       "source": f"brute force (README): Gauss-Legendre 48 x 48 cells x 8 x 8 nodes over the panel at "
                                 f"{p}, {abs(fine - coarse) / fine:.1e} from 24 x 24; far-field point model {ff:.3f} lx"})
 here = pathlib.Path(__file__).parent
-project = {
-    "format": "luxgrid-project/1",
-    "name": "cylindrical and semi-cylindrical illuminance near a Lambertian panel",
-    "settings": {"quality": "standard", "indirect": "off"},
-    "photometry": {"panel": {"builtin": "lambertian", "intensity_cd": I0}},
-    "rooms": [{"name": "black room", "outline": [[0, 0], [4, 0], [4, 4], [0, 4]], "height": H,
-               "reflectance": {"floor": 0, "walls": 0, "ceiling": 0}}],
-    "luminaires": [{"photometry": "panel", "position": [CX, CY, H],
-                    "emitter": {"shape": "rectangle", "size": [A_X, A_Y]}}],
-    "surfaces": surfaces,
-}
-(here / "project.json").write_text(json.dumps(project, indent=1) + "\n")
-(here / "expected.json").write_text(json.dumps({"cases": cases}, indent=1) + "\n")
+project = black_hall_panel_project("cylindrical and semi-cylindrical illuminance near a Lambertian panel",
+                                   I0, (CX, CY, H), A_X, A_Y, [])
+project["surfaces"] = surfaces
+write_case(here, project, cases)
 for name, p, fine, coarse, ff in table:
     print(f"| {name} | ({p[0]:g}, {p[1]:g}, {p[2]:g}) | {fine:.4f} | {abs(fine - coarse) / fine:.1e} | {ff:.4f} | "
           f"{100 * (ff / fine - 1):+.1f} % |")
