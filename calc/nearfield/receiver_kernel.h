@@ -41,16 +41,18 @@ struct Receiver {
 
 // The weight of the light arriving from unit direction `u` (receiver -> source), >= 0.
 //  - planar: the cosine of incidence, 0 behind the plane.
-//  - cylindrical (the definition of cylindrical illuminance in EN 12464-1 and EN 13201-2, the
-//    point-source formula E_z = I sin(eps) / (pi d^2) of EN 13201-3): the vertical illuminance on a plane turning about the
-//    vertical axis, averaged over the full turn, is (1 / 2 pi) integral of sin(eps) max(0,
-//    cos(phi)) d phi = sin(eps) / pi, with sin(eps) = |u_h| the horizontal part of u.
-//  - semi-cylindrical (EN 13201-2 / EN 12464-1 definition, EN 13201-3's point-source formula
-//    E_sc = I sin(eps) (1 + cos(alpha)) / (pi d^2), alpha between the facing direction f and the vertical plane
-//    through the source): the same average over the half turn facing f,
-//    (1 / pi) integral over |phi| < pi / 2 of sin(eps) max(0, cos(phi - alpha)) d phi =
+//  - cylindrical (the definition in EN 12464-1 and EN 13201-2; EN 13201-3's point-source
+//    formula E_z = I sin(eps) / (pi d^2)): the vertical illuminance on a plane turning about
+//    the vertical axis, averaged over the full turn, is (1 / 2 pi) integral of
+//    sin(eps) max(0, cos(phi)) d phi = sin(eps) / pi, with sin(eps) = |u_h|, the horizontal
+//    part of u.
+//  - semi-cylindrical (the definition in EN 13201-2 and EN 12464-1; EN 13201-3's point-source
+//    formula E_sc = I sin(eps) (1 + cos(alpha)) / (pi d^2), alpha between the facing direction
+//    f and the vertical plane through the source): the same average over the half turn facing
+//    f, (1 / pi) integral over |phi| < pi / 2 of sin(eps) max(0, cos(phi - alpha)) d phi =
 //    sin(eps) (1 + cos(alpha)) / pi. As |u_h| cos(alpha) = f . u_h it is (|u_h| + f . u) / pi
 //    (f horizontal): no division by |u_h|, continuous for light from straight above or below.
+//    The max() only removes rounding below 0 (|u_h| + f . u_h >= 0 exactly).
 inline double receiver_weight(const Receiver& r, const Vec3& u) {
   switch (r.kind) {
     case ReceiverKind::planar: return std::max(0.0, glm::dot(r.direction, u));

@@ -19,8 +19,8 @@
 // (table_cells.h).
 //
 // Other receivers (receiver_kernel.h): the unit direction to a node is
-// u = sin(gamma') a + cos(gamma') b in the world, a = R (cos psi, sin psi, 0) per ray and
-// b = sign(sigma) R (0, 0, 1), and receiver_weight(receiver, u) replaces cos_r. For a cylinder
+// u = sin(gamma') a + cos(gamma') axis in the world, a = R (cos psi, sin psi, 0) per ray and
+// axis = sign(sigma) R (0, 0, 1), and receiver_weight(receiver, u) replaces cos_r. For a cylinder
 // the weight sin(eps) / pi is smooth on the cells except at the one node direction straight up or
 // down, where its cone vertex (weight 0) sits; there the integrand is small, so the cell rule's
 // error stays far below the rung's tolerance (tests/nearfield/cylindrical_test.cpp).
