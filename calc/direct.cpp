@@ -27,6 +27,16 @@ class SceneOccluder final : public nearfield::Occluder {
  private:
   const Visibility& v_;
 };
+
+// What a point of a grid measures. Horizontal and vertical are planes whose normals the loader
+// has set; a half cylinder faces the normal the loader set to its `facing` direction.
+nearfield::Receiver receiver_of(geometry::Quantity q, const Vec3& normal) {
+  switch (q) {
+    case geometry::Quantity::cylindrical: return nearfield::Receiver::cylindrical();
+    case geometry::Quantity::semi_cylindrical: return nearfield::Receiver::semi_cylindrical(normal);
+    default: return nearfield::Receiver::planar(normal);
+  }
+}
 }  // namespace
 
 double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3& normal) {
@@ -41,16 +51,6 @@ double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3
   // transpose (w * M == transpose(M) * w in glm).
   const Vec3 local = w * lum.pose.rotation;
   const double e = lum.distribution->intensity(local) * cos_incidence / d2;
-  return std::isfinite(e) && e > 0.0 ? e : 0.0;
-}
-
-double far_field_cylindrical(const nearfield::Emitter& emitter, const Vec3& point) {
-  const Vec3 to_point = point - emitter.centroid;
-  const double d2 = glm::dot(to_point, to_point);
-  if (!(d2 > kMinDistanceSquared)) return 0.0;
-  const Vec3 w = to_point / std::sqrt(d2);
-  const double sin_eps = std::hypot(w.x, w.y);
-  const double e = emitter.intensity_towards(w) * sin_eps / (kPi * d2);
   return std::isfinite(e) && e > 0.0 ? e : 0.0;
 }
 
@@ -71,7 +71,6 @@ std::vector<double> direct_illuminance(const Plan& plan, const std::vector<nearf
   std::mutex count_mutex;
   const size_t total = grid.points.size();
   const bool automatic = plan.near_switch == nearfield::NearFieldSwitch::automatic;
-  const bool cylindrical = grid.quantity == geometry::Quantity::cylindrical;
   const Visibility* visibility = plan.visibility_test.get();
   // nullptr when nothing can occlude: the near-field models then skip every test.
   std::optional<SceneOccluder> scene_occluder;
@@ -82,21 +81,16 @@ std::vector<double> direct_illuminance(const Plan& plan, const std::vector<nearf
     for (size_t i = range.begin(); i != range.end(); ++i) {
       if (!grid.active.empty() && !grid.active[i]) continue;
       double sum = 0.0;
+      const nearfield::Receiver receiver = receiver_of(grid.quantity, grid.normals[i]);
       for (const auto& emitter : emitters) {
-        if (cylindrical) {
-          // Far-field only: the one segment from the opening's centre (hard shadow).
-          if (visibility && !visibility->visible(emitter.centroid, grid.points[i])) continue;
-          sum += far_field_cylindrical(emitter, grid.points[i]);
-        } else {
-          // Soft shadows: the near-field models test visibility per node, the far field from
-          // the opening's centre.
-          sum += nearfield::hybrid_illuminance(emitter, grid.points[i], grid.normals[i],
-                                               plan.near_model, plan.near_switch, occluder);
-        }
+        // Soft shadows: the near-field models test visibility per node, the far field from
+        // the opening's centre.
+        sum += nearfield::hybrid_illuminance(emitter, grid.points[i], receiver, plan.near_model,
+                                             plan.near_switch, occluder);
         if (!counts) continue;
         if (emitter.is_point()) {
           ++local.point_sources;
-        } else if (cylindrical || plan.near_switch == nearfield::NearFieldSwitch::never) {
+        } else if (plan.near_switch == nearfield::NearFieldSwitch::never) {
           ++local.far;
         } else if (!automatic) {
           ++local.near;

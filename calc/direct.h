@@ -16,17 +16,15 @@ using Progress = std::function<void(double fraction_done)>;
 // arriving from behind the receiver. Finite and >= 0 for every input.
 double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3& normal);
 
-// Cylindrical illuminance (mean vertical illuminance around a vertical axis through the point)
-// from a point emitter: E = I(w) sin(eps) / (pi d^2), eps the angle of the light from the vertical.
-double far_field_cylindrical(const nearfield::Emitter& emitter, const Vec3& point);
-
 // The emitters of all luminaires, built once per run (calc/nearfield/emitter.h).
 std::vector<nearfield::Emitter> make_emitters(const Scene& scene);
 
 // E_direct per point of `grid` (same order as grid.points): for each luminaire the plan's model
 // (far field, near field, or the five-times-rule blend of both) with the plan's visibility test
 // (when it has one): per quadrature node for the near-field models (soft shadows), from the
-// opening's centre for the far field and cylindrical illuminance; inactive points get 0. `progress` may be
+// opening's centre for the far field; inactive points get 0. The grid's quantity picks the
+// receiver (nearfield/receiver_kernel.h): a plane on each point's normal, a cylinder, or a half
+// cylinder facing the point's normal; every quantity takes the same near/far decision. `progress` may be
 // empty; it is called from worker threads. `counts`, when given, is increased by the pairs each
 // model served.
 std::vector<double> direct_illuminance(const Plan& plan, const std::vector<nearfield::Emitter>& emitters,

@@ -69,12 +69,6 @@ Plan make_plan(const Scene& scene) {
     plan.visibility += "; near-field pairs test visibility per quadrature node (soft shadows of "
                        "area luminaires), far-field pairs from the centre of the opening";
   }
-  for (const auto& s : scene.surfaces) {
-    if (s.quantity == geometry::Quantity::cylindrical) {
-      plan.notes.push_back("surface \"" + s.name + "\": cylindrical illuminance uses the far-field "
-                           "point model for every luminaire (no near-field cylindrical model yet)");
-    }
-  }
   return plan;
 }
 

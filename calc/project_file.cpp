@@ -480,7 +480,8 @@ size_t active_points(const geometry::SurfaceGrid& g) {
 
 // "quantity" and "facing": what the numbers of a surface mean (geometry::Quantity). Horizontal
 // and vertical replace the receiver normals; cylindrical keeps them (the calculation ignores
-// them for E_cyl).
+// them for E_cyl); semi-cylindrical sets them to the horizontal direction the half cylinder faces,
+// found like a vertical plane's normal.
 void apply_quantity(const JsonValue& s, std::vector<geometry::SurfaceGrid>& grids) {
   const auto q = s.find("quantity");
   const auto facing = s.find("facing");
@@ -491,10 +492,15 @@ void apply_quantity(const JsonValue& s, std::vector<geometry::SurfaceGrid>& grid
     else if (v == "horizontal") quantity = geometry::Quantity::horizontal;
     else if (v == "vertical") quantity = geometry::Quantity::vertical;
     else if (v == "cylindrical") quantity = geometry::Quantity::cylindrical;
-    else q->fail("expected \"planar\", \"horizontal\", \"vertical\" or \"cylindrical\", got \"" + v + "\"");
+    else if (v == "semi-cylindrical") quantity = geometry::Quantity::semi_cylindrical;
+    else
+      q->fail("expected \"planar\", \"horizontal\", \"vertical\", \"cylindrical\" or \"semi-cylindrical\", got \"" +
+              v + "\"");
   }
-  if (facing && quantity != geometry::Quantity::vertical) {
-    facing->fail("\"facing\" only goes with \"quantity\": \"vertical\"");
+  // Both turn the receiver towards a horizontal direction: a vertical plane, a half cylinder.
+  const bool faces = quantity == geometry::Quantity::vertical || quantity == geometry::Quantity::semi_cylindrical;
+  if (facing && !faces) {
+    facing->fail("\"facing\" only goes with \"quantity\": \"vertical\" or \"semi-cylindrical\"");
   }
   std::optional<Vec3> facing_dir;
   if (facing) {
@@ -509,13 +515,14 @@ void apply_quantity(const JsonValue& s, std::vector<geometry::SurfaceGrid>& grid
     for (auto& n : g.normals) {
       if (quantity == geometry::Quantity::horizontal) {
         n = Vec3(0, 0, 1);
-      } else if (quantity == geometry::Quantity::vertical) {
+      } else if (faces) {
         if (facing_dir) {
           n = *facing_dir;
         } else {
           const Vec3 h(n.x, n.y, 0.0);
           if (!(glm::length(h) > kMinHorizontalPart)) {
-            q->fail("a vertical quantity on a horizontal surface needs \"facing\": [x, y]");
+            q->fail("a " + std::string(quantity == geometry::Quantity::vertical ? "vertical" : "semi-cylindrical") +
+                    " quantity on a horizontal surface needs \"facing\": [x, y]");
           }
           n = glm::normalize(h);
         }

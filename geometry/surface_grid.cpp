@@ -11,6 +11,7 @@ const char* to_string(Quantity q) {
     case Quantity::horizontal: return "horizontal";
     case Quantity::vertical: return "vertical";
     case Quantity::cylindrical: return "cylindrical";
+    case Quantity::semi_cylindrical: return "semi-cylindrical";
   }
   return "planar";
 }

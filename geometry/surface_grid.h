@@ -16,7 +16,10 @@ namespace luxgrid::geometry {
 // - cylindrical: mean vertical illuminance around a vertical axis through the point,
 //   E_cyl = I sin(eps) / (pi d^2) for a point source at angle eps from the vertical; normals keep
 //   the surface normal and are not used by the calculation.
-enum class Quantity { planar, horizontal, vertical, cylindrical };
+// - semi_cylindrical: mean vertical illuminance over the half cylinder facing a horizontal
+//   direction, E_sc = I sin(eps) (1 + cos(alpha)) / (pi d^2) for a point source (EN 13201-2);
+//   the loader sets every normal to that facing direction (as for vertical).
+enum class Quantity { planar, horizontal, vertical, cylindrical, semi_cylindrical };
 const char* to_string(Quantity q);
 
 struct SurfaceGrid {

@@ -1,5 +1,6 @@
 #pragma once
-// One CSV per surface: a row per point with position, normal and the three illuminances.
+// One CSV per surface: a row per point with position, normal, the three illuminances and the
+// quantity they measure (planar, ..., semi-cylindrical).
 #include <string>
 
 #include "calc/results.h"

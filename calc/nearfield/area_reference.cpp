@@ -1,6 +1,7 @@
 // The converging reference for any distribution (issue 5, item 3b): globally adaptive cubature
 // of the area form of the illuminance (Luksch et al. 2020 Eq. 1 without the BRDF),
-//   E = (1/A) * integral over the clipped polygon of I(-w) cos_r / d^2 dA,
+//   E = (1/A) * integral over the clipped polygon of I(-w) g(w) / d^2 dA,
+// g the receiver's weight (receiver_kernel.h: cos_r for a plane, sin(eps) / pi for a cylinder),
 // which shares no code with the solid-angle models except the fan (for the split at the CP,
 // where the integrand peaks).
 #include <algorithm>
@@ -10,6 +11,7 @@
 
 #include "calc/nearfield/fan_sample.h"
 #include "calc/nearfield/models.h"
+#include "calc/nearfield/receiver_kernel.h"
 
 namespace luxgrid::nearfield {
 namespace {
@@ -32,7 +34,7 @@ constexpr double kPeakRatio = 4.0;
 
 struct Integrand {
   const Emitter* e;
-  Vec3 normal;
+  Receiver what;
   double inv_area;
   const Occluder* occluder = nullptr;  // per-sample visibility (occluder.h)
   Vec3 receiver{0.0};                  // unshifted receiver, world: segment end
@@ -41,9 +43,9 @@ struct Integrand {
     const double d2 = glm::dot(r, r);
     if (!(d2 > 0.0)) return 0.0;
     const Vec3 w = r / std::sqrt(d2);
-    const double cos_r = glm::dot(w, normal);
-    if (!(cos_r > 0.0)) return 0.0;
-    const double value = e->intensity_towards(-w) * cos_r / d2 * inv_area;
+    const double weight = receiver_weight(what, w);
+    if (!(weight > 0.0)) return 0.0;
+    const double value = e->intensity_towards(-w) * weight / d2 * inv_area;
     if (occluder && value != 0.0) {
       const Vec3 p = origin + r;
       if (!occluder->visible(p + kOccluderInsetRelative * (e->centroid - p), receiver)) return 0.0;
@@ -118,19 +120,26 @@ class Cubature {
 ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                                       double rel_tol, std::int64_t max_evaluations,
                                       const Occluder* occluder) {
+  return reference_illuminance(e, point, Receiver::planar(normal), rel_tol, max_evaluations, occluder);
+}
+
+ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
+                                      double rel_tol, std::int64_t max_evaluations,
+                                      const Occluder* occluder) {
   ReferenceResult result;
   if (e.is_point()) {
     if (!occluder || occluder->visible(e.centroid, point))
-      result.illuminance_lx = far_field_illuminance(e, point, normal);
+      result.illuminance_lx = far_field_illuminance(e, point, receiver);
     result.converged = true;
     return result;
   }
-  const ReceiverFan fan = build_fan(e, point, normal, horizon_shift_m(e));
+  // A cylinder has no horizon (horizon_normal() is 0): the fan then covers the whole opening.
+  const ReceiverFan fan = build_fan(e, point, receiver.horizon_normal(), horizon_shift_m(e));
   if (fan.triangles == 0) {
     result.converged = true;
     return result;
   }
-  const Integrand f{&e, normal, 1.0 / e.area_m2, occluder, point, fan.receiver};
+  const Integrand f{&e, receiver, 1.0 / e.area_m2, occluder, point, fan.receiver};
   Cubature cubature(f);
   std::priority_queue<Tri> queue;
   double value = 0.0, error = 0.0;

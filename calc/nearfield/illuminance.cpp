@@ -13,6 +13,8 @@ constexpr double kDefaultAdaptiveRelTol = 1e-3;
 // quality high on an analytic profile: the adaptive rung at this tolerance.
 constexpr double kHighAdaptiveRelTol = 1e-3;
 constexpr double kDefaultReferenceRelTol = 1e-6;
+// Lookup budget of the reference per point: converges 1e-6 on every protocol point well inside it.
+constexpr std::int64_t kReferenceMaxEvaluations = 4'000'000;
 
 }  // namespace
 
@@ -71,7 +73,7 @@ double illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, cons
     }
     case ModelKind::reference:
       return reference_illuminance(e, point, normal, m.tolerance > 0 ? m.tolerance : kDefaultReferenceRelTol,
-                                   4'000'000, occ)
+                                   kReferenceMaxEvaluations, occ)
           .illuminance_lx;
     default:
       if (!centroid_visible(e, point, occ)) return 0.0;
@@ -86,6 +88,28 @@ double illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, cons
   return 0.0;
 }
 
+double illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver, const Model& m,
+                   const Occluder* occ) {
+  if (receiver.kind == ReceiverKind::planar) return illuminance(e, point, receiver.direction, m, occ);
+  if (e.is_point() || m.kind == ModelKind::far_field)
+    return centroid_visible(e, point, occ) ? far_field_illuminance(e, point, receiver) : 0.0;
+  const auto area_form = [&](double rel_tol) {
+    return reference_illuminance(e, point, receiver, rel_tol, kReferenceMaxEvaluations, occ).illuminance_lx;
+  };
+  switch (m.kind) {
+    case ModelKind::standard:
+    case ModelKind::high: {
+      // A measured table: the table rung, cells on the table's kinks, as for planar.
+      double lux = 0.0;
+      if (!occ && table_aligned_illuminance(e, point, receiver, lux)) return lux;
+      return area_form(m.kind == ModelKind::standard ? kStandardAreaFormRelTol : kHighAdaptiveRelTol);
+    }
+    case ModelKind::adaptive: return area_form(m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol);
+    case ModelKind::reference: return area_form(m.tolerance > 0 ? m.tolerance : kDefaultReferenceRelTol);
+    default: return area_form(kDefaultAdaptiveRelTol);
+  }
+}
+
 double far_field_weight(const Emitter& e, const Vec3& point) {
   const double size = e.largest_dimension_m;
   if (!(size > 0.0)) return 1.0;
@@ -97,14 +121,19 @@ double far_field_weight(const Emitter& e, const Vec3& point) {
 
 double hybrid_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                           const Model& near_model, NearFieldSwitch mode, const Occluder* occ) {
+  return hybrid_illuminance(e, point, Receiver::planar(normal), near_model, mode, occ);
+}
+
+double hybrid_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
+                          const Model& near_model, NearFieldSwitch mode, const Occluder* occ) {
   const Model far = Model::far_field();
-  if (mode == NearFieldSwitch::never) return illuminance(e, point, normal, far, occ);
-  if (mode == NearFieldSwitch::always) return illuminance(e, point, normal, near_model, occ);
+  if (mode == NearFieldSwitch::never) return illuminance(e, point, receiver, far, occ);
+  if (mode == NearFieldSwitch::always) return illuminance(e, point, receiver, near_model, occ);
   const double w = far_field_weight(e, point);
-  if (w >= 1.0) return illuminance(e, point, normal, far, occ);
-  const double near = illuminance(e, point, normal, near_model, occ);
+  if (w >= 1.0) return illuminance(e, point, receiver, far, occ);
+  const double near = illuminance(e, point, receiver, near_model, occ);
   if (w <= 0.0) return near;
-  return (1.0 - w) * near + w * illuminance(e, point, normal, far, occ);
+  return (1.0 - w) * near + w * illuminance(e, point, receiver, far, occ);
 }
 
 }  // namespace luxgrid::nearfield

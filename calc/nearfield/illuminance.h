@@ -7,6 +7,7 @@
 
 #include "calc/nearfield/emitter.h"
 #include "calc/nearfield/occluder.h"
+#include "calc/nearfield/receiver_kernel.h"
 
 namespace luxgrid::nearfield {
 
@@ -58,6 +59,17 @@ std::string to_string(const Model& model);
 double illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal,
                    const Model& model, const Occluder* occluder = nullptr);
 
+// The same for any receiver (receiver_kernel.h): a plane is the function above; cylindrical and
+// semi-cylindrical illuminance integrate the receiver's weight over the opening with the same
+// ladder: the far field (point kernel at the centroid); standard and high on a measured table
+// (no occluder) the table rung; every other case the area-form adaptive cubature
+// (reference_illuminance) at the rung's tolerance: standard kStandardAreaFormRelTol, high and
+// adaptive 1e-3 (or the model's), reference 1e-6 (or the model's). The Lambert-exact rungs
+// (two-kernel, Duffy-sinh, paper, subdivided) rest on closed forms of the planar kernel and have
+// no cylindrical form; the paper, subdivided and study models get the area form at 1e-3.
+double illuminance(const Emitter& emitter, const Vec3& point, const Receiver& receiver,
+                   const Model& model, const Occluder* occluder = nullptr);
+
 // Five-times rule with a blend band, so the near/far switch draws no seam on an isolux plot:
 // weight of the far-field model, 0 below kBlendStart x D, 1 beyond kBlendEnd x D (D = largest
 // dimension), smoothstep in between (continuous value and slope).
@@ -74,6 +86,11 @@ enum class NearFieldSwitch { automatic, always, never };
 // it, both within it (weights from far_field_weight).
 // `occluder` as in illuminance(): the far-field part uses the centroid segment.
 double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal,
+                          const Model& near_model, NearFieldSwitch mode = NearFieldSwitch::automatic,
+                          const Occluder* occluder = nullptr);
+// The same for any receiver: cylindrical and semi-cylindrical illuminance take the same
+// near/far decision as planar.
+double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Receiver& receiver,
                           const Model& near_model, NearFieldSwitch mode = NearFieldSwitch::automatic,
                           const Occluder* occluder = nullptr);
 

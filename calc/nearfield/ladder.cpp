@@ -389,7 +389,7 @@ inline constexpr double kStandardRelTol = 3e-3;
 // there the integrand is smooth over the emitter, the degree-5 rule converges in a few levels and
 // its error estimate is sharp. At 0.5 D the switch would give 1.7 % (two-kernel era measurement).
 inline constexpr double kStandardAreaFormStart = 0.75;  // x largest dimension
-inline constexpr double kStandardAreaFormRelTol = 3e-3;
+// kStandardAreaFormRelTol (models.h): the far tier's area-form tolerance.
 
 double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                             const Occluder* occluder) {

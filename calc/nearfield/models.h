@@ -8,11 +8,14 @@
 
 #include "calc/nearfield/emitter.h"
 #include "calc/nearfield/occluder.h"
+#include "calc/nearfield/receiver_kernel.h"
 
 namespace luxgrid::nearfield {
 
 // Far-field point at the emitter centroid: E = I(-w) cos(theta_x) / d^2, finite and >= 0.
 double far_field_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal);
+// The same for any receiver (receiver_kernel.h): E = I(-w) g(w) / d^2, g the receiver's weight.
+double far_field_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver);
 
 // The Luksch et al. 2020 cubature exactly as published (Sec. 5, Eq. 10):
 //   E = sum over fan triangles of mean(L) * mean(G) * |triangle|  (Van Oosterom-Strackee).
@@ -53,6 +56,12 @@ double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& nor
                             double rel_tol, TriangleRule rule, double* error_lx, int* samples,
                             const Occluder* occluder = nullptr);
 
+// The tolerance of standard's area-form tier (ladder.cpp) and of standard's cylindrical and
+// semi-cylindrical illuminance where no table rung applies (illuminance.cpp): the 7-point rule's
+// error estimate at 3e-3 kept every point above 1e-3 of the peak within 1 % (0.84 % worst, 10
+// data sets of the paper's protocol).
+inline constexpr double kStandardAreaFormRelTol = 3e-3;
+
 // quality "standard": see docs/nearfield.md. Within 1 % of the reference on the paper's protocol.
 double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                             const Occluder* occluder = nullptr);
@@ -64,6 +73,9 @@ double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& nor
 // covers. Converges like a smooth integrand where the adaptive rungs meet kinks. Returns false
 // (`lux` untouched) without a table view or for a point emitter.
 bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double& lux);
+// The same for any receiver (receiver_kernel.h): the receiver's weight replaces cos_r at every
+// node; a cylinder has no horizon, so its polygon is the whole opening.
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver, double& lux);
 
 // Exact illuminance from a uniform (Lambertian) emitter of luminance `luminance_cd_m2`:
 // Lambert's polygon formula E = L/2 |n . sum_edges theta g| on the horizon-clipped polygon.
@@ -86,6 +98,11 @@ struct ReferenceResult {
 // With an occluder, each sample's integrand is multiplied by its visibility (the 7-point rule's
 // error estimate sees the discontinuity and refines along the shadow edge).
 ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
+                                      double rel_tol = 1e-7, std::int64_t max_evaluations = 4'000'000,
+                                      const Occluder* occluder = nullptr);
+// The same for any receiver (receiver_kernel.h): the integrand's cos_r becomes the receiver's
+// weight g(w); a cylinder has no horizon, so the fan covers the whole opening.
+ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
                                       double rel_tol = 1e-7, std::int64_t max_evaluations = 4'000'000,
                                       const Occluder* occluder = nullptr);
 

@@ -17,6 +17,13 @@
 // receiver normal in the luminaire frame. tan(gamma') grows without bound towards the plane
 // (gamma' -> 90 deg); cells there are split so tan grows by at most kTableTanRatio across each
 // (table_cells.h).
+//
+// Other receivers (receiver_kernel.h): the unit direction to a node is
+// u = sin(gamma') a + cos(gamma') axis in the world, a = R (cos psi, sin psi, 0) per ray and
+// axis = sign(sigma) R (0, 0, 1), and receiver_weight(receiver, u) replaces cos_r. For a cylinder
+// the weight sin(eps) / pi is smooth on the cells except at the one node direction straight up or
+// down, where its cone vertex (weight 0) sits; there the integrand is small, so the cell rule's
+// error stays far below the rung's tolerance (tests/nearfield/cylindrical_test.cpp).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -25,6 +32,7 @@
 
 #include "calc/nearfield/fan_sample.h"
 #include "calc/nearfield/models.h"
+#include "calc/nearfield/receiver_kernel.h"
 #include "calc/nearfield/receiver_fan.h"
 #include "calc/nearfield/table_cells.h"
 #include "photometry/tabular_distribution.h"
@@ -172,11 +180,15 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
 }  // namespace
 
 bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double& lux) {
+  return table_aligned_illuminance(e, point, Receiver::planar(normal), lux);
+}
+
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver, double& lux) {
   const photometry::TableView view = e.distribution ? e.distribution->table_view() : photometry::TableView{};
   if (!view.table || e.is_point() || !e.table_cells || e.table_cells->table != view.table) return false;
   lux = 0.0;
-  const ShiftedReceiver receiver = shift_off_emitter_plane(e, point, horizon_shift_m(e));
-  const SmallPolygon clipped = clip_to_horizon(e, receiver.point, normal);
+  const ShiftedReceiver shifted = shift_off_emitter_plane(e, point, horizon_shift_m(e));
+  const SmallPolygon clipped = clip_to_horizon(e, shifted.point, receiver.horizon_normal());
   if (clipped.n < 3) return true;
 
   // Luminaire frame, origin at the (shifted) receiver: a vertex's x, y are its offset from F,
@@ -194,8 +206,12 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& 
   const double abs_sigma = std::abs(sigma);
   if (!(abs_sigma > 0.0)) return true;  // excluded by the horizon shift
   const bool front = sigma > 0.0;
-  const Vec3 n = e.world_to_local * normal;
+  // A plane: cos_r from the normal in the luminaire frame (the fast path, no vector per node).
+  const bool planar = receiver.kind == ReceiverKind::planar;
+  const Vec3 n = e.world_to_local * receiver.direction;
   const double n_z = front ? n.z : -n.z;
+  // Any other receiver: the world direction to a node is sin(gamma') a + cos(gamma') axis.
+  const Vec3 axis = (front ? 1.0 : -1.0) * e.rotation[2];
 
   const photometry::TabularDistribution& table = *view.table;
   const TableGammaCells& cells = *e.table_cells;
@@ -208,23 +224,31 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& 
     return true;
 
   double sum = 0.0;
-  // The nodes of one ray: weight x cos_r x intensity, the table read with the ray's C position.
+  // One ray's direction terms: `radial` = n . (cos psi, sin psi, 0) in the luminaire frame for a
+  // plane, `a` = R (cos psi, sin psi, 0) for any other receiver.
+  struct Ray {
+    double radial;
+    Vec3 a;
+  };
+  // The nodes of one ray: weight x receiver weight (cos_r for a plane) x intensity, the table
+  // read with the ray's C position.
   auto node_sum = [&](const TableGammaNode* q, const TableGammaNode* end,
-                      const photometry::TabularDistribution::CPosition& c, double radial) {
+                      const photometry::TabularDistribution::CPosition& c, const Ray& ray) {
     double v = 0.0;
     for (; q != end; ++q) {
-      const double cos_r = q->sin_g * radial + n_z * q->abs_cos_g;
-      if (!(cos_r > 0.0) || q->row < 0) continue;
-      v += q->weight_tan * cos_r * table.intensity_at(c, static_cast<std::size_t>(q->row), q->tg);
+      const double g = planar ? q->sin_g * ray.radial + n_z * q->abs_cos_g
+                              : receiver_weight(receiver, q->sin_g * ray.a + q->abs_cos_g * axis);
+      if (!(g > 0.0) || q->row < 0) continue;
+      v += q->weight_tan * g * table.intensity_at(c, static_cast<std::size_t>(q->row), q->tg);
     }
     return v;
   };
   // One end cell of a ray: table angles [a, b] with |tan| ta, tb, nodes computed here.
   auto end_cell = [&](double a, double b, double ta, double tb,
-                      const photometry::TabularDistribution::CPosition& c, double radial) {
+                      const photometry::TabularDistribution::CPosition& c, const Ray& ray) {
     end_nodes.clear();
     append_gamma_nodes(table, a, b, ta, tb, end_nodes);
-    return node_sum(end_nodes.data(), end_nodes.data() + end_nodes.size(), c, radial);
+    return node_sum(end_nodes.data(), end_nodes.data() + end_nodes.size(), c, ray);
   };
   for (std::size_t k = 0; k + 1 < psi_breaks.size(); ++k) {
     const double pa = psi_breaks[k], pw = psi_breaks[k + 1] - pa;
@@ -236,7 +260,7 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& 
       // The ray's range of table angles.
       const double g_near = std::atan2(rho_min, abs_sigma), g_far = std::atan2(rho_max, abs_sigma);
       const double t_lo = front ? g_near : kPi - g_far, t_hi = front ? g_far : kPi - g_near;
-      const double radial = n.x * cp + n.y * sp;
+      const Ray dir{n.x * cp + n.y * sp, cp * e.rotation[0] + sp * e.rotation[1]};
       double c = psi + kPi;
       c -= kTwoPi * std::floor(c / kTwoPi);
       const photometry::TabularDistribution::CPosition cpos = table.c_position(c);
@@ -247,13 +271,13 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& 
       const std::size_t k_hi = static_cast<std::size_t>(std::lower_bound(lines.begin(), lines.end(), t_hi) - lines.begin());
       double ray = 0.0;
       if (k_lo >= k_hi) {
-        ray = end_cell(t_lo, t_hi, tan_lo, tan_hi, cpos, radial);
+        ray = end_cell(t_lo, t_hi, tan_lo, tan_hi, cpos, dir);
       } else {
-        ray = end_cell(t_lo, lines[k_lo], tan_lo, cells.line_tan[k_lo], cpos, radial) +
-              end_cell(lines[k_hi - 1], t_hi, cells.line_tan[k_hi - 1], tan_hi, cpos, radial);
+        ray = end_cell(t_lo, lines[k_lo], tan_lo, cells.line_tan[k_lo], cpos, dir) +
+              end_cell(lines[k_hi - 1], t_hi, cells.line_tan[k_hi - 1], tan_hi, cpos, dir);
         // The whole cells between: nodes precomputed per emitter (table_cells.h).
         const TableGammaNode* base = cells.nodes.data();
-        ray += node_sum(base + cells.first[k_lo], base + cells.first[k_hi - 1], cpos, radial);
+        ray += node_sum(base + cells.first[k_lo], base + cells.first[k_hi - 1], cpos, dir);
       }
       sum += 0.5 * pw * ray;
     }

@@ -11,6 +11,10 @@ Lambert's exact contour formula for a rectangle. A second, independent estimator
 quadrature of cos cos' / (pi r^2) over the same rectangle) must agree to 1e-9.
 """
 import json, math, pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "_derive"))
+from gauss import gauss_legendre  # noqa: E402  (shared with the other brute-force cases)
 
 W, D, H = 4.0, 4.0, 3.0          # room: x in [0, W], y in [0, D], z in [0, H]; S2 is the wall y = D
 OB_Y0, OB_Y1, OB_H = 1.9, 2.1, 1.0  # obstruction: full width, y in [1.9, 2.1], z in [0, 1]
@@ -51,25 +55,6 @@ def lambert_polygon(p, n, poly):
         theta = math.atan2(cn, dot(a, b))
         total += theta * dot(n, c) / cn
     return abs(total) / (2.0 * math.pi)
-
-
-def gauss_legendre(n):
-    """Nodes and weights on [-1, 1] by Newton iteration on P_n."""
-    xs, ws = [], []
-    for k in range(1, n + 1):
-        x = math.cos(math.pi * (k - 0.25) / (n + 0.5))
-        for _ in range(100):
-            p0, p1 = 1.0, x
-            for m in range(2, n + 1):
-                p0, p1 = p1, ((2 * m - 1) * x * p1 - (m - 1) * p0) / m
-            dp = n * (x * p1 - p0) / (x * x - 1.0)
-            dx = p1 / dp
-            x -= dx
-            if abs(dx) < 1e-16:
-                break
-        xs.append(x)
-        ws.append(2.0 / ((1 - x * x) * dp * dp))
-    return xs, ws
 
 
 GL_X, GL_W = gauss_legendre(24)

@@ -211,12 +211,14 @@ INSTANTIATE_TEST_SUITE_P(
                 "p.json /surfaces/0/plane/size: expected two positive sizes in metres"},
         BadCase{"zero_spacing", "/surfaces/0/spacing", "0",
                 "p.json /surfaces/0/spacing: expected a positive number, got 0"},
-        BadCase{"bad_quantity", "/surfaces/0/quantity", "\"semi-cylindrical\"",
-                "p.json /surfaces/0/quantity: expected \"planar\", \"horizontal\", \"vertical\" or \"cylindrical\", got \"semi-cylindrical\""},
+        BadCase{"bad_quantity", "/surfaces/0/quantity", "\"semicylindrical\"",
+                "p.json /surfaces/0/quantity: expected \"planar\", \"horizontal\", \"vertical\", \"cylindrical\" or \"semi-cylindrical\", got \"semicylindrical\""},
         BadCase{"vertical_without_facing", "/surfaces/0/quantity", "\"vertical\"",
                 "p.json /surfaces/0/quantity: a vertical quantity on a horizontal surface needs \"facing\": [x, y]"},
         BadCase{"facing_without_vertical", "/surfaces/0/facing", "[1, 0]",
-                "p.json /surfaces/0/facing: \"facing\" only goes with \"quantity\": \"vertical\""},
+                "p.json /surfaces/0/facing: \"facing\" only goes with \"quantity\": \"vertical\" or \"semi-cylindrical\""},
+        BadCase{"semi_cylindrical_without_facing", "/surfaces/0/quantity", "\"semi-cylindrical\"",
+                "p.json /surfaces/0/quantity: a semi-cylindrical quantity on a horizontal surface needs \"facing\": [x, y]"},
         BadCase{"position_and_array", "/luminaires/0/array", "{\"origin\": [0,0,0], \"count\": [1,1], \"spacing\": [1,1]}",
                 "p.json /luminaires/0: expected exactly one of \"position\" or \"array\""}),
     [](const auto& info) { return std::string(info.param.name); });
@@ -307,6 +309,15 @@ TEST(ProjectFile, QuantitiesSetReceiverNormals) {
   s = parse_project(doc, "p.json", ".");
   EXPECT_EQ(s.surfaces[0].quantity, geometry::Quantity::cylindrical);
   EXPECT_EQ(s.surfaces[0].normals[0], Vec3(0, 0, 1));
+  // A half cylinder faces `facing` (normalised): the loader stores it as every point's normal.
+  doc["surfaces"][0]["quantity"] = "semi-cylindrical";
+  doc["surfaces"][0]["facing"] = {3, 4};
+  s = parse_project(doc, "p.json", ".");
+  EXPECT_EQ(s.surfaces[0].quantity, geometry::Quantity::semi_cylindrical);
+  EXPECT_NEAR(s.surfaces[0].normals[0].x, 0.6, 1e-15);
+  EXPECT_NEAR(s.surfaces[0].normals[0].y, 0.8, 1e-15);
+  EXPECT_EQ(s.surfaces[0].normals[0].z, 0.0);
+  doc["surfaces"][0].erase("facing");
   // A wall plane asked for vertical illuminance keeps its own horizontal normal u x v = +x.
   doc["surfaces"][0] = nlohmann::json::parse(
       R"({"name": "wall", "plane": {"origin": [4,0,0], "u": [0,1,0], "v": [0,0,1], "size": [3, 2.5]}, "spacing": 1, "quantity": "vertical"})");
