@@ -441,9 +441,11 @@ double parse_spacing(const JsonValue& s, const std::optional<JsonValue>& spacing
 }
 
 // Grid points promised so far over all surfaces. Each surface is charged its point count,
-// computed in double, before its grid is built: nothing is allocated for a refused grid.
+// computed in double, before its grid is built: nothing is allocated for a refused grid. The
+// luminaire-point pairs (the direct calculation's work) are charged at the same time.
 class GridBudget {
  public:
+  explicit GridBudget(size_t luminaires) : luminaires_(static_cast<double>(luminaires)) {}
   void spend(const JsonValue& where, double points, const char* grids = "grid") {
     if (!(points <= kMaxGridPoints)) {
       where.fail(std::string("the ") + grids + " would have " + count_text(points) +
@@ -456,12 +458,19 @@ class GridBudget {
                  "; use larger spacings or fewer surfaces");
     }
     used_ += points;
+    const double pairs = luminaires_ * used_;
+    if (pairs > kMaxLuminairePointPairs) {
+      where.fail(number_text(luminaires_) + " luminaires x " + count_text(used_) + " points = " +
+                 number_text(pairs) + " luminaire-point pairs, more than the limit of " +
+                 number_text(kMaxLuminairePointPairs) + "; use fewer luminaires or larger spacings");
+    }
   }
   void spend_cells(const JsonValue& where, double size_u, double size_v, double spacing) {
     spend(where, std::ceil(size_u / spacing) * std::ceil(size_v / spacing));
   }
 
  private:
+  double luminaires_;
   double used_ = 0.0;
 };
 
@@ -753,10 +762,9 @@ Scene parse_project(const nlohmann::json& doc, const std::string& label,
   warn_about_luminaires(scene);
   const auto surfaces = root.at("surfaces");
   check_count(surfaces, kMaxSurfaces, "surfaces");
-  GridBudget budget;
+  GridBudget budget(scene.luminaires.size());
   OutputNames outputs;
   std::set<std::string> names;
-  double points = 0.0;
   for (const auto& s : surfaces.items()) {
     for (auto& grid : parse_surface(s, scene, budget)) {
       const auto name_v = s.at("name");
@@ -767,16 +775,8 @@ Scene parse_project(const nlohmann::json& doc, const std::string& label,
       }
       check_name_length(name_v, grid.name);  // room_surfaces: "<name> wall 12"
       outputs.claim(name_v, grid.name);
-      points += static_cast<double>(grid.points.size());
       scene.surfaces.push_back(std::move(grid));
     }
-  }
-  // The direct calculation's work, checked before it starts.
-  const double pairs = static_cast<double>(scene.luminaires.size()) * points;
-  if (pairs > kMaxLuminairePointPairs) {
-    surfaces.fail(std::to_string(scene.luminaires.size()) + " luminaires x " + count_text(points) +
-                  " points = " + number_text(pairs) + " luminaire-point pairs, more than the limit of " +
-                  number_text(kMaxLuminairePointPairs) + "; use fewer luminaires or larger spacings");
   }
   if (scene.surfaces.empty()) surfaces.fail("expected at least one calculation surface");
   // IES TILT tables hold for the lamp as measured; a luminaire turned in the scene gets its

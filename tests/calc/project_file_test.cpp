@@ -417,7 +417,7 @@ TEST(ProjectFile, LuminairePointPairsAreLimited) {
                           {"array", {{"origin", {0, 0, 2}}, {"count", {200, 100}}, {"spacing", {0.01, 0.01}}}}};
   doc["surfaces"][0] = plane_surface("big");
   doc["surfaces"][0]["plane"]["size"] = {224, 224};
-  EXPECT_EQ(error_of(doc), "p.json /surfaces: 20000 luminaires x 50176 points = 1.00352e+09 luminaire-point "
+  EXPECT_EQ(error_of(doc), "p.json /surfaces/0: 20000 luminaires x 50176 points = 1.00352e+09 luminaire-point "
                            "pairs, more than the limit of 1e+09; use fewer luminaires or larger spacings");
   doc["surfaces"][0]["plane"]["size"] = {250, 200};  // 50 000 points: exactly at the limit
   EXPECT_EQ(error_of(doc), "(no error)");
