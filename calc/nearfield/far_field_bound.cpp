@@ -196,9 +196,11 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, con
 
 std::string describe(const FarFieldBound& b) {
   char buf[320];
-  const char* why = b.max_over_D <= 6.0              ? "smooth distribution"
+  // Up to 8 D the opening's geometry alone (slanted receivers) explains the distance (a
+  // Lambertian square measures 7.2 D); beyond, the table does.
+  const char* why = b.max_over_D <= 8.0              ? "smooth distribution (geometry of the opening)"
                     : b.worst_gradient_per_deg > 0.05 ? "sharp beam"
-                                                      : "coarse table (kinks between measured angles)";
+                                                      : "kinks or curvature between measured angles";
   if (b.near_everywhere_somewhere) {
     std::snprintf(buf, sizeof buf,
                   "%s: near field at every distance at C %.1f gamma %.0f deg, from %.1f D elsewhere "
