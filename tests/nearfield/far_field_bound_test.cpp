@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <string>
 
 #include "calc/nearfield/far_field_bound.h"
@@ -96,6 +98,33 @@ TEST(FarFieldBound, SmoothPanelNeedsLittleNearField) {
   std::printf("Lambertian 0.6 m square: %s\n", describe(*b).c_str());
   EXPECT_LE(b->max_over_D, 8.0);
   EXPECT_FALSE(b->near_everywhere_somewhere);
+}
+
+TEST(FarFieldBound, FigureData) {
+  // The data of docs/far_field_bound.png (scripts/plot_far_field_bound.py): d_far / D per
+  // sampled direction (C, gamma) for a coarse flood and a smooth panel. Written only when
+  // LUXGRID_FIGURE_DIR names a folder.
+  const char* dir = std::getenv("LUXGRID_FIGURE_DIR");
+  if (!dir) GTEST_SKIP() << "set LUXGRID_FIGURE_DIR to write the figure's data";
+  // The smooth one is a Lambertian 0.6 m square: every file of the corpus tried (Mirel, Panos)
+  // has a kink somewhere that asks for the near field far out.
+  photometry::LuminousOpening square;
+  square.shape = photometry::LuminousOpening::Shape::rectangle;
+  square.length = square.width = 0.6;
+  const auto flood = load("ldt/ledvance_flmax_asym_isym0.ldt");
+  const std::pair<std::string, Emitter> cases[] = {
+      {"ledvance_flmax_asym_isym0", make_emitter(flood.opening, Vec3(0, 0, 3), glm::dmat3(1.0), flood.distribution)},
+      {"lambertian_square_0.6m", make_emitter(square, Vec3(0, 0, 3), glm::dmat3(1.0), testing::lambertian())}};
+  for (const auto& [name, e] : cases) {
+    const auto b = build_far_field_bound(e, Model::standard(), kStandardPromise);
+    std::ofstream out(std::string(dir) + "/" + name + ".csv");
+    out << "# " << name << ": " << describe(*b) << "\n";
+    for (double g = 0.0; g <= 180.0; g += 1.0) {
+      for (double c = 0.0; c < 360.0; c += 2.0)
+        out << (c > 0 ? "," : "") << b->distance_over_D(photometry::direction_of(c * kDegToRad, g * kDegToRad));
+      out << "\n";
+    }
+  }
 }
 
 }  // namespace
