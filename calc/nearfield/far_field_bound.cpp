@@ -87,6 +87,25 @@ struct Probe {
   }
 };
 
+// How far a kink can lie from the nearest sample (rad): 0 when every measured angle of the
+// table is on a sample line (gamma a multiple of 5 degrees, C of 7.5: the samples then sit on the
+// kinks themselves) or when there is no table (analytic profiles have no kinks); else half a
+// gamma step, the most a kink can hide between two samples along gamma.
+double kink_slack_rad(const Emitter& e) {
+  const photometry::TableView view = e.distribution->table_view();
+  if (!view.table) return 0.0;
+  const auto on_lines = [](const std::vector<double>& angles_rad, double step_deg) {
+    return std::all_of(angles_rad.begin(), angles_rad.end(), [&](double a) {
+      const double k = a * kRadToDeg / step_deg;
+      return std::abs(k - std::round(k)) < 1e-6;
+    });
+  };
+  const auto& grid = view.table->grid();
+  return on_lines(grid.gamma_rad, kGammaStepDeg) && on_lines(grid.c_rad, kCStepDeg)
+             ? 0.0
+             : 0.5 * kGammaStepDeg * kDegToRad;
+}
+
 double relative_gradient_per_deg(const Emitter& e, double c_deg, double g_deg) {
   auto I = [&](double c, double g) { return e.distribution->intensity(photometry::direction_of(c * kDegToRad, g * kDegToRad)); };
   const double i0 = I(c_deg, g_deg);
@@ -161,10 +180,10 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, con
   // Dilation. The point model fails around a kink within about the opening's angular
   // half-width D / 2d of it: a neighbour s' at angle delta that needs the near field out to R'
   // charges this sample with min(R', kFootprintMargin / (2 (delta - delta0))) (the distance at
-  // which its footprint no longer reaches here), delta0 = half a gamma step for a kink lying
-  // between two samples. A coarse full 3 x 3 max instead put whole 10-degree bands in the near
+  // which its footprint no longer reaches here), delta0 = kink_slack_rad (a kink lying between
+  // two samples). A coarse full 3 x 3 max instead put whole 10-degree bands in the near
   // field at every distance (2.5 x the open plan's cost) for a kink whose error is 0.5 degrees wide.
-  const double delta0 = 0.5 * kGammaStepDeg * kDegToRad;
+  const double delta0 = kink_slack_rad(e);
   bound->d_far_over_D.assign(n, 0.0f);
   for (int g = 0; g < kGammaSamples; ++g)
     for (int c = 0; c < kCSamples; ++c) {
@@ -176,7 +195,7 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, con
           if (gg < 0 || gg >= kGammaSamples) continue;
           const double r = raw[gg * kCSamples + cc];
           const double excess = angle_between(here, direction_of_sample(gg, cc)) - delta0;
-          v = std::max(v, excess <= 0.0 ? r : std::min(r, kFootprintMargin / (2.0 * excess)));
+          v = std::max(v, excess <= 1e-12 ? r : std::min(r, kFootprintMargin / (2.0 * excess)));
         }
       bound->d_far_over_D[g * kCSamples + c] = static_cast<float>(v);
     }
