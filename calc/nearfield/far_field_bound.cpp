@@ -76,8 +76,10 @@ struct Probe {
   // ladder (the error falls with distance; a bump between rungs is what the dilation and the
   // safety factor are for).
   float d_far_over_D(const Vec3& u) const {
-    if (!far_ok(u, kLadderRungs - 1)) return kNearEverywhere;
+    // The first rung first: most directions pass there (median 2 D on every file tried), and
+    // checking it before the last halves the map's cost.
     if (far_ok(u, 0)) return static_cast<float>(rung_over_D(0));
+    if (!far_ok(u, kLadderRungs - 1)) return kNearEverywhere;
     int lo = 0, hi = kLadderRungs - 1;  // lo fails, hi passes
     while (hi - lo > 1) {
       const int mid = (lo + hi) / 2;
