@@ -52,15 +52,16 @@ inline constexpr double kBlendWidth = 1.25;
 // Direction grid of the map in the luminaire frame: gamma from the emitting axis (0 = straight
 // out of the opening), C the azimuth. 5 degrees in gamma and 7.5 in C put a sample on every
 // 5-degree gamma line and every C plane of 7.5, 15, 22.5, 45 or 90 degrees spacing, where tables
-// have their kinks; the dilation below covers kinks between samples.
+// have their kinks; the dilation covers kinks near and between samples.
 inline constexpr int kGammaSamples = 37;  // 0..180 degrees step 5
 inline constexpr int kCSamples = 48;      // 0..352.5 degrees step 7.5
 
 struct FarFieldBound {
   double tolerance = kStandardPromise;   // the promise it was built for
   double largest_dimension_m = 0.0;
-  // d_far / D per sample (gamma row-major, kCSamples per row) after dilation: the max over the
-  // sample and its 8 neighbours, so a kink between two samples is charged to both.
+  // d_far / D per sample (gamma row-major, kCSamples per row) after dilation: each sample also
+  // carries what its neighbours (up to 3 samples away) need, scaled by how far the opening's
+  // footprint reaches (far_field_bound.cpp), so a kink near a sample is charged to it too.
   std::vector<float> d_far_over_D;
   bool near_everywhere_somewhere = false;  // some direction failed out to the ladder's end
   // For the plan: the range and where the largest distance sits.
