@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "calc/far_field_bounds.h"
 #include "calc/indirect/indirect.h"
 #include "util/error.h"
 
@@ -19,7 +20,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 void run_direct(const Scene& scene, Results& results, const Progress& progress) {
   size_t total_points = 0;
   for (const auto& s : scene.surfaces) total_points += s.points.size();
-  const auto emitters = make_emitters(scene);
+  auto emitters = make_emitters(scene);
+  results.plan.near_far_per_emitter = attach_far_field_bounds(scene, results.plan, emitters);
   DirectCounts counts;
   size_t points_before = 0;
   for (const auto& grid : scene.surfaces) {

@@ -79,14 +79,21 @@ std::string describe_direct(const Plan& plan, const DirectCounts& c) {
     case nearfield::NearFieldSwitch::never: out = "far-field point model everywhere"; break;
     case nearfield::NearFieldSwitch::always: out = "near-field model " + model + " at every distance"; break;
     case nearfield::NearFieldSwitch::automatic:
-      out = "hybrid by the five-times rule (near-field " + model + " closer than " +
-            std::to_string(static_cast<int>(nearfield::kBlendStart)) + " x the emitter size, far-field beyond " +
-            std::to_string(static_cast<int>(nearfield::kBlendEnd)) + " x, blended between)";
+      if (!plan.near_far_per_emitter.empty()) {
+        out = "hybrid by an error bound (near-field " + model + " wherever the far-field point model is "
+              "not within the quality's promise, measured per emitter and direction; blended over 1.25 x "
+              "that distance)";
+      } else {
+        out = "hybrid by the five-times rule (near-field " + model + " closer than " +
+              std::to_string(static_cast<int>(nearfield::kBlendStart)) + " x the emitter size, far-field beyond " +
+              std::to_string(static_cast<int>(nearfield::kBlendEnd)) + " x, blended between)";
+      }
       break;
   }
   out += ": " + std::to_string(c.near) + " luminaire-point pairs near-field, " + std::to_string(c.blended) +
          " blended, " + std::to_string(c.far) + " far-field, " + std::to_string(c.point_sources) +
          " from point sources (exact point model)";
+  for (const auto& line : plan.near_far_per_emitter) out += "; " + line;
   return out;
 }
 

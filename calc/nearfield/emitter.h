@@ -14,6 +14,8 @@
 
 namespace luxgrid::nearfield {
 
+struct FarFieldBound;  // far_field_bound.h
+
 // Capacity of the fixed-size polygons on the hot path (no heap allocation per receiver point):
 // a disk of at most kMaxDiskSegments sides plus the one vertex a horizon clip can add.
 inline constexpr int kMaxDiskSegments = 128;
@@ -33,6 +35,9 @@ struct Emitter {
   photometry::DistributionPtr distribution;
   // The table rung's gamma cells when `distribution` has a table view (table_cells.h).
   std::shared_ptr<const TableGammaCells> table_cells;
+  // Where the far-field point model is within the quality's promise (far_field_bound.h), shared
+  // by every copy of the luminaire; null: the five-times rule (studies, unit tests).
+  std::shared_ptr<const FarFieldBound> far_bound;
 
   bool is_point() const { return vertices.size() < 3 || area_m2 <= 0.0; }
   // Intensity (cd) sent along the world direction `dir_world` (unit, pointing away from the

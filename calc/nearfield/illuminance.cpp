@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "calc/nearfield/far_field_bound.h"
 #include "calc/nearfield/models.h"
 
 namespace luxgrid::nearfield {
@@ -113,7 +114,10 @@ double illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver
 double far_field_weight(const Emitter& e, const Vec3& point) {
   const double size = e.largest_dimension_m;
   if (!(size > 0.0)) return 1.0;
-  const double t = (glm::length(point - e.centroid) / size - kBlendStart) / (kBlendEnd - kBlendStart);
+  const Vec3 r = point - e.centroid;
+  const double d = glm::length(r);
+  if (e.far_bound) return d > 0.0 ? e.far_bound->far_weight(e.world_to_local * (r / d), d) : 0.0;
+  const double t = (d / size - kBlendStart) / (kBlendEnd - kBlendStart);
   if (t <= 0.0) return 0.0;
   if (t >= 1.0) return 1.0;
   return t * t * (3.0 - 2.0 * t);

@@ -1,7 +1,7 @@
 #pragma once
 // The one entry point the rest of luxgrid calls for direct light from one luminaire at one
 // receiver point, optionally with occlusion (occluder.h: per quadrature node, soft shadows), and
-// the five-times-rule switch.
+// the near/far switch (an error bound per emitter, far_field_bound.h, or the five-times rule).
 #include <cstdint>
 #include <string>
 
@@ -70,14 +70,16 @@ double illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal
 double illuminance(const Emitter& emitter, const Vec3& point, const Receiver& receiver,
                    const Model& model, const Occluder* occluder = nullptr);
 
-// Five-times rule with a blend band, so the near/far switch draws no seam on an isolux plot:
-// weight of the far-field model, 0 below kBlendStart x D, 1 beyond kBlendEnd x D (D = largest
-// dimension), smoothstep in between (continuous value and slope).
+// Weight of the far-field model at `point`, blended so the near/far switch draws no seam on an
+// isolux plot (smoothstep: continuous value and slope). With an error bound (emitter.far_bound,
+// far_field_bound.h, what calc/direct attaches for standard and high): 0 nearer than the
+// direction's d_far, 1 beyond kBlendWidth x d_far. Without one, the five-times rule: 0 below
+// kBlendStart x D, 1 beyond kBlendEnd x D (D = largest dimension).
 inline constexpr double kBlendStart = 4.0;  // x largest dimension
 inline constexpr double kBlendEnd = 6.0;    // x largest dimension
 double far_field_weight(const Emitter& emitter, const Vec3& point);
 
-// settings.near_field: auto (blend by the five-times rule), always (near model everywhere),
+// settings.near_field: auto (blend by far_field_weight), always (near model everywhere),
 // never (far field everywhere).
 enum class NearFieldSwitch { automatic, always, never };
 

@@ -1,0 +1,89 @@
+#pragma once
+// The near/far decision by an error bound (issue 16 item 1): for one emitter (photometry +
+// opening + TILT, in its own frame), a map over directions of the distance beyond which the
+// far-field point model I(w) cos / d^2 is within a tolerance of the near-field integral.
+//
+// Why a map and not a rule: the point model's error at distance d is the difference between
+// the intensity at the centre direction and its average over the opening's angular footprint
+// (half-width ~ D / 2d), plus the cos / d^2 variation across the opening. For a smooth panel
+// that is well below 1 % from 3-4 D; for a coarse table with a kink (8 C planes 45 degrees apart,
+// bilinear between them) the footprint straddles the kink out to 10 D and more. The map is
+// measured, not modelled: near field (the quality's rung) against far field along rays at growing
+// distance, so it sees what the table actually does.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "util/robust_math.h"
+
+namespace luxgrid::nearfield {
+
+struct Emitter;
+struct Model;
+
+// What each quality promises against `reference` (docs/project-format.md): the tolerance the map
+// is built for. Other rungs used with near_field "auto" get the standard promise.
+inline constexpr double kStandardPromise = 0.01;  // relative
+inline constexpr double kHighPromise = 0.003;     // relative
+double promised_tolerance(const Model& near_model);
+
+// The far field must meet the promise divided by this along the sampled rays. The samples sit
+// on the kinks (the worst directions, see kGammaSamples), the blend only mixes values that are
+// within the promise, and the near rung's own error is 1.2e-4 of the cell maximum on tables
+// (docs/accuracy.md): 1.25 leaves 0.2 % of the 1 % for the ladder step and the rest. The
+// price of more is steep: a bilinear table's kink makes the point model's error fall only as
+// 1 / d (the footprint's half-width D / 2d times the slope change), so halving the target
+// doubles the near-field distance in those directions (measured: Mirel C0 gamma 35, 3.1 % at
+// 10 D, 1.6 % at 20 D, 0.79 % at 40 D).
+inline constexpr double kBoundSafetyFactor = 1.25;
+
+// Distances (x D, D = the opening's largest dimension) the search tries: a geometric ladder.
+// Below 2 D the point model is never within 1 % for an opening seen face-on at a tilt (the
+// cos / d^2 variation alone is ~ (D / 2d)^2 ~ 6 %), so the ladder starts there; beyond 48 D a
+// direction still failing is left to the near field at every distance (the plan says so).
+inline constexpr double kLadderStart = 2.0;  // x D
+inline constexpr double kLadderRatio = 1.2;
+inline constexpr int kLadderRungs = 19;      // 2 D x 1.2^18 = 53 D
+
+// The far weight rises from 0 at d_far(w) to 1 at kBlendWidth x d_far(w) (smoothstep: value
+// and slope continuous, so no seam; inside the band the far field is already within tolerance).
+inline constexpr double kBlendWidth = 1.25;
+
+// Direction grid of the map in the luminaire frame: gamma from the emitting axis (0 = straight
+// out of the opening), C the azimuth. 5 degrees in gamma and 7.5 in C put a sample on every
+// 5-degree gamma line and every C plane of 7.5, 15, 22.5, 45 or 90 degrees spacing, where tables
+// have their kinks; the dilation covers kinks near and between samples.
+inline constexpr int kGammaSamples = 37;  // 0..180 degrees step 5
+inline constexpr int kCSamples = 48;      // 0..352.5 degrees step 7.5
+
+struct FarFieldBound {
+  double tolerance = kStandardPromise;   // the promise it was built for
+  double largest_dimension_m = 0.0;
+  // d_far / D per sample (gamma row-major, kCSamples per row) after dilation: each sample also
+  // carries what its neighbours (up to 3 samples away) need, scaled by how far the opening's
+  // footprint reaches (far_field_bound.cpp), so a kink near a sample is charged to it too.
+  std::vector<float> d_far_over_D;
+  bool near_everywhere_somewhere = false;  // some direction failed out to the ladder's end
+  // For the plan: the range and where the largest distance sits.
+  double min_over_D = 0.0, max_over_D = 0.0, median_over_D = 0.0;
+  double worst_c_deg = 0.0, worst_gamma_deg = 0.0;
+  double worst_gradient_per_deg = 0.0;  // |grad I| / I there, relative per degree (the "why")
+
+  // d_far(w) / D for a unit direction in the luminaire frame, bilinear between samples (so the
+  // far weight is continuous across directions too).
+  double distance_over_D(const Vec3& local_dir) const;
+  // Far-field weight for a receiver at distance `distance_m` along local direction `local_dir`.
+  double far_weight(const Vec3& local_dir, double distance_m) const;
+};
+
+// Builds the map for `emitter` (its own frame is read from emitter.rotation, so the map is the
+// same for every pose) against `near_model`, for the promise `tolerance`. Cost: about 2 x 10^5
+// near-field evaluations worst case, in parallel (tens to hundreds of ms per distinct emitter).
+std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& emitter, const Model& near_model,
+                                                           double tolerance);
+
+// The plan's line for one emitter: "near field out to 9.1 D (C 45, gamma 35), 2.0 D at least,
+// median 3.4 D (0.65 m opening), far field within 1 % beyond" with the reason.
+std::string describe(const FarFieldBound& bound);
+
+}  // namespace luxgrid::nearfield
