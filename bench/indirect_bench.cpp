@@ -1,4 +1,4 @@
-// How calc/indirect's time and memory grow with the patch count (issue 7, performance): a
+// How calc/indirect's time and memory grow with the patch count (docs/indirect.md, performance): a
 // 12 x 8 x 3 m room (floor 0.2, walls 0.5, ceiling 0.7) with 6 Lambertian downlights and a
 // 0.25 m workplane grid (1 353 points), solved at patch sizes from 1 m to 0.25 m, converged
 // (`auto`) and one bounce. Counters: patches, VPLs, form-factor matrix size (the dominant memory:

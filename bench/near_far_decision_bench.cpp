@@ -1,4 +1,4 @@
-// ns per luminaire-point pair of the near/far decision itself (issue 16 item 1): the error-bound
+// ns per luminaire-point pair of the near/far decision itself (docs/nearfield.md): the error-bound
 // map's far weight (calc/nearfield/far_field_bound.h: direction into the luminaire frame, C and
 // gamma, a bilinear read) against the five-times rule (one distance), and the one-off cost of
 // building the map for the office's Mirel.

@@ -1,4 +1,4 @@
-// ns per evaluation of each near-field model and rung (issue 5, item 7), averaged over the
+// ns per evaluation of each near-field model and rung (docs/accuracy.md), averaged over the
 // paper's protocol points (Luksch et al. 2020 Sec. 6: 1 x 1 emitter at heights 0.1 / 1 / 2.5,
 // five orientations, a +-2.5 region on a 21 x 21 grid), for an analytic batwing profile and a
 // tabulated (bilinear C-gamma) profile whose lookup costs what a photometric file's does.

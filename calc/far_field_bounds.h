@@ -1,5 +1,5 @@
 #pragma once
-// The near/far decision of a run (issue 16 item 1): one error-bound map (nearfield/
+// The near/far decision of a run (docs/nearfield.md): one error-bound map (nearfield/
 // far_field_bound.h) per distinct emitter of the scene, attached to every copy, and the plan's
 // line for each.
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 // A thin walker over nlohmann::json that knows where it is: every value carries its JSON pointer,
 // so every complaint names the place (`office.json /luminaires/3/rotation: expected 3 numbers,
-// got 2`), and objects reject keys nobody asked for (STYLE.md habits 1 and 2).
+// got 2`), and objects reject keys nobody asked for (docs/reliability.md).
 #include <initializer_list>
 #include <optional>
 #include <string>

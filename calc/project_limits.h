@@ -67,7 +67,7 @@ inline constexpr double kMaxCoordinate_m = 1e5;
 // every product is slow and loses its digits, and the results round to 0 lx.
 inline constexpr double kMinScaledIntensity_cd = 1e-6;
 
-// The smallest maintenance factor, EN 12464-1 section 4.10: real plans use 0.5 to 0.9 (0.4 in
+// The smallest maintenance factor [EN12464-1]: real plans use 0.5 to 0.9 (0.4 in
 // very dirty spaces); a factor below 0.1 would mean losing nine tenths of the light before
 // maintenance, a typo (0.08 for 0.8) rather than a plan.
 inline constexpr double kMinMaintenanceFactor = 0.1;

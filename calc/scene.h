@@ -56,7 +56,7 @@ struct Pose {
   glm::dmat3 rotation{1.0};  // luminaire frame -> world frame
 };
 
-// Rotation [rx, ry, rz] in radians about the world x, then y, then z axis (ARCHITECTURE.md).
+// Rotation [rx, ry, rz] in radians about the world x, then y, then z axis (docs/project-format.md).
 glm::dmat3 rotation_xyz(double rx, double ry, double rz);
 
 struct Luminaire {

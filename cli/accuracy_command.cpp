@@ -1,5 +1,5 @@
 // `luxgrid accuracy [--out DIR] [--quick] [--grid N] [--photometry DIR]`: the accuracy-versus-time study of
-// the near-field models (issue 5 item 6; cli/accuracy_study.h describes the protocol). Writes
+// the near-field models (docs/accuracy.md; cli/accuracy_study.h describes the protocol). Writes
 // DIR/accuracy.md (tables) and DIR/accuracy.png (error versus time with the Pareto front).
 #include <cstdio>
 #include <filesystem>

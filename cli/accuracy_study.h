@@ -1,6 +1,6 @@
 #pragma once
-// The accuracy-versus-time study of issue 5 item 6, after the evaluation protocol of Luksch et al.
-// 2020 (seed 000, Sec. 6): a 1 x 1 emitter centred at heights 0.1, 1.0 and 2.5 over a ground plane
+// The accuracy-versus-time study (docs/accuracy.md), after the evaluation protocol of
+// [Luksch2020, Sec. 6]: a 1 x 1 emitter centred at heights 0.1, 1.0 and 2.5 over a ground plane
 // (z = 0, normal +z), turned so that the angle between its emitting normal and the ground normal is
 // pi/2, 5/8 pi, 3/4 pi, 7/8 pi or pi, receivers on a regular grid over the 5 x 5 region centred
 // under the light. For each data set and height, every model of the near-field ladder is run on

@@ -1,5 +1,5 @@
 #pragma once
-// A "light distribution texture" (Wallner, seed 001, Sec. 4): the distribution resampled once on
+// A "light distribution texture" ([Wallner, Sec. 4]): the distribution resampled once on
 // a regular grid, so that a lookup is a few multiplications and no search.
 //
 // Wallner indexes his texture by (C, gamma), which costs two inverse trigonometric calls per

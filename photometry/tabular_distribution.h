@@ -1,7 +1,7 @@
 #pragma once
 // Intensity from a measured (C, gamma) table: the full-sphere grid a reader produces after
 // symmetry expansion (symmetry.h), looked up by direction with bilinear or Catmull-Rom bicubic
-// interpolation (Wallner, "Geometry of Arbitrary Light Distributions", Sec. 4.1, seed 001).
+// interpolation (Wallner, "Geometry of Arbitrary Light Distributions", Sec. 4.1 [Wallner]).
 //
 // Conventions, stated once here:
 //  * The grid is periodic in C: c_rad ascending in [0, 2 pi), the cell after the last plane wraps

@@ -1,6 +1,6 @@
 #pragma once
 // One error type for the whole library: it carries a message a user can act on, already
-// naming the file and line or the JSON pointer. Only cli/ catches it (see STYLE.md habit 3).
+// naming the file and line or the JSON pointer. Only cli/ catches it (docs/architecture.md, "Errors").
 #include <stdexcept>
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Robust numeric primitives in one place (STYLE.md habit 5). Callers never write a raw
+// Robust numeric primitives in one place (numerical robustness: one implementation each). Callers never write a raw
 // acos(dot(a, b)) or atan for a solid angle.
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// The first bounce, RSM-style (seed 004, ARCHITECTURE.md "Indirect light"): the luminous flux
+// The first bounce, RSM-style ([Dachsbacher2005], [Gadia2024]): the luminous flux
 // each luminaire sends onto each patch, found by integrating the luminaire's intensity over the
 // patch's solid angle. A patch with flux Phi = reflectance x incident lumens is one virtual point
 // light (VPL). Where an RSM rasterises the room into a (cube) shadow map from the luminaire, this

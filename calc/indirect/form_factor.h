@@ -21,7 +21,7 @@ using OcclusionFn = std::function<bool(const Vec3& a, const Vec3& b)>;
 // bounded however close x is to the polygon (no singularity: no spikes near walls or corners).
 double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Polygon3& polygon);
 
-// The point-to-point kernel of seed 004, Eq. 3, as a form factor: a patch of area A at centroid
+// The point-to-point kernel of [Gadia2024, Eq. 3], as a form factor: a patch of area A at centroid
 // c with normal m, seen from x with normal n:
 //   F = A max(0, m . (x - c)) max(0, n . (c - x)) / (pi |x - c|^4).
 // Relative error against the exact value is about (D / d)^2 / (2 pi) for a patch of diameter D

@@ -1,7 +1,7 @@
 #pragma once
 // The patch mesh of calc/indirect: every room face (floor, ceiling, one wall per outline edge)
 // cut into convex planar patches of about `patch_size_m`. Patches are the unit of the radiosity
-// solve and, after the first bounce, its virtual point lights (ARCHITECTURE.md, seed 004).
+// solve and, after the first bounce, its virtual point lights ([Gadia2024]).
 //
 // The mesh is built here from Scene::rooms, with the faces and orientations of geometry/room.h
 // (room_faces, obstacle_faces): walls are gridded rectangles; floor and ceiling are a grid over the

@@ -1,4 +1,4 @@
-// The converging reference for any distribution (issue 5, item 3b): globally adaptive cubature
+// The converging reference for any distribution: globally adaptive cubature
 // of the area form of the illuminance (Luksch et al. 2020 Eq. 1 without the BRDF),
 //   E = (1/A) * integral over the clipped polygon of I(-w) g(w) / d^2 dA,
 // g the receiver's weight (receiver_kernel.h: cos_r for a plane, sin(eps) / pi for a cylinder),

@@ -76,7 +76,7 @@ struct SampleContext {
   }
 };
 
-// Every public illuminance is finite and >= 0 (ARCHITECTURE.md): NaN and negatives become 0,
+// Every public illuminance is finite and >= 0 (docs/nearfield.md, "Conventions"): NaN and negatives become 0,
 // +inf becomes the largest double. A model that needs this on a valid input has a bug, which
 // the hard-case tests look for with the raw functions.
 inline double sanitize_illuminance(double e) {

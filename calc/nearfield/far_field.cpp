@@ -6,7 +6,7 @@
 
 namespace luxgrid::nearfield {
 
-// Inverse-square law with the cosine of incidence (ARCHITECTURE.md, model 1): the whole
+// Inverse-square law with the cosine of incidence ([Luksch2020, Sec. 2.1], the far-field model): the whole
 // luminaire as a point at the centroid of its opening. A receiver at the centroid itself gets 0
 // (the point model has no answer there; the near-field models do).
 // The receiver's weight (receiver_kernel.h) replaces the cosine for cylindrical and

@@ -16,7 +16,7 @@ constexpr double kCStepDeg = 360.0 / kCSamples;
 
 // Receivers dimmer than this fraction of the emitter's peak illuminance at the same distance
 // (I_max / d^2) are held to an absolute error of tolerance x that floor instead of a relative
-// one: the promise covers points brighter than 1 % of a surface's maximum (issue 16), and a
+// one: the promise covers points brighter than 1 % of a surface's maximum (docs/accuracy.md), and a
 // direction at the dark edge of a beam would otherwise ask for the near field out to any
 // distance for a value nobody reads. 1e-3 leaves a factor 10 to the 1 % line.
 constexpr double kDimFloor = 1e-3;

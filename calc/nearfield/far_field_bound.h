@@ -1,5 +1,5 @@
 #pragma once
-// The near/far decision by an error bound (issue 16 item 1): for one emitter (photometry +
+// The near/far decision by an error bound (docs/nearfield.md): for one emitter (photometry +
 // opening + TILT, in its own frame), a map over directions of the distance beyond which the
 // far-field point model I(w) cos / d^2 is within a tolerance of the near-field integral.
 //

@@ -1,5 +1,5 @@
 // The accuracy ladder above the paper's cubature: fixed subdivision of every fan triangle, and
-// an adaptive rung (issue 5, item 2).
+// an adaptive rung (docs/nearfield.md, "The ladder").
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -370,7 +370,7 @@ double sinh_adaptive(const Emitter& e, const Vec3& point, const Vec3& normal, do
 //    Duffy-sinh adaptive cubature above, until the summed indicators are below kStandardRelTol
 //    of E or kNearMaxLookups lookups are spent. It replaces the two-kernel adaptive rung here,
 //    which needed 8000 to 20000 lookups (the budget) at a tabulated spot 0.1 below the emitter
-//    for the same accuracy (issue 5: standard cost 620x the far field, 46 us per point).
+//    for the same accuracy (the two-kernel rung cost 620x the far field, 46 us per point).
 //  - far: first the same cubature without splits (one 3 x 3 + 2 x 2 cell per fan triangle,
 //    13 lookups each); when its indicator is already below kStandardRelTol of E (every
 //    Lambertian point, where it is exact, and most smooth profiles) that is the value, else the

@@ -1,5 +1,5 @@
 #pragma once
-// Optional occlusion for the near-field models (issue 6, item 3: soft shadows of area emitters).
+// Optional occlusion for the near-field models (soft shadows of area emitters, docs/geometry.md).
 // calc/nearfield knows nothing of scenes or CGAL: calc/direct adapts its Visibility (an AABB tree)
 // to this interface. Every model takes `const Occluder*`; nullptr means "nothing blocks light"
 // and costs nothing.

@@ -1,6 +1,6 @@
 #pragma once
 // Spherical-geometry kernels of the near-field models, robust for degenerate and large
-// triangles (STYLE.md habit 5: solid angles by atan2, never atan).
+// triangles (solid angles by atan2, never atan [VanOosterom1983]).
 #include <cmath>
 
 #include "util/robust_math.h"

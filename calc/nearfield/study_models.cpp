@@ -1,4 +1,4 @@
-// Baselines for the accuracy-versus-time study (Luksch et al. 2020 Sec. 4; issue 5 item 6):
+// Baselines for the accuracy-versus-time study ([Luksch2020, Sec. 4]; docs/accuracy.md):
 // structured sampling, the most representative point, and Monte Carlo.
 #include <cmath>
 #include <cstdint>

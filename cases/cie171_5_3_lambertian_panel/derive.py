@@ -13,7 +13,7 @@ from lambert import *  # noqa: E402,F403  (shared exact Lambert polygon integral
 L, a, H = 1000.0, 1.0, 3.0            # cd/m^2, panel side (m), room height (m)
 I0 = L * a * a                        # builtin lambertian: I(gamma) = I0 cos(gamma), L = I0 / A
 panel = rectangle(2.0, 2.0, H, a, a)  # emits downward (default orientation)
-REL_TOL = 0.01                        # quality standard: within 1 % of the reference (issue 5)
+REL_TOL = 0.01                        # quality standard: within 1 % of the reference (docs/accuracy.md)
 
 def far_field(p, n):
     d = _sub(p, (2.0, 2.0, H))

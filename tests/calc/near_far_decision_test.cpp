@@ -1,4 +1,4 @@
-// The near/far decision by an error bound (calc/nearfield/far_field_bound.h, issue 16 item 1,
+// The near/far decision by an error bound (calc/nearfield/far_field_bound.h, docs/nearfield.md,
 // "Done when"): real luminaires tilted and aimed at a floor and a wall from 1 to 12 D; the
 // hybrid of `standard` is within 1 % of `reference` at every point brighter than 1 % of its
 // surface's maximum, and `high` within 0.3 % (the promises of docs/project-format.md).
@@ -28,7 +28,7 @@ using nearfield::NearFieldSwitch;
 
 // The reference's own tolerance here: 1e-5 relative, 300 times below the 0.3 % bar.
 constexpr double kReferenceTol = 1e-5;
-// Points below this fraction of the surface's maximum are not held to the promise (issue 16).
+// Points below this fraction of the surface's maximum are not held to the promise (docs/accuracy.md).
 constexpr double kBrightFraction = 0.01;
 // Receivers per distance on each surface, spread around the emitter (12 distances x 10).
 constexpr int kAzimuths = 10;

@@ -1,4 +1,4 @@
-// Soft shadows of area luminaires through the whole direct calculation (issue 6, item 3 and its
+// Soft shadows of area luminaires through the whole direct calculation (docs/geometry.md, and its
 // "done when": an area source half-hidden by an edge gives the exact Lambert value of its visible
 // part). A 1 x 1 Lambertian panel in the ceiling (z = 3) of a 4 x 4 x 3 m room, over a full-width
 // partition x in [1.9, 2.0], z in [0, 1.5]. From a floor point R = (x_r, y, 0) with x_r < 1.9 a ray
@@ -64,7 +64,7 @@ TEST(SoftShadow, PanelHalfHiddenByAPartitionGivesLambertOfItsVisiblePart) {
   for (size_t i = 0; i < E.size(); ++i) {
     const Vec3 p = grid.points[i];
     const double exact = exact_visible(p);
-    // `standard` is held to 1 % of the reference (issue 5, item 2); the shadow edge is refined
+    // `standard` is held to 1 % of the reference (docs/accuracy.md); the shadow edge is refined
     // until its cells carry less than that (calc/nearfield/ladder.cpp).
     EXPECT_NEAR(E[i], exact, 0.01 * exact) << p.x << ", " << p.y;
   }

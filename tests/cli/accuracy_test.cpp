@@ -91,7 +91,7 @@ TEST(AccuracyStudy, LambertRungIsExactForCosineAndStandardWithinOnePercent) {
   const auto& s = quick_study();
   for (double h : s.options.heights) {
     EXPECT_LT(s.cell("cosine", h, model_index(s, Model::lambert_subdivided(1))).nrms, 1e-4) << h;
-    for (const auto& ds : s.data_sets) {  // quality standard: within 1 % (issue 5 item 2)
+    for (const auto& ds : s.data_sets) {  // quality standard: within 1 % (docs/accuracy.md)
       EXPECT_LT(s.cell(ds, h, model_index(s, Model::standard())).max_rel, 0.01) << ds << " h=" << h;
       // ... of every point's own value, for the points brighter than 1e-3 of the cell's peak.
       EXPECT_LT(s.cell(ds, h, model_index(s, Model::standard())).point_rel, 0.01) << ds << " h=" << h;

@@ -1,5 +1,5 @@
 // Tests of calc/indirect: patch mesh, form factors, first bounce, radiosity, gather, decision.
-// Each compares with something that could disagree (STYLE.md habit 6): closed forms (Hottel's
+// Each compares with something that could disagree: closed forms (Hottel's
 // differential-area-to-rectangle factor, the integrating sphere), invariants (flux conservation,
 // reciprocity) and an independent fine-patch solve.
 #include <gtest/gtest.h>
@@ -331,7 +331,7 @@ TEST(FirstBounce, PatchFluxMatchesDirectIlluminanceOnPatch) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Energy balance (issue 7): closed room of uniform rho; mean direct Phi/A, first bounce rho Phi/A,
+// Energy balance (docs/indirect.md): closed room of uniform rho; mean direct Phi/A, first bounce rho Phi/A,
 // converged rho Phi/(A (1 - rho)); after N bounces rho Phi (1 - rho^N) / (A (1 - rho)).
 
 TEST(EnergyBalance, BoxAndLRoomPerBounceCount) {
@@ -647,7 +647,7 @@ TEST(Obstacles, EnergyBalanceInClosedBoxWithObstacles) {
   EXPECT_NEAR(vpl / rho_received, 1.0, 1e-12);
   EXPECT_NEAR(vpl / fb.received_flux_lm, 0.5, 1e-12);
   const double direct_err = fb.received_flux_lm / fb.emitted_flux_lm - 1.0;
-  EXPECT_NEAR(direct_err, 0.0, 5e-3);  // issue 7: within 0.5 %
+  EXPECT_NEAR(direct_err, 0.0, 5e-3);  // docs/indirect.md: within 0.5 %
   for (double rho : {0.2, 0.5, 0.8}) {
     for (auto& p : mesh.patches) p.reflectance = rho;
     std::vector<double> rhos;
@@ -713,7 +713,7 @@ TEST(Obstacles, TableShadowsTheFloorInTheFirstBounce) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// A sphere-like room (issue 7): in a sphere the form factor from any surface element to dA' is
+// A sphere-like room: in a sphere the form factor from any surface element to dA' is
 // dA' / (4 pi R^2) whatever the element (cos = d / 2R at both ends), so the first reflection of
 // ANY light is uniform, rho R_flux / A, however the direct light falls. A 24-gon prism as high as
 // it is wide is the nearest room luxgrid can describe; it is not exact because its faces are flat

@@ -1,4 +1,4 @@
-// Cylindrical and semi-cylindrical illuminance from area luminaires (issue 16, item 2): every
+// Cylindrical and semi-cylindrical illuminance from area luminaires (docs/nearfield.md): every
 // near-field rung against a brute-force integral written here, independently of the rungs (a
 // midpoint sum over the opening with the weights spelt out from their definitions, not through
 // receiver_kernel.h), and against closed forms where they exist.
@@ -96,7 +96,7 @@ void expect_rungs_match(const char* label, const Emitter& e, const Vec3& x, What
               reference, 100 * (reference / t.value - 1), far);
   EXPECT_NEAR(standard, t.value, kStandardPromise * t.value) << label;
   EXPECT_NEAR(hybrid, t.value, kStandardPromise * t.value) << label;
-  // high promises 0.3 % (issue 16); the reference 1e-6 of its own integrand, which the brute
+  // high promises 0.3 % (docs/accuracy.md); the reference 1e-6 of its own integrand, which the brute
   // force matches to its own convergence (1e-3 between 600 and 1200 cells, so 0.3 % here too).
   EXPECT_NEAR(high, t.value, 3e-3 * t.value) << label;
   EXPECT_NEAR(reference, t.value, 3e-3 * t.value) << label;

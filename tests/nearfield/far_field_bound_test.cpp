@@ -1,4 +1,4 @@
-// The near/far decision by an error bound (calc/nearfield/far_field_bound.h, issue 16 item 1).
+// The near/far decision by an error bound (calc/nearfield/far_field_bound.h, docs/nearfield.md).
 #include <gtest/gtest.h>
 
 #include <cstdio>

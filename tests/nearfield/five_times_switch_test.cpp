@@ -1,4 +1,4 @@
-// The near/far switch of near_field "auto" (issue 5 item 4): no seam on an isolux plot. Along
+// The near/far switch of near_field "auto" (docs/nearfield.md): no seam on an isolux plot. Along
 // rays leaving the emitter through the blend band (4 D to 6 D, D = largest dimension) the hybrid
 // value is compared with the near model alone: how far it strays (bounded by the far field's own
 // error in the band) and how much it adds to the change between neighbouring receivers (the

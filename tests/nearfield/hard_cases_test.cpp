@@ -1,4 +1,4 @@
-// The hard cases of issue 5, item 5: degenerate geometry, extreme scales, zero intensities.
+// The hard cases: degenerate geometry, extreme scales, zero intensities.
 // Invariant everywhere: finite, >= 0; plus the specific expectations named in each test.
 #include <gtest/gtest.h>
 
@@ -185,7 +185,7 @@ TEST(HardCases, FarAwayEveryModelTendsToTheFarField) {
 
 TEST(HardCases, StandardMatchesLambertOnCosineEmitterEverywhere) {
   // Per-rung tolerance on cosine distributions: standard is exact (1e-9), the paper's rule is
-  // off by up to 28 % at h = 0.1 (issue 5), k = 2 subdivision by up to 25 % (measured 20 %).
+  // off by up to 28 % at h = 0.1 (docs/nearfield.md), k = 2 subdivision by up to 25 % (measured 20 %).
   for (double h : {0.1, 1.0})
     for (double theta : {5 * kPi / 8, kPi}) {
       const Emitter e = paper_emitter(h, theta, testing::lambertian(500.0));

@@ -1,4 +1,4 @@
-// Property test of the near-field hot path (issue 6 item 5): the horizon clip and the closest
+// Property test of the near-field hot path: the horizon clip and the closest
 // point of calc/nearfield/receiver_fan.cpp, in plain double arithmetic, against the same
 // operations done with CGAL's exact-constructions kernel on random convex polygons and planes,
 // plus degenerate set-ups whose coordinates are exact in binary so the exact answer is the

@@ -1,4 +1,4 @@
-// Values of every rung against closed forms and against each other (STYLE.md habit 6).
+// Values of every rung against closed forms and against each other.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Soft shadows in the near-field models (issue 6, item 3; calc/nearfield/occluder.h): a 1 x 1
+// Soft shadows in the near-field models (calc/nearfield/occluder.h): a 1 x 1
 // Lambertian emitter 1 m above the receiver, partly hidden by an opaque half-plane screen
 // {z = kScreenZ, x >= kScreenEdgeX} between them. A ray from the receiver R to the emitter point
 // P passes the screen at x = R.x + kScreenZ (P.x - R.x) / h, so the part of the emitter that R sees
@@ -55,7 +55,7 @@ double exact_visible(const Vec3& r) {
   return lambert_uniform_illuminance(strip, r, kUp, kI0 / 1.0);
 }
 
-// The near-field tolerance: `standard` is held to 1 % of the reference (issue 5, item 2), plus,
+// The near-field tolerance: `standard` is held to 1 % of the reference (docs/accuracy.md), plus,
 // in a shadow, 5e-4 of the unshadowed value: the adaptive rung stops at 2e-4 of it
 // (kPenumbraAbsoluteFraction in ladder.cpp) rather than chase a sliver of the emitter to its
 // budget; 5e-4 allows for its error estimate being an estimate. The reference at rel_tol 1e-5 to

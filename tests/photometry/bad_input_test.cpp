@@ -1,4 +1,4 @@
-// Hostile inputs (STYLE.md habit 8): every file under tests/data/bad/ must be rejected with
+// Hostile inputs (docs/reliability.md): every file under tests/data/bad/ must be rejected with
 // exactly the message in <file>.expected (the folder is stripped from the message), never a
 // crash, never a partial result. tests/data/bad/make_bad.py writes the files and messages.
 #include <gtest/gtest.h>

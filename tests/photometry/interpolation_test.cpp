@@ -1,4 +1,4 @@
-// Interpolation invariants of TabularDistribution and DistributionTexture (issue 4, "Done when"):
+// Interpolation invariants of TabularDistribution and DistributionTexture:
 // exact at measured angles, continuous across C = 0/360 and at the poles, symmetric files give
 // symmetric lookups, bicubic never negative, flux of a constant table is 4 pi I to 1e-9, flux of
 // I0 cos(gamma) on the lower hemisphere is pi I0.
