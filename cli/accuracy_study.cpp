@@ -7,19 +7,17 @@
 #include <numbers>
 #include <sstream>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include "calc/nearfield/analytic_profiles.h"
 #include "calc/nearfield/models.h"
 #include "calc/scene.h"
 #include "photometry/builtin.h"
 #include "photometry/photometry.h"
+#include "report/png_file.h"
+#include "report/raster.h"
+#include "report/raster_text.h"
 #include "util/error.h"
 
 namespace luxgrid::cli {
-
-namespace OIIO = OIIO_NAMESPACE;
 
 namespace {
 
@@ -329,7 +327,6 @@ std::string format_accuracy_markdown(const AccuracyStudy& s, const std::string& 
 }
 
 void write_accuracy_plot(const AccuracyStudy& s, const std::filesystem::path& png) {
-  constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
   constexpr int kW = 960, kH = 640, kLeft = 90, kRight = 30, kTop = 50, kBottom = 70;
   struct P {
     double x, y;  // log10 ns, log10 nrms
@@ -350,23 +347,23 @@ void write_accuracy_plot(const AccuracyStudy& s, const std::filesystem::path& pn
   auto px = [&](double x) { return kLeft + static_cast<int>(std::lround((x - x0) / (x1 - x0) * (kW - kLeft - kRight))); };
   auto py = [&](double y) { return kTop + static_cast<int>(std::lround((y1 - y) / (y1 - y0) * (kH - kTop - kBottom))); };
 
-  OIIO::ImageBuf canvas(OIIO::ImageSpec(kW, kH, 3, OIIO::TypeDesc::FLOAT));
-  const float white[3] = {1, 1, 1}, black[3] = {0, 0, 0}, grey[3] = {0.85f, 0.85f, 0.85f},
-              blue[3] = {0.1f, 0.3f, 0.8f}, red[3] = {0.85f, 0.15f, 0.1f}, green[3] = {0.1f, 0.6f, 0.2f};
-  OIIO::ImageBufAlgo::fill(canvas, white);
+  using report::Rgb;
+  const Rgb white{1, 1, 1}, black{0, 0, 0}, grey{0.85f, 0.85f, 0.85f}, blue{0.1f, 0.3f, 0.8f},
+            red{0.85f, 0.15f, 0.1f}, green{0.1f, 0.6f, 0.2f};
+  report::Raster canvas(kW, kH, white);
   bool text_ok = true;
-  auto text = [&](int x, int y, const std::string& t, int size, const float* colour) {
-    if (text_ok) text_ok = OIIO::ImageBufAlgo::render_text(canvas, x, y, t, size, kFont, OIIO::cspan<float>(colour, 3));
+  auto text = [&](int x, int y, const std::string& t, int size, Rgb colour) {
+    if (text_ok) text_ok = report::draw_text(canvas, x, y, t, size, report::kPlotFont, colour);
   };
   for (int d = static_cast<int>(x0); d <= static_cast<int>(x1); ++d) {
-    OIIO::ImageBufAlgo::render_line(canvas, px(d), py(y0), px(d), py(y1), grey);
+    canvas.line(px(d), py(y0), px(d), py(y1), grey);
     text(px(d) - 14, py(y0) + 22, "1e" + std::to_string(d), 14, black);
   }
   for (int d = static_cast<int>(y0); d <= static_cast<int>(y1); ++d) {
-    OIIO::ImageBufAlgo::render_line(canvas, px(x0), py(d), px(x1), py(d), grey);
+    canvas.line(px(x0), py(d), px(x1), py(d), grey);
     text(20, py(d) + 5, "1e" + std::to_string(d), 14, black);
   }
-  OIIO::ImageBufAlgo::render_box(canvas, px(x0), py(y1), px(x1), py(y0), black);
+  canvas.box(px(x0), py(y1), px(x1), py(y0), black, false);
   text(kLeft, 30, "Near-field models: NRMS error vs time (mean over data sets and heights)", 18, black);
   text(kW / 2 - 120, kH - 18, "time per evaluation (ns, one thread)", 15, black);
   text(8, kTop - 12, "NRMS", 15, black);
@@ -378,12 +375,11 @@ void write_accuracy_plot(const AccuracyStudy& s, const std::filesystem::path& pn
   for (const auto& p : sorted)
     if (front.empty() || p.y < front.back().y) front.push_back(p);
   for (size_t i = 1; i < front.size(); ++i)
-    OIIO::ImageBufAlgo::render_line(canvas, px(front[i - 1].x), py(front[i - 1].y), px(front[i].x),
-                                    py(front[i].y), green);
+    canvas.line(px(front[i - 1].x), py(front[i - 1].y), px(front[i].x), py(front[i].y), green);
   for (size_t i = 0; i < pts.size(); ++i) {
     const auto& p = pts[i];
     const int cx = px(p.x), cy = py(p.y);
-    OIIO::ImageBufAlgo::fill(canvas, p.mc ? red : blue, OIIO::ROI(cx - 4, cx + 5, cy - 4, cy + 5, 0, 1, 0, 3));
+    canvas.fill(cx - 4, cx + 5, cy - 4, cy + 5, p.mc ? red : blue);
     // Monte Carlo labels to the left, the ladder's to the right, staggered against overlap.
     const int dy = (i % 2) ? 14 : -4;
     if (p.mc)
@@ -395,10 +391,9 @@ void write_accuracy_plot(const AccuracyStudy& s, const std::filesystem::path& pn
   text(kW - kRight - 260, kTop + 40, "green: Pareto front", 13, green);
   if (!text_ok)
     std::fprintf(stderr, "luxgrid: warning: %s: plot written without labels (font %s unavailable)\n",
-                 png.string().c_str(), kFont);
-  OIIO::ImageBuf out = OIIO::ImageBufAlgo::copy(canvas, OIIO::TypeDesc::UINT8);
-  const auto tmp = png.string() + ".tmp.png";
-  if (!out.write(tmp)) throw CalculationError(png.string() + ": cannot write the image: " + out.geterror());
+                 png.string().c_str(), report::kPlotFont);
+  const std::filesystem::path tmp = png.string() + ".tmp.png";
+  report::write_png(canvas, tmp);
   std::filesystem::rename(tmp, png);
 }
 

@@ -106,7 +106,8 @@ AccuracyStudy run_accuracy_study(const std::vector<AccuracyDataSet>& data_sets,
 std::string format_accuracy_markdown(const AccuracyStudy& study, const std::string& command);
 
 // Error versus time (log-log), one point per model, the Pareto front drawn through the models
-// no other model beats in both. Written with OpenImageIO; throws CalculationError on failure.
+// no other model beats in both. Drawn on a report::Raster and written as PNG; throws
+// CalculationError on failure.
 void write_accuracy_plot(const AccuracyStudy& study, const std::filesystem::path& png);
 
 // Monte Carlo model whose mean time per evaluation is closest (in log) to `ns`, or -1.

@@ -1,5 +1,5 @@
 // `luxgrid calc PROJECT [-o DIR] [--quality Q] [--no-report] [--scale MIN:MAX] [--check]
-//  [--with-cost]`
+//  [--with-cost] [--arrays npy]`
 #include <cstdio>
 #include <memory>
 
@@ -11,7 +11,7 @@ namespace luxgrid::cli {
 
 void add_calc_command(CLI::App& app, Runner& run) {
   struct Options {
-    std::string project, out, quality, scale;
+    std::string project, out, quality, scale, arrays;
     bool no_report = false, check = false, with_cost = false;
   };
   auto opt = std::make_shared<Options>();
@@ -22,6 +22,9 @@ void add_calc_command(CLI::App& app, Runner& run) {
       ->check(CLI::IsMember({"draft", "standard", "high", "reference"}));
   cmd->add_flag("--no-report", opt->no_report, "Do not write report.html");
   cmd->add_option("--scale", opt->scale, "Fix the colour scale of every plot to MIN:MAX lux (e.g. 0:1000)");
+  cmd->add_option("--arrays", opt->arrays,
+                  "Also write each surface's points and results as a NumPy array: npy (<surface>.npy)")
+      ->check(CLI::IsMember({"npy"}));
   cmd->add_flag("--check", opt->check, "Exit with code 3 when a surface's requirement is not met");
   cmd->add_flag("--with-cost", opt->with_cost,
                 "Also run draft/standard/high/reference and put the cost table into the report");
@@ -32,6 +35,7 @@ void add_calc_command(CLI::App& app, Runner& run) {
       if (!opt->scale.empty()) options.scale = report::parse_scale(opt->scale);
       options.report = !opt->no_report;
       options.with_cost = opt->with_cost;
+      options.arrays_npy = opt->arrays == "npy";
       options.show_progress = true;
       const std::filesystem::path out =
           opt->out.empty() ? default_output_dir(opt->project) : std::filesystem::path(opt->out);

@@ -13,8 +13,6 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
@@ -23,6 +21,9 @@
 #include "photometry/source_text.h"
 #include "photometry/tabular_distribution.h"
 #include "photometry/tilt.h"
+#include "report/png_file.h"
+#include "report/raster.h"
+#include "report/raster_text.h"
 #include "util/error.h"
 
 namespace luxgrid::cli {
@@ -69,7 +70,6 @@ double nice_ceiling(double v) {
 
 void write_polar_png(const Photometry& p, const std::filesystem::path& path) {
   constexpr int kSize = 640, kMargin = 40;
-  constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
   const double cx = kSize / 2.0, cy = kSize / 2.0, radius = kSize / 2.0 - kMargin;
   const IntensityDistribution& d = *p.distribution;
   // Sample both planes every 0.5 deg of signed angle from nadir.
@@ -82,10 +82,9 @@ void write_polar_png(const Photometry& p, const std::filesystem::path& path) {
     peak = std::max({peak, a.back(), b.back()});
   }
   const double ring = nice_ceiling(peak);
-  OIIO::ImageBuf img(OIIO::ImageSpec(kSize, kSize, 3, OIIO::TypeDesc::FLOAT));
-  const float white[3] = {1, 1, 1}, grey[3] = {0.8f, 0.8f, 0.8f}, black[3] = {0, 0, 0},
-              red[3] = {0.8f, 0.1f, 0.1f}, blue[3] = {0.1f, 0.2f, 0.8f};
-  OIIO::ImageBufAlgo::fill(img, white);
+  using report::Rgb;
+  const Rgb white{1, 1, 1}, grey{0.8f, 0.8f, 0.8f}, black{0, 0, 0}, red{0.8f, 0.1f, 0.1f}, blue{0.1f, 0.2f, 0.8f};
+  report::Raster img(kSize, kSize, white);
   // Point at signed angle s (deg from nadir; > 0 towards the right) and intensity v.
   auto xy = [&](double s, double v, double& x, double& y) {
     const double r = radius * v / ring, t = s * kDegToRad;
@@ -97,29 +96,28 @@ void write_polar_png(const Photometry& p, const std::filesystem::path& path) {
     for (int k = 0; k < 360; ++k) {
       xy(k, ring * q / 4.0, x0, y0);
       xy(k + 1, ring * q / 4.0, x1, y1);
-      OIIO::ImageBufAlgo::render_line(img, int(x0), int(y0), int(x1), int(y1), grey);
+      img.line(int(x0), int(y0), int(x1), int(y1), grey);
     }
   }
   for (int k = 0; k < 360; k += 30) {  // spokes every 30 deg
     double x, y;
     xy(k, ring, x, y);
-    OIIO::ImageBufAlgo::render_line(img, int(cx), int(cy), int(x), int(y), grey);
+    img.line(int(cx), int(cy), int(x), int(y), grey);
   }
-  auto curve = [&](const std::vector<double>& v, const float* colour, bool dashed) {
+  auto curve = [&](const std::vector<double>& v, Rgb colour, bool dashed) {
     for (std::size_t k = 0; k + 1 < v.size(); ++k) {
       if (dashed && (k / 6) % 2 == 1) continue;
       double x0, y0, x1, y1;
       xy(-180.0 + 0.5 * k, v[k], x0, y0);
       xy(-180.0 + 0.5 * (k + 1), v[k + 1], x1, y1);
-      OIIO::ImageBufAlgo::render_line(img, int(std::lround(x0)), int(std::lround(y0)),
-                                      int(std::lround(x1)), int(std::lround(y1)), OIIO::cspan<float>(colour, 3));
+      img.line(int(std::lround(x0)), int(std::lround(y0)), int(std::lround(x1)), int(std::lround(y1)), colour);
     }
   };
   curve(a, red, false);
   curve(b, blue, true);
-  auto text = [&](int x, int y, const std::string& s, const float* colour) {
+  auto text = [&](int x, int y, const std::string& s, Rgb colour) {
     // Without the font the diagram is still drawn, just unlabelled.
-    (void)OIIO::ImageBufAlgo::render_text(img, x, y, s, 14, kFont, OIIO::cspan<float>(colour, 3));
+    (void)report::draw_text(img, x, y, s, 14, report::kPlotFont, colour);
   };
   char buf[160];
   std::snprintf(buf, sizeof buf, "%s   outer ring %g cd", p.format.c_str(), ring);
@@ -131,11 +129,12 @@ void write_polar_png(const Photometry& p, const std::filesystem::path& path) {
 
   // Written beside the target and renamed, so no partial image is ever left behind.
   const std::filesystem::path tmp = path.parent_path() / (path.stem().string() + ".partial" + path.extension().string());
-  OIIO::ImageBuf out = OIIO::ImageBufAlgo::copy(img, OIIO::TypeDesc::UINT8);
-  if (!out.write(tmp.string())) {
+  try {
+    report::write_png(img, tmp);
+  } catch (const CalculationError& e) {
     std::error_code ec;
     std::filesystem::remove(tmp, ec);
-    throw InputError(path.string() + ": cannot write the image: " + out.geterror());
+    throw InputError(e.what());
   }
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);

@@ -63,6 +63,7 @@ RunOutcome run_project(const std::filesystem::path& project, const std::filesyst
 
   report::OutputOptions out;
   out.report = options.report;
+  out.arrays_npy = options.arrays_npy;
   out.scale = options.scale;
   out.scene = &scene;
   out.checks = outcome.checks;

@@ -19,6 +19,7 @@ struct RunOptions {
   bool report = true;                          // report.html (--no-report switches it off)
   std::optional<report::ColourScale> scale;    // --scale MIN:MAX
   bool with_cost = false;                      // --with-cost: the cost table into the report
+  bool arrays_npy = false;                     // --arrays npy: <surface>.npy per surface
 };
 
 struct RunOutcome {

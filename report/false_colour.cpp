@@ -4,19 +4,16 @@
 #include <cmath>
 #include <cstdio>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include "report/isolux.h"
-#include "util/error.h"
+#include "report/png_file.h"
+#include "report/raster.h"
+#include "report/raster_text.h"
+#include "report/viridis.h"
 
 namespace luxgrid::report {
 
-namespace OIIO = OIIO_NAMESPACE;
-
 namespace {
 
-constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 constexpr int kPlotTargetPx = 480;  // the longer side of the map, before rounding to whole cells
 constexpr int kTitleH = 56, kMargin = 16, kLegendW = 150, kBarW = 22, kFontPx = 14;
 
@@ -54,52 +51,31 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
   const int plot_w = cell * nu, plot_h = cell * nv;
   const int width = kMargin + plot_w + kMargin + kLegendW;
   const int height = kTitleH + std::max(plot_h, 200) + kMargin;
+  const Rgb white{1, 1, 1}, black{0, 0, 0};
+  Raster canvas(width, height, white);
 
-  // Normalised values, one pixel per cell, v up (row 0 of the image is the last grid row).
-  OIIO::ImageBuf values(OIIO::ImageSpec(nu, nv, 1, OIIO::TypeDesc::FLOAT));
+  // One square of cell x cell pixels per grid point, v up (the top row is the last grid row);
+  // points left out (inside obstacles) are drawn mid grey.
   const double span = scale.max - scale.min;
   for (int j = 0; j < nv; ++j) {
     for (int i = 0; i < nu; ++i) {
       const size_t k = static_cast<size_t>(j) * nu + i;
-      const float t = k < r.E.size() ? static_cast<float>(std::clamp((r.E[k] - scale.min) / span, 0.0, 1.0)) : 0.f;
-      values.setpixel(i, nv - 1 - j, &t);
-    }
-  }
-  OIIO::ImageBuf coloured = OIIO::ImageBufAlgo::color_map(values, 0, "viridis");
-  OIIO::ImageBuf big = OIIO::ImageBufAlgo::resample(coloured, false, OIIO::ROI(0, plot_w, 0, plot_h, 0, 1, 0, 3));
-  // Points left out (inside obstacles) are drawn mid grey.
-  for (int j = 0; j < nv; ++j) {
-    for (int i = 0; i < nu; ++i) {
-      const size_t k = static_cast<size_t>(j) * nu + i;
-      if (k < g.active.size() && !g.active[k]) {
-        const float grey[3] = {0.5f, 0.5f, 0.5f};
-        OIIO::ImageBufAlgo::fill(big, grey, OIIO::ROI(i * cell, (i + 1) * cell, (nv - 1 - j) * cell, (nv - j) * cell, 0, 1, 0, 3));
-      }
+      const bool inactive = k < g.active.size() && !g.active[k];
+      const double t = k < r.E.size() ? std::clamp((r.E[k] - scale.min) / span, 0.0, 1.0) : 0.0;
+      const int x = kMargin + i * cell, y = kTitleH + (nv - 1 - j) * cell;
+      canvas.fill(x, x + cell, y, y + cell, inactive ? Rgb{0.5f, 0.5f, 0.5f} : viridis(t));
     }
   }
 
-  OIIO::ImageBuf canvas(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
-  const float white[3] = {1, 1, 1};
-  OIIO::ImageBufAlgo::fill(canvas, white);
-  OIIO::ImageBufAlgo::paste(canvas, kMargin, kTitleH, 0, 0, big);
-
-  // Legend bar: top = scale.max.
+  // Legend bar: top = scale.max, each row the colour at its centre.
   const int bar_x = kMargin + plot_w + kMargin, bar_h = std::max(plot_h, 200);
-  OIIO::ImageBuf ramp(OIIO::ImageSpec(1, bar_h, 1, OIIO::TypeDesc::FLOAT));
-  for (int y = 0; y < bar_h; ++y) {
-    const float t = 1.0f - (y + 0.5f) / bar_h;
-    ramp.setpixel(0, y, &t);
-  }
-  OIIO::ImageBuf ramp_rgb = OIIO::ImageBufAlgo::color_map(ramp, 0, "viridis");
-  OIIO::ImageBuf bar = OIIO::ImageBufAlgo::resample(ramp_rgb, false, OIIO::ROI(0, kBarW, 0, bar_h, 0, 1, 0, 3));
-  OIIO::ImageBufAlgo::paste(canvas, bar_x, kTitleH, 0, 0, bar);
+  for (int y = 0; y < bar_h; ++y) canvas.fill(bar_x, bar_x + kBarW, kTitleH + y, kTitleH + y + 1, viridis(1.0 - (y + 0.5) / bar_h));
 
   std::string warning;
-  const float black[3] = {0, 0, 0};
   auto text = [&](int x, int y, const std::string& s, int px) {
     if (!warning.empty()) return;
-    if (!OIIO::ImageBufAlgo::render_text(canvas, x, y, s, px, kFont, black)) {
-      warning = path.filename().string() + ": plot written without labels (font " + kFont +
+    if (!draw_text(canvas, x, y, s, px, kPlotFont, black)) {
+      warning = path.filename().string() + ": plot written without labels (font " + kPlotFont +
                 " unavailable: install fonts-dejavu-core)";
     }
   };
@@ -110,18 +86,16 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
       const auto segments = isolux_segments(r.E, nu, nv, level, g.active);
       if (segments.empty()) continue;
       const bool dark_map = (level - scale.min) / span < 0.55;
-      const float line_colour[3] = {dark_map ? 1.0f : 0.1f, dark_map ? 1.0f : 0.1f, dark_map ? 1.0f : 0.1f};
+      const float shade = dark_map ? 1.0f : 0.1f;
+      const Rgb line_colour{shade, shade, shade};
       auto px = [&](double x) { return kMargin + static_cast<int>(std::lround((x + 0.5) * cell)); };
       auto py = [&](double y) { return kTitleH + static_cast<int>(std::lround((nv - 1 - y + 0.5) * cell)); };
-      for (const auto& sg : segments) {
-        OIIO::ImageBufAlgo::render_line(canvas, px(sg.x0), py(sg.y0), px(sg.x1), py(sg.y1), line_colour);
-      }
+      for (const auto& sg : segments) canvas.line(px(sg.x0), py(sg.y0), px(sg.x1), py(sg.y1), line_colour);
       const auto& mid = segments[segments.size() / 2];
       const std::string label = format_lux(level);
       const int lx = (px(mid.x0) + px(mid.x1)) / 2, ly = (py(mid.y0) + py(mid.y1)) / 2;
       const int w = static_cast<int>(label.size()) * 7 + 4;
-      const float white_box[3] = {1, 1, 1};
-      OIIO::ImageBufAlgo::fill(canvas, white_box, OIIO::ROI(lx - w / 2, lx + w / 2 + 1, ly - 7, ly + 6, 0, 1, 0, 3));
+      canvas.fill(lx - w / 2, lx + w / 2 + 1, ly - 7, ly + 6, white);
       text(lx - w / 2 + 2, ly + 4, label, 11);
     }
   }
@@ -131,15 +105,13 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
     if (!plot_position(g, p, fx, fy)) continue;
     const int x = kMargin + static_cast<int>(std::lround(fx * plot_w));
     const int y = kTitleH + static_cast<int>(std::lround(fy * plot_h));
-    const float white_fill[3] = {1, 1, 1}, outline[3] = {0, 0, 0};
-    OIIO::ImageBufAlgo::render_box(canvas, x - 5, y - 5, x + 5, y + 5, white_fill, true);
-    OIIO::ImageBufAlgo::render_box(canvas, x - 5, y - 5, x + 5, y + 5, outline, false);
-    OIIO::ImageBufAlgo::render_box(canvas, x - 1, y - 1, x + 1, y + 1, outline, true);
+    canvas.box(x - 5, y - 5, x + 5, y + 5, white, true);
+    canvas.box(x - 5, y - 5, x + 5, y + 5, black, false);
+    canvas.box(x - 1, y - 1, x + 1, y + 1, black, true);
   }
   for (double tick : scale.ticks) {
     const int y = kTitleH + static_cast<int>(std::lround((1.0 - (tick - scale.min) / span) * (bar_h - 1)));
-    const float tick_colour[3] = {0, 0, 0};
-    OIIO::ImageBufAlgo::fill(canvas, tick_colour, OIIO::ROI(bar_x + kBarW, bar_x + kBarW + 6, y, y + 1, 0, 1, 0, 3));
+    canvas.fill(bar_x + kBarW, bar_x + kBarW + 6, y, y + 1, black);
     text(bar_x + kBarW + 10, y + kFontPx / 2 - 1, format_lux(tick) + " lx", kFontPx);
   }
   char stats[200];
@@ -148,10 +120,7 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
   text(kMargin, 22, g.name, 18);
   text(kMargin, 44, stats, 13);
 
-  OIIO::ImageBuf out = OIIO::ImageBufAlgo::copy(canvas, OIIO::TypeDesc::UINT8);
-  if (!out.write(path.string())) {
-    throw CalculationError(path.string() + ": cannot write the image: " + out.geterror());
-  }
+  write_png(canvas, path);
   return warning;
 }
 

@@ -7,11 +7,14 @@
 #include <fstream>
 #include <sstream>
 
+#include <tbb/parallel_for.h>
+
 #include "calc/statistics.h"
 #include "report/csv.h"
 #include "report/false_colour.h"
 #include "report/html_report.h"
 #include "report/results_json.h"
+#include "report/surface_npy.h"
 #include "util/error.h"
 #include "util/output_names.h"
 
@@ -71,32 +74,60 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   bool indirect_ran = false;
   for (const auto& s : results.surfaces)
     for (double e : s.E_indirect) indirect_ran = indirect_ran || e > 0.0;
-  for (const auto& s : results.surfaces) {
+  // Every file of every surface is independent of the others: they are written in parallel, one
+  // task per file (a surface's plots are the largest share), and the warnings are gathered in
+  // surface order afterwards so the output does not depend on the schedule.
+  struct Job {
+    std::size_t surface;
+    enum class What { csv, npy, plot, direct_plot, indirect_plot } what;
+    std::string warning;
+  };
+  std::vector<Job> jobs;
+  for (std::size_t i = 0; i < results.surfaces.size(); ++i) {
+    jobs.push_back({i, Job::What::csv, {}});
+    if (options.arrays_npy) jobs.push_back({i, Job::What::npy, {}});
+    if (results.surfaces[i].grid.kind != geometry::SurfaceGrid::Kind::grid) continue;
+    jobs.push_back({i, Job::What::plot, {}});
+    if (indirect_ran) {
+      jobs.push_back({i, Job::What::direct_plot, {}});
+      jobs.push_back({i, Job::What::indirect_plot, {}});
+    }
+  }
+  tbb::parallel_for(std::size_t{0}, jobs.size(), [&](std::size_t n) {
+    Job& job = jobs[n];
+    const calc::SurfaceResult& s = results.surfaces[job.surface];
     const SurfaceOutputFiles names = surface_output_files(s.grid.name);
-    write_text_file(folder.file(names.csv), surface_csv(s));
-    if (s.grid.kind == geometry::SurfaceGrid::Kind::grid) {
-      const ColourScale scale = options.scale ? *options.scale : auto_scale(s.stats.Emax);
-      const auto png = folder.file(names.png);
-      const std::string w = write_false_colour_png(s, scale, png, overlay);
-      if (!w.empty()) warnings.push_back(w);
-      if (options.report) report.png[s.grid.name] = read_bytes(png);
-      if (indirect_ran) {
-        for (const bool direct : {true, false}) {
-          calc::SurfaceResult part;
-          part.grid = s.grid;
-          part.grid.name = s.grid.name + (direct ? " (direct)" : " (indirect)");
-          part.E = direct ? s.E_direct : s.E_indirect;
-          part.E_direct = s.E_direct;
-          part.E_indirect = s.E_indirect;
-          part.stats = calc::compute_statistics(part.E, s.grid.active);
-          const ColourScale part_scale = options.scale ? *options.scale : auto_scale(part.stats.Emax);
-          const std::string pw = write_false_colour_png(
-              part, part_scale, folder.file(direct ? names.direct_png : names.indirect_png),
-              overlay);
-          if (!pw.empty() && std::find(warnings.begin(), warnings.end(), pw) == warnings.end())
-            warnings.push_back(pw);
-        }
+    switch (job.what) {
+      case Job::What::csv: return write_text_file(folder.file(names.csv), surface_csv(s));
+      case Job::What::npy: return write_text_file(folder.file(names.npy), surface_npy(s));
+      case Job::What::plot: {
+        const ColourScale scale = options.scale ? *options.scale : auto_scale(s.stats.Emax);
+        job.warning = write_false_colour_png(s, scale, folder.file(names.png), overlay);
+        return;
       }
+      case Job::What::direct_plot:
+      case Job::What::indirect_plot: {
+        const bool direct = job.what == Job::What::direct_plot;
+        calc::SurfaceResult part;
+        part.grid = s.grid;
+        part.grid.name = s.grid.name + (direct ? " (direct)" : " (indirect)");
+        part.E = direct ? s.E_direct : s.E_indirect;
+        part.E_direct = s.E_direct;
+        part.E_indirect = s.E_indirect;
+        part.stats = calc::compute_statistics(part.E, s.grid.active);
+        const ColourScale part_scale = options.scale ? *options.scale : auto_scale(part.stats.Emax);
+        job.warning = write_false_colour_png(part, part_scale,
+                                             folder.file(direct ? names.direct_png : names.indirect_png), overlay);
+        return;
+      }
+    }
+  });
+  for (const Job& job : jobs) {
+    if (!job.warning.empty() && std::find(warnings.begin(), warnings.end(), job.warning) == warnings.end())
+      warnings.push_back(job.warning);
+    if (job.what == Job::What::plot && options.report) {
+      const calc::SurfaceResult& s = results.surfaces[job.surface];
+      report.png[s.grid.name] = read_bytes(folder.file(surface_output_files(s.grid.name).png));
     }
   }
   if (options.report) write_text_file(folder.file(kReportFile), html_report(report));

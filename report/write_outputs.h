@@ -1,6 +1,6 @@
 #pragma once
 // Everything a calculation leaves in its output folder: results.json, <surface>.csv, for grid
-// surfaces <surface>.png, and report.html (unless switched off).
+// surfaces <surface>.png, report.html (unless switched off) and, when asked for, <surface>.npy.
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +16,7 @@ namespace luxgrid::report {
 
 struct OutputOptions {
   bool report = true;                 // report.html
+  bool arrays_npy = false;            // <surface>.npy per surface (report/surface_npy.h)
   std::optional<ColourScale> scale;   // one fixed scale for every surface; default: per surface
   const calc::Scene* scene = nullptr; // luminaire marks, plan view and schedule; null: left out
   std::vector<RequirementCheck> checks;  // also written into results.json per surface

@@ -18,16 +18,16 @@ inline std::string safe_file_name(const std::string& name) {
 }
 
 // Every file one surface may write: the CSV always, the plots for grids, the direct and indirect
-// plots when reflected light ran. The loader reserves all four for every surface, so whether
-// two surfaces collide does not depend on the settings.
+// plots when reflected light ran, the .npy array when asked for. The loader reserves all of them
+// for every surface, so whether two surfaces collide does not depend on the settings.
 struct SurfaceOutputFiles {
-  std::string csv, png, direct_png, indirect_png;
-  auto all() const { return std::array<const std::string*, 4>{&csv, &png, &direct_png, &indirect_png}; }
+  std::string csv, png, direct_png, indirect_png, npy;
+  auto all() const { return std::array<const std::string*, 5>{&csv, &png, &direct_png, &indirect_png, &npy}; }
 };
 
 inline SurfaceOutputFiles surface_output_files(const std::string& surface_name) {
   const std::string base = safe_file_name(surface_name);
-  return {base + ".csv", base + ".png", base + "_direct.png", base + "_indirect.png"};
+  return {base + ".csv", base + ".png", base + "_direct.png", base + "_indirect.png", base + ".npy"};
 }
 
 // Files of the folder itself, which no surface may overwrite.

@@ -1,0 +1,41 @@
+#pragma once
+// An 8-bit sRGB picture in memory and the few drawing primitives the plots need: filled
+// rectangles, lines, boxes and alpha blending (text is drawn by report/raster_text.h, the file
+// is written by report/png_file.h). Everything is clipped to the picture, so callers may draw
+// partly outside it.
+#include <cstdint>
+#include <vector>
+
+namespace luxgrid::report {
+
+// A colour in sRGB, each channel in [0, 1] (stored rounded to 8 bits).
+struct Rgb {
+  float r = 0.f, g = 0.f, b = 0.f;
+};
+
+class Raster {
+ public:
+  Raster(int width, int height, Rgb background);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // Row-major, the top row first, 3 bytes (R, G, B) per pixel.
+  const std::vector<std::uint8_t>& pixels() const { return rgb_; }
+  Rgb at(int x, int y) const;
+
+  void set(int x, int y, Rgb c);
+  // c over the pixel with coverage alpha in [0, 1] (anti-aliased text).
+  void blend(int x, int y, Rgb c, float alpha);
+  // The half-open rectangle [x0, x1) x [y0, y1).
+  void fill(int x0, int x1, int y0, int y1, Rgb c);
+  // Bresenham's line, both end points drawn.
+  void line(int x0, int y0, int x1, int y1, Rgb c);
+  // The rectangle with corners (x0, y0) and (x1, y1), both included: filled or its outline.
+  void box(int x0, int y0, int x1, int y1, Rgb c, bool filled);
+
+ private:
+  int width_, height_;
+  std::vector<std::uint8_t> rgb_;
+};
+
+}  // namespace luxgrid::report
