@@ -22,7 +22,7 @@ void add_calc_command(CLI::App& app, Runner& run) {
       ->check(CLI::IsMember({"draft", "standard", "high", "reference"}));
   cmd->add_flag("--no-report", opt->no_report, "Do not write report.html");
   cmd->add_option("--scale", opt->scale, "Fix the colour scale of every plot to MIN:MAX lux (e.g. 0:1000)");
-  cmd->add_flag("--check", opt->check, "Exit with code 3 when a surface's requirement is not met");
+  cmd->add_flag("--check", opt->check, "Exit with code 3 when a requirement is not met or cannot be calculated");
   cmd->add_flag("--with-cost", opt->with_cost,
                 "Also run draft/standard/high/reference and put the cost table into the report");
   cmd->callback([opt, &run] {
