@@ -95,8 +95,7 @@ SceneColourRendering scene_colour_rendering(const calc::Scene& scene) {
     return out;
   }
   out.Ra = lowest;
-  out.source = "photometry \"" + lowest_entry + "\" (" + scene.photometry.at(lowest_entry).source + "): Ra " +
-               number_text(*lowest);
+  out.source = "photometry \"" + lowest_entry + "\": Ra " + number_text(*lowest);
   return out;
 }
 

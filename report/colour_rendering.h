@@ -20,7 +20,7 @@ std::optional<double> photometry_colour_rendering(const photometry::Photometry& 
 
 struct SceneColourRendering {
   std::optional<double> Ra;  // the lowest over every photometry entry the luminaires use; none if any is unknown
-  std::string source;        // "photometry \"mirel\": Ra 80 (zumtobel.ldt lamp set 1)", or why it is unknown
+  std::string source;        // "photometry \"mirel\": Ra 80", or why it is unknown
 };
 
 // What the luminaires of `scene` give; a scene without luminaires gives none.

@@ -68,7 +68,7 @@ std::string compliance_table_html(const std::vector<RequirementCheck>& checks) {
     if (c.calculated) {
       achieved = c.achieved_max ? fmt(f, c.achieved) + " &ndash; " + fmt(f, *c.achieved_max) : fmt(f, c.achieved) + unit;
       const std::string mf = std::string("%+") + (f + 1);
-      margin = fmt(mf.c_str(), c.margin) + unit + " (" + fmt("%+.1f", 100.0 * c.margin_rel) + " %)";
+      margin = fmt(mf.c_str(), c.margin) + unit + "<br><span class=\"muted\">" + fmt("%+.1f", 100.0 * c.margin_rel) + " %</span>";
     }
     const char* result = check_result(c);
     const char* css = !c.calculated ? "notcalc" : c.met ? "met" : "notmet";

@@ -25,7 +25,8 @@ table { border-collapse: collapse; margin: .4em 0; } td, th { border: 1px solid 
 td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; }
 table.values { font-size: 6.5pt; } table.values td { padding: 0 2px; text-align: right; border-color: #ddd; }
 .met { color: #0a6b2f; font-weight: bold; } .notmet { color: #a10f0f; font-weight: bold; }
-.notcalc { color: #8a5a00; font-weight: bold; } table.compliance td.num { white-space: nowrap; }
+.notcalc { color: #8a5a00; font-weight: bold; } table.compliance { font-size: 9.5pt; } table.compliance td.num { white-space: nowrap; }
+table.compliance td:last-child { overflow-wrap: anywhere; }
 .surface { break-inside: avoid; page-break-inside: avoid; } .surface img { max-width: 100%; height: auto; }
 .plan, .polar { max-width: 100%; height: auto; } .luminaire-card { display: inline-block; margin: 0 1em 1em 0;
      vertical-align: top; break-inside: avoid; } .muted { color: #666; }
