@@ -65,9 +65,37 @@ double positive_length(const JsonValue& v) {
   return coordinate(v);
 }
 
+// settings.maintenance: a number (the maintenance factor) or its parts [CIE97]
+// {"LLMF", "LSF", "LMF", "RSMF"}, each in (0, 1], whose product is the factor.
+void parse_maintenance(const JsonValue& m, Settings& out) {
+  if (m.is_number()) {
+    out.maintenance_factor = m.as_number_in(kMinMaintenanceFactor, 1.0);
+    return;
+  }
+  if (!m.is_object()) {
+    m.fail("expected a maintenance factor in [" + number_text(kMinMaintenanceFactor) +
+           ", 1] or its parts {\"LLMF\", \"LSF\", \"LMF\", \"RSMF\"}, got " + json_type_name(m.raw()));
+  }
+  m.expect_object({"LLMF", "LSF", "LMF", "RSMF"});
+  MaintenanceFactors f;
+  const std::pair<const char*, double*> parts[] = {{"LLMF", &f.LLMF}, {"LSF", &f.LSF}, {"LMF", &f.LMF}, {"RSMF", &f.RSMF}};
+  for (const auto& [key, value] : parts) {
+    const auto v = m.at(key);  // all four: a forgotten factor would silently count as 1
+    *value = v.as_number_in(0.0, 1.0);
+    if (!(*value > 0.0)) v.fail("expected a factor in (0, 1], got 0");
+  }
+  const double mf = f.product();
+  if (mf < kMinMaintenanceFactor) {
+    m.fail("the maintenance factor LLMF x LSF x LMF x RSMF = " + number_text(mf) + " is below the limit of " +
+           number_text(kMinMaintenanceFactor));
+  }
+  out.maintenance_factor = mf;
+  out.maintenance_parts = f;
+}
+
 Settings parse_settings(const JsonValue& s) {
   s.expect_object({"quality", "near_field", "near_field_model", "indirect", "bounces",
-                   "maintenance_factor", "allow_files_outside_project"});
+                   "maintenance_factor", "maintenance", "allow_files_outside_project"});
   Settings out;
   if (auto q = s.find("quality")) {
     const auto parsed = quality_from_string(q->as_string());
@@ -105,6 +133,12 @@ Settings parse_settings(const JsonValue& s) {
   }
   if (auto m = s.find("maintenance_factor")) {
     out.maintenance_factor = m->as_number_in(kMinMaintenanceFactor, 1.0);
+  }
+  if (auto m = s.find("maintenance")) {
+    if (s.has("maintenance_factor")) {
+      m->fail("give either \"maintenance\" or \"maintenance_factor\", not both");
+    }
+    parse_maintenance(*m, out);
   }
   if (auto a = s.find("allow_files_outside_project")) out.allow_files_outside_project = a->as_bool();
   return out;

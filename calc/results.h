@@ -1,6 +1,7 @@
 #pragma once
 // What a calculation produced: per-surface illuminance, statistics, the plan that says what was
 // simulated and why, and the time each phase took. report/ only reads this.
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,6 +18,7 @@ struct SurfaceResult {
   std::vector<double> E_indirect;  // lx, initial
   std::vector<double> E;           // lx, maintained: (E_direct + E_indirect) * maintenance factor
   Statistics stats;                // of E
+  std::optional<double> UGR_max;  // observers surfaces: the largest UGR over all observers and views
 };
 
 struct Results {

@@ -22,13 +22,26 @@ enum class IndirectMode { automatic, off, on };
 const char* to_string(Quality q);
 std::optional<Quality> quality_from_string(const std::string& s);
 
+// The maintenance factor's parts [CIE97]: MF = LLMF x LSF x LMF x RSMF (lamp lumen maintenance,
+// lamp survival, luminaire maintenance, room surface maintenance).
+struct MaintenanceFactors {
+  double LLMF = 1.0;
+  double LSF = 1.0;
+  double LMF = 1.0;
+  double RSMF = 1.0;
+  double product() const { return LLMF * LSF * LMF * RSMF; }
+};
+
 struct Settings {
   Quality quality = Quality::standard;
   NearFieldMode near_field = NearFieldMode::automatic;
   IndirectMode indirect = IndirectMode::automatic;
   std::string near_field_model;  // empty: the quality's rung; else a rung by name (docs/nearfield.md)
   int bounces = 0;  // 0 means "auto" (iterate until converged)
-  double maintenance_factor = 1.0;
+  double maintenance_factor = 1.0;  // MF: every E is (E_direct + E_indirect) x MF
+  // Set when the project gives the parts (settings.maintenance as an object); maintenance_factor
+  // is then their product.
+  std::optional<MaintenanceFactors> maintenance_parts;
   // Photometry files may lie outside the project file's folder (absolute paths, ../); off by
   // default, so a project received from elsewhere cannot read arbitrary files.
   bool allow_files_outside_project = false;

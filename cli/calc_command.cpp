@@ -25,7 +25,7 @@ void add_calc_command(CLI::App& app, Runner& run) {
   cmd->add_option("--arrays", opt->arrays,
                   "Also write each surface's points and results as a NumPy array: npy (<surface>.npy)")
       ->check(CLI::IsMember({"npy"}));
-  cmd->add_flag("--check", opt->check, "Exit with code 3 when a surface's requirement is not met");
+  cmd->add_flag("--check", opt->check, "Exit with code 3 when a requirement is not met or cannot be calculated");
   cmd->add_flag("--with-cost", opt->with_cost,
                 "Also run draft/standard/high/reference and put the cost table into the report");
   cmd->callback([opt, &run] {

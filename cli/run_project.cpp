@@ -6,6 +6,7 @@
 #include "calc/project_file.h"
 #include "calc/safe_json.h"
 #include "cli/progress.h"
+#include "report/colour_rendering.h"
 #include "report/output_folder.h"
 #include "report/write_outputs.h"
 #include "util/error.h"
@@ -58,7 +59,8 @@ RunOutcome run_project(const std::filesystem::path& project, const std::filesyst
   }
   end_progress();
   outcome.results.timing_s.insert(outcome.results.timing_s.begin(), {"load", load_s});
-  outcome.checks = report::check_requirements(outcome.results, loaded.requirements);
+  const auto ra = report::scene_colour_rendering(scene);
+  outcome.checks = report::check_requirements(outcome.results, loaded.requirements, {ra.Ra, ra.source});
   if (options.with_cost) outcome.cost = run_cost(scene, options.show_progress);
 
   report::OutputOptions out;

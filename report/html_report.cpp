@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "photometry/derived_photometry.h"
+#include "report/compliance_table.h"
 #include "report/plan_view_svg.h"
 #include "report/polar_diagram.h"
 
@@ -24,6 +25,8 @@ table { border-collapse: collapse; margin: .4em 0; } td, th { border: 1px solid 
 td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; }
 table.values { font-size: 6.5pt; } table.values td { padding: 0 2px; text-align: right; border-color: #ddd; }
 .met { color: #0a6b2f; font-weight: bold; } .notmet { color: #a10f0f; font-weight: bold; }
+.notcalc { color: #8a5a00; font-weight: bold; } table.compliance { font-size: 9.5pt; } table.compliance td.num { white-space: nowrap; }
+table.compliance td:last-child { overflow-wrap: anywhere; }
 .surface { break-inside: avoid; page-break-inside: avoid; } .surface img { max-width: 100%; height: auto; }
 .plan, .polar { max-width: 100%; height: auto; } .luminaire-card { display: inline-block; margin: 0 1em 1em 0;
      vertical-align: top; break-inside: avoid; } .muted { color: #666; }
@@ -41,8 +44,6 @@ std::string fmt(const char* f, double v) {
 std::string stat_cell(const std::string& surface, const char* key, const std::string& text) {
   return "<td class=\"num\" data-surface=\"" + html_escape(surface) + "\" data-stat=\"" + key + "\">" + text + "</td>";
 }
-
-std::string quantity_unit(const std::string& q) { return q == "U0" ? "" : " lx"; }
 
 }  // namespace
 
@@ -110,28 +111,17 @@ std::string html_report(const ReportInput& in) {
     h += "<tr><th>Project file</th><td>" + html_escape(scene->project_file.filename().string()) + "</td></tr>";
     h += std::string("<tr><th>Quality</th><td data-meta=\"quality\">") + calc::to_string(scene->settings.quality) + "</td></tr>";
     h += "<tr><th>Maintenance factor</th><td data-meta=\"maintenance_factor\">" +
-         fmt("%.2f", scene->settings.maintenance_factor) + " (all illuminances are maintained values)</td></tr>";
+         fmt("%.2f", scene->settings.maintenance_factor);
+    if (const auto& m = scene->settings.maintenance_parts) {
+      h += " = LLMF " + fmt("%.2f", m->LLMF) + " &times; LSF " + fmt("%.2f", m->LSF) + " &times; LMF " +
+           fmt("%.2f", m->LMF) + " &times; RSMF " + fmt("%.2f", m->RSMF) + " (CIE 97:2005)";
+    }
+    h += " (all illuminances are maintained values)</td></tr>";
   }
   h += "</table>\n";
 
   // --- requirement checks -------------------------------------------------------------------
-  if (!in.checks.empty()) {
-    const bool ok = all_met(in.checks);
-    h += "<h2>Requirements</h2>\n<p class=\"" + std::string(ok ? "met" : "notmet") + "\" data-requirements=\"" +
-         (ok ? "met" : "not met") + "\">" + (ok ? "All requirements are met." : "Some requirements are NOT met.") +
-         "</p>\n<table><tr><th>Surface</th><th>Quantity</th><th class=\"num\">Required</th><th class=\"num\">Achieved</th>"
-         "<th>Result</th><th class=\"num\">Margin</th></tr>";
-    for (const auto& c : in.checks) {
-      const std::string unit = quantity_unit(c.quantity);
-      const char* f = c.quantity == "U0" ? "%.3f" : "%.1f";
-      h += "<tr><td>" + html_escape(c.surface) + "</td><td>" + c.quantity + "</td><td class=\"num\">" +
-           (c.upper_limit ? "&le; " : "&ge; ") + fmt("%g", c.required) + unit + "</td><td class=\"num\">" +
-           fmt(f, c.achieved) + unit + "</td><td class=\"" + (c.met ? "met\">met" : "notmet\">not met") +
-           "</td><td class=\"num\">" + fmt(c.quantity == "U0" ? "%+.3f" : "%+.1f", c.margin) + unit + " (" +
-           fmt("%+.1f", 100.0 * c.margin_rel) + " %)</td></tr>";
-    }
-    h += "</table>\n";
-  }
+  h += compliance_table_html(in.checks);
 
   // --- what was simulated -------------------------------------------------------------------
   h += "<h2>What was calculated</h2>\n<table>";

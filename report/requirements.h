@@ -1,10 +1,16 @@
 #pragma once
-// Requirement checks, EN 12464-1 style: a calculation surface may carry
-//   "requirements": { "Em": 500, "U0": 0.6, "Emin": 300, "Emax": 1000 }
-// Em (maintained average illuminance, lx), U0 (Emin / Eavg) and Emin are lower limits; Emax is
-// an upper limit (glare, over-lighting). A value exactly at the limit meets it.
+// Requirement checks, EN 12464-1 style [EN12464-1]. A calculation surface (a task area) may carry
+//   "requirements": { "preset": "office-writing", "Em": 500, "U0": 0.6, "Emin": 300, "Emax": 1000,
+//                     "UGR_L": 19, "Ra": 80, "Ez": 150, "Esc": 50, "modelling": [0.3, 0.6],
+//                     "glare_observers": "eyes", "cylindrical": "faces", "horizontal": "faces h" }
+// and a room_surfaces entry { "preset": "walls-and-ceilings", "walls": {"Em": 50, "U0": 0.1},
+// "ceiling": {...}, "floor": {...} }. Em (maintained average illuminance, lx), U0 (Emin / Eavg),
+// Emin, Ez, Esc and Ra are lower limits; Emax and UGR_L upper limits; modelling a range. A value
+// exactly at the limit meets it. docs/compliance.md is the user's reference.
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -13,30 +19,63 @@
 
 namespace luxgrid::report {
 
-// surface name -> quantity ("Em", "U0", "Emin", "Emax") -> limit
-using Requirements = std::map<std::string, std::map<std::string, double>>;
+// What one grid must meet.
+struct SurfaceRequirements {
+  std::string role = "task area";  // "task area", "wall", "ceiling", "floor"
+  std::map<std::string, double> limits;  // "Em", "U0", "Emin", "Emax", "Ez", "Esc", "UGR_L", "Ra"
+  // The quantities a preset filled (an explicit key overrides the preset and is not listed), with
+  // the row's citation: "office-writing: EN 12464-1:2021 Table 5.26 Offices, ref. 5.26.2".
+  std::map<std::string, std::string> from_preset;
+  std::optional<std::pair<double, double>> modelling;  // Ez / Eh at every point within [lo, hi]
+  std::string preset;                        // the preset key, or empty
+  std::vector<std::string> glare_observers;  // observers surfaces for UGR_L; empty: every one
+  std::string cylindrical;  // the cylindrical surface giving Ez (and modelling's numerator)
+  std::string horizontal;   // on a cylindrical surface: the horizontal one giving modelling's Eh
+};
+
+struct Requirements {
+  std::map<std::string, SurfaceRequirements> surfaces;  // by grid name ("room ceiling" included)
+  // room_surfaces entry name -> what each of its "<name> wall k" grids must meet.
+  std::map<std::string, SurfaceRequirements> walls;
+  bool empty() const { return surfaces.empty() && walls.empty(); }
+};
 
 // Reads the "requirements" of every entry of /surfaces in a raw project document. Throws
 // InputError naming `label` and the JSON pointer: an unknown quantity
-// (`p.json /surfaces/0/requirements/Eav: unknown quantity "Eav", expected Em, U0, Emin or Emax`),
-// a value that is not a positive number, U0 above 1.
+// (`p.json /surfaces/0/requirements/Eav: unknown quantity "Eav", expected ...`), a value that
+// is not a positive number, U0 above 1, an unknown preset, a quantity the surface does not
+// compute (Ez on a planar surface that names no cylindrical one), a named surface that does not
+// exist or computes the wrong quantity.
 Requirements parse_requirements(const nlohmann::json& project, const std::string& label);
 
 // Returns a copy of the project document without the "requirements" keys, for a loader that does
 // not know them.
 nlohmann::json without_requirements(const nlohmann::json& project);
 
+// What the results alone do not hold: the lamps' colour rendering index (report/colour_rendering.h).
+struct ComplianceInputs {
+  std::optional<double> Ra;
+  std::string Ra_source;  // where Ra came from, or why it is unknown
+};
+
 struct RequirementCheck {
   std::string surface;
-  std::string quantity;  // "Em", "U0", "Emin", "Emax"
+  std::string role;      // "task area", "wall", "ceiling", "floor"
+  std::string quantity;  // "Em", "U0", "Emin", "Emax", "Ez", "Esc", "modelling", "UGR_L", "Ra"
   double required = 0.0;
-  double achieved = 0.0;
-  bool upper_limit = false;  // Emax: achieved must not exceed required
-  bool met = false;
+  std::optional<double> required_max;  // modelling: the upper end of the range
+  double achieved = 0.0;               // modelling: the smallest ratio over the points
+  std::optional<double> achieved_max;  // modelling: the largest ratio
+  bool upper_limit = false;  // Emax, UGR_L: achieved must not exceed required
+  bool calculated = true;    // false: nothing gives the value (no observers surface, Ra unknown)
+  bool met = false;          // never true when not calculated
   // How far inside (positive) or outside (negative) the limit, in the quantity's unit and as a
-  // fraction of the limit: Em 520 against 500 gives +20 lx, +0.04.
+  // fraction of the limit: Em 520 against 500 gives +20 lx, +0.04. Modelling: the smaller of
+  // (min ratio - lo) and (hi - max ratio).
   double margin = 0.0;
   double margin_rel = 0.0;
+  std::string source;  // the preset row that set the limit, or empty for an explicit one
+  std::string note;    // where the achieved value comes from, or why it was not calculated
 };
 
 // Round-off guard: an average of values that sum exactly to the limit can come out one ulp
@@ -44,16 +83,29 @@ struct RequirementCheck {
 // photometric accuracy) keeps "exactly at the limit" met.
 inline constexpr double kAtLimitRelTol = 1e-9;
 
-// One check per (surface, quantity), in surface order then Em, U0, Emin, Emax. Throws InputError
-// if a requirement names a surface the results do not have.
-std::vector<RequirementCheck> check_requirements(const calc::Results& results, const Requirements& req);
+// Modelling pairs a cylindrical and a horizontal surface point by point: their points may differ
+// by at most this much (1 mm, far below any grid spacing; the same grid built twice agrees to
+// round-off).
+inline constexpr double kModellingPairTolerance_m = 1e-3;
 
+// Checks in surface order, then Em, U0, Emin, Emax, Ez, Esc, modelling, UGR_L, Ra. Throws
+// InputError if a requirement names a surface the results do not have, or modelling pairs
+// surfaces whose points differ.
+std::vector<RequirementCheck> check_requirements(const calc::Results& results, const Requirements& req,
+                                                 const ComplianceInputs& inputs = {});
+
+// True when every check was calculated and met.
 bool all_met(const std::vector<RequirementCheck>& checks);
 
-// {"quantity", "required", "achieved", "met", "margin", "margin_rel", "limit": "min"|"max"}
+// {"quantity", "required", "achieved", "met", "calculated", "margin", "margin_rel",
+//  "limit": "min"|"max"|"range", "role", and where given "required_max", "achieved_max",
+//  "source", "note"}
 nlohmann::json check_to_json(const RequirementCheck& c);
 
 // Lines such as "workplane  Em  required >= 500 lx  achieved 512.3 lx  met (+12.3 lx, +2.5 %)".
 std::string format_checks(const std::vector<RequirementCheck>& checks);
+
+// " lx" for illuminances, "" for ratios and indices.
+std::string requirement_unit(const std::string& quantity);
 
 }  // namespace luxgrid::report

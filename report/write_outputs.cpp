@@ -137,6 +137,18 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   std::vector<std::string> all_warnings = options.scene ? options.scene->warnings : std::vector<std::string>{};
   all_warnings.insert(all_warnings.end(), warnings.begin(), warnings.end());
   nlohmann::json j = results_to_json(results, all_warnings);
+  if (options.scene) {
+    // The maintenance factor every E includes, and its parts when the project gave them [CIE97].
+    const auto& settings = options.scene->settings;
+    nlohmann::json m = {{"factor", settings.maintenance_factor}};
+    if (const auto& p = settings.maintenance_parts) {
+      m["LLMF"] = p->LLMF;
+      m["LSF"] = p->LSF;
+      m["LMF"] = p->LMF;
+      m["RSMF"] = p->RSMF;
+    }
+    j["maintenance"] = std::move(m);
+  }
   if (!options.checks.empty()) {
     // Per surface, each requirement with its verdict and margin; at the top, the overall verdict.
     for (auto& s : j["surfaces"]) {

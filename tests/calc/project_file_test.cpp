@@ -72,6 +72,32 @@ TEST(ProjectFile, SettingsAreRead) {
   EXPECT_DOUBLE_EQ(s.settings.maintenance_factor, 0.8);
 }
 
+TEST(ProjectFile, MaintenanceFactorFromItsCie97Parts) {
+  // MF = LLMF x LSF x LMF x RSMF [CIE97]: 0.9 x 0.98 x 0.95 x 0.94 = 0.787626 (by hand).
+  auto doc = minimal();
+  doc["settings"] = {{"maintenance", {{"LLMF", 0.9}, {"LSF", 0.98}, {"LMF", 0.95}, {"RSMF", 0.94}}}};
+  const Scene s = parse_project(doc, "p.json", ".");
+  EXPECT_NEAR(s.settings.maintenance_factor, 0.787626, 1e-15);
+  ASSERT_TRUE(s.settings.maintenance_parts.has_value());
+  EXPECT_EQ(s.settings.maintenance_parts->LSF, 0.98);
+  // A plain number under the new key means the same as maintenance_factor.
+  doc["settings"] = {{"maintenance", 0.7}};
+  const Scene n = parse_project(doc, "p.json", ".");
+  EXPECT_EQ(n.settings.maintenance_factor, 0.7);
+  EXPECT_FALSE(n.settings.maintenance_parts.has_value());
+  // A missing factor is an error, not a silent 1.
+  doc["settings"] = {{"maintenance", {{"LLMF", 0.9}, {"LSF", 0.98}, {"LMF", 0.95}}}};
+  try {
+    parse_project(doc, "p.json", ".");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/settings/maintenance"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("RSMF"), std::string::npos) << e.what();
+  }
+  doc["settings"] = {{"maintenance", {{"LLMF", 0.0}, {"LSF", 1}, {"LMF", 1}, {"RSMF", 1}}}};
+  EXPECT_THROW(parse_project(doc, "p.json", "."), InputError);
+}
+
 TEST(ProjectFile, PlaneGridNormalIsUCrossV) {
   auto doc = minimal();
   doc["surfaces"][0] = nlohmann::json::parse(

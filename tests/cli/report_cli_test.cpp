@@ -55,6 +55,82 @@ TEST(ReportCli, ReportIsWrittenByDefaultAndSkippedOnRequest) {
   EXPECT_TRUE(fs::exists(dir / "b" / "floor.png"));
 }
 
+// The same lamp in a closed black 4 x 4 x 3 m room with room_surfaces "room" (1 m grids) and the
+// maintenance factor given as its CIE 97 factors.
+std::string room_project(const std::string& requirements, const std::string& maintenance) {
+  return R"({
+  "format": "luxgrid-project/1", "name": "walls test",
+  "settings": { "indirect": "off", "maintenance": )" + maintenance + R"( },
+  "photometry": { "iso": { "builtin": "isotropic", "intensity_cd": 1000 } },
+  "rooms": [ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3,
+               "reflectance": { "floor": 0, "walls": 0, "ceiling": 0 } } ],
+  "luminaires": [ { "photometry": "iso", "position": [2, 2, 1.5] } ],
+  "surfaces": [ { "name": "room", "room_surfaces": { "room": "r" }, "spacing": 1, "requirements": )" +
+         requirements + R"( } ]
+})";
+}
+
+TEST(ReportCli, WallsAndCeilingsThroughTheBinary) {
+  // An isotropic 1000 cd point at the room's centre, 1.5 m up: on a wall (2 m away) a point at
+  // lateral offset y and height offset z gets E = 1000 * 2 / (4 + y^2 + z^2)^1.5. The 4 x 3 wall
+  // grid's points (y = +-0.5, +-1.5; z = 0, +-1): the brightest 1000*2/4.25^1.5 = 228.3 lx, the
+  // darkest 1000*2/7.25^1.5 = 102.4 lx, so every wall's Em lies between them: above 50 lx
+  // (walls-and-ceilings met) and below 250 (missed). The ceiling and floor (1.5 m away) likewise.
+  // MF = 0.9 x 1 x 0.95 x 0.94 = 0.8037 scales all of it: 0.8037 * 102.4 = 82.3 lx > 50 still.
+  const fs::path dir = scratch("walls");
+  const std::string mf = R"({"LLMF": 0.9, "LSF": 1.0, "LMF": 0.95, "RSMF": 0.94})";
+  write(dir / "ok.json", room_project(R"({"preset": "walls-and-ceilings"})", mf));
+  write(dir / "miss.json", room_project(R"({"preset": "walls-and-ceilings", "walls": {"Em": 250}})", mf));
+  const Outcome ok = luxgrid("calc " + quote(dir / "ok.json") + " -o " + quote(dir / "ok") + " --check");
+  EXPECT_EQ(ok.code, 0) << ok.output;
+  const Outcome miss = luxgrid("calc " + quote(dir / "miss.json") + " -o " + quote(dir / "miss") + " --check");
+  EXPECT_EQ(miss.code, 3) << miss.output;
+  EXPECT_NE(miss.output.find("room wall 0          Em        required >= 250 lx"), std::string::npos) << miss.output;
+
+  const auto j = nlohmann::json::parse(read(dir / "ok" / "results.json"));
+  EXPECT_NEAR(j["maintenance"]["factor"].get<double>(), 0.9 * 1.0 * 0.95 * 0.94, 1e-15);
+  EXPECT_EQ(j["maintenance"]["RSMF"], 0.94);
+  EXPECT_EQ(j["requirements_met"], true);
+  size_t walls = 0;
+  for (const auto& s : j["surfaces"]) {
+    const std::string name = s["name"];
+    if (name.rfind("room wall ", 0) != 0) continue;
+    ++walls;
+    ASSERT_EQ(s["requirements"].size(), 2u) << name;
+    const auto& em = s["requirements"][0];
+    EXPECT_EQ(em["role"], "wall");
+    EXPECT_EQ(em["required"], 50.0);
+    EXPECT_GT(em["achieved"].get<double>(), 0.8037 * 102.4);
+    EXPECT_LT(em["achieved"].get<double>(), 0.8037 * 228.4);
+    EXPECT_EQ(em["source"], "walls-and-ceilings: EN 12464-1:2021 clause 5.2.4");
+  }
+  EXPECT_EQ(walls, 4u);
+  const std::string html = read(dir / "ok" / "report.html");
+  EXPECT_NE(html.find("LLMF 0.90 &times; LSF 1.00 &times; LMF 0.95 &times; RSMF 0.94"), std::string::npos);
+
+  // A preset limit nothing computes (Ra of a builtin, UGR_L without observers) fails --check too.
+  write(dir / "task.json", project(R"(, "requirements": { "preset": "corridor", "Em": 1, "U0": 0.1 })"));
+  const Outcome task = luxgrid("calc " + quote(dir / "task.json") + " -o " + quote(dir / "task") + " --check");
+  EXPECT_EQ(task.code, 3) << task.output;
+  EXPECT_NE(task.output.find("UGR_L     required <= 28  NOT CALCULATED"), std::string::npos) << task.output;
+  EXPECT_NE(task.output.find("Ra        required >= 40  NOT CALCULATED (unknown: photometry \"iso\""), std::string::npos)
+      << task.output;
+  EXPECT_NE(task.output.find("Em        required >= 1 lx  achieved"), std::string::npos) << task.output;  // explicit wins
+
+  // Both keys for the maintenance factor, or a product below 0.1: exit 2, naming the key.
+  const std::string both = std::regex_replace(room_project("{}", "0.8"), std::regex(R"("maintenance": 0.8)"),
+                                              R"("maintenance": 0.8, "maintenance_factor": 0.8)");
+  write(dir / "both.json", both);
+  const Outcome b = luxgrid("calc " + quote(dir / "both.json") + " -o " + quote(dir / "both"));
+  EXPECT_EQ(b.code, 2);
+  EXPECT_NE(b.output.find("both.json /settings/maintenance: give either \"maintenance\" or \"maintenance_factor\", not both"),
+            std::string::npos) << b.output;
+  write(dir / "low.json", room_project("{}", R"({"LLMF": 0.5, "LSF": 0.5, "LMF": 0.5, "RSMF": 0.5})"));
+  const Outcome low = luxgrid("calc " + quote(dir / "low.json") + " -o " + quote(dir / "low"));
+  EXPECT_EQ(low.code, 2);
+  EXPECT_NE(low.output.find("LLMF x LSF x LMF x RSMF = 0.0625 is below the limit of 0.1"), std::string::npos) << low.output;
+}
+
 TEST(ReportCli, ScaleMustBeMinBelowMax) {
   const fs::path dir = scratch("scale");
   write(dir / "p.json", project(""));
@@ -93,7 +169,8 @@ TEST(ReportCli, UnknownRequirementIsBadInputNamingTheKey) {
   const Outcome r = luxgrid("calc " + quote(dir / "p.json") + " --check");
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(r.output,
-            "luxgrid: error: p.json /surfaces/0/requirements/Eavg: unknown quantity \"Eavg\", expected Em, U0, Emin or Emax\n");
+            "luxgrid: error: p.json /surfaces/0/requirements/Eavg: unknown quantity \"Eavg\", expected Em, U0, Emin, Emax, Ez, Esc, UGR_L, Ra, modelling, "
+            "preset, glare_observers, cylindrical or horizontal\n");
   EXPECT_FALSE(fs::exists(dir / "p.out"));
 }
 
@@ -150,7 +227,8 @@ TEST(ReportCli, CostOfTheExampleOffice) {
   const auto rows = parse_cost(r.output);
   ASSERT_EQ(rows.size(), 4u) << r.output;
   const size_t surfaces = rows.at("reference").size();
-  ASSERT_EQ(surfaces, 6u) << r.output;  // workplane, four walls, desk probes
+  // workplane, room floor, ceiling and four walls, activity plane and faces, desk probes
+  ASSERT_EQ(surfaces, 10u) << r.output;
   for (const auto& [q, list] : rows) {
     ASSERT_EQ(list.size(), surfaces) << q;
     for (const auto& c : list) {
@@ -215,7 +293,7 @@ TEST(ReportChromium, ExampleOfficeRendersWithEveryImageAndTheRightNumbers) {
   EXPECT_EQ(read(dir / "report.pdf").rfind("%PDF", 0), 0u);
   EXPECT_GT(fs::file_size(dir / "report.pdf"), 20000u);
 
-  // Every image is inline and decodes to a PNG: one per grid surface (5 of the office's 6).
+  // Every image is inline and decodes to a PNG: one per grid surface (9 of the office's 10).
   const std::regex img(R"re(<img [^>]*src="([^"]*)")re");
   size_t images = 0;
   for (std::sregex_iterator it(dom.begin(), dom.end(), img), end; it != end; ++it) {
@@ -223,7 +301,7 @@ TEST(ReportChromium, ExampleOfficeRendersWithEveryImageAndTheRightNumbers) {
     ASSERT_EQ(src.rfind("data:image/png;base64,iVBORw0KGgo", 0), 0u) << src.substr(0, 80);
     ++images;
   }
-  EXPECT_EQ(images, 5u);
+  EXPECT_EQ(images, 9u);
   EXPECT_NE(dom.find("<svg"), std::string::npos);  // plan view and polar diagram
 
   // The statistics printed in the page equal those in results.json (to the printed digits).
@@ -243,7 +321,28 @@ TEST(ReportChromium, ExampleOfficeRendersWithEveryImageAndTheRightNumbers) {
     EXPECT_TRUE(found) << surface;
     ++checked;
   }
-  EXPECT_EQ(checked, 6u * 5u);  // six surfaces, five statistics each
+  EXPECT_EQ(checked, 10u * 5u);  // ten surfaces, five statistics each
+
+  // The compliance table shows the office preset's rows, walls and ceiling, each with a result
+  // that agrees with results.json.
+  for (const char* row : {"workplane|Em", "workplane|U0", "workplane|Ez", "workplane|UGR_L", "workplane|Ra",
+                          "room ceiling|Em", "room wall 0|Em", "room wall 3|U0", "activity faces|modelling"}) {
+    EXPECT_NE(dom.find(std::string("data-check=\"") + row + "\""), std::string::npos) << row;
+  }
+  const std::regex result(R"re(data-check="([^"|]+)\|(\w+)" data-result="([a-z ]+)")re");
+  size_t rows = 0;
+  for (std::sregex_iterator it(dom.begin(), dom.end(), result), end; it != end; ++it) {
+    for (const auto& s : j["surfaces"]) {
+      if (s["name"] != (*it)[1].str()) continue;
+      for (const auto& c : s["requirements"]) {
+        if (c["quantity"] != (*it)[2].str()) continue;
+        const std::string expected = !c["calculated"].get<bool>() ? "not calculated" : c["met"].get<bool>() ? "met" : "not met";
+        EXPECT_EQ((*it)[3].str(), expected) << (*it)[1] << " " << (*it)[2];
+        ++rows;
+      }
+    }
+  }
+  EXPECT_EQ(rows, j["surfaces"][0]["requirements"].size() + 2u + 4u * 2u + 1u);  // workplane, ceiling, walls, modelling
 }
 
 }  // namespace

@@ -63,7 +63,8 @@ TEST(Requirements, UnknownQuantityNamesTheKey) {
     parse_requirements(project({{"Em", 500}, {"Eav", 500}}), "p.json");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "p.json /surfaces/0/requirements/Eav: unknown quantity \"Eav\", expected Em, U0, Emin or Emax");
+    EXPECT_STREQ(e.what(), "p.json /surfaces/0/requirements/Eav: unknown quantity \"Eav\", expected Em, U0, Emin, Emax, Ez, Esc, "
+                 "UGR_L, Ra, modelling, preset, glare_observers, cylindrical or horizontal");
   }
 }
 
