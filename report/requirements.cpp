@@ -10,7 +10,7 @@ namespace luxgrid::report {
 
 namespace {
 
-constexpr const char* kQuantities[] = {"Em", "U0", "Emin", "Emax"};
+constexpr const char* kQuantities[] = {"Em", "U0", "Emin", "Emax", "UGR_L"};
 
 bool known_quantity(const std::string& q) {
   for (const char* k : kQuantities) {
@@ -19,14 +19,18 @@ bool known_quantity(const std::string& q) {
   return false;
 }
 
-double achieved_value(const calc::Statistics& s, const std::string& q) {
+// UGR_L on an observers surface without any luminaire in any view: nothing glares, the check
+// is met with an achieved value of 0 (docs/glare.md).
+double achieved_value(const calc::SurfaceResult& r, const std::string& q) {
+  if (q == "UGR_L") return r.UGR_max.value_or(0.0);
+  const calc::Statistics& s = r.stats;
   if (q == "Em") return s.Eavg;
   if (q == "U0") return s.U0;
   if (q == "Emin") return s.Emin;
   return s.Emax;
 }
 
-const char* unit_of(const std::string& q) { return q == "U0" ? "" : " lx"; }
+const char* unit_of(const std::string& q) { return q == "U0" || q == "UGR_L" ? "" : " lx"; }
 
 }  // namespace
 
@@ -44,7 +48,11 @@ Requirements parse_requirements(const nlohmann::json& project, const std::string
     for (const auto& [key, _] : req.raw().items()) {
       const auto v = req.at(key.c_str());
       if (!known_quantity(key)) {
-        v.fail("unknown quantity \"" + key + "\", expected Em, U0, Emin or Emax");
+        v.fail("unknown quantity \"" + key + "\", expected Em, U0, Emin, Emax or UGR_L");
+      }
+      if (key == "UGR_L" && !s.has("observers")) {
+        v.fail("UGR_L (the largest UGR allowed) needs an observers surface: UGR is computed at "
+               "observer positions (\"observers\": [{\"at\": ..., \"directions\": ...}])");
       }
       const double limit = key == "U0" ? v.as_number_in(0.0, 1.0) : v.as_non_negative();
       if (!(limit > 0.0)) v.fail("expected a positive number, got " + v.raw().dump());
@@ -81,8 +89,8 @@ std::vector<RequirementCheck> check_requirements(const calc::Results& results, c
       c.surface = s.grid.name;
       c.quantity = q;
       c.required = lim->second;
-      c.achieved = achieved_value(s.stats, q);
-      c.upper_limit = c.quantity == "Emax";
+      c.achieved = achieved_value(s, q);
+      c.upper_limit = c.quantity == "Emax" || c.quantity == "UGR_L";
       c.margin = c.upper_limit ? c.required - c.achieved : c.achieved - c.required;
       c.margin_rel = c.margin / c.required;
       c.met = c.margin >= -kAtLimitRelTol * c.required;

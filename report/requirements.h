@@ -2,7 +2,8 @@
 // Requirement checks, EN 12464-1 style: a calculation surface may carry
 //   "requirements": { "Em": 500, "U0": 0.6, "Emin": 300, "Emax": 1000 }
 // Em (maintained average illuminance, lx), U0 (Emin / Eavg) and Emin are lower limits; Emax is
-// an upper limit (glare, over-lighting). A value exactly at the limit meets it.
+// an upper limit (glare, over-lighting). UGR_L, on an observers surface only, is an upper limit
+// on the surface's largest UGR (calc/glare). A value exactly at the limit meets it.
 #include <map>
 #include <string>
 #include <vector>
@@ -28,10 +29,10 @@ nlohmann::json without_requirements(const nlohmann::json& project);
 
 struct RequirementCheck {
   std::string surface;
-  std::string quantity;  // "Em", "U0", "Emin", "Emax"
+  std::string quantity;  // "Em", "U0", "Emin", "Emax", "UGR_L"
   double required = 0.0;
   double achieved = 0.0;
-  bool upper_limit = false;  // Emax: achieved must not exceed required
+  bool upper_limit = false;  // Emax, UGR_L: achieved must not exceed required
   bool met = false;
   // How far inside (positive) or outside (negative) the limit, in the quantity's unit and as a
   // fraction of the limit: Em 520 against 500 gives +20 lx, +0.04.
