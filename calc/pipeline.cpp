@@ -106,6 +106,11 @@ Results run_scene(const Scene& scene, const Progress& progress) {
   // maintenance factor; docs/glare.md).
   for (auto& r : results.surfaces) {
     if (r.grid.kind != geometry::SurfaceGrid::Kind::observers) continue;
+    // The loader refuses "indirect": "off" with observers; a scene built in code may still skip it.
+    if (scene.settings.indirect == IndirectMode::off) {
+      throw CalculationError("surface '" + r.grid.name + "': UGR needs reflected light for the background "
+                             "luminance, but the indirect calculation did not run (" + results.plan.indirect + ")");
+    }
     r.observers = glare::evaluate_observers(scene, results.plan, r.grid, r.E_indirect);
     r.UGR_max = glare::max_ugr(r.observers);
   }

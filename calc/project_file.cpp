@@ -591,8 +591,10 @@ geometry::SurfaceGrid parse_observers(const JsonValue& s, const JsonValue& obs, 
       }
       const int count = dirs.as_int();
       for (int k = 0; k < count; ++k) {
+        // cos(pi / 2) is 6e-17, not 0: snap round-off so +y is written as [0, 1, 0].
         const double a = 2.0 * kPi * k / count;
-        views.emplace_back(std::cos(a), std::sin(a), 0.0);
+        const auto snap = [](double c) { return std::abs(c) < 1e-12 ? 0.0 : c; };
+        views.emplace_back(snap(std::cos(a)), snap(std::sin(a)), 0.0);
       }
     } else {
       if (!dirs.is_array()) dirs.fail("expected a number of directions or an array of [dx, dy, dz]");

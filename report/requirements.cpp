@@ -48,7 +48,7 @@ Requirements parse_requirements(const nlohmann::json& project, const std::string
     for (const auto& [key, _] : req.raw().items()) {
       const auto v = req.at(key.c_str());
       if (!known_quantity(key)) {
-        v.fail("unknown quantity \"" + key + "\", expected Em, U0, Emin, Emax or UGR_L");
+        v.fail("unknown quantity \"" + key + "\", expected Em, U0, Emin or Emax");
       }
       if (key == "UGR_L" && !s.has("observers")) {
         v.fail("UGR_L (the largest UGR allowed) needs an observers surface: UGR is computed at "
