@@ -31,7 +31,7 @@ TEST(InfoUgrCli, TextAndJsonAgree) {
   const auto text = luxgrid::test::luxgrid("info " + kMirel + " --ugr");
   ASSERT_EQ(text.code, 0);
   char expected[64];
-  std::snprintf(expected, sizeof expected, " 4H x  8H   %5.1f", corrected);
+  std::snprintf(expected, sizeof expected, " 4H x  8H  %5.1f", corrected);
   EXPECT_NE(text.output.find(expected), std::string::npos) << text.output;
   EXPECT_NE(text.output.find("the 1000 lm table +3.4 (8 log10(F / 1000))"), std::string::npos);
 }

@@ -150,7 +150,7 @@ TEST(ReportCli, CostOfTheExampleOffice) {
   const auto rows = parse_cost(r.output);
   ASSERT_EQ(rows.size(), 4u) << r.output;
   const size_t surfaces = rows.at("reference").size();
-  ASSERT_EQ(surfaces, 6u) << r.output;  // workplane, four walls, desk probes
+  ASSERT_EQ(surfaces, 7u) << r.output;  // workplane, four walls, desk probes, seated eyes
   for (const auto& [q, list] : rows) {
     ASSERT_EQ(list.size(), surfaces) << q;
     for (const auto& c : list) {
@@ -243,7 +243,7 @@ TEST(ReportChromium, ExampleOfficeRendersWithEveryImageAndTheRightNumbers) {
     EXPECT_TRUE(found) << surface;
     ++checked;
   }
-  EXPECT_EQ(checked, 6u * 5u);  // six surfaces, five statistics each
+  EXPECT_EQ(checked, 7u * 5u);  // seven surfaces (the observers: E at the eye), five statistics each
 }
 
 }  // namespace
