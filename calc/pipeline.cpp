@@ -6,6 +6,7 @@
 #include <string>
 
 #include "calc/far_field_bounds.h"
+#include "calc/glare/ugr.h"
 #include "calc/indirect/indirect.h"
 #include "util/error.h"
 
@@ -100,6 +101,19 @@ Results run_scene(const Scene& scene, const Progress& progress) {
   const auto t_indirect = std::chrono::steady_clock::now();
   run_indirect(scene, results);
   results.timing_s.emplace_back("indirect", seconds_since(t_indirect));
+
+  // Glare at observers, from the initial values (UGR, like CIE 190's tables, carries no
+  // maintenance factor; docs/glare.md).
+  for (auto& r : results.surfaces) {
+    if (r.grid.kind != geometry::SurfaceGrid::Kind::observers) continue;
+    // The loader refuses "indirect": "off" with observers; a scene built in code may still skip it.
+    if (scene.settings.indirect == IndirectMode::off) {
+      throw CalculationError("surface '" + r.grid.name + "': UGR needs reflected light for the background "
+                             "luminance, but the indirect calculation did not run (" + results.plan.indirect + ")");
+    }
+    r.observers = glare::evaluate_observers(scene, results.plan, r.grid, r.E_indirect);
+    r.UGR_max = glare::max_ugr(r.observers);
+  }
 
   const double mf = scene.settings.maintenance_factor;
   for (auto& r : results.surfaces) {

@@ -499,6 +499,16 @@ class GridBudget {
                  number_text(kMaxLuminairePointPairs) + "; use fewer luminaires or larger spacings");
     }
   }
+  // Views of observers surfaces: each lists a glare term per luminaire (kMaxViewLuminairePairs).
+  void spend_views(const JsonValue& where, double views) {
+    views_ += views;
+    const double pairs = luminaires_ * views_;
+    if (pairs > kMaxViewLuminairePairs) {
+      where.fail(number_text(luminaires_) + " luminaires x " + count_text(views_) + " views = " +
+                 number_text(pairs) + " view-luminaire pairs, more than the limit of " +
+                 number_text(kMaxViewLuminairePairs) + " for observers surfaces; use fewer views or observers");
+    }
+  }
   void spend_cells(const JsonValue& where, double size_u, double size_v, double spacing) {
     spend(where, std::ceil(size_u / spacing) * std::ceil(size_v / spacing));
   }
@@ -506,6 +516,7 @@ class GridBudget {
  private:
   double luminaires_;
   double used_ = 0.0;
+  double views_ = 0.0;
 };
 
 const Room& find_room(const JsonValue& where, const Scene& scene, const std::string& name) {
@@ -572,6 +583,72 @@ void apply_quantity(const JsonValue& s, std::vector<geometry::SurfaceGrid>& grid
       }
     }
   }
+}
+
+// A unit view direction: non-zero and not vertical (kMinViewHorizontalPart).
+Vec3 view_direction(const JsonValue& v) {
+  const Vec3 d = point3(v);
+  if (glm::length(d) == 0.0) v.fail("expected a non-zero direction");
+  const Vec3 n = glm::normalize(d);
+  if (!(std::hypot(n.x, n.y) >= kMinViewHorizontalPart)) {
+    v.fail("a view direction must not be vertical (the position index measures heights above the "
+           "line of sight in the vertical plane through it)");
+  }
+  return n;
+}
+
+// "observers": [{"at": [x, y, z], "directions": [[dx, dy, dz], ...] or N}]: one point per
+// (observer, view), its normal the view direction (geometry::SurfaceGrid::Kind::observers).
+// "directions": N gives N horizontal directions from +x, counter-clockwise, evenly spaced.
+geometry::SurfaceGrid parse_observers(const JsonValue& s, const JsonValue& obs, const std::string& name,
+                                      GridBudget& budget) {
+  for (const char* key : {"spacing", "quantity", "facing"}) {
+    if (s.has(key)) s.at(key).fail(std::string("an observers surface has no \"") + key + "\"");
+  }
+  if (!obs.is_array()) obs.fail("expected an array of observers, got " + json_type_name(obs.raw()));
+  check_count(obs, kMaxObservers, "observers");
+  if (obs.raw().empty()) obs.fail("expected at least one observer");
+  geometry::SurfaceGrid g;
+  g.name = name;
+  g.kind = geometry::SurfaceGrid::Kind::observers;
+  size_t index = 0;
+  for (const auto& o : obs.items()) {
+    o.expect_object({"at", "directions"});
+    const Vec3 at = point3(o.at("at"));
+    const auto dirs = o.at("directions");
+    std::vector<Vec3> views;
+    if (dirs.is_number()) {
+      const double n = dirs.as_number();
+      if (!(n >= 1.0 && n <= static_cast<double>(kMaxViewsPerObserver)) || n != std::floor(n)) {
+        dirs.fail("expected a whole number of horizontal directions from 1 to " +
+                  std::to_string(kMaxViewsPerObserver) + ", got " + dirs.raw().dump());
+      }
+      const int count = dirs.as_int();
+      for (int k = 0; k < count; ++k) {
+        // cos(pi / 2) is 6e-17, not 0: snap round-off so +y is written as [0, 1, 0].
+        const double a = 2.0 * kPi * k / count;
+        const auto snap = [](double c) { return std::abs(c) < 1e-12 ? 0.0 : c; };
+        views.emplace_back(snap(std::cos(a)), snap(std::sin(a)), 0.0);
+      }
+    } else {
+      if (!dirs.is_array()) dirs.fail("expected a number of directions or an array of [dx, dy, dz]");
+      check_count(dirs, kMaxViewsPerObserver, "directions");
+      if (dirs.raw().empty()) dirs.fail("expected at least one direction");
+      for (const auto& d : dirs.items()) views.push_back(view_direction(d));
+    }
+    budget.spend(dirs, static_cast<double>(views.size()), "observers surface");
+    budget.spend_views(dirs, static_cast<double>(views.size()));
+    for (const Vec3& v : views) {
+      g.points.push_back(at);
+      g.normals.push_back(v);
+      g.observer.push_back(index);
+    }
+    ++index;
+  }
+  g.nu = static_cast<int>(g.points.size());
+  g.nv = 1;
+  g.active.assign(g.points.size(), true);
+  return g;
 }
 
 std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const Scene& scene,
@@ -642,6 +719,7 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
     budget.spend_cells(s, size.x, size.y, spacing);
     return {geometry::make_plane_grid(name, origin, un, vn, size.x, size.y, spacing)};
   }
+  if (auto obs = s.find("observers")) return {parse_observers(s, *obs, name, budget)};
   const auto pts = s.at("points");
   if (s.has("spacing")) s.at("spacing").fail("a points surface has no spacing");
   if (pts.is_array()) budget.spend(pts, static_cast<double>(pts.raw().size()), "points surface");
@@ -711,20 +789,43 @@ std::vector<geometry::SurfaceGrid> parse_surface(const JsonValue& s, const Scene
                                                  GridBudget& budget) {
   // "requirements" (EN 12464-1 checks) belongs to the report: report::parse_requirements reads
   // and validates it from the raw document; the scene does not need it.
-  s.expect_object({"name", "workplane", "plane", "points", "room_surfaces", "spacing", "quantity",
-                   "facing", "requirements"});
+  s.expect_object({"name", "workplane", "plane", "points", "room_surfaces", "observers", "spacing",
+                   "quantity", "facing", "requirements"});
   const std::string name = s.at("name").as_string();
   check_name_length(s.at("name"), name);
-  const int kinds = s.has("workplane") + s.has("plane") + s.has("points") + s.has("room_surfaces");
+  const int kinds = s.has("workplane") + s.has("plane") + s.has("points") + s.has("room_surfaces") +
+                    s.has("observers");
   if (kinds != 1) {
     if (s.has("room_surfaces")) {
       s.fail("expected exactly one of \"workplane\", \"plane\", \"points\" or \"room_surfaces\"");
+    }
+    if (s.has("observers")) {
+      s.fail("expected exactly one of \"workplane\", \"plane\", \"points\" or \"observers\"");
     }
     s.fail("expected exactly one of \"workplane\", \"plane\" or \"points\"");
   }
   auto grids = parse_surface_kind(s, scene, name, budget);
   apply_quantity(s, grids);
   return grids;
+}
+
+// UGR (calc/glare) divides by the background luminance from reflected light and by each
+// luminaire's projected luminous area: an observers surface refuses a project that turns
+// reflections off or has a luminaire without a luminous area (a point emitter).
+void check_observers_inputs(const JsonValue& s, const Scene& scene) {
+  if (!s.has("observers")) return;
+  if (scene.settings.indirect == IndirectMode::off) {
+    s.fail("an observers surface needs reflected light: UGR's background luminance is the indirect "
+           "illuminance at the eye over pi (CIE 117), and \"settings\": {\"indirect\": \"off\"} "
+           "leaves it 0; set \"indirect\" to \"auto\" or \"on\"");
+  }
+  for (const auto& l : scene.luminaires) {
+    if (l.opening.shape == photometry::LuminousOpening::Shape::point) {
+      s.fail("an observers surface needs every luminaire's luminous area (UGR's luminance is the "
+             "intensity over the projected area); " + l.label +
+             " has a point emitter: give it an \"emitter\" with its luminous opening");
+    }
+  }
 }
 
 // Luminaires outside every room or inside an obstacle are legal (light may enter through an
@@ -800,7 +901,9 @@ Scene parse_project(const nlohmann::json& doc, const std::string& label,
   OutputNames outputs;
   std::set<std::string> names;
   for (const auto& s : surfaces.items()) {
-    for (auto& grid : parse_surface(s, scene, budget)) {
+    auto grids = parse_surface(s, scene, budget);
+    check_observers_inputs(s, scene);
+    for (auto& grid : grids) {
       const auto name_v = s.at("name");
       if (!names.insert(grid.name).second) name_v.fail("a surface named \"" + grid.name + "\" already exists");
       if (names.size() > kMaxSurfaceGrids) {

@@ -72,4 +72,17 @@ inline constexpr double kMinScaledIntensity_cd = 1e-6;
 // maintenance, a typo (0.08 for 0.8) rather than a plan.
 inline constexpr double kMinMaintenanceFactor = 0.1;
 
+// Observers surfaces (glare, calc/glare): observers per surface and viewing directions per
+// observer. 360 directions is a 1-degree step around the horizontal, finer than any design
+// practice (DIALux uses 15-degree steps); 1000 seated positions cover a large open-plan floor.
+inline constexpr std::size_t kMaxObservers = 1000;
+inline constexpr std::size_t kMaxViewsPerObserver = 360;
+// Views x luminaires over all observers surfaces: results.json lists a term per luminaire in
+// each view, ~100 bytes each, so 1e6 pairs keep the file near 100 MB at most.
+inline constexpr double kMaxViewLuminairePairs = 1e6;
+// A view direction needs a horizontal part to define "up" in the view (the Guth position index
+// measures heights above the line of sight in the vertical plane through it): directions within
+// this sine of the vertical are refused.
+inline constexpr double kMinViewHorizontalPart = 1e-3;
+
 }  // namespace luxgrid::calc

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "calc/glare/observer_result.h"
 #include "calc/plan.h"
 #include "calc/statistics.h"
 #include "geometry/surface_grid.h"
@@ -19,6 +20,9 @@ struct SurfaceResult {
   std::vector<double> E;           // lx, maintained: (E_direct + E_indirect) * maintenance factor
   Statistics stats;                // of E
   std::optional<double> UGR_max;  // observers surfaces: the largest UGR over all observers and views
+  // observers surfaces: per observer, each view's UGR, background luminance and terms
+  // (calc/glare/ugr.h); E is then the illuminance at the eye facing each view.
+  std::vector<glare::ObserverResult> observers;
 };
 
 struct Results {

@@ -1,4 +1,4 @@
-// `luxgrid info FILE [--json] [--at C,gamma ...] [--plot out.png] [--interpolation bicubic]`:
+// `luxgrid info FILE [--json] [--at C,gamma ...] [--plot out.png] [--interpolation bicubic] [--ugr]`:
 // what a photometric file says and what luxgrid derives from it, as text or JSON, and a polar
 // (goniometric) diagram of the C0-C180 and C90-C270 planes drawn the way data sheets draw them:
 // nadir at the bottom, C0 to the right and C180 to the left (solid), C90 right / C270 left
@@ -10,12 +10,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "calc/glare/ugr_table.h"
 #include "cli/commands.h"
+#include "cli/ugr_table_output.h"
 #include "photometry/derived_photometry.h"
 #include "photometry/photometry.h"
 #include "photometry/source_text.h"
@@ -142,7 +145,7 @@ void write_polar_png(const Photometry& p, const std::filesystem::path& path) {
 }
 
 int run_info(const std::string& file, bool json, const std::vector<std::string>& at_args,
-             const std::string& plot, const std::string& interpolation) {
+             const std::string& plot, const std::string& interpolation, bool ugr) {
   std::vector<At> at;
   for (const auto& s : at_args) at.push_back(parse_at(s));
   // A TILT file named by FILE must lie in FILE's folder or below it (docs/photometry.md).
@@ -154,6 +157,15 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
     p.distribution = p.table;
   }
   const DerivedPhotometry d = derive(p);
+  std::optional<calc::glare::UgrTable> ugr_table;
+  if (ugr) {
+    // The reader's place in front of the table's message (a file without luminous area).
+    try {
+      ugr_table = calc::glare::ugr_table(p.distribution, p.opening, calc::glare::table_lamp_flux_lm(p, *p.distribution));
+    } catch (const InputError& e) {
+      throw InputError(file + ": " + e.what());
+    }
+  }
   std::vector<double> intensities;
   for (const At& x : at)
     intensities.push_back(p.distribution->intensity(direction_of(x.c_deg * kDegToRad, x.gamma_deg * kDegToRad)));
@@ -193,6 +205,7 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
     j["at"] = nlohmann::json::array();
     for (const At& x : at) j["at"].push_back({x.c_deg, x.gamma_deg});
     j["intensity_cd"] = intensities;
+    if (ugr_table) j["ugr_table"] = ugr_table_json(*ugr_table);
     if (p.tilt) j["tilt"] = {{"geometry", p.tilt->lamp_to_luminaire_geometry}, {"angles_deg", p.tilt->angle_deg}, {"factors", p.tilt->factor}};
     std::printf("%s\n", j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
   } else {
@@ -226,6 +239,7 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
     for (std::size_t k = 0; k < at.size(); ++k)
       std::printf("  I(C %g, gamma %g) = %.6g cd\n", at[k].c_deg, at[k].gamma_deg, intensities[k]);
     for (const auto& w : p.warnings) std::printf("  warning: %s\n", w.c_str());
+    if (ugr_table) std::printf("\n%s", ugr_table_text(*ugr_table).c_str());
   }
   if (!plot.empty()) write_polar_png(p, plot);
   return 0;
@@ -241,6 +255,7 @@ void add_info_command(CLI::App& app, Runner& run) {
   auto at = std::make_shared<std::vector<std::string>>();
   auto plot = std::make_shared<std::string>();
   auto interpolation = std::make_shared<std::string>("bilinear");
+  auto ugr = std::make_shared<bool>(false);
   cmd->add_option("file", *file, "IES (.ies) or EULUMDAT (.ldt) file")->required();
   cmd->add_flag("--json", *json, "print JSON instead of text");
   cmd->add_option("--at", *at, "C,gamma in degrees (repeatable): intensity in that direction")
@@ -248,8 +263,12 @@ void add_info_command(CLI::App& app, Runner& run) {
   cmd->add_option("--plot", *plot, "write a polar diagram PNG (C0-C180 and C90-C270 planes)");
   cmd->add_option("--interpolation", *interpolation, "bilinear (default) or bicubic")
       ->check(CLI::IsMember({"bilinear", "bicubic"}));
-  cmd->callback([&run, file, json, at, plot, interpolation] {
-    run = [file, json, at, plot, interpolation] { return run_info(*file, *json, *at, *plot, *interpolation); };
+  cmd->add_flag("--ugr", *ugr, "add the CIE 190 UGR table (rooms 2H to 12H, five reflectance combinations, "
+                               "viewed crosswise and endwise)");
+  cmd->callback([&run, file, json, at, plot, interpolation, ugr] {
+    run = [file, json, at, plot, interpolation, ugr] {
+      return run_info(*file, *json, *at, *plot, *interpolation, *ugr);
+    };
   });
 }
 

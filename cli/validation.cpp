@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 
 #include "calc/json_reader.h"
 #include "calc/safe_json.h"
@@ -55,6 +56,40 @@ double stat_value(const calc::JsonValue& where, const calc::SurfaceResult& s,
   where.fail("expected stat \"Emin\", \"Eavg\", \"Emax\", \"U0\" or \"Ud\", got \"" + stat + "\"");
 }
 
+// Glare quantities of an observers surface (calc/glare): "UGR" and "Lb" of view `point` (views
+// numbered over all observers in order, like the surface's points), and "L", "omega" and "p" of
+// that view's term `term` (the counted luminaires in the scene's order).
+bool is_glare_quantity(const std::string& q) {
+  return q == "UGR" || q == "Lb" || q == "L" || q == "omega" || q == "p";
+}
+
+double glare_value(const calc::JsonValue& where, const calc::SurfaceResult& s, size_t view,
+                   const std::optional<calc::JsonValue>& term, const std::string& q) {
+  if (s.grid.kind != geometry::SurfaceGrid::Kind::observers) {
+    where.fail("quantity \"" + q + "\" needs an observers surface; \"" + s.grid.name + "\" is not one");
+  }
+  size_t k = 0;
+  for (const auto& o : s.observers)
+    for (const auto& v : o.views) {
+      if (k++ != view) continue;
+      if (q == "UGR") {
+        if (!v.UGR) where.fail("view " + std::to_string(view) + " has no luminaire in its field: no UGR");
+        return *v.UGR;
+      }
+      if (q == "Lb") return v.Lb_cd_m2;
+      if (!term) where.fail("quantity \"" + q + "\" needs \"term\": the index of a counted luminaire");
+      const int t = term->as_int();
+      if (t < 0 || static_cast<size_t>(t) >= v.terms.size()) {
+        term->fail("term " + std::to_string(t) + " is out of range: the view counts " +
+                   std::to_string(v.terms.size()) + " luminaires");
+      }
+      const auto& g = v.terms[static_cast<size_t>(t)].term;
+      return q == "L" ? g.L_cd_m2 : q == "omega" ? g.omega_sr : g.p;
+    }
+  where.fail("view " + std::to_string(view) + " is out of range: surface \"" + s.grid.name + "\" has " +
+             std::to_string(k) + " views");
+}
+
 void check_case(const fs::path& dir, const fs::path& out_dir, ValidationReport& report) {
   const std::string name = dir.filename().string();
   const fs::path expected_file = dir / "expected.json";
@@ -64,7 +99,7 @@ void check_case(const fs::path& dir, const fs::path& out_dir, ValidationReport& 
   const calc::JsonValue root(doc, name + "/expected.json", "");
   root.expect_object({"cases", "notes"});
   for (const auto& c : root.at("cases").items()) {
-    c.expect_object({"surface", "point", "stat", "quantity", "expected", "rel_tol", "abs_tol", "source"});
+    c.expect_object({"surface", "point", "stat", "quantity", "term", "expected", "rel_tol", "abs_tol", "source"});
     const auto surface_v = c.at("surface");
     const auto& s = find_surface(surface_v, outcome.results, surface_v.as_string());
     CheckRow row;
@@ -73,16 +108,29 @@ void check_case(const fs::path& dir, const fs::path& out_dir, ValidationReport& 
     row.expected = c.at("expected").as_number();
     if (c.has("point") == c.has("stat")) c.fail("expected exactly one of \"point\" or \"stat\"");
     const std::string quantity = c.has("quantity") ? c.at("quantity").as_string() : "E";
-    const auto& values = quantity_values(c.has("quantity") ? c.at("quantity") : c, s, quantity);
-    if (auto p = c.find("point")) {
-      const int index = p->as_int();
-      if (index < 0) p->fail("expected a point index >= 0");
-      row.got = point_value(*p, s, static_cast<size_t>(index), values);
-      row.quantity = s.grid.name + "[" + std::to_string(index) + "]." + quantity;
+    if (is_glare_quantity(quantity)) {
+      const auto p = c.at("point");
+      const int index = p.as_int();
+      if (index < 0) p.fail("expected a view index >= 0");
+      row.got = glare_value(p, s, static_cast<size_t>(index), c.find("term"), quantity);
+      row.quantity = s.grid.name + "[" + std::to_string(index) + "]." + quantity +
+                     (c.has("term") ? "[" + std::to_string(c.at("term").as_int()) + "]" : "");
+    } else if (c.has("stat") && c.at("stat").as_string() == "UGR_max") {
+      if (!s.UGR_max) c.at("stat").fail("surface \"" + s.grid.name + "\" has no UGR_max");
+      row.got = *s.UGR_max;
+      row.quantity = s.grid.name + ".UGR_max";
     } else {
-      const auto st = c.at("stat");
-      row.got = stat_value(st, s, values, st.as_string());
-      row.quantity = s.grid.name + "." + st.as_string() + "(" + quantity + ")";
+      const auto& values = quantity_values(c.has("quantity") ? c.at("quantity") : c, s, quantity);
+      if (auto p = c.find("point")) {
+        const int index = p->as_int();
+        if (index < 0) p->fail("expected a point index >= 0");
+        row.got = point_value(*p, s, static_cast<size_t>(index), values);
+        row.quantity = s.grid.name + "[" + std::to_string(index) + "]." + quantity;
+      } else {
+        const auto st = c.at("stat");
+        row.got = stat_value(st, s, values, st.as_string());
+        row.quantity = s.grid.name + "." + st.as_string() + "(" + quantity + ")";
+      }
     }
     const double rel = c.has("rel_tol") ? c.at("rel_tol").as_non_negative() : 0.0;
     const double abs = c.has("abs_tol") ? c.at("abs_tol").as_non_negative() : 0.0;

@@ -23,7 +23,10 @@ enum class Quantity { planar, horizontal, vertical, cylindrical, semi_cylindrica
 const char* to_string(Quantity q);
 
 struct SurfaceGrid {
-  enum class Kind { grid, points };
+  // observers: eye positions with viewing directions for glare (calc/glare); one point per
+  // (observer, view), its normal the view direction, so the direct and indirect calculations
+  // give the illuminance at the eye on a plane facing the view.
+  enum class Kind { grid, points, observers };
   std::string name;
   Kind kind = Kind::grid;
   int nu = 0, nv = 0;         // grid size; for points: nu = count, nv = 1
@@ -38,6 +41,8 @@ struct SurfaceGrid {
   size_t points_outside = 0;       // outside the (inset) polygon of a workplane/floor/ceiling
   size_t points_in_obstacles = 0;  // inside the footprint of an obstacle spanning the grid
   Quantity quantity = Quantity::planar;
+  // observers: the observer (index into the surface's list) each point belongs to.
+  std::vector<size_t> observer;
 };
 
 // EN 12464-1 automatic grid spacing: p = 0.2 * 5^log10(d) for the longer side d, capped at 10 m

@@ -107,4 +107,18 @@ double opening_area_m2(const LuminousOpening& o) {
   }
 }
 
+double projected_area_m2(const LuminousOpening& o, const Vec3& d) {
+  if (o.shape == Shape::point) return 0.0;
+  double a = opening_area_m2(o) * std::max(0.0, -d.z);
+  if (o.height > 0.0) {
+    if (o.shape == Shape::rectangle) {
+      a += o.height * (o.length * std::abs(d.y) + o.width * std::abs(d.x));
+    } else {
+      const double ax = 0.5 * o.length * d.y, by = 0.5 * o.width * d.x;
+      a += o.height * 2.0 * std::sqrt(ax * ax + by * by);
+    }
+  }
+  return a;
+}
+
 }  // namespace luxgrid::photometry

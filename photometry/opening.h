@@ -33,4 +33,13 @@ std::vector<Vec3> opening_polygon(const LuminousOpening& opening, int disk_segme
 // Area of the opening itself (not of the polygon): l*w, or pi/4 l w for a disk; 0 for a point.
 double opening_area_m2(const LuminousOpening& opening);
 
+// Area of the opening projected on a plane perpendicular to `direction` (a unit vector from the
+// luminaire outward, luminaire frame), m^2: the flat opening emits towards -z, so it counts
+// area x max(0, -direction.z); luminous sides (height > 0) add their vertical faces as seen from
+// the direction: a rectangle's two facing sides, length x height x |y| + width x height x |x|; a
+// disk's (elliptic) cylinder, height x 2 sqrt((length/2)^2 y^2 + (width/2)^2 x^2). Spheres and
+// horizontal cylinders are taken as the vertical box or cylinder of the same extent. 0 for a
+// point and for a flat opening seen from behind.
+double projected_area_m2(const LuminousOpening& opening, const Vec3& direction);
+
 }  // namespace luxgrid::photometry

@@ -4,7 +4,31 @@
 
 namespace luxgrid::report {
 
+namespace {
+// An observers surface: a row per view with the eye, the line of sight, UGR (empty when no
+// luminaire is in the view), the background luminance and the illuminance at the eye.
+std::string observers_csv(const calc::SurfaceResult& r) {
+  std::string out = "observer,x,y,z,dx,dy,dz,UGR,Lb_cd_m2,E_lx,E_indirect_lx\n";
+  char line[512];
+  size_t k = 0;
+  for (size_t o = 0; o < r.observers.size(); ++o) {
+    for (const auto& v : r.observers[o].views) {
+      char ugr[32] = "";
+      if (v.UGR) std::snprintf(ugr, sizeof ugr, "%.6g", *v.UGR);
+      const auto& p = r.observers[o].at;
+      std::snprintf(line, sizeof line, "%zu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%s,%.6g,%.6g,%.6g\n", o, p.x, p.y, p.z,
+                    v.direction.x, v.direction.y, v.direction.z, ugr, v.Lb_cd_m2, k < r.E.size() ? r.E[k] : 0.0,
+                    v.E_indirect_lx);
+      out += line;
+      ++k;
+    }
+  }
+  return out;
+}
+}  // namespace
+
 std::string surface_csv(const calc::SurfaceResult& r) {
+  if (r.grid.kind == geometry::SurfaceGrid::Kind::observers) return observers_csv(r);
   // The last column says what the E columns measure (results.json's "quantity"), so a CSV read on
   // its own cannot pass a cylindrical value off as a planar one. nx, ny, nz are the receiver
   // normal: for a semi-cylindrical surface the direction the half cylinder faces.

@@ -2,8 +2,10 @@
 
 #include <cstdio>
 
+#include "calc/glare/ugr_table.h"
 #include "photometry/derived_photometry.h"
 #include "report/compliance_table.h"
+#include "report/observers_html.h"
 #include "report/plan_view_svg.h"
 #include "report/polar_diagram.h"
 
@@ -177,6 +179,8 @@ std::string html_report(const ReportInput& in) {
         h += "</tr>";
       }
       h += "</table></details>\n";
+    } else if (g.kind == geometry::SurfaceGrid::Kind::observers) {
+      h += observers_html(s);
     } else if (!grid) {
       h += "<table><tr><th>Point</th><th>Position (m)</th><th class=\"num\">E (lx)</th></tr>";
       for (size_t k = 0; k < g.points.size() && k < s.E.size(); ++k) {
@@ -193,7 +197,8 @@ std::string html_report(const ReportInput& in) {
   // --- luminaire schedule -------------------------------------------------------------------
   if (scene && !scene->photometry.empty()) {
     h += "<h2>Luminaire schedule</h2>\n<table><tr><th>Entry</th><th>File</th><th>Description</th>"
-         "<th class=\"num\">Count</th><th class=\"num\">Flux (lm)</th><th class=\"num\">LOR</th></tr>";
+         "<th class=\"num\">Count</th><th class=\"num\">Flux (lm)</th><th class=\"num\">LOR</th>"
+         "<th class=\"num\">UGR 4H&times;8H (CIE 190, 0.7/0.5/0.2, crosswise / endwise)</th></tr>";
     std::string cards;
     for (const auto& [key, p] : scene->photometry) {
       int count = 0;
@@ -209,14 +214,28 @@ std::string html_report(const ReportInput& in) {
       const auto lor = d.lor ? d.lor : p.stated_lor;
       h += "<tr><td>" + html_escape(key) + "</td><td>" + html_escape(p.source) + "</td><td>" + desc +
            "</td><td class=\"num\">" + std::to_string(count) + "</td><td class=\"num\">" + fmt("%.0f", d.flux_lm) +
-           "</td><td class=\"num\">" + (lor ? fmt("%.2f", *lor) : std::string("&ndash;")) + "</td></tr>";
+           "</td><td class=\"num\">" + (lor ? fmt("%.2f", *lor) : std::string("&ndash;")) + "</td>";
       const photometry::IntensityDistribution* dist = p.distribution.get();
+      const photometry::LuminousOpening* opening = &p.opening;
       for (const auto& l : scene->luminaires) {
         if (l.photometry == key && l.distribution) {
           dist = l.distribution.get();  // as used: a project flux_lm or multiplier applied
+          opening = &l.opening;         // and the project's "emitter", if any
           break;
         }
       }
+      // CIE 190's 4H x 8H value at 0.7/0.5/0.2 (crosswise / endwise) for the luminaire as used:
+      // the 1000 lm table plus 8 log10(F / 1000) is the UGR of the distribution itself.
+      std::string ugr = "&ndash;";
+      if (dist && opening->shape != photometry::LuminousOpening::Shape::point) {
+        const calc::glare::TableRoom room{4, 8};
+        const auto c = calc::glare::table_ugr(*dist, *opening, room, calc::glare::kTableReflectances[0],
+                                              calc::glare::Viewing::crosswise);
+        const auto e = calc::glare::table_ugr(*dist, *opening, room, calc::glare::kTableReflectances[0],
+                                              calc::glare::Viewing::endwise);
+        if (c && e) ugr = fmt("%.1f", *c) + " / " + fmt("%.1f", *e);
+      }
+      h += "<td class=\"num\" data-ugr-table=\"" + html_escape(key) + "\">" + ugr + "</td></tr>";
       if (dist) {
         cards += "<div class=\"luminaire-card\"><h3>" + html_escape(key) + "</h3>" + polar_diagram_svg(*dist) + "</div>";
       }

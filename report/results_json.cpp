@@ -5,12 +5,45 @@ namespace luxgrid::report {
 namespace {
 nlohmann::json vec3(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
+const char* kind_name(geometry::SurfaceGrid::Kind k) {
+  switch (k) {
+    case geometry::SurfaceGrid::Kind::grid: return "grid";
+    case geometry::SurfaceGrid::Kind::points: return "points";
+    case geometry::SurfaceGrid::Kind::observers: return "observers";
+  }
+  return "?";
+}
+
+// Per observer its views: line of sight, UGR (null when no luminaire counts), background
+// luminance (cd/m2), the indirect illuminance it comes from, and each counted luminaire's term.
+nlohmann::json observers_json(const std::vector<calc::glare::ObserverResult>& observers) {
+  using nlohmann::json;
+  json out = json::array();
+  for (const auto& o : observers) {
+    json views = json::array();
+    for (const auto& v : o.views) {
+      json terms = json::array();
+      for (const auto& t : v.terms) {
+        terms.push_back({{"luminaire", t.luminaire}, {"L", t.term.L_cd_m2}, {"omega", t.term.omega_sr},
+                         {"p", t.term.p}});
+      }
+      views.push_back({{"direction", vec3(v.direction)},
+                       {"UGR", v.UGR ? json(*v.UGR) : json(nullptr)},
+                       {"Lb", v.Lb_cd_m2},
+                       {"E_indirect", v.E_indirect_lx},
+                       {"terms", std::move(terms)}});
+    }
+    out.push_back({{"at", vec3(o.at)}, {"views", std::move(views)}});
+  }
+  return out;
+}
+
 nlohmann::json surface_json(const calc::SurfaceResult& r) {
   using nlohmann::json;
   const auto& g = r.grid;
   json s;
   s["name"] = g.name;
-  s["kind"] = g.kind == geometry::SurfaceGrid::Kind::grid ? "grid" : "points";
+  s["kind"] = kind_name(g.kind);
   s["size"] = json::array({g.nu, g.nv});
   if (g.kind == geometry::SurfaceGrid::Kind::grid) {
     s["spacing"] = json::array({g.spacing_u, g.spacing_v});
@@ -32,6 +65,10 @@ nlohmann::json surface_json(const calc::SurfaceResult& r) {
   s["E_indirect"] = r.E_indirect;
   s["stats"] = {{"Emin", r.stats.Emin}, {"Eavg", r.stats.Eavg}, {"Emax", r.stats.Emax},
                 {"U0", r.stats.U0}, {"Ud", r.stats.Ud}};
+  if (g.kind == geometry::SurfaceGrid::Kind::observers) {
+    s["UGR_max"] = r.UGR_max ? json(*r.UGR_max) : json(nullptr);
+    s["observers"] = observers_json(r.observers);
+  }
   return s;
 }
 }  // namespace

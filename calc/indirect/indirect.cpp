@@ -478,6 +478,15 @@ IndirectDecision decide_indirect(const Scene& scene) {
                fmt("%.4g", d.estimate_lx) + " lx";
     return d;
   }
+  // UGR's background luminance is the indirect illuminance at the eye (calc/glare/ugr.h): with
+  // an observers surface reflected light is never skipped as small.
+  for (const auto& s : scene.surfaces) {
+    if (s.kind != geometry::SurfaceGrid::Kind::observers) continue;
+    d.run = true;
+    d.reason = "on: observers surface '" + s.name + "' needs reflected light for UGR's background "
+               "luminance; integrating-sphere estimate " + fmt("%.4g", d.estimate_lx) + " lx";
+    return d;
+  }
   // Mean direct light on the calculation surfaces, far field, on a sample of points.
   // The sample points first, then their illuminances in parallel, summed in order.
   std::vector<std::pair<const geometry::SurfaceGrid*, size_t>> samples;

@@ -10,6 +10,7 @@
 #include "calc/scaled_distribution.h"
 #include "geometry/polygon.h"
 #include "temp_folder.h"
+#include "project_error.h"
 #include "util/error.h"
 
 namespace luxgrid::calc {
@@ -24,15 +25,6 @@ nlohmann::json minimal() {
     "luminaires": [ { "photometry": "iso", "position": [2, 1.5, 2.5] } ],
     "surfaces": [ { "name": "wp", "workplane": { "room": "r", "height": 0.8, "border": 0.5 }, "spacing": 0.5 } ]
   })");
-}
-
-std::string error_of(const nlohmann::json& doc) {
-  try {
-    parse_project(doc, "p.json", ".");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 
 TEST(ProjectFile, MinimalProjectLoads) {

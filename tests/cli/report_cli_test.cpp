@@ -227,8 +227,8 @@ TEST(ReportCli, CostOfTheExampleOffice) {
   const auto rows = parse_cost(r.output);
   ASSERT_EQ(rows.size(), 4u) << r.output;
   const size_t surfaces = rows.at("reference").size();
-  // workplane, room floor, ceiling and four walls, activity plane and faces, desk probes
-  ASSERT_EQ(surfaces, 10u) << r.output;
+  // workplane, room floor, ceiling and four walls, activity plane and faces, desk probes, seated eyes
+  ASSERT_EQ(surfaces, 11u) << r.output;
   for (const auto& [q, list] : rows) {
     ASSERT_EQ(list.size(), surfaces) << q;
     for (const auto& c : list) {
@@ -321,7 +321,7 @@ TEST(ReportChromium, ExampleOfficeRendersWithEveryImageAndTheRightNumbers) {
     EXPECT_TRUE(found) << surface;
     ++checked;
   }
-  EXPECT_EQ(checked, 10u * 5u);  // ten surfaces, five statistics each
+  EXPECT_EQ(checked, 11u * 5u);  // eleven surfaces (the observers: E at the eye), five statistics each
 
   // The compliance table shows the office preset's rows, walls and ceiling, each with a result
   // that agrees with results.json.
