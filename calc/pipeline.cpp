@@ -115,10 +115,17 @@ Results run_scene(const Scene& scene, const Progress& progress) {
     r.UGR_max = glare::max_ugr(r.observers);
   }
 
+  // The maintenance factor applies to both parts [EN12464-1], so the parts add up to E.
   const double mf = scene.settings.maintenance_factor;
+  results.quality = scene.settings.quality;
+  results.maintenance_factor = mf;
   for (auto& r : results.surfaces) {
     r.E.resize(r.E_direct.size());
-    for (size_t i = 0; i < r.E.size(); ++i) r.E[i] = (r.E_direct[i] + r.E_indirect[i]) * mf;
+    for (size_t i = 0; i < r.E.size(); ++i) {
+      r.E_direct[i] *= mf;
+      r.E_indirect[i] *= mf;
+      r.E[i] = r.E_direct[i] + r.E_indirect[i];
+    }
     r.stats = compute_statistics(r.E, r.grid.active);
     check_finite(r);
   }

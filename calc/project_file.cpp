@@ -10,6 +10,7 @@
 #include "calc/luminaire_tilt.h"
 #include "calc/project_limits.h"
 #include "calc/safe_json.h"
+#include "calc/sanity_checks.h"
 #include "calc/scaled_distribution.h"
 #include "calc/visibility.h"
 #include "geometry/workplane.h"
@@ -17,6 +18,7 @@
 #include "photometry/tabular_distribution.h"
 #include "util/error.h"
 #include "util/paths.h"
+#include "util/sha256.h"
 #include "util/output_names.h"
 
 namespace luxgrid::calc {
@@ -361,7 +363,16 @@ Room parse_room(const JsonValue& r, std::vector<std::string>& warnings) {
     warnings.push_back("room \"" + room.name + "\": the outline is clockwise; reversed to counter-clockwise");
   }
   if (auto z = r.find("floor_z")) room.floor_z = coordinate(*z);
-  room.height = positive_length(r.at("height"));
+  const auto height_v = r.at("height");
+  room.height = positive_length(height_v);
+  if (room.height > kMaxRoomHeight_m) {
+    // Refused before any grid or patch is sized by it: a project in millimetres would otherwise
+    // calculate a room a thousand times too large (minutes, gigabytes, and 0.0003 lx).
+    height_v.fail("the room \"" + room.name + "\" is " + number_text(room.height) +
+                  " m high, more than the limit of " + number_text(kMaxRoomHeight_m) +
+                  " m for a room; the lengths look like millimetres, and luxgrid reads metres "
+                  "(divide them by 1000)");
+  }
   if (auto refl = r.find("reflectance")) {
     refl->expect_object({"floor", "walls", "ceiling"});
     if (auto f = refl->find("floor")) room.reflectance.floor = f->as_number_in(0.0, 1.0);
@@ -919,6 +930,8 @@ Scene parse_project(const nlohmann::json& doc, const std::string& label,
   // IES TILT tables hold for the lamp as measured; a luminaire turned in the scene gets its
   // file's factor at its actual tilt, once, here, so every later stage sees the scaled output.
   apply_tilt_factors(scene);
+  // Legal input that is usually a mistake (millimetres, kilolumens, radians, ...): warnings.
+  add_sanity_warnings(scene, root);
   return scene;
 }
 
@@ -929,8 +942,10 @@ Scene parse_project_text(std::string_view text, const std::string& label,
 
 Scene load_project(const std::filesystem::path& file) {
   // JSON-level messages name the file as given; the scene's name only its file name.
-  Scene scene = parse_project(read_json_file(file), file.filename().string(), file.parent_path());
+  const std::string text = read_bounded_file(file);
+  Scene scene = parse_project(parse_json_text(text, file.string()), file.filename().string(), file.parent_path());
   scene.project_file = file;
+  scene.project_sha256 = sha256_hex(text);
   return scene;
 }
 

@@ -62,6 +62,11 @@ inline constexpr double kMaxEmitterSize_m = 1000.0;
 // geometry tests lose their meaning and products of lengths approach overflow.
 inline constexpr double kMaxCoordinate_m = 1e5;
 
+// The highest room, m: the tallest halls (hangars, assembly buildings) are under 200 m, while a
+// room in millimetres is 2000 "m" and more. Above it the project is refused with a hint, before
+// its grids and patches are sized (an office in millimetres ran out of memory).
+inline constexpr double kMaxRoomHeight_m = 1000.0;
+
 // The dimmest peak intensity a multiplier or flux_lm may scale a file to, cd: an indicator LED
 // gives about 1e-3 cd. Below, the values reach the subnormal range of a double (1e-308), where
 // every product is slow and loses its digits, and the results round to 0 lx.

@@ -8,17 +8,20 @@
 
 #include "calc/glare/observer_result.h"
 #include "calc/plan.h"
+#include "calc/scene.h"
 #include "calc/statistics.h"
 #include "geometry/surface_grid.h"
 
 namespace luxgrid::calc {
 
+// All three are maintained values (the initial ones times the maintenance factor), so that
+// E = E_direct + E_indirect holds in every output; results.json and the CSV say so.
 struct SurfaceResult {
   geometry::SurfaceGrid grid;
-  std::vector<double> E_direct;    // lx, initial (before the maintenance factor)
-  std::vector<double> E_indirect;  // lx, initial
-  std::vector<double> E;           // lx, maintained: (E_direct + E_indirect) * maintenance factor
-  Statistics stats;                // of E
+  std::vector<double> E_direct;    // lx, maintained
+  std::vector<double> E_indirect;  // lx, maintained
+  std::vector<double> E;           // lx, maintained: E_direct + E_indirect
+  Statistics stats;                // of E, over the active points
   std::optional<double> UGR_max;  // observers surfaces: the largest UGR over all observers and views
   // observers surfaces: per observer, each view's UGR, background luminance and terms
   // (calc/glare/ugr.h); E is then the illuminance at the eye facing each view.
@@ -27,6 +30,8 @@ struct SurfaceResult {
 
 struct Results {
   std::string project;
+  Quality quality = Quality::standard;  // the quality the calculation ran at
+  double maintenance_factor = 1.0;      // applied to every E above
   Plan plan;
   std::vector<SurfaceResult> surfaces;
   std::vector<std::pair<std::string, double>> timing_s;  // phase -> seconds, in run order

@@ -208,7 +208,7 @@ nlohmann::json parse_json_text(std::string_view text, const std::string& label) 
   return doc;
 }
 
-nlohmann::json read_json_file(const std::filesystem::path& file, std::uintmax_t max_bytes,
+std::string read_bounded_file(const std::filesystem::path& file, std::uintmax_t max_bytes,
                               const std::string& kind) {
   std::error_code ec;
   const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
@@ -223,7 +223,12 @@ nlohmann::json read_json_file(const std::filesystem::path& file, std::uintmax_t 
   std::string text(static_cast<std::size_t>(bytes), '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<std::size_t>(in.gcount()));
-  return parse_json_text(text, file.string());
+  return text;
+}
+
+nlohmann::json read_json_file(const std::filesystem::path& file, std::uintmax_t max_bytes,
+                              const std::string& kind) {
+  return parse_json_text(read_bounded_file(file, max_bytes, kind), file.string());
 }
 
 }  // namespace luxgrid::calc

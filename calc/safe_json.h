@@ -31,8 +31,13 @@ nlohmann::json parse_json_text(std::string_view text, const std::string& label);
 // The largest results.json read back (`luxgrid diff`), bytes: about 1.6 million points.
 inline constexpr std::uintmax_t kMaxResultsFileBytes = 256u << 20;
 
-// Reads `file` (refused before reading when larger than `max_bytes`) and parses it as above;
-// messages name the file as given and call it `kind`.
+// The bytes of `file`, refused before reading when larger than `max_bytes`; messages name the
+// file as given and call it `kind`.
+std::string read_bounded_file(const std::filesystem::path& file,
+                              std::uintmax_t max_bytes = kMaxProjectFileBytes,
+                              const std::string& kind = "project file");
+
+// Reads `file` as read_bounded_file does and parses it as above.
 nlohmann::json read_json_file(const std::filesystem::path& file,
                               std::uintmax_t max_bytes = kMaxProjectFileBytes,
                               const std::string& kind = "project file");

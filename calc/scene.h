@@ -83,6 +83,7 @@ struct Luminaire {
 struct Scene {
   std::string name;
   std::filesystem::path project_file;
+  std::string project_sha256;  // of the project file's bytes as read (util/sha256.h); empty in memory
   Settings settings;
   std::map<std::string, photometry::Photometry> photometry;
   std::vector<Room> rooms;

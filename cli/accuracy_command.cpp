@@ -1,4 +1,4 @@
-// `luxgrid accuracy [--out DIR] [--quick] [--grid N] [--photometry DIR]`: the accuracy-versus-time study of
+// `luxgrid accuracy [-o|--out DIR] [--quick] [--grid N] [--photometry DIR]`: the accuracy-versus-time study of
 // the near-field models (docs/accuracy.md; cli/accuracy_study.h describes the protocol). Writes
 // DIR/accuracy.md (tables) and DIR/accuracy.png (error versus time with the Pareto front).
 #include <cstdio>
@@ -8,6 +8,7 @@
 
 #include "cli/accuracy_study.h"
 #include "cli/commands.h"
+#include "cli/data_paths.h"
 #include "util/error.h"
 
 namespace luxgrid::cli {
@@ -15,16 +16,18 @@ namespace luxgrid::cli {
 void add_accuracy_command(CLI::App& app, Runner& run) {
   struct Options {
     std::string out = "accuracy";
-    std::string photometry = "tests/data/photometry/ldt";
+    std::string photometry;  // empty: the repository's tests/data/photometry/ldt (cli/data_paths.h)
     bool quick = false;
     int grid = 0;  // 0: the study's default (AccuracyOptions::grid), 6 with --quick
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
-      "accuracy", "Measure NRMS error and time per evaluation of every near-field model (paper's protocol)");
-  cmd->add_option("--out", opt->out, "Output folder for accuracy.md and accuracy.png")->capture_default_str();
-  cmd->add_option("--photometry", opt->photometry, "Folder holding the paper's seven Zumtobel LDT files (the full study also reads three contrast files from ../ies and ../ldt beside it)")
-      ->capture_default_str();
+      "accuracy", "Measure NRMS error and time per evaluation of every near-field model (protocol of Luksch2020, docs/accuracy.md)");
+  cmd->add_option("-o,--out", opt->out, "Output folder for accuracy.md and accuracy.png")->capture_default_str();
+  cmd->add_option("--photometry", opt->photometry,
+                  "Folder holding the study's seven Zumtobel LDT files (the full study also reads three contrast "
+                  "files from ../ies and ../ldt beside it; default: the repository's tests/data/photometry/ldt, "
+                  "found from the binary)");
   cmd->add_option("--grid", opt->grid, "Receivers per side of the 5 x 5 region (per orientation)")
       ->check(CLI::Range(2, 200));
   cmd->add_flag("--quick", opt->quick,
@@ -32,9 +35,11 @@ void add_accuracy_command(CLI::App& app, Runner& run) {
   cmd->callback([opt, &run] {
     run = [opt] {
       namespace fs = std::filesystem;
-      auto files = paper_ldt_files(opt->photometry);
+      const fs::path photometry =
+          opt->photometry.empty() ? find_repository_path("tests/data/photometry/ldt") : fs::path(opt->photometry);
+      auto files = paper_ldt_files(photometry);
       if (!opt->quick)
-        for (const auto& f : contrast_files(opt->photometry)) files.push_back(f);
+        for (const auto& f : contrast_files(photometry)) files.push_back(f);
       for (const auto& f : files)
         if (!fs::exists(f)) throw InputError(f.string() + ": photometry file of the study not found (--photometry)");
       AccuracyOptions options;

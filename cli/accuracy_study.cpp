@@ -299,7 +299,7 @@ std::string format_accuracy_markdown(const AccuracyStudy& s, const std::string& 
     const int m = index_of(nearfield::to_string(model));
     if (m >= 0) cols.push_back(m);
   }
-  o << "\n### NRMS per data set and height: the paper's cubature, the subdivided rungs, and Monte "
+  o << "\n### NRMS per data set and height: the [Luksch2020] cubature, the subdivided rungs, and Monte "
        "Carlo at the cubature's time\n\n| data set | h |";
   for (int m : cols) o << " " << s.models[m].name << " |";
   if (paper >= 0) o << " MC at paper's time |";

@@ -39,8 +39,11 @@ void add_calc_command(CLI::App& app, Runner& run) {
       options.show_progress = true;
       const std::filesystem::path out =
           opt->out.empty() ? default_output_dir(opt->project) : std::filesystem::path(opt->out);
+      auto warn = [](const std::string& w) { std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str()); };
+      options.on_load_warning = warn;
       const auto outcome = run_project(opt->project, out, options);
-      for (const auto& w : outcome.warnings) std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
+      // The scene's warnings were printed on loading; the outputs' (after them in the list) now.
+      for (size_t k = outcome.scene_warnings; k < outcome.warnings.size(); ++k) warn(outcome.warnings[k]);
       for (const auto& s : outcome.results.surfaces) {
         std::printf("%-24s Emin %9.2f  Eavg %9.2f  Emax %9.2f lx  U0 %.3f\n", s.grid.name.c_str(),
                     s.stats.Emin, s.stats.Eavg, s.stats.Emax, s.stats.U0);
@@ -50,6 +53,8 @@ void add_calc_command(CLI::App& app, Runner& run) {
       }
       if (outcome.cost) std::printf("cost of accuracy:\n%s", report::format_cost_table(*outcome.cost).c_str());
       std::printf("results written to %s\n", out.string().c_str());
+      for (const auto& k : outcome.kept)
+        std::printf("%s kept from the previous run (this run did not write it: --no-report)\n", k.c_str());
       if (opt->check && !report::all_met(outcome.checks)) {
         std::fprintf(stderr, "luxgrid: requirements not met (--check)\n");
         return 3;

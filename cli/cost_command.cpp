@@ -19,6 +19,7 @@ void add_cost_command(CLI::App& app, Runner& run) {
   cmd->callback([opt, &run] {
     run = [opt] {
       const LoadedProject loaded = load_project_with_requirements(opt->project);
+      for (const auto& w : loaded.scene.warnings) std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
       const auto table = run_cost(loaded.scene, true);
       std::fputs(report::format_cost_table(table).c_str(), stdout);
       return 0;

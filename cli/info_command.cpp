@@ -238,9 +238,10 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
                 p.opening.description.c_str(), p.opening.length, p.opening.width, p.opening.height);
     for (std::size_t k = 0; k < at.size(); ++k)
       std::printf("  I(C %g, gamma %g) = %.6g cd\n", at[k].c_deg, at[k].gamma_deg, intensities[k]);
-    for (const auto& w : p.warnings) std::printf("  warning: %s\n", w.c_str());
     if (ugr_table) std::printf("\n%s", ugr_table_text(*ugr_table).c_str());
   }
+  // On stderr, as every command prints its warnings (--json keeps them in its "warnings" too).
+  for (const auto& w : p.warnings) std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
   if (!plot.empty()) write_polar_png(p, plot);
   return 0;
 }
@@ -260,7 +261,7 @@ void add_info_command(CLI::App& app, Runner& run) {
   cmd->add_flag("--json", *json, "print JSON instead of text");
   cmd->add_option("--at", *at, "C,gamma in degrees (repeatable): intensity in that direction")
       ->allow_extra_args(false);
-  cmd->add_option("--plot", *plot, "write a polar diagram PNG (C0-C180 and C90-C270 planes)");
+  cmd->add_option("-o,--plot", *plot, "write a polar diagram PNG (C0-C180 and C90-C270 planes)");
   cmd->add_option("--interpolation", *interpolation, "bilinear (default) or bicubic")
       ->check(CLI::IsMember({"bilinear", "bicubic"}));
   cmd->add_flag("--ugr", *ugr, "add the CIE 190 UGR table (rooms 2H to 12H, five reflectance combinations, "

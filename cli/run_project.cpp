@@ -10,6 +10,8 @@
 #include "report/output_folder.h"
 #include "report/write_outputs.h"
 #include "util/error.h"
+#include "util/output_names.h"
+#include "util/sha256.h"
 
 namespace luxgrid::cli {
 
@@ -21,11 +23,14 @@ std::filesystem::path default_output_dir(const std::filesystem::path& project) {
 
 LoadedProject load_project_with_requirements(const std::filesystem::path& project) {
   // One safe parse (size, depth, duplicate keys, number range) feeds both readers.
-  const nlohmann::json doc = calc::read_json_file(project);
+  // The bytes are read once: the hash in results.json is of exactly what was parsed.
+  const std::string text = calc::read_bounded_file(project);
+  const nlohmann::json doc = calc::parse_json_text(text, project.string());
   const std::string label = project.filename().string();
   LoadedProject out;
   out.scene = calc::parse_project(report::without_requirements(doc), label, project.parent_path());
   out.scene.project_file = project;
+  out.scene.project_sha256 = sha256_hex(text);
   out.requirements = report::parse_requirements(doc, label);
   return out;
 }
@@ -46,6 +51,8 @@ RunOutcome run_project(const std::filesystem::path& project, const std::filesyst
   calc::Scene& scene = loaded.scene;
   if (options.quality) scene.settings.quality = *options.quality;
   const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (options.on_load_warning)
+    for (const auto& w : scene.warnings) options.on_load_warning(w);
 
   // Everything that can reject the input has run: only now does an output folder appear.
   report::OutputFolder folder(out_dir, input_files(scene));
@@ -73,8 +80,12 @@ RunOutcome run_project(const std::filesystem::path& project, const std::filesyst
   out.version = LUXGRID_VERSION;
   // Scene warnings (legal but suspicious input, naming the object) first, then the outputs'.
   outcome.warnings = scene.warnings;
+  outcome.scene_warnings = scene.warnings.size();
   for (auto& w : report::write_outputs(outcome.results, folder, out)) outcome.warnings.push_back(std::move(w));
+  // --no-report does not ask to delete the report of an earlier run into the same folder.
+  if (!options.report) folder.keep_from_previous({kReportFile});
   folder.commit();
+  outcome.kept = folder.kept();
   return outcome;
 }
 

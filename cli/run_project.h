@@ -2,6 +2,7 @@
 // Load a project, calculate it and write its output folder: the shared path of `calc`,
 // `validate` and `cost`.
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -20,13 +21,19 @@ struct RunOptions {
   std::optional<report::ColourScale> scale;    // --scale MIN:MAX
   bool with_cost = false;                      // --with-cost: the cost table into the report
   bool arrays_npy = false;                     // --arrays npy: <surface>.npy per surface
+  // Called with each of the scene's warnings as soon as the project is loaded (before a long
+  // calculation, so a project in the wrong units says so at once); RunOutcome::warnings lists
+  // them too.
+  std::function<void(const std::string&)> on_load_warning;
 };
 
 struct RunOutcome {
   calc::Results results;
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings;  // the scene's first, then the outputs'
+  size_t scene_warnings = 0;          // how many of them are the scene's
   std::vector<report::RequirementCheck> checks;  // empty when the project states none
   std::optional<report::CostTable> cost;         // with_cost only
+  std::vector<std::string> kept;  // files of the previous output carried over (report.html under --no-report)
 };
 
 // A project and the requirements its surfaces state. The loader does not know the

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/data_paths.h"
 #include "cli/validation.h"
 #include "report/output_folder.h"
 
@@ -10,17 +11,19 @@ namespace luxgrid::cli {
 
 void add_validate_command(CLI::App& app, Runner& run) {
   struct Options {
-    std::string cases = "cases", out = "validation.out";
+    std::string cases, out = "validation.out";
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("validate", "Run the validation cases and compare with their expected values");
-  cmd->add_option("CASES_DIR", opt->cases, "Folder of case folders")->capture_default_str();
+  cmd->add_option("CASES_DIR", opt->cases,
+                  "Folder of case folders (default: the repository's cases/, found from the binary)");
   cmd->add_option("-o,--output", opt->out, "Output folder for the tables and each case's results")
       ->capture_default_str();
   cmd->callback([opt, &run] {
     run = [opt] {
-      report::OutputFolder folder(opt->out, {opt->cases});
-      const ValidationReport report = run_validation(opt->cases, folder.staging());
+      const std::filesystem::path cases = opt->cases.empty() ? find_repository_path("cases") : std::filesystem::path(opt->cases);
+      report::OutputFolder folder(opt->out, {cases});
+      const ValidationReport report = run_validation(cases, folder.staging());
       const std::string md = report.markdown();
       report::write_text_file(folder.file("validation.md"), md);
       report::write_text_file(folder.file("validation.json"), report.json().dump(1) + "\n");

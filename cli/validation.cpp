@@ -96,6 +96,8 @@ void check_case(const fs::path& dir, const fs::path& out_dir, ValidationReport& 
   const nlohmann::json doc = calc::read_json_file(expected_file, calc::kMaxProjectFileBytes, "expected-values file");
   RunOptions options;
   const auto outcome = run_project(dir / "project.json", out_dir / name, options);
+  // On stderr, as every command prints its warnings; the table on stdout stays the table.
+  for (const auto& w : outcome.warnings) std::fprintf(stderr, "luxgrid: warning: case %s: %s\n", name.c_str(), w.c_str());
   const calc::JsonValue root(doc, name + "/expected.json", "");
   root.expect_object({"cases", "notes"});
   for (const auto& c : root.at("cases").items()) {

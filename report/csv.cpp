@@ -31,8 +31,11 @@ std::string surface_csv(const calc::SurfaceResult& r) {
   if (r.grid.kind == geometry::SurfaceGrid::Kind::observers) return observers_csv(r);
   // The last column says what the E columns measure (results.json's "quantity"), so a CSV read on
   // its own cannot pass a cylindrical value off as a planar one. nx, ny, nz are the receiver
-  // normal: for a semi-cylindrical surface the direction the half cylinder faces.
-  std::string out = "i,j,x,y,z,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,quantity\n";
+  // normal: for a semi-cylindrical surface the direction the half cylinder faces. A point left
+  // out of the calculation (outside an L-shaped workplane, inside an obstacle) says active =
+  // false and leaves its E cells empty, so a spreadsheet's MIN and AVERAGE over a column skip
+  // it, as the statistics do.
+  std::string out = std::string(kSurfaceCsvHeader) + "\n";
   const auto& g = r.grid;
   const char* quantity = geometry::to_string(g.quantity);
   char line[512];
@@ -40,9 +43,15 @@ std::string surface_csv(const calc::SurfaceResult& r) {
     const int nu = g.nu > 0 ? g.nu : 1;
     const auto& p = g.points[k];
     const auto& n = g.normals[k];
-    std::snprintf(line, sizeof line, "%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%s\n",
-                  static_cast<int>(k % nu), static_cast<int>(k / nu), p.x, p.y, p.z, n.x, n.y, n.z,
-                  r.E[k], r.E_direct[k], r.E_indirect[k], quantity);
+    const bool active = g.active.empty() || g.active[k];
+    std::snprintf(line, sizeof line, "%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,", static_cast<int>(k % nu),
+                  static_cast<int>(k / nu), p.x, p.y, p.z, n.x, n.y, n.z);
+    out += line;
+    if (active) {
+      std::snprintf(line, sizeof line, "true,%.6g,%.6g,%.6g,%s\n", r.E[k], r.E_direct[k], r.E_indirect[k], quantity);
+    } else {
+      std::snprintf(line, sizeof line, "false,,,,%s\n", quantity);
+    }
     out += line;
   }
   return out;

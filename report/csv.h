@@ -1,11 +1,15 @@
 #pragma once
-// One CSV per surface: a row per point with position, normal, the three illuminances and the
-// quantity they measure (planar, ..., semi-cylindrical).
+// One CSV per surface: a row per point with position, normal, whether it is calculated, the three
+// maintained illuminances and the quantity they measure (planar, ..., semi-cylindrical).
 #include <string>
 
 #include "calc/results.h"
 
 namespace luxgrid::report {
+
+// The header row: the E columns say in their names that they are maintained values.
+inline constexpr const char* kSurfaceCsvHeader =
+    "i,j,x,y,z,nx,ny,nz,active,E_maintained_lx,E_direct_maintained_lx,E_indirect_maintained_lx,quantity";
 
 std::string surface_csv(const calc::SurfaceResult& r);
 

@@ -52,6 +52,30 @@ std::vector<double> numbers_at(const nlohmann::json& s, const char* key, const s
   return out;
 }
 
+// The points both files calculated: results.json marks the points a grid left out (outside an
+// L-shaped workplane, inside an obstacle) "active": false; their E is 0 in both and would only
+// dilute the mean difference. Files without the array (format 1) count every point.
+void keep_active(const nlohmann::json& sa, const nlohmann::json& sb, std::vector<double>& ea,
+                 std::vector<double>& eb) {
+  auto flags = [&](const nlohmann::json& s) {
+    std::vector<bool> out(ea.size(), true);
+    const auto it = s.find("active");
+    if (it == s.end() || !it->is_array() || it->size() != ea.size()) return out;
+    for (size_t i = 0; i < ea.size(); ++i) out[i] = !(*it)[i].is_boolean() || (*it)[i].get<bool>();
+    return out;
+  };
+  const auto fa = flags(sa), fb = flags(sb);
+  size_t n = 0;
+  for (size_t i = 0; i < ea.size(); ++i) {
+    if (!(fa[i] && fb[i])) continue;
+    ea[n] = ea[i];
+    eb[n] = eb[i];
+    ++n;
+  }
+  ea.resize(n);
+  eb.resize(n);
+}
+
 calc::Statistics stats_of(const nlohmann::json& s) {
   calc::Statistics st;
   const auto it = s.find("stats");
@@ -66,7 +90,8 @@ calc::Statistics stats_of(const nlohmann::json& s) {
 }
 
 const nlohmann::json& surfaces_of(const nlohmann::json& doc, const std::string& label) {
-  if (!doc.is_object() || !doc.contains("format") || doc["format"] != kResultsFormat) {
+  if (!doc.is_object() || !doc.contains("format") ||
+      (doc["format"] != kResultsFormat && doc["format"] != kResultsFormatV1)) {
     throw InputError(label + ": not a luxgrid results file (expected \"format\": \"" +
                      std::string(kResultsFormat) + "\")");
   }
@@ -107,12 +132,13 @@ ResultsDiff diff_results(const nlohmann::json& a, const std::string& label_a,
     const nlohmann::json& other = *find(sb, name);
     size_t j = 0;
     while (sb[j]["name"] != name) ++j;
-    const auto ea = numbers_at(sa[i], "E", label_a + " /surfaces/" + std::to_string(i));
-    const auto eb = numbers_at(other, "E", label_b + " /surfaces/" + std::to_string(j));
+    auto ea = numbers_at(sa[i], "E", label_a + " /surfaces/" + std::to_string(i));
+    auto eb = numbers_at(other, "E", label_b + " /surfaces/" + std::to_string(j));
     if (ea.size() != eb.size()) {
       throw InputError("surface \"" + name + "\": " + label_a + " has " + std::to_string(ea.size()) +
                        " points, " + label_b + " has " + std::to_string(eb.size()));
     }
+    keep_active(sa[i], other, ea, eb);
     SurfaceDiff d{name, ea.size(), point_difference(ea, eb), stats_of(sa[i]), stats_of(other)};
     out.max_rel = std::max(out.max_rel, d.diff.max_rel);
     out.surfaces.push_back(std::move(d));

@@ -29,7 +29,7 @@ PointDifference point_difference(const std::vector<double>& a, const std::vector
 
 struct SurfaceDiff {
   std::string name;
-  size_t points = 0;
+  size_t points = 0;  // the points both files calculated (active in both)
   PointDifference diff;
   calc::Statistics a, b;
 };

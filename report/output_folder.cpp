@@ -200,12 +200,23 @@ OutputFolder::~OutputFolder() {
 }
 
 void OutputFolder::commit() {
-  write_marker(staging_, kMarkerHeader);
   std::error_code ec;
   {
     const FolderLock lock(target_.parent_path());
     // The target may have changed during the calculation (another run, the user): check again.
     check_replaceable(target_, inputs_);
+    // What the previous run wrote and this one was told not to: carried over, before the marker
+    // is written, so the new marker lists them as luxgrid's.
+    const std::set<std::string> listed = marker_entries(target_ / kOutputMarker);
+    for (const auto& name : keep_) {
+      const fs::path from = target_ / name, to = staging_ / name;
+      if (name.find('/') != std::string::npos || !listed.count(name) || fs::exists(fs::symlink_status(to, ec))) continue;
+      if (!fs::is_regular_file(fs::symlink_status(from, ec))) continue;
+      fs::copy_file(from, to, ec);
+      if (ec) throw CalculationError(from.string() + ": cannot keep the file of the previous run: " + ec.message());
+      kept_.push_back(name);
+    }
+    write_marker(staging_, kMarkerHeader);
     if (fs::exists(fs::symlink_status(target_, ec))) {
       if (exchange(staging_, target_)) {
         committed_ = true;

@@ -36,6 +36,13 @@ class OutputFolder {
   // Where to write files now (the staging folder).
   const std::filesystem::path& staging() const { return staging_; }
   std::filesystem::path file(const std::string& name) const { return staging_ / name; }
+  // Files this run does not produce because its flags said so (report.html under --no-report):
+  // commit() copies each one the previous output in the target holds into the new folder, so a
+  // rerun never drops an output nobody asked it to drop. Only regular files the previous run's
+  // marker lists are copied (never a link, never a file luxgrid did not write), under the lock.
+  void keep_from_previous(std::vector<std::string> names) { keep_ = std::move(names); }
+  // The files commit() carried over from the previous output (after commit).
+  const std::vector<std::string>& kept() const { return kept_; }
   // Writes the marker and swaps the staged folder into place, replacing an older luxgrid output.
   // Throws InputError if the target changed into something that may not be replaced meanwhile,
   // CalculationError if the file system refuses.
@@ -47,6 +54,7 @@ class OutputFolder {
   std::filesystem::path target_;
   std::filesystem::path staging_;
   std::vector<std::filesystem::path> inputs_;
+  std::vector<std::string> keep_, kept_;
   bool committed_ = false;
 };
 

@@ -60,6 +60,10 @@ nlohmann::json surface_json(const calc::SurfaceResult& r) {
   }
   s["points"] = std::move(points);
   s["normals"] = std::move(normals);
+  // false for the points left out above: their E is 0 and the statistics skip them.
+  json active = json::array();
+  for (size_t i = 0; i < g.points.size(); ++i) active.push_back(g.active.empty() || g.active[i]);
+  s["active"] = std::move(active);
   s["E"] = r.E;
   s["E_direct"] = r.E_direct;
   s["E_indirect"] = r.E_indirect;
@@ -73,11 +77,18 @@ nlohmann::json surface_json(const calc::SurfaceResult& r) {
 }
 }  // namespace
 
-nlohmann::json results_to_json(const calc::Results& results, const std::vector<std::string>& warnings) {
+nlohmann::json results_to_json(const calc::Results& results, const std::vector<std::string>& warnings,
+                               const ResultsOrigin& origin) {
   using nlohmann::json;
   json j;
   j["format"] = kResultsFormat;
+  j["luxgrid_version"] = origin.version;
   j["project"] = results.project;
+  j["project_sha256"] = origin.project_sha256;
+  j["quality"] = calc::to_string(results.quality);
+  j["maintenance_factor"] = results.maintenance_factor;
+  // Every E, E_direct and E_indirect below: E = E_direct + E_indirect, all times the factor.
+  j["values"] = "maintained";
   j["plan"] = {{"direct", results.plan.direct},
                {"indirect", results.plan.indirect},
                {"visibility", results.plan.visibility},

@@ -68,8 +68,8 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   report.version = options.version;
   report.date = utc_now();
   // Indirect light ran when any point received some: then each grid also gets its direct and
-  // indirect parts as <surface>_direct.png and <surface>_indirect.png (initial values, before the
-  // maintenance factor, like the CSV's E_direct_lx / E_indirect_lx columns; each on its own scale
+  // indirect parts as <surface>_direct.png and <surface>_indirect.png (maintained values, like the
+  // CSV's E_direct_maintained_lx / E_indirect_maintained_lx columns; each on its own scale
   // unless a scale was given, since the indirect part is often a small fraction of the total).
   bool indirect_ran = false;
   for (const auto& s : results.surfaces)
@@ -136,7 +136,10 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   // The scene's warnings (legal but suspicious input) and the outputs', as the terminal shows them.
   std::vector<std::string> all_warnings = options.scene ? options.scene->warnings : std::vector<std::string>{};
   all_warnings.insert(all_warnings.end(), warnings.begin(), warnings.end());
-  nlohmann::json j = results_to_json(results, all_warnings);
+  ResultsOrigin origin;
+  origin.version = options.version;
+  if (options.scene) origin.project_sha256 = options.scene->project_sha256;
+  nlohmann::json j = results_to_json(results, all_warnings, origin);
   if (options.scene) {
     // The maintenance factor every E includes, and its parts when the project gave them [CIE97].
     const auto& settings = options.scene->settings;

@@ -86,8 +86,10 @@ TEST(FarField, GridSumsLuminairesAndAppliesMaintenanceFactor) {
   const Results r = run_scene(parse_project(doc, "p.json", "."));
   const double d = std::sqrt(5.0);
   const double each = 400.0 * 2.0 / (d * d * d);
-  EXPECT_NEAR(r.surfaces[0].E_direct[0], 2 * each, 1e-12);
-  EXPECT_NEAR(r.surfaces[0].E[0], each, 1e-12);  // x 0.5
+  // Every part is maintained: x 0.5, so E_direct = E (no indirect light).
+  EXPECT_NEAR(r.surfaces[0].E_direct[0], each, 1e-12);
+  EXPECT_NEAR(r.surfaces[0].E[0], each, 1e-12);
+  EXPECT_DOUBLE_EQ(r.maintenance_factor, 0.5);
 }
 
 }  // namespace

@@ -24,6 +24,25 @@ TEST(Diff, IdenticalResultsDifferByZero) {
   EXPECT_EQ(d.max_rel, 0.0);
 }
 
+TEST(Diff, PointsLeftOutCountNeitherWayAndBothFormatsAreRead) {
+  // Format 2 marks left-out points; their E (0 in a real file, 7 here to show it is skipped) is
+  // not compared, so the mean is over the two calculated points: (10 % + 0) / 2.
+  auto a = results({{"wp", {110, 7, 200}}});
+  auto b = results({{"wp", {100, 0, 200}}});
+  a["format"] = b["format"] = "luxgrid-results/2";
+  a["surfaces"][0]["active"] = b["surfaces"][0]["active"] = {true, false, true};
+  const auto d = diff_results(a, "a", b, "b");
+  EXPECT_EQ(d.surfaces[0].points, 2u);
+  EXPECT_DOUBLE_EQ(d.surfaces[0].diff.max_rel, 0.1);
+  EXPECT_DOUBLE_EQ(d.surfaces[0].diff.mean_rel, 0.05);
+  // A format-1 file (no "active") against a format-2 one: the side that marks a point decides.
+  a = results({{"wp", {110, 7, 200}}});
+  EXPECT_EQ(diff_results(a, "a", b, "b").surfaces[0].points, 2u);
+  // Two format-1 files: every point counts (7 against 0 is then a difference).
+  b = results({{"wp", {100, 0, 200}}});
+  EXPECT_EQ(diff_results(a, "a", b, "b").surfaces[0].points, 3u);
+}
+
 TEST(Diff, RelativeToTheReferenceWithAFloor) {
   // Points: 110 vs 100 -> 10 %; 200 vs 200 -> 0; 0.5 vs 0 -> |0.5| / (1 % of 200 = 2) = 25 %.
   const auto d = point_difference({110, 200, 0.5}, {100, 200, 0});

@@ -3,6 +3,7 @@
 
 #include "report/colour_scale.h"
 #include "report/results_json.h"
+#include "util/sha256.h"
 
 namespace luxgrid::report {
 namespace {
@@ -16,8 +17,8 @@ calc::Results sample() {
   r.plan.notes = {"n1"};
   calc::SurfaceResult s;
   s.grid = geometry::make_plane_grid("wp", {0, 0, 0.8}, {1, 0, 0}, {0, 1, 0}, 2.0, 1.0, 0.5);
-  s.E_direct.assign(s.grid.points.size(), 100.0);
-  s.E_indirect.assign(s.grid.points.size(), 20.0);
+  s.E_direct.assign(s.grid.points.size(), 80.0);
+  s.E_indirect.assign(s.grid.points.size(), 16.0);
   s.E.assign(s.grid.points.size(), 96.0);
   s.stats = calc::compute_statistics(s.E);
   r.surfaces.push_back(s);
@@ -27,8 +28,9 @@ calc::Results sample() {
 
 TEST(ResultsJson, HasTheDocumentedShape) {
   const auto j = results_to_json(sample());
-  EXPECT_EQ(j["format"], "luxgrid-results/1");
+  EXPECT_EQ(j["format"], "luxgrid-results/2");
   EXPECT_EQ(j["project"], "demo");
+  EXPECT_EQ(j["values"], "maintained");
   for (const char* k : {"direct", "indirect", "visibility", "notes"}) EXPECT_TRUE(j["plan"].contains(k)) << k;
   const auto& s = j["surfaces"][0];
   EXPECT_EQ(s["name"], "wp");
@@ -63,8 +65,36 @@ TEST(ResultsJson, SaysWhatGeometryDid) {
   EXPECT_EQ(s["quantity"], "cylindrical");
   EXPECT_EQ(s["points_outside"], 2);
   EXPECT_EQ(s["points_in_obstacles"], 1);
+  EXPECT_EQ(s["active"], nlohmann::json::array({true, false, false, true, true, true, false, true}));
   ASSERT_EQ(j["warnings"].size(), 1u);
   EXPECT_EQ(j["warnings"][0], "room \"L\": the outline is clockwise; reversed to counter-clockwise");
+}
+
+TEST(ResultsJson, SaysWhereTheResultsCameFrom) {
+  calc::Results r = sample();
+  r.quality = calc::Quality::high;
+  r.maintenance_factor = 0.8;
+  const auto j = results_to_json(r, {}, {"1.2.3", "ab12"});
+  EXPECT_EQ(j["luxgrid_version"], "1.2.3");
+  EXPECT_EQ(j["project_sha256"], "ab12");
+  EXPECT_EQ(j["quality"], "high");
+  EXPECT_DOUBLE_EQ(j["maintenance_factor"].get<double>(), 0.8);
+  // The parts add up to the total at every point: all three are maintained values.
+  const auto& s = j["surfaces"][0];
+  for (size_t i = 0; i < s["E"].size(); ++i)
+    EXPECT_DOUBLE_EQ(s["E_direct"][i].get<double>() + s["E_indirect"][i].get<double>(), s["E"][i].get<double>());
+}
+
+TEST(Sha256, MatchesThePublishedVectors) {
+  // FIPS 180-4 examples (NIST's SHA256.pdf): "abc", the empty string, and the two-block message
+  // "abcdbcde...nopq" (56 bytes: its padding needs a second block).
+  EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+  // A million 'a's: 15 625 blocks (the standard's long example).
+  EXPECT_EQ(sha256_hex(std::string(1000000, 'a')),
+            "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
 
 TEST(ColourScale, NiceValues) {
