@@ -8,7 +8,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -33,16 +32,12 @@ void write(const fs::path& p, const std::string& text) {
   std::ofstream(p, std::ios::binary) << text;
 }
 
-// A fresh folder for the running test only (under testing::TempDir(), named by the test and the
-// process, so parallel runs never share it): <tmp>/luxgrid_tilt_<test>_<pid>/<name>/ with sub/
-// inside it.
+// A fresh folder of this process under testing::TempDir() (parallel runs never share it):
+// <tmp>/lxtilt<pid>/<name>/ with sub/ inside it. Short, because one test writes its absolute path
+// after TILT=, where at most 64 characters are allowed; each test passes its own `name`.
 fs::path scratch(const std::string& name) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string test = info ? std::string(info->test_suite_name()) + "_" + info->name() : "none";
-  for (char& c : test)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  const fs::path dir = fs::path(::testing::TempDir()) /
-                       ("luxgrid_tilt_" + test + "_" + std::to_string(::getpid())) / name;
+  const fs::path dir =
+      fs::path(::testing::TempDir()) / ("lxtilt" + std::to_string(::getpid())) / name;
   fs::remove_all(dir);
   fs::create_directories(dir / "sub");
   return dir;
