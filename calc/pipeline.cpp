@@ -49,9 +49,7 @@ void run_indirect(const Scene& scene, Results& results) {
   if (!decision.run) return;
   indirect::IndirectOptions options = indirect::indirect_options(scene.settings);
   options.luminous_flux_lm = decision.luminous_flux_lm;
-  if (auto vis = results.plan.visibility_test) {
-    options.occluded = [vis](const Vec3& a, const Vec3& b) { return !vis->visible(a, b); };
-  }
+  options.visibility = results.plan.visibility_test;
   const indirect::IndirectResult r = indirect::compute_indirect(scene, scene.surfaces, options);
   for (size_t k = 0; k < results.surfaces.size(); ++k) {
     results.surfaces[k].E_indirect = r.E_indirect_per_surface[k];

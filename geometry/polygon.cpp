@@ -103,12 +103,34 @@ std::vector<std::array<int, 3>> triangulate(const Polygon2& ccw) {
   return out;
 }
 
-namespace {
-// Segments (a, b) and (c, d) cross at a point inside both (not at an end, not collinear).
-bool properly_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+std::vector<Polygon2> triangles(const Polygon2& ccw) {
+  std::vector<Polygon2> out;
+  for (const auto& t : triangulate(ccw)) out.push_back({ccw[t[0]], ccw[t[1]], ccw[t[2]]});
+  return out;
+}
+
+Polygon2 clip_convex(const Polygon2& subject, const Polygon2& clip) {
+  Polygon2 out = subject;
+  for (size_t i = 0, n = clip.size(); i < n && !out.empty(); ++i) {
+    const Vec2 a = clip[i], b = clip[(i + 1) % n];
+    Polygon2 in;
+    in.swap(out);
+    for (size_t k = 0, m = in.size(); k < m; ++k) {
+      const Vec2 p = in[k], q = in[(k + 1) % m];
+      const double dp = cross(a, b, p), dq = cross(a, b, q);
+      if (dp >= 0.0) out.push_back(p);
+      if ((dp >= 0.0) != (dq >= 0.0)) out.push_back(p + (q - p) * (dp / (dp - dq)));
+    }
+  }
+  return out;
+}
+
+bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
   const double d1 = cross(a, b, c), d2 = cross(a, b, d), d3 = cross(c, d, a), d4 = cross(c, d, b);
   return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
+
+namespace {
 
 // An interior sample of each triangle of `p` (its centroid) lies strictly inside `q`.
 bool some_part_inside(const Polygon2& p, const Polygon2& q) {
@@ -128,7 +150,7 @@ bool some_part_inside(const Polygon2& p, const Polygon2& q) {
 bool polygons_overlap(const Polygon2& a, const Polygon2& b) {
   for (size_t i = 0; i < a.size(); ++i) {
     for (size_t j = 0; j < b.size(); ++j) {
-      if (properly_cross(a[i], a[(i + 1) % a.size()], b[j], b[(j + 1) % b.size()])) return true;
+      if (segments_cross(a[i], a[(i + 1) % a.size()], b[j], b[(j + 1) % b.size()])) return true;
     }
   }
   // No proper crossings: either one contains part of the other, or they only touch / are apart.

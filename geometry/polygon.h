@@ -1,6 +1,7 @@
 #pragma once
 // Small, fast polygon helpers on plain doubles (no CGAL): areas, convexity, point location and
-// ear-clipping triangulation. Outlines are lists of corners without a repeated closing corner.
+// ear-clipping triangulation, clipping. Outlines are lists of corners without a repeated closing
+// corner. Planar polygons in space are in polygon3.h.
 // The CGAL-backed set-up operations (validation with exact predicates, straight-skeleton insets)
 // live in outline.h and workplane.h; these helpers are for code that runs per point.
 #include <array>
@@ -29,6 +30,16 @@ Location locate(const Vec2& p, const Polygon2& poly, double boundary_tol_m = 1e-
 // Ear-clipping triangulation of a simple counter-clockwise polygon: indices into `ccw`, each
 // triangle counter-clockwise. Collinear corners are clipped away without emitting a sliver.
 std::vector<std::array<int, 3>> triangulate(const Polygon2& ccw);
+
+// The triangles of triangulate() as counter-clockwise polygons of three corners.
+std::vector<Polygon2> triangles(const Polygon2& ccw);
+
+// Sutherland-Hodgman: `subject` clipped by the convex counter-clockwise polygon `clip`.
+Polygon2 clip_convex(const Polygon2& subject, const Polygon2& clip);
+
+// True when segment ab crosses segment cd at a point inside both (touching at an end point or
+// overlapping collinearly does not count).
+bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d);
 
 // True when two simple polygons share interior area (touching along an edge or at a corner is
 // not overlap). Set-up code: O(n m).

@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "calc/indirect/patches.h"
-#include "calc/indirect/polygon.h"
 #include "calc/nearfield/emitter.h"
 
 namespace luxgrid::calc::indirect {
@@ -35,23 +34,19 @@ double smallest_extent(const Room& room) {
 std::vector<Polygon2> convex_pieces(const Room& room) {
   if (room.outline.size() < 3 || !(room.height > 0.0)) return {};
   if (outline_is_convex(room)) return {room.outline};
-  try {
-    return ear_clip(room.outline);
-  } catch (const std::invalid_argument&) {
-    return {};
-  }
+  return geometry::triangles(room.outline);
 }
 
 // `poly` clipped to the prism `piece` x [z0, z1], each plane moved out by kOpeningOnFace_m.
 Polygon3 clip_to_prism(Polygon3 poly, const Polygon2& piece, double z0, double z1) {
-  poly = clip_to_half_space(poly, Vec3(0.0, 0.0, z0 - kOpeningOnFace_m), Vec3(0.0, 0.0, 1.0));
-  poly = clip_to_half_space(poly, Vec3(0.0, 0.0, z1 + kOpeningOnFace_m), Vec3(0.0, 0.0, -1.0));
+  poly = geometry::clip_to_half_space(poly, Vec3(0.0, 0.0, z0 - kOpeningOnFace_m), Vec3(0.0, 0.0, 1.0));
+  poly = geometry::clip_to_half_space(poly, Vec3(0.0, 0.0, z1 + kOpeningOnFace_m), Vec3(0.0, 0.0, -1.0));
   for (size_t k = 0; k < piece.size() && poly.size() >= 3; ++k) {
     const Vec2 a = piece[k], b = piece[(k + 1) % piece.size()];
     const double len = glm::length(b - a);
     if (!(len > 0.0)) continue;
     const Vec3 inward(-(b.y - a.y) / len, (b.x - a.x) / len, 0.0);  // left of a -> b (ccw)
-    poly = clip_to_half_space(poly, Vec3(a.x, a.y, 0.0) - inward * kOpeningOnFace_m, inward);
+    poly = geometry::clip_to_half_space(poly, Vec3(a.x, a.y, 0.0) - inward * kOpeningOnFace_m, inward);
   }
   return poly;
 }
@@ -80,7 +75,7 @@ bool flush_emitting_out(const Polygon3& part, const Room& room, const Vec3& emit
 
 bool inside_obstacle(const Room& room, const Vec3& p) {
   for (const auto& o : room.obstacles)
-    if (p.z > o.z0 && p.z < o.z1 && point_in_polygon(o.footprint, Vec2(p.x, p.y))) return true;
+    if (p.z > o.z0 && p.z < o.z1 && geometry::locate(Vec2(p.x, p.y), o.footprint, 0.0) == geometry::Location::inside) return true;
   return false;
 }
 
@@ -90,13 +85,13 @@ bool inside_obstacle(const Room& room, const Vec3& p) {
 // calc/nearfield/ladder.cpp), each a cell at its centroid.
 void add_cells(const Polygon3& poly, double max_cell_m, double inv_area, const Room& room,
                std::vector<EmitterCell>& out) {
-  const double area = glm::length(area_vector(poly));
-  if (polygon_diameter(poly) <= max_cell_m) {
-    const Vec3 c = polygon_centroid(poly);
+  const double area = glm::length(geometry::area_vector(poly));
+  if (geometry::polygon_diameter(poly) <= max_cell_m) {
+    const Vec3 c = geometry::polygon_centroid(poly);
     if (!inside_obstacle(room, c)) out.push_back({c, area * inv_area});
     return;
   }
-  const Vec3 c = polygon_centroid(poly);
+  const Vec3 c = geometry::polygon_centroid(poly);
   for (size_t k = 0; k < poly.size(); ++k) {
     const Vec3 b = poly[k], d = poly[(k + 1) % poly.size()];
     const double tri_area = 0.5 * glm::length(glm::cross(b - c, d - c));
@@ -139,8 +134,8 @@ std::vector<RoomCells> emitter_cells(const Scene& scene, const Luminaire& lum) {
     for (const Polygon2& piece : pieces) {
       Polygon3 part = clip_to_prism(e.vertices, piece, room.floor_z, top);
       if (part.size() < 3 || flush_emitting_out(part, room, e.normal)) continue;
-      const double a = glm::length(area_vector(part));
-      if (!(a > kSliverWidths * kOpeningOnFace_m * polygon_diameter(part))) continue;
+      const double a = glm::length(geometry::area_vector(part));
+      if (!(a > kSliverWidths * kOpeningOnFace_m * geometry::polygon_diameter(part))) continue;
       inside_area += a;
       parts.push_back(std::move(part));
     }

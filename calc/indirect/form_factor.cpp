@@ -47,7 +47,7 @@ double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Polygon3& p
   constexpr size_t kMaxStack = 16;
   const size_t m = polygon.size();
   if (m < 3) return 0.0;
-  if (m > kMaxStack) return lambert_sum(x, n, clip_to_half_space(polygon, x, n));
+  if (m > kMaxStack) return lambert_sum(x, n, geometry::clip_to_half_space(polygon, x, n));
   std::array<Vec3, 2 * kMaxStack> clipped;
   std::array<double, kMaxStack> side;
   bool any_front = false, all_front = true;
@@ -74,9 +74,9 @@ double point_kernel_form_factor(const Vec3& x, const Vec3& n, const Vec3& c, con
   const Vec3 d = x - c;
   const double d2 = glm::dot(d, d);
   if (!(d2 > 0.0)) return 0.0;
-  const double cos_e = std::max(0.0, glm::dot(m, d));
-  const double cos_r = std::max(0.0, -glm::dot(n, d));
-  return area_m2 * cos_e * cos_r / (kPi * d2 * d2);
+  const double h_source_m = std::max(0.0, glm::dot(m, d));
+  const double h_receiver_m = std::max(0.0, -glm::dot(n, d));
+  return area_m2 * point_kernel_pi_per_m2(h_source_m, h_receiver_m, d2) / kPi;
 }
 
 double quarter_kernel_form_factor(const Vec3& x, const Vec3& n, const Polygon3& polygon,
@@ -93,7 +93,7 @@ double quarter_kernel_form_factor(const Vec3& x, const Vec3& n, const Polygon3& 
     const Vec3 d = x - c;
     const double d2 = glm::dot(d, d);
     if (!(d2 > min_d2)) return -1.0;
-    sum += std::max(0.0, glm::dot(m, d)) * std::max(0.0, -glm::dot(n, d)) / (d2 * d2);
+    sum += point_kernel_pi_per_m2(std::max(0.0, glm::dot(m, d)), std::max(0.0, -glm::dot(n, d)), d2);
   }
   const double f4 = 0.25 * area_m2 * sum / kPi;
   const double f1 = point_kernel_form_factor(x, n, centroid, m, area_m2);

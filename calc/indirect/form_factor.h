@@ -7,9 +7,13 @@
 #include <array>
 #include <functional>
 
-#include "calc/indirect/polygon.h"
+#include "geometry/polygon.h"
+#include "geometry/polygon3.h"
 
 namespace luxgrid::calc::indirect {
+
+using geometry::Polygon2;
+using geometry::Polygon3;
 
 // Occlusion callback: true when the open segment from a to b is blocked. Empty = nothing blocks.
 using OcclusionFn = std::function<bool(const Vec3& a, const Vec3& b)>;
@@ -20,6 +24,20 @@ using OcclusionFn = std::function<bool(const Vec3& a, const Vec3& b)>;
 // polygon to the receiver's hemisphere n . (y - x) >= 0. Exact for any planar polygon, in [0, 1],
 // bounded however close x is to the polygon (no singularity: no spikes near walls or corners).
 double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Polygon3& polygon);
+
+// The point-to-point form-factor kernel of [Gadia2024, Eq. 3] (the differential-area form factor
+// cos_s cos_r dA / (pi d^2)) times pi, per unit source area, written with
+// the heights instead of the cosines (cos = h / d), for a source point c with normal m and a
+// receiver point x with normal n, d2_m2 = |x - c|^2:
+//   h_source_m   = m . (x - c): the receiver's height over the source's plane (m),
+//   h_receiver_m = n . (c - x): the source's height over the receiver's plane (m),
+//   result       = h_source_m h_receiver_m / d^4 = pi dF/dA  (1/m^2).
+// Symmetric in the two heights; both must be >= 0 (the callers test it: behind either plane the
+// term is 0). The one copy of this formula: the gather, the form-factor matrix and the quarter
+// rule call it, and multiply by the area and divide by pi themselves (once per sum).
+inline double point_kernel_pi_per_m2(double h_source_m, double h_receiver_m, double d2_m2) {
+  return h_source_m * h_receiver_m / (d2_m2 * d2_m2);
+}
 
 // The point-to-point kernel of [Gadia2024, Eq. 3], as a form factor: a patch of area A at centroid
 // c with normal m, seen from x with normal n:

@@ -16,7 +16,6 @@
 #include "calc/indirect/box_bounds.h"
 #include "calc/indirect/emitter_cells.h"
 #include "calc/indirect/first_bounce.h"
-#include "calc/indirect/prism_visibility.h"
 #include "calc/indirect/radiosity.h"
 #include "calc/scaled_distribution.h"
 #include "calc/visibility.h"
@@ -82,7 +81,7 @@ double mean_reflectance(const Room& room) {
   double perimeter = 0.0;
   for (size_t k = 0; k < room.outline.size(); ++k)
     perimeter += glm::length(room.outline[(k + 1) % room.outline.size()] - room.outline[k]);
-  const double a_floor = std::abs(signed_area2(room.outline)) / 2.0;
+  const double a_floor = std::abs(geometry::signed_area(room.outline));
   const double a_walls = perimeter * room.height;
   const double a = 2.0 * a_floor + a_walls;
   if (!(a > 0.0)) return 0.0;
@@ -239,6 +238,32 @@ bool segment_meets_box(const Vec3& a, const Vec3& b, const Box3& box) {
   return true;
 }
 
+// A receiver on a face of `room` (within kReceiverInset_m) whose normal points out through that
+// face lies on the face's outer side: the opaque face hides the whole room from it, so it gathers
+// nothing from the room. Without this test the inset below would move it inside, where it would
+// face its own face from 1 mm and receive that face's whole exitance (a wall grid facing out of
+// the room would read the wall's exitance). The cosine limit keeps a receiver whose normal lies
+// in the face's plane (a floor grid at a wall) gathering: only a normal pointing out counts.
+constexpr double kFacingOutCosine = 1e-9;
+bool faces_out_of_room(const Room& room, const Vec3& x, const Vec3& n) {
+  if (std::abs(x.z - room.floor_z) < kReceiverInset_m && n.z < -kFacingOutCosine) return true;
+  if (std::abs(x.z - room.floor_z - room.height) < kReceiverInset_m && n.z > kFacingOutCosine) return true;
+  const auto& o = room.outline;
+  for (size_t k = 0; k < o.size(); ++k) {
+    const Vec2 a = o[k], b = o[(k + 1) % o.size()];
+    const double len = glm::length(b - a);
+    if (!(len > 0.0)) continue;
+    const Vec2 t = (b - a) / len, inward(-t.y, t.x);
+    const Vec2 q(x.x, x.y);
+    const double along = glm::dot(q - a, t);
+    if (along < -kReceiverInset_m || along > len + kReceiverInset_m) continue;
+    if (std::abs(glm::dot(q - a, inward)) < kReceiverInset_m &&
+        glm::dot(Vec2(n.x, n.y), inward) < -kFacingOutCosine)
+      return true;
+  }
+  return false;
+}
+
 // `x` moved to at least kReceiverInset_m inside every face of `room` that it lies on or near.
 Vec3 inset_into_room(const Room& room, Vec3 x) {
   x.z = std::clamp(x.z, room.floor_z + kReceiverInset_m, room.floor_z + room.height - kReceiverInset_m);
@@ -355,8 +380,6 @@ GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
 }
 
 
-// gather_point over a GatherSet: the same sum, term for term, with whole groups and chunks
-// skipped where every term is 0 and the far kernel written out (no square root).
 // Form factor from the point (x, n) to patch p in the final gather: the point kernel when the
 // patch is far (`far`: beyond far_ratio x its diameter), the kernel on its quarters between
 // far_ratio x D / 2 and far_ratio x D, Lambert's exact polygon formula closer (and whenever the
@@ -396,7 +419,7 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
           const double hm = m.x * dx + m.y * dy + m.z * dz;
           const double hn = -(n.x * dx + n.y * dy + n.z * dz);
           const double d2 = dx * dx + dy * dy + dz * dz;
-          sum += flux[k] * hm * hn / (d2 * d2);
+          sum += flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
         }
         far += sum;
         continue;
@@ -407,9 +430,9 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
         if (!(hm > kGatherPlaneDistance_m)) continue;
         const double d2 = glm::dot(dx, dx);
         if (d2 > set.near_d2[k] && !occluded) {
-          // point_kernel_form_factor x exitance: flux max(0, m.dx) max(0, -n.dx) / (pi d^4)
+          // point_kernel_form_factor x exitance: flux x the kernel / pi (the pi once, below)
           const double hn = -glm::dot(n, dx);
-          if (hn > 0.0) far += flux[k] * hm * hn / (d2 * d2);
+          if (hn > 0.0) far += flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
           continue;
         }
         const Patch& p = mesh.patches[set.patch[k]];
@@ -521,23 +544,6 @@ IndirectDecision decide_indirect(const Scene& scene) {
   return d;
 }
 
-double gather_point(const PatchMesh& mesh, size_t begin, size_t end,
-                    const std::vector<double>& exitant_flux_lm, const Vec3& x, const Vec3& n,
-                    double far_ratio, const OcclusionFn& occluded) {
-  double e = 0.0;
-  for (size_t j = begin; j < end; ++j) {
-    const double flux = exitant_flux_lm[j];
-    if (!(flux > 0.0)) continue;
-    const Patch& p = mesh.patches[j];
-    if (!(glm::dot(p.normal, x - p.centroid) > kGatherPlaneDistance_m)) continue;
-    const double d = glm::length(x - p.centroid);
-    double f = gather_form_factor(x, n, p, far_ratio, d > far_ratio * p.diameter_m);
-    if (f > 0.0 && occluded) f *= gather_visible_fraction(x, n, p, occluded);
-    e += flux / p.area_m2 * f;  // exitance M = flux / area; E = M F
-  }
-  return e;
-}
-
 IndirectResult compute_indirect(const Scene& scene,
                                 const std::vector<geometry::SurfaceGrid>& surfaces,
                                 const IndirectOptions& options) {
@@ -556,34 +562,25 @@ IndirectResult compute_indirect(const Scene& scene,
   res.patches = mesh.patches.size();
   res.patch_size_m = mesh.patch_size_m;
 
-  // Visibility: the caller's callback (the pipeline passes the scene's AABB tree); else, with
-  // obstacles, our own tree over scene_faces (rooms and obstacles); else the prism test for
-  // non-convex rooms, and nothing for convex ones.
+  // Visibility: the plan's (the scene's AABB tree, calc/visibility), or nothing blocks.
   size_t obstacle_count = 0;
   for (const auto& room : scene.rooms) obstacle_count += room.obstacles.size();
-  std::shared_ptr<const Visibility> own_tree;
-  OcclusionFn tree_occlusion;
-  if (!options.occluded && obstacle_count > 0) {
-    own_tree = std::make_shared<const Visibility>(scene_faces(scene));
-    tree_occlusion = [own_tree](const Vec3& a, const Vec3& b) { return !own_tree->visible(a, b); };
-  }
   std::vector<OcclusionFn> occlusion(scene.rooms.size());
-  bool prism = false;
-  const auto boxes = std::make_shared<const std::vector<Box3>>(obstacle_boxes(scene));
-  for (size_t r = 0; r < scene.rooms.size(); ++r) {
-    const OcclusionFn& general = options.occluded ? options.occluded : tree_occlusion;
-    if (general && outline_is_convex(scene.rooms[r])) {
+  if (const std::shared_ptr<const Visibility> vis = options.visibility) {
+    const OcclusionFn blocked = [vis](const Vec3& a, const Vec3& b) { return !vis->visible(a, b); };
+    const auto boxes = std::make_shared<const std::vector<Box3>>(obstacle_boxes(scene));
+    for (size_t r = 0; r < scene.rooms.size(); ++r) {
+      if (!outline_is_convex(scene.rooms[r])) {
+        occlusion[r] = blocked;
+        continue;
+      }
       // In a convex room only obstacles can block a segment between two of its points: skip
       // the tree for segments that miss every obstacle's box (most of them), an exact filter.
-      occlusion[r] = [boxes, general](const Vec3& a, const Vec3& b) {
+      occlusion[r] = [boxes, blocked](const Vec3& a, const Vec3& b) {
         for (const auto& box : *boxes)
-          if (segment_meets_box(a, b, box)) return general(a, b);
+          if (segment_meets_box(a, b, box)) return blocked(a, b);
         return false;
       };
-    } else if (general) {
-      occlusion[r] = general;
-    } else if (!outline_is_convex(scene.rooms[r])) {
-      occlusion[r] = prism_occlusion(scene.rooms[r]), prism = true;
     }
   }
 
@@ -636,7 +633,7 @@ IndirectResult compute_indirect(const Scene& scene,
     tbb::parallel_for(size_t(0), grid.points.size(), [&](size_t i) {
       if (!grid.active.empty() && !grid.active[i]) return;
       const int r = room_containing(scene, grid.points[i], kRoomTolerance_m);
-      if (r < 0) return;
+      if (r < 0 || faces_out_of_room(scene.rooms[r], grid.points[i], grid.normals[i])) return;
       const Vec3 x = inset_into_room(scene.rooms[r], grid.points[i]);
       out[i] = gather_set_point(mesh, gather_sets[r], x, grid.normals[i], far_ratio, occlusion[r]);
     });
@@ -655,9 +652,7 @@ IndirectResult compute_indirect(const Scene& scene,
                 (res.emitted_flux_lm < res.luminaire_flux_lm * (1.0 - kOutsideFluxFraction)
                      ? " (of " + fmt("%.6g", res.luminaire_flux_lm) + " lm from the whole openings)"
                      : std::string()) +
-                (prism ? "; visibility: walls of non-convex rooms" : "") +
-                (options.occluded ? "; visibility: occlusion callback" : "") +
-                (own_tree ? "; visibility: AABB tree of room and obstacle faces" : "") +
+                (options.visibility ? "; visibility: AABB tree of room and obstacle faces" : "") +
                 (obstacle_count ? "; " + std::to_string(obstacle_count) + " obstacle" +
                                       (obstacle_count == 1 ? "" : "s") + " reflect and shade"
                                 : std::string());

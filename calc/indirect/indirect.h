@@ -12,6 +12,7 @@
 // Lambert's exact polygon form factor near a patch, the point kernel on its quarters extrapolated
 // (Richardson) at intermediate distances and the seed's point kernel far from it.
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "calc/indirect/limits.h"
 #include "calc/indirect/patches.h"
 #include "calc/scene.h"
+#include "calc/visibility.h"
 #include "geometry/surface_grid.h"
 
 namespace luxgrid::calc::indirect {
@@ -33,9 +35,10 @@ struct IndirectOptions {
   size_t max_patches_per_room = kDefaultPatchesPerRoom;
   double far_ratio = 0.0;       // 0: the quality's (draft 3, standard 5, high 8, reference: never)
   double tolerance = 0.0;       // 0: the quality's (draft 1e-2, standard 1e-3, high 1e-4, ref 1e-6)
-  // Occlusion between two points of a room (true = blocked), e.g. geometry/'s AABB tree. Empty:
-  // nothing blocks in convex rooms, and the built-in prism test (walls only) in non-convex ones.
-  OcclusionFn occluded;
+  // What blocks light between two points of the scene: the plan's visibility test (its AABB tree
+  // of room and obstacle faces, calc/visibility.h). Null: nothing blocks (make_visibility's
+  // verdict for a convex room without obstacles).
+  std::shared_ptr<const Visibility> visibility;
   // Luminous flux per distribution already integrated (decide_indirect's), so the first bounce
   // does not integrate the same distributions again; missing ones are computed.
   std::map<const photometry::IntensityDistribution*, double> luminous_flux_lm;
@@ -84,13 +87,5 @@ struct IndirectResult {
 IndirectResult compute_indirect(const Scene& scene,
                                 const std::vector<geometry::SurfaceGrid>& surfaces,
                                 const IndirectOptions& options);
-
-// Building blocks, exposed for tests and benchmarks.
-
-// E_indirect (lx) at point x with normal n from patches [begin, end) of `mesh` with exitant
-// fluxes `exitant_flux_lm` (indexed by patch, whole mesh).
-double gather_point(const PatchMesh& mesh, size_t begin, size_t end,
-                    const std::vector<double>& exitant_flux_lm, const Vec3& x, const Vec3& n,
-                    double far_ratio, const OcclusionFn& occluded);
 
 }  // namespace luxgrid::calc::indirect

@@ -39,18 +39,18 @@ void check_room(const Room& room) {
   for (size_t i = 0; i < n; ++i)
     for (size_t j = i + 2; j < n; ++j) {
       if (i == 0 && j == n - 1) continue;  // neighbours (wrapping)
-      if (segments_cross(o[i], o[(i + 1) % n], o[j], o[(j + 1) % n]))
+      if (geometry::segments_cross(o[i], o[(i + 1) % n], o[j], o[(j + 1) % n]))
         throw InputError(where + ": outline edges " + std::to_string(i) + " and " +
                          std::to_string(j) + " cross, so the room is not closed (it leaks); " +
                          "indirect light needs a simple outline");
     }
-  if (!(signed_area2(room.outline) > 0.0))
+  if (!(geometry::signed_area(room.outline) > 0.0))
     throw InputError(where + ": outline must be counter-clockwise with non-zero area");
   for (const auto& ob : room.obstacles) {
     if (!(ob.reflectance >= 0.0 && ob.reflectance <= 1.0))
       throw InputError(where + ", obstacle '" + ob.name + "': reflectance is " +
                        std::to_string(ob.reflectance) + ", expected a number in [0, 1]");
-    if (ob.footprint.size() < 3 || !(signed_area2(ob.footprint) > 0.0))
+    if (ob.footprint.size() < 3 || !(geometry::signed_area(ob.footprint) > 0.0))
       throw InputError(where + ", obstacle '" + ob.name +
                        "': footprint must be a counter-clockwise polygon with non-zero area");
   }
@@ -79,7 +79,7 @@ void subtract_convex(const Polygon2& piece, const Polygon2& hole, std::vector<Po
   for (size_t k = 0, n = hole.size(); k < n && rest.size() >= 3; ++k) {
     const Vec2 a = hole[k], b = hole[(k + 1) % n];
     Polygon2 outside = clip_half_plane(rest, a, b, false);
-    if (outside.size() >= 3 && 0.5 * std::abs(signed_area2(outside)) > kMinPieceArea_m2)
+    if (outside.size() >= 3 && std::abs(geometry::signed_area(outside)) > kMinPieceArea_m2)
       out.push_back(std::move(outside));
     rest = clip_half_plane(rest, a, b, true);
   }
@@ -130,13 +130,13 @@ void add_patch(PatchMesh& mesh, Polygon3 poly, const Vec3& normal, double reflec
                FaceKind face, int face_index) {
   Patch p;
   // Orient the polygon counter-clockwise seen from the room side.
-  if (glm::dot(area_vector(poly), normal) < 0.0) std::reverse(poly.begin(), poly.end());
+  if (glm::dot(geometry::area_vector(poly), normal) < 0.0) std::reverse(poly.begin(), poly.end());
   p.polygon = std::move(poly);
   p.normal = normal;
-  p.area_m2 = glm::length(area_vector(p.polygon));
+  p.area_m2 = glm::length(geometry::area_vector(p.polygon));
   if (p.area_m2 < kMinPieceArea_m2) return;
-  p.centroid = polygon_centroid(p.polygon);
-  p.diameter_m = polygon_diameter(p.polygon);
+  p.centroid = geometry::polygon_centroid(p.polygon);
+  p.diameter_m = geometry::polygon_diameter(p.polygon);
   if (p.polygon.size() == 4) {
     // A parallelogram when the diagonals bisect each other; its quarters' centroids are then
     // halfway between the centre and each corner.
@@ -175,13 +175,13 @@ std::vector<Polygon2> horizontal_pieces(const Polygon2& outline, double size) {
         crossed = segment_enters_box(outline[k], outline[(k + 1) % outline.size()], c0, c1);
       if (!crossed) {
         // No outline edge enters the cell: it is wholly inside or wholly outside.
-        if (point_in_polygon(outline, 0.5 * (c0 + c1))) pieces.push_back(cell);
+        if (geometry::locate(0.5 * (c0 + c1), outline) != geometry::Location::outside) pieces.push_back(cell);
         continue;
       }
-      if (ears.empty()) ears = ear_clip(outline);
+      if (ears.empty()) ears = geometry::triangles(outline);
       for (const auto& tri : ears) {
-        Polygon2 piece = clip_convex(cell, tri);
-        if (piece.size() >= 3 && 0.5 * signed_area2(piece) > kMinPieceArea_m2)
+        Polygon2 piece = geometry::clip_convex(cell, tri);
+        if (piece.size() >= 3 && geometry::signed_area(piece) > kMinPieceArea_m2)
           pieces.push_back(std::move(piece));
       }
     }
@@ -195,7 +195,7 @@ double room_surface_area(const Room& room) {
   double perimeter = 0.0;
   for (size_t k = 0; k < room.outline.size(); ++k)
     perimeter += glm::length(room.outline[(k + 1) % room.outline.size()] - room.outline[k]);
-  return std::abs(signed_area2(room.outline)) + perimeter * room.height;
+  return 2.0 * std::abs(geometry::signed_area(room.outline)) + perimeter * room.height;
 }
 
 bool outline_is_convex(const Room& room) {
@@ -213,7 +213,7 @@ int room_containing(const Scene& scene, const Vec3& p, double tolerance_m) {
     const Room& room = scene.rooms[r];
     if (p.z < room.floor_z - tolerance_m || p.z > room.floor_z + room.height + tolerance_m) continue;
     const Vec2 q(p.x, p.y);
-    if (point_in_polygon(room.outline, q) || distance_to_boundary(room.outline, q) <= tolerance_m)
+    if (geometry::locate(q, room.outline, tolerance_m) != geometry::Location::outside)
       return static_cast<int>(r);
   }
   return -1;
@@ -248,9 +248,9 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
     std::vector<Polygon2> floor_holes, ceiling_holes;
     for (const auto& ob : room.obstacles) {
       if (ob.z0 <= z0 + kTouch_m)
-        for (auto& t : ear_clip(ob.footprint)) floor_holes.push_back(t);
+        for (auto& t : geometry::triangles(ob.footprint)) floor_holes.push_back(t);
       if (ob.z1 >= z1 - kTouch_m)
-        for (auto& t : ear_clip(ob.footprint)) ceiling_holes.push_back(t);
+        for (auto& t : geometry::triangles(ob.footprint)) ceiling_holes.push_back(t);
     }
     const std::vector<Polygon2> pieces = horizontal_pieces(room.outline, patch_size_m);
     for (const auto& piece : floor_holes.empty() ? pieces : subtract_holes(pieces, floor_holes)) {

@@ -16,10 +16,14 @@
 #include <string>
 #include <vector>
 
-#include "calc/indirect/polygon.h"
+#include "geometry/polygon.h"
+#include "geometry/polygon3.h"
 #include "calc/scene.h"
 
 namespace luxgrid::calc::indirect {
+
+using geometry::Polygon2;
+using geometry::Polygon3;
 
 enum class FaceKind { floor, ceiling, wall, obstacle };
 

@@ -180,7 +180,7 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn
       const Patch& dst = mesh.patches[F.begin + i];
       const Vec3 dc = dst.centroid, dn = dst.normal;
       const double near_d2 = far_ratio * dst.diameter_m * far_ratio * dst.diameter_m;
-      const double a_pi = dst.area_m2;
+      const double area_m2 = dst.area_m2;
       float* row = F.gather.data() + i * n;
       std::fill(row, row + n, 0.0f);
       for (const Chunk& c : chunks) {
@@ -196,7 +196,7 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn
             const double h_dst = -(dn.x * dx + dn.y * dy + dn.z * dz);
             const double h_src = sn.x * dx + sn.y * dy + sn.z * dz;
             const double d2 = dx * dx + dy * dy + dz * dz;
-            row[order[k]] = static_cast<float>(a_pi * h_dst * h_src / (kPi * d2 * d2));
+            row[order[k]] = static_cast<float>(area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi);
           }
           continue;
         }
@@ -210,11 +210,10 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn
           const double h_src = glm::dot(sn, d);
           if (!(h_src > -dst.diameter_m)) continue;
           const double d2 = glm::dot(d, d);
-          // Far: point_kernel_form_factor(sc, sn, dc, dn, A) = A max(0, dn . (sc - dc))
-          // max(0, sn . (dc - sc)) / (pi d^4), written out.
+          // Far: point_kernel_form_factor(sc, sn, dc, dn, A) without its tests (done above).
           double f;
           if (d2 > near_d2) {
-            f = h_src > 0.0 ? dst.area_m2 * h_dst * h_src / (kPi * d2 * d2) : 0.0;
+            f = h_src > 0.0 ? dst.area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi : 0.0;
           } else {
             // Between far_ratio x D / 2 and far_ratio x D: the kernel on the quarters; closer: exact.
             f = dst.has_quarters ? quarter_kernel_form_factor(sc, sn, dst.polygon, dc,

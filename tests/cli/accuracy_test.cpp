@@ -13,6 +13,7 @@
 #include <sys/wait.h>
 
 #include "cli/accuracy_study.h"
+#include "tests/cli/cli_support.h"
 
 namespace {
 
@@ -123,8 +124,7 @@ TEST(AccuracyStudy, MarkdownNamesEveryModelAndDataSet) {
 }
 
 TEST(AccuracyCommand, QuickRunWritesTableAndPlot) {
-  const fs::path out = fs::temp_directory_path() / "luxgrid_accuracy_test";
-  fs::remove_all(out);
+  const fs::path out = luxgrid::test::scratch("accuracy");
   const std::string cmd = std::string(LUXGRID_BINARY) + " accuracy --quick --out " + out.string() +
                           " --photometry " + kLdtDir.string() + " 2>&1";
   std::string output;

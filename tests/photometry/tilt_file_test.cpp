@@ -32,9 +32,12 @@ void write(const fs::path& p, const std::string& text) {
   std::ofstream(p, std::ios::binary) << text;
 }
 
-// A fresh folder: <tmp>/luxgrid_tilt_test/<name>/ with sub/ inside it.
+// A fresh folder of this process under testing::TempDir() (parallel runs never share it):
+// <tmp>/lxtilt<pid>/<name>/ with sub/ inside it. Short, because one test writes its absolute path
+// after TILT=, where at most 64 characters are allowed; each test passes its own `name`.
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "luxgrid_tilt_test" / name;
+  const fs::path dir =
+      fs::path(::testing::TempDir()) / ("lxtilt" + std::to_string(::getpid())) / name;
   fs::remove_all(dir);
   fs::create_directories(dir / "sub");
   return dir;
