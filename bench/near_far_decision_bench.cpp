@@ -1,7 +1,8 @@
 // ns per luminaire-point pair of the near/far decision itself (docs/nearfield.md): the error-bound
-// map's far weight (calc/nearfield/far_field_bound.h: direction into the luminaire frame, C and
-// gamma, a bilinear read) against the five-times rule (one distance), and the one-off cost of
-// building the map for the office's Mirel.
+// map's weights (calc/nearfield/far_field_bound.h: direction into the luminaire frame, C and
+// gamma, a bilinear read of d_far and d_fixed) against the five-times rule (one distance), the
+// one-off cost of building the map for the office's Mirel, and what one distant near-field pair
+// costs by the table rung and by the fixed rule (calc/nearfield/fixed_rule.h).
 // Run: build/bench/near_far_decision_bench --benchmark_min_time=0.2
 #include <benchmark/benchmark.h>
 
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "calc/nearfield/far_field_bound.h"
+#include "calc/nearfield/fixed_rule.h"
 #include "calc/nearfield/illuminance.h"
 #include "photometry/photometry.h"
 
@@ -40,7 +42,8 @@ void weight(benchmark::State& state, bool with_bound) {
   std::size_t i = 0;
   double sink = 0.0;
   for (auto _ : state) {
-    sink += far_field_weight(e, pts[i]);
+    const SwitchWeights w = switch_weights(e, pts[i]);
+    sink += w.far + w.fixed;
     if (++i == pts.size()) i = 0;
   }
   benchmark::DoNotOptimize(sink);
@@ -59,3 +62,31 @@ void BuildMapMirel(benchmark::State& state) {
 BENCHMARK(BuildMapMirel)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
+
+// One pair 8 to 15 m from the Mirel (16 to 30 D) on the floor: the distances where the open plan's
+// near-field pairs sit.
+std::vector<Vec3> distant_points() {
+  std::vector<Vec3> out;
+  for (const Vec3& p : floor_points())
+    if (glm::length(p - Vec3(0, 0, 3)) > 8.0) out.push_back(p);
+  return out;
+}
+
+void pair(benchmark::State& state, bool fixed) {
+  const Emitter e = mirel();
+  const std::vector<Vec3> pts = distant_points();
+  const Receiver up = Receiver::planar(Vec3(0, 0, 1));
+  std::size_t i = 0;
+  double sink = 0.0;
+  for (auto _ : state) {
+    sink += fixed ? fixed_rule_illuminance(e, pts[i], up) : illuminance(e, pts[i], up, Model::standard());
+    if (++i == pts.size()) i = 0;
+  }
+  benchmark::DoNotOptimize(sink);
+  state.SetItemsProcessed(state.iterations());
+}
+
+void DistantPairTableRung(benchmark::State& s) { pair(s, false); }
+void DistantPairFixedRule(benchmark::State& s) { pair(s, true); }
+BENCHMARK(DistantPairTableRung);
+BENCHMARK(DistantPairFixedRule);

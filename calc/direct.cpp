@@ -95,8 +95,11 @@ std::vector<double> direct_illuminance(const Plan& plan, const std::vector<nearf
         } else if (!automatic) {
           ++local.near;
         } else {
-          const double w = nearfield::far_field_weight(emitter, grid.points[i]);
-          (w >= 1.0 ? local.far : w <= 0.0 ? local.near : local.blended) += 1;
+          nearfield::SwitchWeights w = nearfield::switch_weights(emitter, grid.points[i]);
+          if (receiver.kind != nearfield::ReceiverKind::planar) w.fixed = 0.0;  // as hybrid_illuminance
+          (w.far >= 1.0 ? local.far : w.far <= 0.0 ? local.near : local.blended) += 1;
+          if (w.far < 1.0 && w.fixed >= 1.0) ++local.fixed_rule;
+          if (w.far < 1.0 && w.fixed > 0.0 && w.fixed < 1.0) ++local.fixed_blended;
         }
       }
       E[i] = sum;

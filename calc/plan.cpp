@@ -81,8 +81,9 @@ std::string describe_direct(const Plan& plan, const DirectCounts& c) {
     case nearfield::NearFieldSwitch::automatic:
       if (!plan.near_far_per_emitter.empty()) {
         out = "hybrid by an error bound (near-field " + model + " wherever the far-field point model is "
-              "not within the quality's promise, measured per emitter and direction; blended over 1.25 x "
-              "that distance)";
+              "not within the quality's promise, measured per emitter and direction; the fixed rule of a "
+              "few nodes across the opening where it is within the promise and the far field is not; each "
+              "blended over 1.25 x its distance)";
       } else {
         out = "hybrid by the five-times rule (near-field " + model + " closer than " +
               std::to_string(static_cast<int>(nearfield::kBlendStart)) + " x the emitter size, far-field beyond " +
@@ -93,6 +94,9 @@ std::string describe_direct(const Plan& plan, const DirectCounts& c) {
   out += ": " + std::to_string(c.near) + " luminaire-point pairs near-field, " + std::to_string(c.blended) +
          " blended, " + std::to_string(c.far) + " far-field, " + std::to_string(c.point_sources) +
          " from point sources (exact point model)";
+  if (c.fixed_rule + c.fixed_blended > 0)
+    out += "; of the near-field and blended pairs " + std::to_string(c.fixed_rule) + " by the fixed rule, " +
+           std::to_string(c.fixed_blended) + " blending it into the near-field model";
   for (const auto& line : plan.near_far_per_emitter) out += "; " + line;
   return out;
 }

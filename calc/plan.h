@@ -40,8 +40,12 @@ struct DirectCounts {
   size_t far = 0;            // area emitters beyond the five-times band
   size_t near = 0;           // area emitters inside it
   size_t blended = 0;        // within the blend band: both, weighted
+  size_t fixed_rule = 0;     // of `near`: by the fixed rule alone (nearfield/fixed_rule.h)
+  size_t fixed_blended = 0;  // of `near` and `blended`: the fixed rule blended into the near rung
   DirectCounts& operator+=(const DirectCounts& o) {
     point_sources += o.point_sources;
+    fixed_rule += o.fixed_rule;
+    fixed_blended += o.fixed_blended;
     far += o.far;
     near += o.near;
     blended += o.blended;

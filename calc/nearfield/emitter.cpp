@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "calc/nearfield/fixed_rule.h"
 #include "util/error.h"
 
 namespace luxgrid::nearfield {
@@ -62,6 +63,17 @@ Emitter make_polygon_emitter(std::vector<Vec3> vertices, const glm::dmat3& rotat
     if (std::abs(a_sum) > 0.0) e.centroid = c + ac / a_sum;
   }
   e.vertices = std::move(vertices);
+  if (e.vertices.size() >= 3) {
+    std::vector<Vec3> local;
+    for (const Vec3& v : e.vertices) {
+      Vec3 l = e.world_to_local * (v - e.centroid);
+      l.z = 0.0;  // in the plane to rounding (checked above)
+      local.push_back(l);
+    }
+    const FixedRule rule = make_fixed_rule(local, e.largest_dimension_m);
+    for (const Vec3& n : rule.nodes_local) e.rule_nodes.push_back(e.centroid + e.rotation * n);
+    e.rule_weights = rule.weights;
+  }
   return e;
 }
 

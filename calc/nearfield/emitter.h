@@ -38,6 +38,10 @@ struct Emitter {
   // Where the far-field point model is within the quality's promise (far_field_bound.h), shared
   // by every copy of the luminaire; null: the five-times rule (studies, unit tests).
   std::shared_ptr<const FarFieldBound> far_bound;
+  // The fixed rule's nodes (m, world) and their area shares (fixed_rule.h): what distant
+  // near-field pairs use where the error bound allows it. Empty for a point opening.
+  std::vector<Vec3> rule_nodes;
+  std::vector<double> rule_weights;
 
   bool is_point() const { return vertices.size() < 3 || area_m2 <= 0.0; }
   // Intensity (cd) sent along the world direction `dir_world` (unit, pointing away from the

@@ -1,10 +1,14 @@
 #include "calc/nearfield/far_field_bound.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <thread>
+#include <tuple>
+#include <utility>
 
+#include "calc/nearfield/fixed_rule.h"
 #include "calc/nearfield/illuminance.h"
 #include "calc/nearfield/models.h"
 
@@ -50,42 +54,81 @@ struct Probe {
   double tolerance;  // already divided by the safety factor
   double peak_cd;
 
-  // True if the far field is within tolerance at distance rung k along local direction u for
-  // every tried receiver normal.
-  bool far_ok(const Vec3& u, int k) const {
+  // The receiver normals tried at rung k along u (luminaire frame): facing the opening and
+  // tilted towards four sides; and the receiver point.
+  struct Rung {
+    Vec3 point;
+    std::array<Vec3, 5> normals;
+    double floor_lx;
+  };
+  Rung rung(const Vec3& u, int k) const {
     const double d = rung_over_D(k) * e.largest_dimension_m;
-    const Vec3 w = e.rotation * u;
-    const Vec3 p = e.centroid + d * w;
+    Rung r;
+    r.point = e.centroid + d * (e.rotation * u);
     Vec3 side1 = glm::cross(u, Vec3(0, 0, 1));
     if (glm::length(side1) < 1e-6) side1 = Vec3(0, 1, 0);
     side1 = glm::normalize(side1);
     const Vec3 side2 = glm::cross(u, side1);
-    const double floor_lx = kDimFloor * peak_cd / (d * d);
     const Vec3 sides[] = {Vec3(0.0), side1, -side1, side2, -side2};
-    for (const Vec3& s : sides) {
+    for (int i = 0; i < 5; ++i) {
+      const Vec3& s = sides[i];
       const Vec3 n_local = glm::length(s) > 0 ? -u * std::cos(kReceiverTiltRad) + s * std::sin(kReceiverTiltRad) : -u;
-      const Vec3 n = e.rotation * n_local;
-      const double near = illuminance(e, p, n, model);
-      const double far = far_field_illuminance(e, p, n);
-      if (std::abs(near - far) > tolerance * std::max(near, floor_lx)) return false;
+      r.normals[i] = e.rotation * n_local;
     }
-    return true;
+    r.floor_lx = kDimFloor * peak_cd / (d * d);
+    return r;
   }
 
-  // d_far / D along u: the first rung from which the far field passes, by bisection on the
-  // ladder (the error falls with distance; a bump between rungs is what the dilation and the
-  // safety factor are for).
-  float d_far_over_D(const Vec3& u) const {
-    // The first rung first: most directions pass there (median 2 D on every file tried), and
-    // checking it before the last halves the map's cost.
-    if (far_ok(u, 0)) return static_cast<float>(rung_over_D(0));
-    if (!far_ok(u, kLadderRungs - 1)) return kNearEverywhere;
-    int lo = 0, hi = kLadderRungs - 1;  // lo fails, hi passes
-    while (hi - lo > 1) {
-      const int mid = (lo + hi) / 2;
-      (far_ok(u, mid) ? hi : lo) = mid;
-    }
-    return static_cast<float>(rung_over_D(hi));
+  // d_far / D and d_fixed / D along u: for each, the first rung from which the model is within
+  // tolerance at every tried normal, by bisection on the ladder (the error falls with distance;
+  // a bump between rungs is what the dilation and the safety factor are for). A verdict stops
+  // at its first failing normal, and the near-field values (the expensive part) are kept per
+  // rung and normal, so the two searches share them.
+  std::pair<float, float> distances_over_D(const Vec3& u) const {
+    std::array<std::array<double, 5>, kLadderRungs> near;
+    for (auto& row : near) row.fill(-1.0);
+    std::array<signed char, kLadderRungs> far_seen, fixed_seen;  // -1 unknown, 0 fails, 1 passes
+    far_seen.fill(-1);
+    fixed_seen.fill(-1);
+    auto verdict = [&](int k, bool fixed) {
+      signed char& seen = (fixed ? fixed_seen : far_seen)[k];
+      if (seen >= 0) return seen == 1;
+      const Rung r = rung(u, k);
+      seen = 1;
+      for (int i = 0; i < 5 && seen; ++i) {
+        if (near[k][i] < 0.0) near[k][i] = illuminance(e, r.point, r.normals[i], model);
+        const double model_lx = fixed ? fixed_rule_illuminance(e, r.point, Receiver::planar(r.normals[i]))
+                                      : far_field_illuminance(e, r.point, r.normals[i]);
+        if (std::abs(near[k][i] - model_lx) > tolerance * std::max(near[k][i], r.floor_lx)) seen = 0;
+      }
+      return seen == 1;
+    };
+    // Returns the first passing rung within [0, last], or -1 when `last` fails too. Galloping
+    // (rungs 0, 1, 3, 7, 15, last, then bisection inside the bracket): a failing verdict stops
+    // at its first failing normal and is cheap, a passing one costs all five, so the search
+    // tries to pass as few times as it can.
+    auto search = [&](bool fixed, int last) {
+      int lo = -1, hi = -1;  // lo fails (or -1: none tried), hi passes
+      for (int k = 0;; k = std::min(2 * k + 1, last)) {
+        if (verdict(k, fixed)) {
+          hi = k;
+          break;
+        }
+        lo = k;
+        if (k == last) return -1;
+      }
+      while (hi - lo > 1) {
+        const int mid = (lo + hi) / 2;
+        (verdict(mid, fixed) ? hi : lo) = mid;
+      }
+      return hi;
+    };
+    const auto over_D = [](int k) { return k < 0 ? kNearEverywhere : static_cast<float>(rung_over_D(k)); };
+    const int far = search(false, kLadderRungs - 1);
+    // The fixed rule is used only nearer than d_far, so only the rungs below it matter.
+    if (far == 0) return {over_D(0), over_D(0)};
+    const int fixed = search(true, far < 0 ? kLadderRungs - 1 : far);
+    return {over_D(far), fixed < 0 ? over_D(far) : over_D(fixed)};
   }
 };
 
@@ -123,70 +166,48 @@ double promised_tolerance(const Model& m) {
   return m.kind == ModelKind::high ? kHighPromise : kStandardPromise;
 }
 
-double FarFieldBound::distance_over_D(const Vec3& u) const {
+namespace {
+
+// Where a local direction falls in the sample grid: the cell's corner and its fractions.
+struct GridSpot {
+  int g0, c0, c1;
+  double tg, tc;
+};
+
+GridSpot spot_of(const Vec3& u) {
   const photometry::PhotometricAngles a = photometry::angles_of(u);
   const double gamma_deg = a.gamma * kRadToDeg, c_deg = a.c * kRadToDeg;
   const double fg = std::clamp(gamma_deg / kGammaStepDeg, 0.0, kGammaSamples - 1.0);
   const double fc = c_deg / kCStepDeg;
-  const int g0 = std::min(static_cast<int>(fg), kGammaSamples - 2);
-  const int c0 = static_cast<int>(fc) % kCSamples, c1 = (c0 + 1) % kCSamples;
-  const double tg = fg - g0, tc = fc - std::floor(fc);
-  // Bilinear in 1 / d_far (the angular footprint a receiver needs): continuous, and a direction
-  // needing the near field everywhere (1 / d_far = 0) does not swamp a whole cell.
-  auto at = [&](int g, int c) { return 1.0 / static_cast<double>(d_far_over_D[g * kCSamples + c]); };
-  const double inv = (1 - tg) * ((1 - tc) * at(g0, c0) + tc * at(g0, c1)) + tg * ((1 - tc) * at(g0 + 1, c0) + tc * at(g0 + 1, c1));
+  GridSpot s;
+  s.g0 = std::min(static_cast<int>(fg), kGammaSamples - 2);
+  s.c0 = static_cast<int>(fc) % kCSamples;
+  s.c1 = (s.c0 + 1) % kCSamples;
+  s.tg = fg - s.g0;
+  s.tc = fc - std::floor(fc);
+  return s;
+}
+
+// Bilinear in 1 / d (the angular footprint a receiver needs): continuous, and a direction
+// needing the near field everywhere (1 / d = 0) does not swamp a whole cell.
+double interpolate_over_D(const std::vector<float>& map, const GridSpot& s) {
+  auto at = [&](int g, int c) { return 1.0 / static_cast<double>(map[g * kCSamples + c]); };
+  const double inv = (1 - s.tg) * ((1 - s.tc) * at(s.g0, s.c0) + s.tc * at(s.g0, s.c1)) +
+                     s.tg * ((1 - s.tc) * at(s.g0 + 1, s.c0) + s.tc * at(s.g0 + 1, s.c1));
   return 1.0 / std::max(inv, 1.0 / kNearEverywhere);
 }
 
-double FarFieldBound::far_weight(const Vec3& u, double distance_m) const {
-  const double start = distance_over_D(u) * largest_dimension_m;
-  const double t = (distance_m - start) / ((kBlendWidth - 1.0) * start);
+// Smoothstep from `start` to kBlendWidth x start: value and slope continuous along a ray.
+double ramp(double distance_m, double start_m) {
+  const double t = (distance_m - start_m) / ((kBlendWidth - 1.0) * start_m);
   if (t <= 0.0) return 0.0;
   if (t >= 1.0) return 1.0;
   return t * t * (3.0 - 2.0 * t);
 }
 
-std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, const Model& near_model,
-                                                           double tolerance) {
-  auto bound = std::make_shared<FarFieldBound>();
-  bound->tolerance = tolerance;
-  bound->largest_dimension_m = e.largest_dimension_m;
-  constexpr int n = kGammaSamples * kCSamples;
-  std::vector<float> raw(n, static_cast<float>(kLadderStart));
-  if (e.is_point() || !(e.largest_dimension_m > 0.0)) {
-    bound->d_far_over_D = raw;
-    bound->min_over_D = bound->max_over_D = bound->median_over_D = kLadderStart;
-    return bound;
-  }
-  double peak = 0.0;
-  for (int i = 0; i < n; ++i) peak = std::max(peak, e.distribution->intensity(direction_of_sample(i / kCSamples, i % kCSamples)));
-  const Probe probe{e, near_model, tolerance / kBoundSafetyFactor, peak};
-  // Directions in parallel (the nearfield library has no TBB; the samples are independent).
-  const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
-  std::vector<std::thread> pool;
-  for (unsigned t = 0; t < threads; ++t) {
-    pool.emplace_back([&, t] {
-      for (int i = static_cast<int>(t); i < n; i += static_cast<int>(threads))
-        raw[i] = probe.d_far_over_D(direction_of_sample(i / kCSamples, i % kCSamples));
-    });
-  }
-  for (auto& th : pool) th.join();
-  // The poles are one direction each: charge every C sample of rows 0 and last with the worst of
-  // the pole row and its neighbour row (the footprint there spans all C).
-  for (int pole : {0, kGammaSamples - 1}) {
-    const int next = pole == 0 ? 1 : kGammaSamples - 2;
-    float worst = 0.0f;
-    for (int c = 0; c < kCSamples; ++c) worst = std::max({worst, raw[pole * kCSamples + c], raw[next * kCSamples + c]});
-    for (int c = 0; c < kCSamples; ++c) raw[pole * kCSamples + c] = worst;
-  }
-  // Dilation. The point model fails around a kink within about the opening's angular
-  // half-width D / 2d of it: a neighbour s' at angle delta that needs the near field out to R'
-  // charges this sample with min(R', kFootprintMargin / (2 (delta - delta0))) (the distance at
-  // which its footprint no longer reaches here), delta0 = kink_slack_rad (a kink lying between
-  // two samples). A coarse full 3 x 3 max instead put whole 10-degree bands in the near
-  // field at every distance (2.5 x the open plan's cost) for a kink whose error is 0.5 degrees wide.
-  const double delta0 = kink_slack_rad(e);
-  bound->d_far_over_D.assign(n, 0.0f);
+// Each sample charged with what its neighbours need, scaled by the footprint (see the caller).
+std::vector<float> dilate(const std::vector<float>& raw, double delta0) {
+  std::vector<float> out(raw.size(), 0.0f);
   for (int g = 0; g < kGammaSamples; ++g)
     for (int c = 0; c < kCSamples; ++c) {
       const Vec3 here = direction_of_sample(g, c);
@@ -199,8 +220,87 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, con
           const double excess = angle_between(here, direction_of_sample(gg, cc)) - delta0;
           v = std::max(v, excess <= 1e-12 ? r : std::min(r, kFootprintMargin / (2.0 * excess)));
         }
-      bound->d_far_over_D[g * kCSamples + c] = static_cast<float>(v);
+      out[g * kCSamples + c] = static_cast<float>(v);
     }
+  return out;
+}
+
+// The poles are one direction each: charge every C sample of rows 0 and last with the worst of
+// the pole row and its neighbour row (the footprint there spans all C).
+void merge_poles(std::vector<float>& raw) {
+  for (int pole : {0, kGammaSamples - 1}) {
+    const int next = pole == 0 ? 1 : kGammaSamples - 2;
+    float worst = 0.0f;
+    for (int c = 0; c < kCSamples; ++c) worst = std::max({worst, raw[pole * kCSamples + c], raw[next * kCSamples + c]});
+    for (int c = 0; c < kCSamples; ++c) raw[pole * kCSamples + c] = worst;
+  }
+}
+
+}  // namespace
+
+double FarFieldBound::distance_over_D(const Vec3& u) const { return interpolate_over_D(d_far_over_D, spot_of(u)); }
+
+double FarFieldBound::fixed_distance_over_D(const Vec3& u) const {
+  return interpolate_over_D(d_fixed_over_D, spot_of(u));
+}
+
+double FarFieldBound::far_weight(const Vec3& u, double distance_m) const {
+  return ramp(distance_m, distance_over_D(u) * largest_dimension_m);
+}
+
+FarFieldBound::Weights FarFieldBound::weights(const Vec3& u, double distance_m) const {
+  const GridSpot s = spot_of(u);
+  Weights w;
+  w.far = ramp(distance_m, interpolate_over_D(d_far_over_D, s) * largest_dimension_m);
+  if (w.far < 1.0) w.fixed = ramp(distance_m, interpolate_over_D(d_fixed_over_D, s) * largest_dimension_m);
+  return w;
+}
+
+std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, const Model& near_model,
+                                                           double tolerance) {
+  auto bound = std::make_shared<FarFieldBound>();
+  bound->tolerance = tolerance;
+  bound->largest_dimension_m = e.largest_dimension_m;
+  constexpr int n = kGammaSamples * kCSamples;
+  std::vector<float> raw(n, static_cast<float>(kLadderStart)), raw_fixed = raw;
+  if (e.is_point() || !(e.largest_dimension_m > 0.0)) {
+    bound->d_far_over_D = bound->d_fixed_over_D = raw;
+    bound->min_over_D = bound->max_over_D = bound->median_over_D = kLadderStart;
+    bound->fixed_median_over_D = bound->fixed_max_over_D = kLadderStart;
+    return bound;
+  }
+  double peak = 0.0;
+  for (int i = 0; i < n; ++i) peak = std::max(peak, e.distribution->intensity(direction_of_sample(i / kCSamples, i % kCSamples)));
+  const Probe probe{e, near_model, tolerance / kBoundSafetyFactor, peak};
+  // Directions in parallel (the nearfield library has no TBB; the samples are independent).
+  const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  for (unsigned t = 0; t < threads; ++t) {
+    pool.emplace_back([&, t] {
+      for (int i = static_cast<int>(t); i < n; i += static_cast<int>(threads))
+        std::tie(raw[i], raw_fixed[i]) = probe.distances_over_D(direction_of_sample(i / kCSamples, i % kCSamples));
+    });
+  }
+  for (auto& th : pool) th.join();
+  merge_poles(raw);
+  merge_poles(raw_fixed);
+  // Dilation. The point model fails around a kink within about the opening's angular
+  // half-width D / 2d of it: a neighbour s' at angle delta that needs the near field out to R'
+  // charges this sample with min(R', kFootprintMargin / (2 (delta - delta0))) (the distance at
+  // which its footprint no longer reaches here), delta0 = kink_slack_rad (a kink lying between
+  // two samples). A coarse full 3 x 3 max instead put whole 10-degree bands in the near
+  // field at every distance (2.5 x the open plan's cost) for a kink whose error is 0.5 degrees wide.
+  // The fixed rule's nodes see the same footprint, so its map is dilated the same way.
+  const double delta0 = kink_slack_rad(e);
+  bound->d_far_over_D = dilate(raw, delta0);
+  bound->d_fixed_over_D = dilate(raw_fixed, delta0);
+  for (int i = 0; i < n; ++i) bound->d_fixed_over_D[i] = std::min(bound->d_fixed_over_D[i], bound->d_far_over_D[i]);
+  {
+    std::vector<float> sorted = raw_fixed;
+    std::sort(sorted.begin(), sorted.end());
+    bound->fixed_median_over_D = sorted[n / 2];
+    bound->fixed_max_over_D = sorted.back();
+  }
   // Summary for the plan, over the undilated samples (what each direction measured).
   std::vector<float> sorted = raw;
   std::sort(sorted.begin(), sorted.end());
@@ -217,6 +317,7 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, con
 
 std::string describe(const FarFieldBound& b) {
   char buf[320];
+  char fixed[200];
   // Up to 8 D the opening's geometry alone (slanted receivers) explains the distance (a
   // Lambertian square measures 7.2 D); beyond, the table does.
   const char* why = b.max_over_D <= 8.0              ? "smooth distribution (geometry of the opening)"
@@ -235,7 +336,13 @@ std::string describe(const FarFieldBound& b) {
                   why, b.max_over_D, b.worst_c_deg, b.worst_gamma_deg, 100 * b.worst_gradient_per_deg,
                   b.min_over_D, b.median_over_D, b.largest_dimension_m, 100 * b.tolerance);
   }
-  return buf;
+  if (b.fixed_max_over_D >= kNearEverywhere)
+    std::snprintf(fixed, sizeof fixed, "; the fixed rule within %.2g %% beyond %.1f D (median), not at every direction",
+                  100 * b.tolerance, b.fixed_median_over_D);
+  else
+    std::snprintf(fixed, sizeof fixed, "; the fixed rule within %.2g %% beyond %.1f D (median), %.1f D at most",
+                  100 * b.tolerance, b.fixed_median_over_D, b.fixed_max_over_D);
+  return std::string(buf) + fixed;
 }
 
 }  // namespace luxgrid::nearfield

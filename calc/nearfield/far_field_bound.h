@@ -63,7 +63,12 @@ struct FarFieldBound {
   // carries what its neighbours (up to 3 samples away) need, scaled by how far the opening's
   // footprint reaches (far_field_bound.cpp), so a kink near a sample is charged to it too.
   std::vector<float> d_far_over_D;
+  // The same for the fixed rule (fixed_rule.h): d_fixed / D beyond which the fixed rule is
+  // within the promise of the quality's rung, never beyond d_far (the far field is cheaper).
+  std::vector<float> d_fixed_over_D;
   bool near_everywhere_somewhere = false;  // some direction failed out to the ladder's end
+  // The fixed rule's summary for the plan (undilated samples).
+  double fixed_median_over_D = 0.0, fixed_max_over_D = 0.0;
   // For the plan: the range and where the largest distance sits.
   double min_over_D = 0.0, max_over_D = 0.0, median_over_D = 0.0;
   double worst_c_deg = 0.0, worst_gamma_deg = 0.0;
@@ -72,8 +77,17 @@ struct FarFieldBound {
   // d_far(w) / D for a unit direction in the luminaire frame, bilinear between samples (so the
   // far weight is continuous across directions too).
   double distance_over_D(const Vec3& local_dir) const;
+  // d_fixed(w) / D, interpolated the same way.
+  double fixed_distance_over_D(const Vec3& local_dir) const;
   // Far-field weight for a receiver at distance `distance_m` along local direction `local_dir`.
   double far_weight(const Vec3& local_dir, double distance_m) const;
+  // Both weights of a pair from one interpolation: `far` as far_weight; `fixed` rises from 0 at
+  // d_fixed to 1 at kBlendWidth x d_fixed (the share of the fixed rule in the near part).
+  struct Weights {
+    double far = 0.0;
+    double fixed = 0.0;
+  };
+  Weights weights(const Vec3& local_dir, double distance_m) const;
 };
 
 // Builds the map for `emitter` (its own frame is read from emitter.rotation, so the map is the

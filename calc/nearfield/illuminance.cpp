@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "calc/nearfield/far_field_bound.h"
+#include "calc/nearfield/fixed_rule.h"
 #include "calc/nearfield/models.h"
 
 namespace luxgrid::nearfield {
@@ -111,17 +112,23 @@ double illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver
   }
 }
 
-double far_field_weight(const Emitter& e, const Vec3& point) {
+SwitchWeights switch_weights(const Emitter& e, const Vec3& point) {
   const double size = e.largest_dimension_m;
-  if (!(size > 0.0)) return 1.0;
+  if (!(size > 0.0)) return {1.0, 0.0};
   const Vec3 r = point - e.centroid;
   const double d = glm::length(r);
-  if (e.far_bound) return d > 0.0 ? e.far_bound->far_weight(e.world_to_local * (r / d), d) : 0.0;
+  if (e.far_bound) {
+    if (!(d > 0.0)) return {};
+    const FarFieldBound::Weights w = e.far_bound->weights(e.world_to_local * (r / d), d);
+    return {w.far, e.rule_nodes.empty() ? 0.0 : w.fixed};
+  }
   const double t = (d / size - kBlendStart) / (kBlendEnd - kBlendStart);
-  if (t <= 0.0) return 0.0;
-  if (t >= 1.0) return 1.0;
-  return t * t * (3.0 - 2.0 * t);
+  if (t <= 0.0) return {};
+  if (t >= 1.0) return {1.0, 0.0};
+  return {t * t * (3.0 - 2.0 * t), 0.0};
 }
+
+double far_field_weight(const Emitter& e, const Vec3& point) { return switch_weights(e, point).far; }
 
 double hybrid_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                           const Model& near_model, NearFieldSwitch mode, const Occluder* occ) {
@@ -133,11 +140,20 @@ double hybrid_illuminance(const Emitter& e, const Vec3& point, const Receiver& r
   const Model far = Model::far_field();
   if (mode == NearFieldSwitch::never) return illuminance(e, point, receiver, far, occ);
   if (mode == NearFieldSwitch::always) return illuminance(e, point, receiver, near_model, occ);
-  const double w = far_field_weight(e, point);
-  if (w >= 1.0) return illuminance(e, point, receiver, far, occ);
-  const double near = illuminance(e, point, receiver, near_model, occ);
-  if (w <= 0.0) return near;
-  return (1.0 - w) * near + w * illuminance(e, point, receiver, far, occ);
+  SwitchWeights w = switch_weights(e, point);
+  // The map measures the fixed rule on planar receivers only; a cylinder's weight sin(eps)
+  // vanishes along the axis, where a few nodes are far off (3 % under a panel): near rung there.
+  if (receiver.kind != ReceiverKind::planar) w.fixed = 0.0;
+  if (w.far >= 1.0) return illuminance(e, point, receiver, far, occ);
+  double near = 0.0;
+  if (w.fixed >= 1.0) {
+    near = fixed_rule_illuminance(e, point, receiver, occ);
+  } else {
+    near = illuminance(e, point, receiver, near_model, occ);
+    if (w.fixed > 0.0) near = (1.0 - w.fixed) * near + w.fixed * fixed_rule_illuminance(e, point, receiver, occ);
+  }
+  if (w.far <= 0.0) return near;
+  return (1.0 - w.far) * near + w.far * illuminance(e, point, receiver, far, occ);
 }
 
 }  // namespace luxgrid::nearfield

@@ -79,13 +79,24 @@ inline constexpr double kBlendStart = 4.0;  // x largest dimension
 inline constexpr double kBlendEnd = 6.0;    // x largest dimension
 double far_field_weight(const Emitter& emitter, const Vec3& point);
 
+// Both weights of the automatic switch at `point`: `far` as far_field_weight, and `fixed`, the
+// share of the fixed rule (fixed_rule.h) in the near part: 0 nearer than the direction's
+// d_fixed, 1 beyond kBlendWidth x d_fixed (far_field_bound.h). Without a bound (or without
+// rule nodes) `fixed` is 0: the near model alone.
+struct SwitchWeights {
+  double far = 0.0;
+  double fixed = 0.0;
+};
+SwitchWeights switch_weights(const Emitter& emitter, const Vec3& point);
+
 // settings.near_field: auto (blend by far_field_weight), always (near model everywhere),
 // never (far field everywhere).
 enum class NearFieldSwitch { automatic, always, never };
 
 // What calc/direct calls: `near_model` is the quality's rung (Model::standard() for standard).
 // With automatic, the far field alone is evaluated beyond the band, the near model alone inside
-// it, both within it (weights from far_field_weight).
+// it, both within it (weights from switch_weights); with an error bound the near part is the
+// fixed rule where the bound allows it, blended into the near model over its own band.
 // `occluder` as in illuminance(): the far-field part uses the centroid segment.
 double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal,
                           const Model& near_model, NearFieldSwitch mode = NearFieldSwitch::automatic,
