@@ -262,23 +262,29 @@ Achieved achieved_value(const calc::Results& results, const calc::SurfaceResult&
     return modelling_ratio(surface_named(results, r.cylindrical), s);
   }
   if (q == "UGR_L") {
+    // An observers surface whose views see no luminaire has no UGR_max: nothing glares there, so
+    // it counts as UGR 0 (docs/glare.md); any other surface gives no UGR at all.
     std::optional<double> worst;
     std::string from;
+    auto take = [&](const calc::SurfaceResult& o) {
+      const double ugr = o.UGR_max.value_or(0.0);
+      if (!worst || ugr > *worst) {
+        worst = ugr;
+        from = o.grid.name;
+      }
+    };
+    const auto is_observers = [](const calc::SurfaceResult& o) {
+      return o.grid.kind == geometry::SurfaceGrid::Kind::observers;
+    };
     if (!r.glare_observers.empty()) {
       for (const auto& name : r.glare_observers) {
         const auto& o = surface_named(results, name);
-        if (!o.UGR_max) return {false, 0.0, std::nullopt, "surface \"" + name + "\" gives no UGR (not an observers surface)"};
-        if (!worst || *o.UGR_max > *worst) {
-          worst = o.UGR_max;
-          from = name;
-        }
+        if (!is_observers(o)) return {false, 0.0, std::nullopt, "surface \"" + name + "\" gives no UGR (not an observers surface)"};
+        take(o);
       }
     } else {
       for (const auto& o : results.surfaces) {
-        if (o.UGR_max && (!worst || *o.UGR_max > *worst)) {
-          worst = o.UGR_max;
-          from = o.grid.name;
-        }
+        if (is_observers(o)) take(o);
       }
     }
     if (!worst) return {false, 0.0, std::nullopt, "no observers surface computes UGR"};

@@ -342,7 +342,8 @@ TEST(ReportChromium, ExampleOfficeRendersWithEveryImageAndTheRightNumbers) {
       }
     }
   }
-  EXPECT_EQ(rows, j["surfaces"][0]["requirements"].size() + 2u + 4u * 2u + 1u);  // workplane, ceiling, walls, modelling
+  // workplane, ceiling, walls, modelling, the observers' UGR_L
+  EXPECT_EQ(rows, j["surfaces"][0]["requirements"].size() + 2u + 4u * 2u + 1u + 1u);
 }
 
 }  // namespace

@@ -83,8 +83,11 @@ TEST(ArraysNpy, TheArrayHoldsTheCsvsPointsAndValues) {
     std::vector<double> v;
     std::istringstream cells(line);
     std::string cell;
-    for (int c = 0; c < 11 && std::getline(cells, cell, ','); ++c) v.push_back(std::stod(cell));
-    rows.push_back({v[2], v[3], v[4], v[8], v[9], v[10]});
+    // i,j,x,y,z,nx,ny,nz,active,E,E_direct,E_indirect,quantity (docs/project-format.md)
+    for (int c = 0; c < 12 && std::getline(cells, cell, ','); ++c) v.push_back(c == 8 ? (cell == "true" ? 1.0 : 0.0) : std::stod(cell));
+    ASSERT_EQ(v.size(), 12u) << line;
+    ASSERT_EQ(v[8], 1.0) << "every point of the rectangular workplane is active: " << line;
+    rows.push_back({v[2], v[3], v[4], v[9], v[10], v[11]});
   }
   ASSERT_EQ(rows.size(), 35u) << "7 x 5 points at 0.5 m on the 3.5 x 2.5 m inset workplane";
   EXPECT_NE(dict.find("'shape': (" + std::to_string(rows.size()) + ", 6)"), std::string::npos) << dict;

@@ -119,8 +119,10 @@ TEST(Compliance, UgrFromObserversSurfaces) {
   calc::Results results;
   results.surfaces.push_back(surface("wp", {400, 600}));
   auto a = surface("eyes a", {0, 0});
+  a.grid.kind = geometry::SurfaceGrid::Kind::observers;
   a.UGR_max = 17.2;
   auto b = surface("eyes b", {0, 0});
+  b.grid.kind = geometry::SurfaceGrid::Kind::observers;
   b.UGR_max = 18.4;
   results.surfaces.push_back(a);
   results.surfaces.push_back(b);

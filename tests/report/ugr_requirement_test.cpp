@@ -33,23 +33,36 @@ TEST(UgrRequirement, UpperLimitOnUgrMax) {
   const auto under = check_requirements(observers_with_max(16.5), parse_requirements(project(19), "p.json"));
   EXPECT_TRUE(under[0].met);
   EXPECT_NEAR(under[0].margin, 2.5, 1e-12);
-  EXPECT_NE(format_checks(under).find("UGR_L required <= 19  achieved 16.5  met"), std::string::npos);
+  EXPECT_NE(format_checks(under).find("required <= 19  achieved 16.5  met"), std::string::npos);
   // No luminaire in any view: nothing glares; met, achieved 0 (docs/glare.md).
   const auto none = check_requirements(observers_with_max(std::nullopt), parse_requirements(project(19), "p.json"));
   EXPECT_TRUE(none[0].met);
   EXPECT_EQ(none[0].achieved, 0.0);
 }
 
-TEST(UgrRequirement, OnlyOnObserversSurfaces) {
+TEST(UgrRequirement, OnATaskAreaWithoutObserversItIsNotCalculated) {
+  // UGR_L on a task area reads the observers surfaces of the project; with none, the row is
+  // shown as not calculated and is never counted as met.
   const nlohmann::json doc = {{"surfaces", {{{"name", "wp"}, {"workplane", {{"room", "r"}}}, {"requirements", {{"UGR_L", 19}}}}}}};
-  try {
-    parse_requirements(doc, "p.json");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "p.json /surfaces/0/requirements/UGR_L: UGR_L (the largest UGR allowed) needs an observers "
-                           "surface: UGR is computed at observer positions (\"observers\": [{\"at\": ..., "
-                           "\"directions\": ...}])");
-  }
+  calc::Results r;
+  calc::SurfaceResult s;
+  s.grid.name = "wp";
+  r.surfaces.push_back(s);
+  const auto checks = check_requirements(r, parse_requirements(doc, "p.json"));
+  ASSERT_EQ(checks.size(), 1u);
+  EXPECT_FALSE(checks[0].calculated);
+  EXPECT_FALSE(checks[0].met);
+  EXPECT_NE(checks[0].note.find("no observers surface"), std::string::npos) << checks[0].note;
+  // With an observers surface beside it, the task area takes its largest UGR.
+  calc::SurfaceResult eyes;
+  eyes.grid.name = "eyes";
+  eyes.grid.kind = geometry::SurfaceGrid::Kind::observers;
+  eyes.UGR_max = 20.5;
+  r.surfaces.push_back(eyes);
+  const auto with = check_requirements(r, parse_requirements(doc, "p.json"));
+  EXPECT_TRUE(with[0].calculated);
+  EXPECT_FALSE(with[0].met);
+  EXPECT_NEAR(with[0].achieved, 20.5, 1e-12);
 }
 
 }  // namespace
