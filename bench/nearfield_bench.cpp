@@ -16,6 +16,7 @@
 #include "calc/nearfield/models.h"
 #include "photometry/builtin.h"
 #include "photometry/tabular_distribution.h"
+#include "study/accuracy_study.h"
 
 namespace {
 
@@ -68,14 +69,14 @@ std::vector<Point> protocol_points(bool table) {
   return pts;
 }
 
-void run(benchmark::State& state, const Model& model, bool table) {
+void run(benchmark::State& state, const luxgrid::study::AccuracyModel& model, bool table) {
   const std::vector<Point> pts = protocol_points(table);
   const Vec3 up(0, 0, 1);
   std::size_t i = 0;
   double sink = 0.0;
   for (auto _ : state) {
     const Point& p = pts[i];
-    sink += illuminance(*p.e, p.p, up, model);
+    sink += luxgrid::study::evaluate(model, *p.e, p.p, up, 1);
     if (++i == pts.size()) i = 0;
   }
   benchmark::DoNotOptimize(sink);
@@ -88,17 +89,17 @@ void run(benchmark::State& state, const Model& model, bool table) {
   BENCHMARK(name##_analytic);                                                       \
   BENCHMARK(name##_table);
 
-LUXGRID_MODEL_BENCH(FarField, Model::far_field())
-LUXGRID_MODEL_BENCH(PaperCubature, Model::paper_cubature())
-LUXGRID_MODEL_BENCH(StructuredSampling, Model::structured_sampling())
-LUXGRID_MODEL_BENCH(Mrp, Model::most_representative_point())
-LUXGRID_MODEL_BENCH(PaperK1, Model::subdivided(1))
-LUXGRID_MODEL_BENCH(PaperK2, Model::subdivided(2))
-LUXGRID_MODEL_BENCH(PaperK3, Model::subdivided(3))
-LUXGRID_MODEL_BENCH(LambertProductK1, Model::lambert_subdivided(1))
-LUXGRID_MODEL_BENCH(Standard, Model::standard())
-LUXGRID_MODEL_BENCH(Adaptive1e2, Model::adaptive(1e-2))
-LUXGRID_MODEL_BENCH(MonteCarlo64, Model::monte_carlo(64))
-LUXGRID_MODEL_BENCH(Reference1e4, Model::reference(1e-4))
+LUXGRID_MODEL_BENCH(FarField, luxgrid::study::AccuracyModel::rung(Model::far_field()))
+LUXGRID_MODEL_BENCH(PaperCubature, luxgrid::study::AccuracyModel::rung(Model::paper_cubature()))
+LUXGRID_MODEL_BENCH(StructuredSampling, luxgrid::study::AccuracyModel::structured_sampling())
+LUXGRID_MODEL_BENCH(Mrp, luxgrid::study::AccuracyModel::most_representative_point())
+LUXGRID_MODEL_BENCH(PaperK1, luxgrid::study::AccuracyModel::rung(Model::subdivided(1)))
+LUXGRID_MODEL_BENCH(PaperK2, luxgrid::study::AccuracyModel::rung(Model::subdivided(2)))
+LUXGRID_MODEL_BENCH(PaperK3, luxgrid::study::AccuracyModel::rung(Model::subdivided(3)))
+LUXGRID_MODEL_BENCH(LambertProductK1, luxgrid::study::AccuracyModel::rung(Model::lambert_subdivided(1)))
+LUXGRID_MODEL_BENCH(Standard, luxgrid::study::AccuracyModel::rung(Model::standard()))
+LUXGRID_MODEL_BENCH(Adaptive1e2, luxgrid::study::AccuracyModel::rung(Model::adaptive(1e-2)))
+LUXGRID_MODEL_BENCH(MonteCarlo64, luxgrid::study::AccuracyModel::monte_carlo(64))
+LUXGRID_MODEL_BENCH(Reference1e4, luxgrid::study::AccuracyModel::rung(Model::reference(1e-4)))
 
 }  // namespace

@@ -3,31 +3,15 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
-#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "calc/nearfield/models.h"
+
 namespace luxgrid::calc {
 
 namespace {
-// A receiver closer than this to a point source gets no light from it rather than an infinite
-// value: 1 um is far below any grid spacing, and keeps I/d^2 finite.
-constexpr double kMinDistanceSquared = 1e-12;  // m^2
-
-// The scene's AABB tree seen through the near-field models' occlusion interface, so area
-// emitters cast soft shadows (visibility per quadrature node; calc/nearfield/occluder.h).
-class SceneOccluder final : public nearfield::Occluder {
- public:
-  explicit SceneOccluder(const Visibility& v) : v_(v) {}
-  bool visible(const Vec3& emitter_point, const Vec3& receiver) const override {
-    return v_.visible(emitter_point, receiver);
-  }
-
- private:
-  const Visibility& v_;
-};
-
 // What a point of a grid measures. Horizontal and vertical are planes whose normals the loader
 // has set; a half cylinder faces the normal the loader set to its `facing` direction.
 nearfield::Receiver receiver_of(geometry::Quantity q, const Vec3& normal) {
@@ -40,18 +24,9 @@ nearfield::Receiver receiver_of(geometry::Quantity q, const Vec3& normal) {
 }  // namespace
 
 double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3& normal) {
-  const Vec3 to_point = point - lum.pose.position;
-  const double d2 = glm::dot(to_point, to_point);
-  if (!(d2 > kMinDistanceSquared)) return 0.0;
-  const double d = std::sqrt(d2);
-  const Vec3 w = to_point / d;
-  const double cos_incidence = -glm::dot(normal, w);
-  if (!(cos_incidence > 0.0)) return 0.0;
-  // World direction -> luminaire frame: the rotation is orthonormal, so its inverse is its
-  // transpose (w * M == transpose(M) * w in glm).
-  const Vec3 local = w * lum.pose.rotation;
-  const double e = lum.distribution->intensity(local) * cos_incidence / d2;
-  return std::isfinite(e) && e > 0.0 ? e : 0.0;
+  // The rotation is orthonormal, so world -> luminaire frame is its transpose.
+  return nearfield::point_source_illuminance(*lum.distribution, glm::transpose(lum.pose.rotation),
+                                             lum.pose.position, point, nearfield::Receiver::planar(normal));
 }
 
 std::vector<nearfield::Emitter> make_emitters(const Scene& scene) {
@@ -71,11 +46,8 @@ std::vector<double> direct_illuminance(const Plan& plan, const std::vector<nearf
   std::mutex count_mutex;
   const size_t total = grid.points.size();
   const bool automatic = plan.near_switch == nearfield::NearFieldSwitch::automatic;
-  const Visibility* visibility = plan.visibility_test.get();
   // nullptr when nothing can occlude: the near-field models then skip every test.
-  std::optional<SceneOccluder> scene_occluder;
-  if (visibility) scene_occluder.emplace(*visibility);
-  const nearfield::Occluder* occluder = scene_occluder ? &*scene_occluder : nullptr;
+  const geometry::Visibility* visibility = plan.visibility_test.get();
   tbb::parallel_for(tbb::blocked_range<size_t>(0, total, 16), [&](const auto& range) {
     DirectCounts local;
     for (size_t i = range.begin(); i != range.end(); ++i) {
@@ -86,7 +58,7 @@ std::vector<double> direct_illuminance(const Plan& plan, const std::vector<nearf
         // Soft shadows: the near-field models test visibility per node, the far field from
         // the opening's centre.
         sum += nearfield::hybrid_illuminance(emitter, grid.points[i], receiver, plan.near_model,
-                                             plan.near_switch, occluder);
+                                             plan.near_switch, visibility);
         if (!counts) continue;
         if (emitter.is_point()) {
           ++local.point_sources;

@@ -11,9 +11,10 @@ namespace luxgrid::calc {
 
 using Progress = std::function<void(double fraction_done)>;
 
-// Far-field point model: E = I(w) cos(theta) / d^2, w the direction from the luminaire to the
-// point in the luminaire's frame, theta the angle of incidence at the receiver. Zero for light
-// arriving from behind the receiver. Finite and >= 0 for every input.
+// Far-field point model of a luminaire at its pose: E = I(w) cos(theta) / d^2, w the direction
+// from the luminaire to the point in the luminaire's frame, theta the angle of incidence at the
+// receiver (nearfield::point_source_illuminance, the one copy of the formula). Zero for light
+// arriving from behind the receiver or at the luminaire itself. Finite and >= 0.
 double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3& normal);
 
 // The emitters of all luminaires, built once per run (calc/nearfield/emitter.h).

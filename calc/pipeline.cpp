@@ -9,6 +9,7 @@
 #include "calc/glare/ugr.h"
 #include "calc/indirect/indirect.h"
 #include "util/error.h"
+#include "util/format.h"
 
 namespace luxgrid::calc {
 
@@ -44,8 +45,7 @@ void run_direct(const Scene& scene, Results& results, const Progress& progress) 
 
 // Reflected light, when the plan's decision says the scene needs it.
 void run_indirect(const Scene& scene, Results& results) {
-  const indirect::IndirectDecision decision = indirect::decide_indirect(scene);
-  results.plan.indirect = decision.reason;
+  const indirect::IndirectDecision& decision = results.plan.indirect_decision;
   if (!decision.run) return;
   indirect::IndirectOptions options = indirect::indirect_options(scene.settings);
   options.luminous_flux_lm = decision.luminous_flux_lm;
@@ -58,11 +58,7 @@ void run_indirect(const Scene& scene, Results& results) {
   for (const auto& n : r.notes) results.plan.notes.push_back(n);
 }
 // "1.8e+308" / "inf" / "nan", for the messages below.
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
+std::string number(double v) { return format_double("%.4g", v); }
 
 // Results never hold NaN or an infinity (a photometric file with absurd candela values, an
 // overflow in a sum): a written number that is not a number would be read as an answer. Throws

@@ -39,10 +39,9 @@ nearfield::Model near_model_for(const Settings& settings) {
   if (name == "reference") return Model::reference();
   if (int k = suffix_number(name, "subdivided-"); k >= 0 && k <= 6) return Model::subdivided(k);
   if (int k = suffix_number(name, "lambert-"); k >= 0 && k <= 6) return Model::lambert_subdivided(k);
-  if (int n = suffix_number(name, "monte-carlo-"); n >= 1 && n <= 1000000) return Model::monte_carlo(n);
   throw InputError("/settings/near_field_model: unknown model \"" + name +
                    "\" (expected paper, far-field, standard, high, adaptive, reference, subdivided-K or "
-                   "lambert-K with K from 0 to 6, monte-carlo-N)");
+                   "lambert-K with K from 0 to 6)");
 }
 
 Plan make_plan(const Scene& scene) {
@@ -61,7 +60,8 @@ Plan make_plan(const Scene& scene) {
     plan.near_switch = nearfield::NearFieldSwitch::automatic;
   }
   plan.direct = "not computed yet";
-  plan.indirect = "decided by calc/indirect (decide_indirect)";
+  plan.indirect_decision = indirect::decide_indirect(scene);
+  plan.indirect = plan.indirect_decision.reason;
   std::string reason;
   plan.visibility_test = make_visibility(scene, reason);
   plan.visibility = reason;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "calc/indirect/decision.h"
 #include "calc/nearfield/illuminance.h"
 #include "calc/scene.h"
 #include "calc/visibility.h"
@@ -17,19 +18,22 @@ struct Plan {
   nearfield::Model near_model = nearfield::Model::standard();
   nearfield::NearFieldSwitch near_switch = nearfield::NearFieldSwitch::automatic;
   // Occlusion test, or null when nothing in the scene can block light (calc/visibility.h).
-  std::shared_ptr<const Visibility> visibility_test;
+  std::shared_ptr<const geometry::Visibility> visibility_test;
   std::string direct;      // e.g. "hybrid by an error bound ...: 1200 pairs near-field, ..."
   // Per distinct emitter, the near-field distances the error bound chose and why
   // (calc/far_field_bounds.h); filled by the pipeline, quoted in `direct`.
   std::vector<std::string> near_far_per_emitter;
-  std::string indirect;    // e.g. "not computed: ..."
+  // Reflected light: whether it runs and why (calc/indirect/decision.h); `indirect` starts as
+  // the decision's reason and becomes the run's summary when it ran.
+  indirect::IndirectDecision indirect_decision;
+  std::string indirect;    // e.g. "skipped: all reflectances are 0"
   std::string visibility;  // e.g. "off: ..."
   std::vector<std::string> notes;
 };
 
 // The near-field rung for a quality, or for settings.near_field_model when it is set
 // ("paper", "standard", "high", "reference", "far-field", "subdivided-K", "lambert-K",
-// "adaptive", "monte-carlo-N"). Throws InputError for an unknown name.
+// "adaptive"). Throws InputError for an unknown name.
 nearfield::Model near_model_for(const Settings& settings);
 
 Plan make_plan(const Scene& scene);

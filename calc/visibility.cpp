@@ -39,7 +39,7 @@ bool inside_room(const Room& room, const Vec3& p) {
          geometry::Location::outside;
 }
 
-std::unique_ptr<Visibility> make_visibility(const Scene& scene, std::string& reason) {
+std::unique_ptr<geometry::OcclusionTree> make_visibility(const Scene& scene, std::string& reason) {
   std::vector<std::string> why;
   size_t obstacles = 0;
   for (const auto& r : scene.rooms) obstacles += r.obstacles.size();
@@ -97,7 +97,7 @@ std::unique_ptr<Visibility> make_visibility(const Scene& scene, std::string& rea
   }
   reason = "on:";
   for (size_t i = 0; i < why.size(); ++i) reason += (i ? ", " : " ") + why[i];
-  return std::make_unique<Visibility>(scene_faces(scene));
+  return std::make_unique<geometry::OcclusionTree>(scene_faces(scene));
 }
 
 }  // namespace luxgrid::calc

@@ -1,7 +1,8 @@
 #pragma once
 // Does light travel freely from a luminaire to a point? Walls of non-convex rooms, walls between
-// rooms and obstacles block it. One CGAL AABB tree over every room and obstacle face
-// (geometry/occlusion.h), built once per scene, queried from TBB workers. No CGAL here.
+// rooms and obstacles block it. The scene's faces for geometry's AABB tree (geometry/occlusion.h,
+// the geometry::Visibility that direct, indirect light and glare ask), built once per scene,
+// queried from TBB workers, and the plan's decision whether the scene needs one. No CGAL here.
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,26 +19,13 @@ geometry::RoomShape room_shape(const Room& room);
 // its obstacles' faces (normals outward). Also the input for indirect light.
 std::vector<geometry::Face> scene_faces(const Scene& scene);
 
-class Visibility {
- public:
-  explicit Visibility(const std::vector<geometry::Face>& faces) : tree_(faces) {}
-
-  // True when nothing lies between `from` and `to`. Hits within
-  // geometry::kOcclusionEndAllowance_m (1 um) of either end are ignored, so a luminaire on the
-  // ceiling and a point on a floor, wall or obstacle top see each other. Thread-safe.
-  bool visible(const Vec3& from, const Vec3& to) const { return tree_.segment_free(from, to); }
-
-  size_t triangle_count() const { return tree_.triangle_count(); }
-
- private:
-  geometry::OcclusionTree tree_;
-};
-
-// nullptr when nothing can block light: at most one room, convex, no obstacles, every
+// The scene's AABB tree over scene_faces: visible(from, to) is true when nothing lies between;
+// hits within geometry::kOcclusionEndAllowance_m (1 um) of either end are ignored, so a luminaire
+// on the ceiling and a point on a floor, wall or obstacle top see each other. nullptr when nothing can block light: at most one room, convex, no obstacles, every
 // luminaire and every active surface point inside it (or no rooms and no obstacles at all).
 // `reason` is set for the plan either way, e.g. "off: convex room, no obstacles, every
 // luminaire inside" or "on: 2 obstacles, non-convex room 'L'".
-std::unique_ptr<Visibility> make_visibility(const Scene& scene, std::string& reason);
+std::unique_ptr<geometry::OcclusionTree> make_visibility(const Scene& scene, std::string& reason);
 
 // True when `p` lies in the closed volume of `room` (within 1 um).
 bool inside_room(const Room& room, const Vec3& p);

@@ -1,17 +1,19 @@
 // `luxgrid accuracy [-o|--out DIR] [--quick] [--grid N] [--photometry DIR]`: the accuracy-versus-time study of
-// the near-field models (docs/accuracy.md; cli/accuracy_study.h describes the protocol). Writes
+// the near-field models (docs/accuracy.md; study/accuracy_study.h describes the protocol). Writes
 // DIR/accuracy.md (tables) and DIR/accuracy.png (error versus time with the Pareto front).
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 
-#include "cli/accuracy_study.h"
 #include "cli/commands.h"
 #include "cli/data_paths.h"
+#include "study/accuracy_study.h"
 #include "util/error.h"
 
 namespace luxgrid::cli {
+
+using namespace luxgrid::study;
 
 void add_accuracy_command(CLI::App& app, Runner& run) {
   struct Options {

@@ -1,10 +1,12 @@
 #pragma once
-// Segment occlusion against a set of faces: a CGAL AABB tree of triangles, built once, queried
-// from many threads. No CGAL in this header (pimpl).
+// The scene's visibility test (geometry/visibility.h): a CGAL AABB tree of the triangles of a set
+// of faces, built once, queried from many threads. No CGAL in this header (pimpl; the
+// implementation is geometry/cgal/occlusion.cpp, in the luxgrid_geometry_cgal library).
 #include <memory>
 #include <vector>
 
 #include "geometry/room.h"
+#include "geometry/visibility.h"
 
 namespace luxgrid::geometry {
 
@@ -15,17 +17,17 @@ namespace luxgrid::geometry {
 // (~1e-13 m).
 inline constexpr double kOcclusionEndAllowance_m = 1e-6;
 
-class OcclusionTree {
+class OcclusionTree final : public Visibility {
  public:
   explicit OcclusionTree(const std::vector<Face>& faces);
-  ~OcclusionTree();
+  ~OcclusionTree() override;
   OcclusionTree(const OcclusionTree&) = delete;
   OcclusionTree& operator=(const OcclusionTree&) = delete;
 
   // True when no face crosses the open segment from `a` to `b`, shortened by
   // kOcclusionEndAllowance_m at both ends. Thread-safe (const, the tree is built in the
   // constructor).
-  bool segment_free(const Vec3& a, const Vec3& b) const;
+  bool visible(const Vec3& a, const Vec3& b) const override;
 
   size_t triangle_count() const;
 

@@ -163,4 +163,16 @@ std::string format_number(double x) {
   return std::string(buf, r.ptr);
 }
 
+EdgeCoordinates edge_coordinates(const Polygon2& outline, size_t k, const Vec2& q) {
+  EdgeCoordinates e;
+  const Vec2 a = outline[k], b = outline[(k + 1) % outline.size()];
+  e.length_m = glm::length(b - a);
+  if (!(e.length_m > 0.0)) return e;
+  const Vec2 t = (b - a) / e.length_m;
+  e.inward = Vec2(-t.y, t.x);
+  e.along_m = glm::dot(q - a, t);
+  e.inside_m = glm::dot(q - a, e.inward);
+  return e;
+}
+
 }  // namespace luxgrid::geometry

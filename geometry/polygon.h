@@ -3,7 +3,7 @@
 // ear-clipping triangulation, clipping. Outlines are lists of corners without a repeated closing
 // corner. Planar polygons in space are in polygon3.h.
 // The CGAL-backed set-up operations (validation with exact predicates, straight-skeleton insets)
-// live in outline.h and workplane.h; these helpers are for code that runs per point.
+// live in room.h and workplane.h (implemented in geometry/cgal/); these helpers are for code that runs per point.
 #include <array>
 #include <string>
 #include <vector>
@@ -44,6 +44,18 @@ bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d);
 // True when two simple polygons share interior area (touching along an edge or at a corner is
 // not overlap). Set-up code: O(n m).
 bool polygons_overlap(const Polygon2& a, const Polygon2& b);
+
+// Where `q` lies against edge k of `outline` (from corner k to corner k + 1): `along_m` along the
+// edge from corner k, `inside_m` off it towards `inward`, the unit normal on the side where a
+// counter-clockwise outline's interior lies. `length_m` is 0 (and the rest unset) for an edge of
+// zero length.
+struct EdgeCoordinates {
+  double length_m = 0.0;
+  double along_m = 0.0;
+  double inside_m = 0.0;
+  Vec2 inward{0.0};
+};
+EdgeCoordinates edge_coordinates(const Polygon2& outline, size_t k, const Vec2& q);
 
 // Shortest decimal that reads back to the same double (std::to_chars), for messages.
 std::string format_number(double x);

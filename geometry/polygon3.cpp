@@ -40,12 +40,13 @@ double polygon_diameter(const Polygon3& p) {
 
 Polygon3 clip_to_half_space(const Polygon3& poly, const Vec3& origin, const Vec3& n) {
   Polygon3 out;
-  for (size_t k = 0, m = poly.size(); k < m; ++k) {
-    const Vec3 p = poly[k], q = poly[(k + 1) % m];
-    const double dp = glm::dot(n, p - origin), dq = glm::dot(n, q - origin);
-    if (dp >= 0.0) out.push_back(p);
-    if ((dp >= 0.0) != (dq >= 0.0)) out.push_back(p + (q - p) * (dp / (dp - dq)));
-  }
+  const int count = static_cast<int>(poly.size());
+  if (count < 3) return out;
+  std::vector<Vec3> rel(poly.size());
+  std::vector<double> h(poly.size());
+  detail::clip_relative(
+      poly.data(), count, origin, n, rel, h, [&](const Vec3& p) { out.push_back(origin + p); },
+      [] { return true; });
   return out;
 }
 

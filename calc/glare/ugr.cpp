@@ -44,7 +44,7 @@ std::vector<ObserverResult> evaluate_observers(const Scene& scene, const Plan& p
                                                const geometry::SurfaceGrid& grid,
                                                const std::vector<double>& E_indirect_lx) {
   std::vector<ObserverResult> out;
-  const Visibility* visibility = plan.visibility_test.get();
+  const geometry::Visibility* visibility = plan.visibility_test.get();
   for (size_t i = 0; i < grid.points.size(); ++i) {
     const size_t k = grid.observer[i];
     if (out.size() <= k) out.resize(k + 1);
@@ -58,7 +58,7 @@ std::vector<ObserverResult> evaluate_observers(const Scene& scene, const Plan& p
     for (const auto& lum : scene.luminaires) {
       const auto t = glare_term(*lum.distribution, lum.opening, lum.pose, grid.points[i], frame);
       if (!t) continue;
-      if (visibility && !visibility->visible(lum.pose.position, grid.points[i])) continue;
+      if (geometry::blocked(visibility, lum.pose.position, grid.points[i])) continue;
       sum += t->value();
       v.terms.push_back({lum.label, *t});
     }

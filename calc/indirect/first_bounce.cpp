@@ -7,6 +7,7 @@
 
 #include "calc/indirect/emitter_cells.h"
 #include "calc/scaled_distribution.h"
+#include "geometry/spherical.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -33,7 +34,7 @@ struct Source {
 
 struct Sampler {
   const Source& src;
-  const OcclusionFn& occluded;
+  const geometry::Visibility* visibility;  // null: nothing blocks
   Vec3 normal;
   mutable int visible = 0, hidden = 0;
 
@@ -45,19 +46,19 @@ struct Sampler {
     }
     const Vec3 s = src.position;
     const Vec3 centre = (a + b + c) / 3.0;
-    if (occluded && occluded(s, centre + normal * kSampleLift_m)) {
+    if (geometry::blocked(visibility, s, centre + normal * kSampleLift_m)) {
       ++hidden;
       return 0.0;
     }
     ++visible;
-    const double omega = triangle_solid_angle_from(s, a, b, c);
+    const double omega = geometry::triangle_solid_angle_from(s, a, b, c);
     const Vec3 dir = glm::normalize(centre - s);
     const Vec3 local = glm::transpose(src.lum->pose.rotation) * dir;
     return src.weight * src.lum->distribution->intensity(local) * omega;
   }
 };
 
-double patch_flux(const Source& src, const Patch& p, const OcclusionFn& occluded,
+double patch_flux(const Source& src, const Patch& p, const geometry::Visibility* visibility,
                   double max_angle_rad) {
   const Vec3 s = src.position;
   const double h = glm::dot(p.normal, s - p.centroid);
@@ -69,7 +70,7 @@ double patch_flux(const Source& src, const Patch& p, const OcclusionFn& occluded
   int level = 0;
   // Each fan triangle spans about half the patch; each level halves a piece.
   while (level < kMaxLevel && 0.5 * angle / std::ldexp(1.0, level) > max_angle_rad) ++level;
-  Sampler sampler{src, occluded, p.normal};
+  Sampler sampler{src, visibility, p.normal};
   auto integrate = [&](int lv) {
     double flux = 0.0;
     for (size_t k = 0, n = p.polygon.size(); k < n; ++k)
@@ -77,7 +78,7 @@ double patch_flux(const Source& src, const Patch& p, const OcclusionFn& occluded
     return flux;
   };
   double flux = integrate(level);
-  if (occluded && sampler.visible > 0 && sampler.hidden > 0) {
+  if (visibility && sampler.visible > 0 && sampler.hidden > 0) {
     sampler.visible = sampler.hidden = 0;
     flux = integrate(std::min(kMaxLevel, level + kShadowExtraLevels));
   }
@@ -87,7 +88,7 @@ double patch_flux(const Source& src, const Patch& p, const OcclusionFn& occluded
 }  // namespace
 
 FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
-                         const std::vector<OcclusionFn>& occlusion, double max_angle_rad,
+                         const std::vector<const geometry::Visibility*>& visibility, double max_angle_rad,
                          const std::map<const photometry::IntensityDistribution*, double>*
                              known_flux_lm) {
   FirstBounce fb;
@@ -121,10 +122,10 @@ FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
   // (one loop instead of one per luminaire; the same sums).
   for (size_t r = 0; r < scene.rooms.size(); ++r) {
     if (in_room[r].empty()) continue;
-    const OcclusionFn& occ = occlusion[r];
+    const geometry::Visibility* room_visibility = visibility[r];
     tbb::parallel_for(mesh.room_begin[r], mesh.room_begin[r + 1], [&](size_t i) {
       double sum = 0.0;
-      for (const Source& src : in_room[r]) sum += patch_flux(src, mesh.patches[i], occ, max_angle_rad);
+      for (const Source& src : in_room[r]) sum += patch_flux(src, mesh.patches[i], room_visibility, max_angle_rad);
       fb.incident_flux_lm[i] = sum;
     });
   }

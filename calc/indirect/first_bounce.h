@@ -20,6 +20,7 @@
 #include "calc/indirect/form_factor.h"
 #include "calc/indirect/patches.h"
 #include "calc/scene.h"
+#include "geometry/visibility.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -35,12 +36,12 @@ struct FirstBounce {
   std::vector<std::string> notes;        // e.g. luminaires outside every room
 };
 
-// `occlusion[r]` is room r's occlusion callback (may be empty: nothing blocks).
+// `visibility[r]` is room r's visibility test (null: nothing blocks; geometry/visibility.h).
 // `max_angle_rad` is the largest angular size of one integration piece (0.08 rad by default:
 // I is sampled at least every ~4.6 degrees).
 // `known_flux_lm`: luminous_flux of distributions already integrated (others are computed).
 FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
-                         const std::vector<OcclusionFn>& occlusion, double max_angle_rad = 0.08,
+                         const std::vector<const geometry::Visibility*>& visibility, double max_angle_rad = 0.08,
                          const std::map<const photometry::IntensityDistribution*, double>*
                              known_flux_lm = nullptr);
 

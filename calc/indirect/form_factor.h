@@ -5,7 +5,6 @@
 // its hemisphere, that reaches the polygon; equivalently E(x) = M * F for a uniform-exitance
 // (Lambertian) polygon of exitance M (lm/m^2) seen from a receiver at x with normal n.
 #include <array>
-#include <functional>
 
 #include "geometry/polygon.h"
 #include "geometry/polygon3.h"
@@ -15,14 +14,12 @@ namespace luxgrid::calc::indirect {
 using geometry::Polygon2;
 using geometry::Polygon3;
 
-// Occlusion callback: true when the open segment from a to b is blocked. Empty = nothing blocks.
-using OcclusionFn = std::function<bool(const Vec3& a, const Vec3& b)>;
-
-// Lambert (1760), Baum, Rushmeier and Winget (1989) Eq. 2:
-//   F = (1 / 2 pi) | sum over edges  theta_k  n . (r_k x r_k+1) / |r_k x r_k+1| |,
+// Lambert's formula [Baum1989, Eq. 2]: F = (projected solid angle of the polygon seen from x) / pi
+//   = (1 / 2 pi) | sum over edges  theta_k  n . (r_k x r_k+1) / |r_k x r_k+1| |,
 // with r_k the vertices relative to x and theta_k the angle they subtend, after clipping the
-// polygon to the receiver's hemisphere n . (y - x) >= 0. Exact for any planar polygon, in [0, 1],
-// bounded however close x is to the polygon (no singularity: no spikes near walls or corners).
+// polygon to the receiver's hemisphere n . (y - x) >= 0 (geometry/polygon3.h, spherical.h).
+// Exact for any planar polygon, in [0, 1], bounded however close x is to the polygon (no
+// singularity: no spikes near walls or corners).
 double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Polygon3& polygon);
 
 // The point-to-point form-factor kernel of [Gadia2024, Eq. 3] (the differential-area form factor
@@ -61,8 +58,5 @@ double quarter_kernel_form_factor(const Vec3& x, const Vec3& n, const Polygon3& 
                                   const Vec3& centroid, const std::array<Vec3, 4>& quarter,
                                   const Vec3& m, double area_m2, double diameter_m,
                                   double min_d2);
-
-// Solid angle (sr) of the triangle abc seen from s (Van Oosterom and Strackee 1983, by atan2).
-double triangle_solid_angle_from(const Vec3& s, const Vec3& a, const Vec3& b, const Vec3& c);
 
 }  // namespace luxgrid::calc::indirect

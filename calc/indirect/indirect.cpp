@@ -8,18 +8,20 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include <tbb/parallel_for.h>
 
 #include "calc/direct.h"
-#include "calc/indirect/box_bounds.h"
 #include "calc/indirect/emitter_cells.h"
 #include "calc/indirect/first_bounce.h"
 #include "calc/indirect/radiosity.h"
 #include "calc/scaled_distribution.h"
 #include "calc/visibility.h"
+#include "geometry/box3.h"
 #include "util/error.h"
+#include "util/format.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -40,8 +42,6 @@ constexpr double kReceiverInset_m = 1e-3;
 // The plan line gives the flux of the whole openings beside the flux entering the rooms when
 // they differ by more than this (rounding of the clip planes, emitter_cells.h).
 constexpr double kOutsideFluxFraction = 1e-6;
-// Auto-mode estimate of the direct light: at most this many far-field points per surface.
-constexpr size_t kDecisionSamplesPerSurface = 256;
 
 double quality_patch_size(Quality q) {
   switch (q) {
@@ -71,23 +71,6 @@ double quality_tolerance(Quality q) {
   return 1e-3;
 }
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
-double mean_reflectance(const Room& room) {
-  double perimeter = 0.0;
-  for (size_t k = 0; k < room.outline.size(); ++k)
-    perimeter += glm::length(room.outline[(k + 1) % room.outline.size()] - room.outline[k]);
-  const double a_floor = std::abs(geometry::signed_area(room.outline));
-  const double a_walls = perimeter * room.height;
-  const double a = 2.0 * a_floor + a_walls;
-  if (!(a > 0.0)) return 0.0;
-  return (a_floor * (room.reflectance.floor + room.reflectance.ceiling) +
-          a_walls * room.reflectance.walls) / a;
-}
 
 // The patch size at which the rooms' patch counts are estimated (surface area / size^2, the
 // count of a box room) to fit the per-room budget and kMaxTotalPatches: checked before the mesh
@@ -110,17 +93,17 @@ double size_within_limits(const Scene& scene, const IndirectOptions& o, double s
   if (o.patch_size_m > 0.0) {
     if (worst > budget)
       throw InputError("room '" + scene.rooms[worst_room].name + "': " + std::to_string(std::llround(worst)) +
-                       " patches at a patch size of " + fmt("%.3g", size) + " m exceed the budget of " +
+                       " patches at a patch size of " + format_double("%.3g", size) + " m exceed the budget of " +
                        std::to_string(o.max_patches_per_room) + " patches per room");
     throw InputError(std::to_string(std::llround(total)) + " patches in " + std::to_string(scene.rooms.size()) +
-                     " rooms at a patch size of " + fmt("%.3g", size) + " m exceed the limit of " +
+                     " rooms at a patch size of " + format_double("%.3g", size) + " m exceed the limit of " +
                      std::to_string(kMaxTotalPatches) + " patches in all rooms");
   }
   const double grow = std::sqrt(std::max(worst / budget, total / limit));
   notes.push_back((worst / budget >= total / limit
                        ? "room '" + scene.rooms[worst_room].name + "': patch size raised from "
                        : "all " + std::to_string(scene.rooms.size()) + " rooms: patch size raised from ") +
-                  fmt("%.3g", size) + " m to " + fmt("%.3g", size * grow) + " m to stay within " +
+                  format_double("%.3g", size) + " m to " + format_double("%.3g", size * grow) + " m to stay within " +
                   (worst / budget >= total / limit ? std::to_string(o.max_patches_per_room) + " patches per room"
                                                    : std::to_string(kMaxTotalPatches) + " patches in all rooms"));
   return size * grow;
@@ -165,11 +148,11 @@ PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, double size,
       // Obstacles and clipped boundary cells beyond the estimate of size_within_limits.
       if (o.patch_size_m > 0.0 || attempt > 20)
         throw InputError(std::to_string(total) + " patches in " + std::to_string(scene.rooms.size()) +
-                         " rooms at a patch size of " + fmt("%.3g", size) + " m exceed the limit of " +
+                         " rooms at a patch size of " + format_double("%.3g", size) + " m exceed the limit of " +
                          std::to_string(kMaxTotalPatches) + " patches in all rooms");
       const double grow = std::sqrt(static_cast<double>(total) / kMaxTotalPatches) * 1.05;
-      notes.push_back("all rooms: patch size raised from " + fmt("%.3g", size) + " m to " +
-                      fmt("%.3g", size * grow) + " m to stay within " + std::to_string(kMaxTotalPatches) +
+      notes.push_back("all rooms: patch size raised from " + format_double("%.3g", size) + " m to " +
+                      format_double("%.3g", size * grow) + " m to stay within " + std::to_string(kMaxTotalPatches) +
                       " patches in all rooms");
       size *= grow;
       continue;
@@ -177,29 +160,26 @@ PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, double size,
     if (o.patch_size_m > 0.0 || attempt > 20)
       throw InputError(
           "room '" + scene.rooms[worst_room].name + "': " + std::to_string(worst) +
-          " patches at a patch size of " + fmt("%.3g", size) + " m exceed the budget of " +
+          " patches at a patch size of " + format_double("%.3g", size) + " m exceed the budget of " +
           std::to_string(o.max_patches_per_room) + " patches per room");
     const double grow = std::sqrt(static_cast<double>(worst) / o.max_patches_per_room) * 1.05;
     notes.push_back("room '" + scene.rooms[worst_room].name + "': patch size raised from " +
-                    fmt("%.3g", size) + " m to " + fmt("%.3g", size * grow) +
+                    format_double("%.3g", size) + " m to " + format_double("%.3g", size * grow) +
                     " m to stay within " + std::to_string(o.max_patches_per_room) + " patches");
     size *= grow;
   }
 }
 
-// Fraction of patch p visible from the receiver x (centroid and the points halfway to each vertex).
-double gather_visible_fraction(const Vec3& x, const Vec3& n, const Patch& p, const OcclusionFn& occluded) {
-  int seen = 0;
-  const Vec3 from = x + n * 1e-6;
-  seen += occluded(from, p.centroid + p.normal * 1e-6) ? 0 : 1;
-  for (const auto& v : p.polygon) seen += occluded(from, 0.5 * (v + p.centroid) + p.normal * 1e-6) ? 0 : 1;
-  return static_cast<double>(seen) / static_cast<double>(p.polygon.size() + 1);
-}
+// The gather's visibility segments start this far in front of the receiver and end this far in
+// front of the patch (patches.h visible_fraction), so neither end's own face hides the other.
+constexpr double kGatherLift_m = 1e-6;
 
-// Axis-aligned bounding box of an obstacle, grown by kBoxMargin_m.
-struct Box3 {
-  Vec3 lo, hi;
-};
+using geometry::Box3;
+using geometry::box_distance2;
+using geometry::box_max_height;
+using geometry::box_min_height;
+
+// Axis-aligned bounding boxes of the obstacles, grown by kBoxMargin_m.
 // Obstacle boxes are grown by this much so that a segment ending on an obstacle face, or grazing
 // one, always goes to the exact test (the tree's end allowance is 1 um).
 constexpr double kBoxMargin_m = 1e-5;
@@ -220,24 +200,6 @@ std::vector<Box3> obstacle_boxes(const Scene& scene) {
   return boxes;
 }
 
-// True when the closed segment ab meets the box (slab test).
-bool segment_meets_box(const Vec3& a, const Vec3& b, const Box3& box) {
-  double t0 = 0.0, t1 = 1.0;
-  const Vec3 d = b - a;
-  for (int k = 0; k < 3; ++k) {
-    if (d[k] == 0.0) {
-      if (a[k] < box.lo[k] || a[k] > box.hi[k]) return false;
-      continue;
-    }
-    double ta = (box.lo[k] - a[k]) / d[k], tb = (box.hi[k] - a[k]) / d[k];
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-    if (t0 > t1) return false;
-  }
-  return true;
-}
-
 // A receiver on a face of `room` (within kReceiverInset_m) whose normal points out through that
 // face lies on the face's outer side: the opaque face hides the whole room from it, so it gathers
 // nothing from the room. Without this test the inset below would move it inside, where it would
@@ -248,17 +210,11 @@ constexpr double kFacingOutCosine = 1e-9;
 bool faces_out_of_room(const Room& room, const Vec3& x, const Vec3& n) {
   if (std::abs(x.z - room.floor_z) < kReceiverInset_m && n.z < -kFacingOutCosine) return true;
   if (std::abs(x.z - room.floor_z - room.height) < kReceiverInset_m && n.z > kFacingOutCosine) return true;
-  const auto& o = room.outline;
-  for (size_t k = 0; k < o.size(); ++k) {
-    const Vec2 a = o[k], b = o[(k + 1) % o.size()];
-    const double len = glm::length(b - a);
-    if (!(len > 0.0)) continue;
-    const Vec2 t = (b - a) / len, inward(-t.y, t.x);
-    const Vec2 q(x.x, x.y);
-    const double along = glm::dot(q - a, t);
-    if (along < -kReceiverInset_m || along > len + kReceiverInset_m) continue;
-    if (std::abs(glm::dot(q - a, inward)) < kReceiverInset_m &&
-        glm::dot(Vec2(n.x, n.y), inward) < -kFacingOutCosine)
+  for (size_t k = 0; k < room.outline.size(); ++k) {
+    const geometry::EdgeCoordinates e = geometry::edge_coordinates(room.outline, k, Vec2(x.x, x.y));
+    if (!(e.length_m > 0.0)) continue;
+    if (e.along_m < -kReceiverInset_m || e.along_m > e.length_m + kReceiverInset_m) continue;
+    if (std::abs(e.inside_m) < kReceiverInset_m && glm::dot(Vec2(n.x, n.y), e.inward) < -kFacingOutCosine)
       return true;
   }
   return false;
@@ -267,19 +223,14 @@ bool faces_out_of_room(const Room& room, const Vec3& x, const Vec3& n) {
 // `x` moved to at least kReceiverInset_m inside every face of `room` that it lies on or near.
 Vec3 inset_into_room(const Room& room, Vec3 x) {
   x.z = std::clamp(x.z, room.floor_z + kReceiverInset_m, room.floor_z + room.height - kReceiverInset_m);
-  const auto& o = room.outline;
-  for (size_t k = 0; k < o.size(); ++k) {
-    const Vec2 a = o[k], b = o[(k + 1) % o.size()];
-    const double len = glm::length(b - a);
-    if (!(len > 0.0)) continue;
-    const Vec2 t = (b - a) / len, inward(-t.y, t.x);
-    const Vec2 q(x.x, x.y);
-    const double along = glm::dot(q - a, t);
-    const double d = glm::dot(q - a, inward);
-    if (along < -kReceiverInset_m || along > len + kReceiverInset_m) continue;
+  for (size_t k = 0; k < room.outline.size(); ++k) {
+    const geometry::EdgeCoordinates e = geometry::edge_coordinates(room.outline, k, Vec2(x.x, x.y));
+    if (!(e.length_m > 0.0)) continue;
+    if (e.along_m < -kReceiverInset_m || e.along_m > e.length_m + kReceiverInset_m) continue;
+    const double d = e.inside_m;
     if (d > -kReceiverInset_m && d < kReceiverInset_m) {
-      x.x += (kReceiverInset_m - d) * inward.x;
-      x.y += (kReceiverInset_m - d) * inward.y;
+      x.x += (kReceiverInset_m - d) * e.inward.x;
+      x.y += (kReceiverInset_m - d) * e.inward.y;
     }
   }
   return x;
@@ -394,7 +345,7 @@ double gather_form_factor(const Vec3& x, const Vec3& n, const Patch& p, double f
 }
 
 double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3& x, const Vec3& n,
-                        double far_ratio, const OcclusionFn& occluded) {
+                        double far_ratio, const geometry::Visibility* visibility) {
   double near = 0.0, far = 0.0;
   const double* cx = set.cx.data();
   const double* cy = set.cy.data();
@@ -409,7 +360,7 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
       // Every vertex behind the receiver's tangent plane: so are the centroids and quarter
       // centroids, and the kernel and the horizon-clipped polygon give 0.
       if (box_max_height(n, x, ch.lo, ch.hi) < 0.0) continue;
-      if (!occluded && box_min_height(n, x, ch.clo, ch.chi) > 0.0 &&
+      if (!visibility && box_min_height(n, x, ch.clo, ch.chi) > 0.0 &&
           box_distance2(x, ch.clo, ch.chi) > ch.max_near_d2) {
         // Far kernel for the whole chunk: every centroid in front of the receiver (n . dx < 0),
         // the receiver in front of every patch (group test), farther than its near distance.
@@ -429,7 +380,7 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
         const double hm = glm::dot(m, dx);
         if (!(hm > kGatherPlaneDistance_m)) continue;
         const double d2 = glm::dot(dx, dx);
-        if (d2 > set.near_d2[k] && !occluded) {
+        if (d2 > set.near_d2[k] && !visibility) {
           // point_kernel_form_factor x exitance: flux x the kernel / pi (the pi once, below)
           const double hn = -glm::dot(n, dx);
           if (hn > 0.0) far += flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
@@ -437,7 +388,7 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
         }
         const Patch& p = mesh.patches[set.patch[k]];
         double f = gather_form_factor(x, n, p, far_ratio, d2 > set.near_d2[k]);
-        if (f > 0.0 && occluded) f *= gather_visible_fraction(x, n, p, occluded);
+        if (f > 0.0 && visibility) f *= visible_fraction(visibility, x + n * kGatherLift_m, p, kGatherLift_m);
         near += flux[k] / p.area_m2 * f;
       }
     }
@@ -452,96 +403,6 @@ IndirectOptions indirect_options(const Settings& settings) {
   o.quality = settings.quality;
   o.bounces = settings.bounces;
   return o;
-}
-
-IndirectDecision decide_indirect(const Scene& scene) {
-  IndirectDecision d;
-  if (scene.settings.indirect == IndirectMode::off) {
-    d.reason = "skipped: indirect is off in the settings";
-    return d;
-  }
-  bool any = false;
-  for (const auto& r : scene.rooms)
-  {
-    any = any || r.reflectance.floor > 0.0 || r.reflectance.walls > 0.0 ||
-          r.reflectance.ceiling > 0.0;
-    for (const auto& o : r.obstacles) any = any || o.reflectance > 0.0;
-  }
-  if (!any) {
-    d.reason = "skipped: all reflectances are 0";
-    return d;
-  }
-  if (scene.luminaires.empty()) {
-    d.reason = "skipped: no luminaires";
-    return d;
-  }
-  // Integrating-sphere estimate per room: rho Phi / (A (1 - rho)), rho area-weighted.
-  // luminous_flux integrates the whole distribution: once per distinct one.
-  // Phi is the flux entering the room: the part of each opening inside it (emitter_cells.h).
-  std::map<const photometry::IntensityDistribution*, double>& flux_of = d.luminous_flux_lm;
-  std::vector<double> room_flux_lm(scene.rooms.size(), 0.0);
-  for (const auto& lum : scene.luminaires)
-    for (const RoomCells& part : emitter_cells(scene, lum)) {
-      auto [it, fresh] = flux_of.try_emplace(lum.distribution.get(), 0.0);
-      if (fresh) it->second = luminous_flux(*lum.distribution);
-      room_flux_lm[part.room] += part.weight * it->second;
-    }
-  for (size_t r = 0; r < scene.rooms.size(); ++r) {
-    const Room& room = scene.rooms[r];
-    const double flux = room_flux_lm[r];
-    const double rho = mean_reflectance(room);
-    const double area = room_surface_area(room);
-    const double e = rho < 1.0 && area > 0.0 ? rho * flux / (area * (1.0 - rho))
-                                             : std::numeric_limits<double>::infinity();
-    d.estimate_lx = std::max(d.estimate_lx, e);
-  }
-  if (scene.settings.indirect == IndirectMode::on) {
-    d.run = true;
-    d.reason = "on (forced by the settings); integrating-sphere estimate " +
-               fmt("%.4g", d.estimate_lx) + " lx";
-    return d;
-  }
-  // UGR's background luminance is the indirect illuminance at the eye (calc/glare/ugr.h): with
-  // an observers surface reflected light is never skipped as small.
-  for (const auto& s : scene.surfaces) {
-    if (s.kind != geometry::SurfaceGrid::Kind::observers) continue;
-    d.run = true;
-    d.reason = "on: observers surface '" + s.name + "' needs reflected light for UGR's background "
-               "luminance; integrating-sphere estimate " + fmt("%.4g", d.estimate_lx) + " lx";
-    return d;
-  }
-  // Mean direct light on the calculation surfaces, far field, on a sample of points.
-  // The sample points first, then their illuminances in parallel, summed in order.
-  std::vector<std::pair<const geometry::SurfaceGrid*, size_t>> samples;
-  for (const auto& s : scene.surfaces) {
-    const size_t step = std::max<size_t>(1, s.points.size() / kDecisionSamplesPerSurface);
-    for (size_t i = 0; i < s.points.size(); i += step) {
-      if (!s.active.empty() && !s.active[i]) continue;
-      samples.push_back({&s, i});
-    }
-  }
-  std::vector<double> sample_e(samples.size(), 0.0);
-  tbb::parallel_for(size_t(0), samples.size(), [&](size_t k) {
-    const auto& [s, i] = samples[k];
-    double e = 0.0;
-    for (const auto& lum : scene.luminaires) e += far_field_illuminance(lum, s->points[i], s->normals[i]);
-    sample_e[k] = e;
-  });
-  double sum = 0.0;
-  for (double e : sample_e) sum += e;
-  const size_t count = samples.size();
-  d.mean_direct_lx = count ? sum / count : 0.0;
-  if (count > 0 && d.estimate_lx < kAutoSkipFraction * d.mean_direct_lx) {
-    d.reason = "skipped: integrating-sphere estimate " + fmt("%.4g", d.estimate_lx) +
-               " lx is below 1 % of the mean direct illuminance " + fmt("%.4g", d.mean_direct_lx) +
-               " lx";
-    return d;
-  }
-  d.run = true;
-  d.reason = "on: integrating-sphere estimate " + fmt("%.4g", d.estimate_lx) + " lx" +
-             (count ? " against a mean direct illuminance of " + fmt("%.4g", d.mean_direct_lx) + " lx"
-                    : std::string());
-  return d;
 }
 
 IndirectResult compute_indirect(const Scene& scene,
@@ -565,26 +426,17 @@ IndirectResult compute_indirect(const Scene& scene,
   // Visibility: the plan's (the scene's AABB tree, calc/visibility), or nothing blocks.
   size_t obstacle_count = 0;
   for (const auto& room : scene.rooms) obstacle_count += room.obstacles.size();
-  std::vector<OcclusionFn> occlusion(scene.rooms.size());
-  if (const std::shared_ptr<const Visibility> vis = options.visibility) {
-    const OcclusionFn blocked = [vis](const Vec3& a, const Vec3& b) { return !vis->visible(a, b); };
-    const auto boxes = std::make_shared<const std::vector<Box3>>(obstacle_boxes(scene));
-    for (size_t r = 0; r < scene.rooms.size(); ++r) {
-      if (!outline_is_convex(scene.rooms[r])) {
-        occlusion[r] = blocked;
-        continue;
-      }
-      // In a convex room only obstacles can block a segment between two of its points: skip
-      // the tree for segments that miss every obstacle's box (most of them), an exact filter.
-      occlusion[r] = [boxes, blocked](const Vec3& a, const Vec3& b) {
-        for (const auto& box : *boxes)
-          if (segment_meets_box(a, b, box)) return blocked(a, b);
-        return false;
-      };
-    }
+  std::vector<const geometry::Visibility*> room_visibility(scene.rooms.size(), nullptr);
+  std::optional<geometry::BoxFilteredVisibility> obstacles_only;
+  if (const geometry::Visibility* vis = options.visibility.get()) {
+    // In a convex room only obstacles can block a segment between two of its points: skip the
+    // tree for segments that miss every obstacle's box (most of them), an exact filter.
+    obstacles_only.emplace(*vis, obstacle_boxes(scene));
+    for (size_t r = 0; r < scene.rooms.size(); ++r)
+      room_visibility[r] = outline_is_convex(scene.rooms[r]) ? &*obstacles_only : vis;
   }
 
-  const FirstBounce fb = first_bounce(scene, mesh, occlusion, 0.08, &options.luminous_flux_lm);
+  const FirstBounce fb = first_bounce(scene, mesh, room_visibility, 0.08, &options.luminous_flux_lm);
   for (const auto& n : fb.notes) res.notes.push_back(n);
   res.vpls = fb.vpl_count;
   res.emitted_flux_lm = fb.emitted_flux_lm;
@@ -611,7 +463,7 @@ IndirectResult compute_indirect(const Scene& scene,
       none.n = end - begin;
       sol = solve_radiosity(none, rho, incident, 1, tol);
     } else {
-      const FormFactorMatrix F = form_factors(mesh, static_cast<int>(r), occlusion[r], far_ratio);
+      const FormFactorMatrix F = form_factors(mesh, static_cast<int>(r), room_visibility[r], far_ratio);
       res.max_row_correction = std::max(res.max_row_correction, F.max_row_correction);
       sol = solve_radiosity(F, rho, incident, bounces, tol);
     }
@@ -635,7 +487,7 @@ IndirectResult compute_indirect(const Scene& scene,
       const int r = room_containing(scene, grid.points[i], kRoomTolerance_m);
       if (r < 0 || faces_out_of_room(scene.rooms[r], grid.points[i], grid.normals[i])) return;
       const Vec3 x = inset_into_room(scene.rooms[r], grid.points[i]);
-      out[i] = gather_set_point(mesh, gather_sets[r], x, grid.normals[i], far_ratio, occlusion[r]);
+      out[i] = gather_set_point(mesh, gather_sets[r], x, grid.normals[i], far_ratio, room_visibility[r]);
     });
   }
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -645,12 +497,12 @@ IndirectResult compute_indirect(const Scene& scene,
                                    : "converged interreflection (" + std::to_string(res.bounces_run) +
                                          " bounces" + (res.tail_added ? " + geometric tail" : "") + ")";
   res.summary = what + ": " + std::to_string(res.patches) + " patches of " +
-                fmt("%.3g", res.patch_size_m) + " m, " + std::to_string(res.vpls) +
-                " virtual point lights, residual " + fmt("%.2g", res.residual) + "; direct flux on room faces " +
-                fmt("%.6g", res.received_flux_lm) + " lm of " + fmt("%.6g", res.emitted_flux_lm) +
+                format_double("%.3g", res.patch_size_m) + " m, " + std::to_string(res.vpls) +
+                " virtual point lights, residual " + format_double("%.2g", res.residual) + "; direct flux on room faces " +
+                format_double("%.6g", res.received_flux_lm) + " lm of " + format_double("%.6g", res.emitted_flux_lm) +
                 " lm emitted into the rooms" +
                 (res.emitted_flux_lm < res.luminaire_flux_lm * (1.0 - kOutsideFluxFraction)
-                     ? " (of " + fmt("%.6g", res.luminaire_flux_lm) + " lm from the whole openings)"
+                     ? " (of " + format_double("%.6g", res.luminaire_flux_lm) + " lm from the whole openings)"
                      : std::string()) +
                 (options.visibility ? "; visibility: AABB tree of room and obstacle faces" : "") +
                 (obstacle_count ? "; " + std::to_string(obstacle_count) + " obstacle" +

@@ -1,7 +1,7 @@
 #pragma once
 // Reflected light (docs/indirect.md): the public face of calc/indirect.
 //
-//   decide_indirect(scene)                 -> run it or not, and why (for the Plan)
+//   decide_indirect(scene)                 -> run it or not, and why (decision.h; make_plan calls it)
 //   compute_indirect(scene, surfaces, opt) -> E_indirect per point of every surface + a summary
 //
 // Method (docs/indirect.md): rooms are meshed into patches (patches.h); the first bounce
@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "calc/indirect/decision.h"
 #include "calc/indirect/form_factor.h"
 #include "calc/indirect/limits.h"
 #include "calc/indirect/patches.h"
@@ -38,7 +39,7 @@ struct IndirectOptions {
   // What blocks light between two points of the scene: the plan's visibility test (its AABB tree
   // of room and obstacle faces, calc/visibility.h). Null: nothing blocks (make_visibility's
   // verdict for a convex room without obstacles).
-  std::shared_ptr<const Visibility> visibility;
+  std::shared_ptr<const geometry::Visibility> visibility;
   // Luminous flux per distribution already integrated (decide_indirect's), so the first bounce
   // does not integrate the same distributions again; missing ones are computed.
   std::map<const photometry::IntensityDistribution*, double> luminous_flux_lm;
@@ -46,22 +47,6 @@ struct IndirectOptions {
 
 // Options from the project's settings (quality, bounces).
 IndirectOptions indirect_options(const Settings& settings);
-
-struct IndirectDecision {
-  bool run = false;
-  std::string reason;            // "skipped: all reflectances are 0", "on: ...", ...
-  double estimate_lx = 0.0;      // integrating-sphere estimate rho Phi / (A (1 - rho)), max over rooms
-  double mean_direct_lx = 0.0;   // mean far-field direct illuminance on the calculation surfaces
-  // luminous_flux of each distinct distribution of the luminaires inside rooms (for
-  // IndirectOptions::luminous_flux_lm).
-  std::map<const photometry::IntensityDistribution*, double> luminous_flux_lm;
-};
-
-// Auto mode skips indirect light when the integrating-sphere estimate is below this fraction of
-// the mean direct illuminance on the calculation surfaces (1 %: the standard quality's target).
-inline constexpr double kAutoSkipFraction = 0.01;
-
-IndirectDecision decide_indirect(const Scene& scene);
 
 struct IndirectResult {
   std::vector<std::vector<double>> E_indirect_per_surface;  // lx, same order as the surfaces' points

@@ -330,4 +330,14 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
   return mesh;
 }
 
+double visible_fraction(const geometry::Visibility* visibility, const Vec3& from, const Patch& target,
+                        double lift_m) {
+  if (!visibility) return 1.0;
+  const Vec3 lift = target.normal * lift_m;
+  int seen = visibility->visible(from, target.centroid + lift) ? 1 : 0;
+  for (const auto& v : target.polygon)
+    if (visibility->visible(from, 0.5 * (v + target.centroid) + lift)) ++seen;
+  return static_cast<double>(seen) / static_cast<double>(target.polygon.size() + 1);
+}
+
 }  // namespace luxgrid::calc::indirect

@@ -19,6 +19,7 @@
 #include "geometry/polygon.h"
 #include "geometry/polygon3.h"
 #include "calc/scene.h"
+#include "geometry/visibility.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -67,5 +68,11 @@ bool outline_is_convex(const Room& room);
 // Index of the room containing `p` (outline, floor to ceiling, within `tolerance_m` of the
 // boundary), or -1.
 int room_containing(const Scene& scene, const Vec3& p, double tolerance_m = 1e-3);
+
+// Fraction of `target` visible from `from`: its centroid and the midpoints between centroid and
+// each vertex, each lifted off the patch by `lift_m` along its normal (so the patch's own face
+// does not hide them). 1 when `visibility` is null.
+double visible_fraction(const geometry::Visibility* visibility, const Vec3& from, const Patch& target,
+                        double lift_m);
 
 }  // namespace luxgrid::calc::indirect

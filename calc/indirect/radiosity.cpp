@@ -13,10 +13,13 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "calc/indirect/box_bounds.h"
 #include "util/error.h"
 
 namespace luxgrid::calc::indirect {
+
+using geometry::box_distance2;
+using geometry::box_max_height;
+using geometry::box_min_height;
 
 namespace {
 // Shooting points sit this far in front of their patch, so that visibility tests from a wall
@@ -55,18 +58,6 @@ double dot(const float* row, const double* v, size_t b, size_t e) {
 
 // Tile size of the source chunks, in units of the largest patch diameter of a coplanar run.
 constexpr double kChunkTile = 4.0;
-
-
-// Fraction of `target` visible from `from`: its centroid and the midpoints between centroid and
-// each vertex.
-double visible_fraction(const Vec3& from, const Patch& target, const OcclusionFn& occluded) {
-  if (!occluded) return 1.0;
-  const Vec3 lift = target.normal * kShootLift_m;
-  int seen = occluded(from, target.centroid + lift) ? 0 : 1;
-  for (const auto& v : target.polygon)
-    if (!occluded(from, 0.5 * (v + target.centroid) + lift)) ++seen;
-  return static_cast<double>(seen) / static_cast<double>(target.polygon.size() + 1);
-}
 }  // namespace
 
 void* allocate_huge_pages(size_t bytes) {
@@ -84,7 +75,7 @@ void* allocate_huge_pages(size_t bytes) {
   return p;
 }
 
-FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn& occluded,
+FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const geometry::Visibility* visibility,
                               double far_ratio, bool renormalise) {
   FormFactorMatrix F;
   F.begin = mesh.room_begin[room];
@@ -188,7 +179,7 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn
         // Every source's height over the receiver's plane at most kMinPlaneDistance_m: all 0.
         if (!(box_max_height(dn, dc, c.lo, c.hi) > kMinPlaneDistance_m)) continue;
         const Vec3 sn = c.normal;
-        if (!occluded && box_min_height(dn, dc, c.lo, c.hi) > kMinPlaneDistance_m &&
+        if (!visibility && box_min_height(dn, dc, c.lo, c.hi) > kMinPlaneDistance_m &&
             glm::dot(sn, dc) - c.max_offset > 0.0 && box_distance2(dc, c.lo, c.hi) > near_d2) {
           // All far, h_dst > kMinPlaneDistance_m and h_src > 0: the kernel for every source.
           for (size_t k = c.begin; k < c.end; ++k) {
@@ -222,7 +213,7 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn
                                  : -1.0;
             if (f < 0.0) f = point_polygon_form_factor(sc, sn, dst.polygon);
           }
-          if (f > 0.0 && occluded) f *= visible_fraction(sc + sn * kShootLift_m, dst, occluded);
+          if (f > 0.0 && visibility) f *= visible_fraction(visibility, sc + sn * kShootLift_m, dst, kShootLift_m);
           row[j] = static_cast<float>(f);
         }
       }

@@ -29,6 +29,7 @@
 #include "calc/indirect/form_factor.h"
 #include "calc/indirect/limits.h"
 #include "calc/indirect/patches.h"
+#include "geometry/visibility.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -85,7 +86,7 @@ struct FormFactorMatrix {
 // in one branch-free loop. `renormalise`: scale rows to 1 (closed
 // rooms). Throws CalculationError naming the room index when the matrix would exceed
 // kMaxFormFactorMatrixBytes (limits.h), before allocating it.
-FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const OcclusionFn& occluded,
+FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const geometry::Visibility* visibility,
                               double far_ratio, bool renormalise = true);
 
 struct RadiosityResult {

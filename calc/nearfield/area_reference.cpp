@@ -36,7 +36,7 @@ struct Integrand {
   const Emitter* e;
   Receiver what;
   double inv_area;
-  const Occluder* occluder = nullptr;  // per-sample visibility (occluder.h)
+  const geometry::Visibility* occluder = nullptr;  // per-sample visibility (fan_sample.h)
   Vec3 receiver{0.0};                  // unshifted receiver, world: segment end
   Vec3 origin{0.0};                    // shifted receiver, world: origin of `r`
   double operator()(const Vec3& r) const {
@@ -48,7 +48,7 @@ struct Integrand {
     const double value = e->intensity_towards(-w) * weight / d2 * inv_area;
     if (occluder && value != 0.0) {
       const Vec3 p = origin + r;
-      if (!occluder->visible(p + kOccluderInsetRelative * (e->centroid - p), receiver)) return 0.0;
+      if (!occluder->visible(p + kVisibilityInsetRelative * (e->centroid - p), receiver)) return 0.0;
     }
     return value;
   }
@@ -119,13 +119,13 @@ class Cubature {
 
 ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                                       double rel_tol, std::int64_t max_evaluations,
-                                      const Occluder* occluder) {
+                                      const geometry::Visibility* occluder) {
   return reference_illuminance(e, point, Receiver::planar(normal), rel_tol, max_evaluations, occluder);
 }
 
 ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
                                       double rel_tol, std::int64_t max_evaluations,
-                                      const Occluder* occluder) {
+                                      const geometry::Visibility* occluder) {
   ReferenceResult result;
   if (e.is_point()) {
     if (!occluder || occluder->visible(e.centroid, point))

@@ -8,6 +8,7 @@
 #include <glm/mat3x3.hpp>
 
 #include "calc/nearfield/table_cells.h"
+#include "geometry/polygon3.h"
 #include "photometry/intensity_distribution.h"
 #include "photometry/photometry.h"
 #include "util/robust_math.h"
@@ -21,6 +22,9 @@ struct FarFieldBound;  // far_field_bound.h
 inline constexpr int kMaxDiskSegments = 128;
 inline constexpr int kMaxPolygonVertices = kMaxDiskSegments + 2;
 inline constexpr int kDefaultDiskSegments = 32;
+
+// The opening (or its part above a receiver's horizon) on the hot path, relative to a receiver.
+using OpeningPolygon = geometry::FixedPolygon3<kMaxPolygonVertices>;
 
 struct Emitter {
   // Convex, counter-clockwise seen from the emitting side (looking against `normal`). A point

@@ -5,10 +5,23 @@
 #include <cmath>
 #include <limits>
 
-#include "calc/nearfield/occluder.h"
+#include "geometry/visibility.h"
 #include "calc/nearfield/receiver_fan.h"
 
 namespace luxgrid::nearfield {
+
+// How the models test visibility (geometry/visibility.h; calc/direct passes the scene's AABB
+// tree, nullptr means "nothing blocks light" and costs nothing):
+//  - far field: one segment, opening centroid -> receiver (hard shadow);
+//  - paper cubature, subdivided rungs, adaptive / standard: per quadrature node, the radiance of
+//    a node is multiplied by its visibility (0 or 1); the adaptive rung splits first the cells
+//    whose nodes disagree, so the shadow edge converges;
+//  - reference: per cubature sample.
+// Nodes on the opening's boundary are tested from a point moved towards the centroid by
+// kVisibilityInsetRelative of the way, so an opening whose edge lies in a wall or floor (a
+// luminous wall, a panel flush with a ceiling) is not blocked by that very face: without it the
+// segment from an edge node to a receiver on that face runs inside the face's plane.
+inline constexpr double kVisibilityInsetRelative = 1e-6;
 
 struct FanSample {
   Vec3 w{0.0};     // unit direction receiver -> emitter point
@@ -32,14 +45,14 @@ struct SampleContext {
   Vec3 emitter_normal{0.0};        // n_A, world
   double side = 1.0;               // +1 on the emitting side, -1 behind
   double inv_area = 0.0;           // 1 / A, 1/m^2
-  const Occluder* occluder = nullptr;  // optional, per-node visibility (occluder.h)
+  const geometry::Visibility* occluder = nullptr;  // optional, per-node visibility
   Vec3 receiver{0.0};              // the receiver as given (unshifted), world: segment end
   Vec3 shifted_receiver{0.0};      // origin of the relative coordinates `r`, world
   Vec3 origin_to_centroid{0.0};    // emitter centroid relative to shifted_receiver
 
   // `point` is the receiver as the caller gave it (before the horizon shift): the visibility
   // segments end there.
-  SampleContext(const Emitter& e, const ReceiverFan& fan, const Occluder* occ = nullptr,
+  SampleContext(const Emitter& e, const ReceiverFan& fan, const geometry::Visibility* occ = nullptr,
                 const Vec3& point = Vec3(0.0))
       : emitter(&e), normal(fan.normal), inv_area_distance(1.0 / (e.area_m2 * fan.plane_distance)),
         plane_distance(fan.plane_distance), emitter_normal(e.normal), side(fan.front ? 1.0 : -1.0),
@@ -47,9 +60,9 @@ struct SampleContext {
         origin_to_centroid(e.centroid - fan.receiver) {}
 
   // Visibility of the emitter point at `r` (relative to the shifted receiver), tested from a
-  // point inset towards the centroid by kOccluderInsetRelative (occluder.h).
+  // point inset towards the centroid by kVisibilityInsetRelative.
   bool node_visible(const Vec3& r) const {
-    const Vec3 inset = r + kOccluderInsetRelative * (origin_to_centroid - r);
+    const Vec3 inset = r + kVisibilityInsetRelative * (origin_to_centroid - r);
     return occluder->visible(shifted_receiver + inset, receiver);
   }
 

@@ -6,19 +6,24 @@
 
 namespace luxgrid::nearfield {
 
-// Inverse-square law with the cosine of incidence ([Luksch2020, Sec. 2.1], the far-field model): the whole
-// luminaire as a point at the centroid of its opening. A receiver at the centroid itself gets 0
-// (the point model has no answer there; the near-field models do).
+// Inverse-square law with the cosine of incidence ([Luksch2020, Sec. 2.1], the far-field model).
 // The receiver's weight (receiver_kernel.h) replaces the cosine for cylindrical and
 // semi-cylindrical illuminance: E = I(-w) g(w) / d^2.
-double far_field_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver) {
-  const Vec3 r = e.centroid - point;
+double point_source_illuminance(const photometry::IntensityDistribution& distribution,
+                                const glm::dmat3& world_to_local, const Vec3& source, const Vec3& point,
+                                const Receiver& receiver) {
+  const Vec3 r = source - point;
   const double d2 = glm::dot(r, r);
   if (!(d2 > 0.0)) return 0.0;
   const Vec3 w = r / std::sqrt(d2);
   const double weight = receiver_weight(receiver, w);
   if (!(weight > 0.0)) return 0.0;
-  return sanitize_illuminance(e.intensity_towards(-w) * weight / d2);
+  return sanitize_illuminance(distribution.intensity(world_to_local * -w) * weight / d2);
+}
+
+// The whole luminaire as a point at the centroid of its opening.
+double far_field_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver) {
+  return point_source_illuminance(*e.distribution, e.world_to_local, e.centroid, point, receiver);
 }
 
 double far_field_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal) {

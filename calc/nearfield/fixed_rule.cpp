@@ -5,7 +5,7 @@
 
 #include "calc/nearfield/emitter.h"
 #include "calc/nearfield/fan_sample.h"
-#include "calc/nearfield/occluder.h"
+#include "geometry/visibility.h"
 #include "calc/nearfield/receiver_kernel.h"
 
 namespace luxgrid::nearfield {
@@ -74,7 +74,7 @@ FixedRule make_fixed_rule(const std::vector<Vec3>& polygon, double largest_dimen
 }
 
 double fixed_rule_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
-                              const Occluder* occluder) {
+                              const geometry::Visibility* occluder) {
   double sum = 0.0;
   for (std::size_t j = 0; j < e.rule_nodes.size(); ++j) {
     const Vec3 r = point - e.rule_nodes[j];  // node -> receiver

@@ -11,13 +11,13 @@
 // quality's rung, and the run uses the rule only beyond that distance.
 #include <vector>
 
+#include "geometry/visibility.h"
 #include "util/robust_math.h"
 
 namespace luxgrid::nearfield {
 
 struct Emitter;
 struct Receiver;
-class Occluder;
 
 // Cells per largest dimension D of the opening, and at most per axis: a 0.6 m square gets
 // 3 x 3 nodes, a 1.2 x 0.2 m linear opening 4 x 1. Four per D puts a node every quarter of the
@@ -38,6 +38,6 @@ FixedRule make_fixed_rule(const std::vector<Vec3>& polygon_local, double largest
 // Illuminance (lx) by the emitter's fixed rule (Emitter::rule_nodes), finite and >= 0; with an
 // occluder each node is tested (soft shadows at the rule's resolution).
 double fixed_rule_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
-                              const Occluder* occluder = nullptr);
+                              const geometry::Visibility* occluder = nullptr);
 
 }  // namespace luxgrid::nearfield

@@ -33,24 +33,21 @@ std::string to_string(const Model& m) {
     case ModelKind::standard: return "standard";
     case ModelKind::high: return "high";
     case ModelKind::reference: return "reference";
-    case ModelKind::structured_sampling: return "structured sampling";
-    case ModelKind::most_representative_point: return "MRP";
-    case ModelKind::monte_carlo: std::snprintf(buf, sizeof buf, "MC %d", m.level); return buf;
   }
   return "?";
 }
 
 namespace {
 
-// Hard shadow: the one segment from the opening's centroid (far field, study baselines).
-bool centroid_visible(const Emitter& e, const Vec3& point, const Occluder* occ) {
+// Hard shadow: the one segment from the opening's centroid (the far field).
+bool centroid_visible(const Emitter& e, const Vec3& point, const geometry::Visibility* occ) {
   return !occ || occ->visible(e.centroid, point);
 }
 
 }  // namespace
 
 double illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, const Model& m,
-                   const Occluder* occ) {
+                   const geometry::Visibility* occ) {
   // A point opening has no nodes: every model falls back to the far field, so the centroid test.
   if (occ && e.is_point()) return centroid_visible(e, point, occ) ? far_field_illuminance(e, point, normal) : 0.0;
   switch (m.kind) {
@@ -77,21 +74,12 @@ double illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, cons
       return reference_illuminance(e, point, normal, m.tolerance > 0 ? m.tolerance : kDefaultReferenceRelTol,
                                    kReferenceMaxEvaluations, occ)
           .illuminance_lx;
-    default:
-      if (!centroid_visible(e, point, occ)) return 0.0;
-      break;
-  }
-  switch (m.kind) {
-    case ModelKind::structured_sampling: return structured_sampling_illuminance(e, point, normal);
-    case ModelKind::most_representative_point: return mrp_illuminance(e, point, normal);
-    case ModelKind::monte_carlo: return monte_carlo_illuminance(e, point, normal, std::max(1, m.level), m.seed);
-    default: break;
   }
   return 0.0;
 }
 
 double illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver, const Model& m,
-                   const Occluder* occ) {
+                   const geometry::Visibility* occ) {
   if (receiver.kind == ReceiverKind::planar) return illuminance(e, point, receiver.direction, m, occ);
   if (e.is_point() || m.kind == ModelKind::far_field)
     return centroid_visible(e, point, occ) ? far_field_illuminance(e, point, receiver) : 0.0;
@@ -131,12 +119,12 @@ SwitchWeights switch_weights(const Emitter& e, const Vec3& point) {
 double far_field_weight(const Emitter& e, const Vec3& point) { return switch_weights(e, point).far; }
 
 double hybrid_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                          const Model& near_model, NearFieldSwitch mode, const Occluder* occ) {
+                          const Model& near_model, NearFieldSwitch mode, const geometry::Visibility* occ) {
   return hybrid_illuminance(e, point, Receiver::planar(normal), near_model, mode, occ);
 }
 
 double hybrid_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
-                          const Model& near_model, NearFieldSwitch mode, const Occluder* occ) {
+                          const Model& near_model, NearFieldSwitch mode, const geometry::Visibility* occ) {
   const Model far = Model::far_field();
   if (mode == NearFieldSwitch::never) return illuminance(e, point, receiver, far, occ);
   if (mode == NearFieldSwitch::always) return illuminance(e, point, receiver, near_model, occ);

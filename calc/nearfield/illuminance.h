@@ -1,12 +1,12 @@
 #pragma once
 // The one entry point the rest of luxgrid calls for direct light from one luminaire at one
-// receiver point, optionally with occlusion (occluder.h: per quadrature node, soft shadows), and
+// receiver point, optionally with occlusion (geometry/visibility.h, tested per quadrature node: soft shadows), and
 // the near/far switch (an error bound per emitter, far_field_bound.h, or the five-times rule).
 #include <cstdint>
 #include <string>
 
 #include "calc/nearfield/emitter.h"
-#include "calc/nearfield/occluder.h"
+#include "geometry/visibility.h"
 #include "calc/nearfield/receiver_kernel.h"
 
 namespace luxgrid::nearfield {
@@ -21,16 +21,14 @@ enum class ModelKind {
   high,            // quality high: the table rung for a measured table (exact to its
                    // interpolant), else the adaptive rung at 1e-3
   reference,       // converged area-form integrator, tolerance `tolerance` (quality reference)
-  structured_sampling,        // study baselines (Sec. 4)
-  most_representative_point,
-  monte_carlo,                // `level` samples
 };
+// The baselines of [Luksch2020, Sec. 4] (structured sampling, the most representative point,
+// Monte Carlo) are research models of the accuracy study, not rungs: study/baselines.h.
 
 struct Model {
   ModelKind kind = ModelKind::standard;
-  int level = 0;           // subdivision k (4^k triangles per fan triangle) or MC samples
+  int level = 0;           // subdivision k (4^k triangles per fan triangle)
   double tolerance = 0.0;  // relative; adaptive and reference (0 = the model's default)
-  std::uint64_t seed = 1;  // Monte Carlo
 
   static Model far_field() { return {ModelKind::far_field}; }
   static Model paper_cubature() { return {ModelKind::paper_cubature}; }
@@ -40,11 +38,6 @@ struct Model {
   static Model standard() { return {ModelKind::standard}; }
   static Model high() { return {ModelKind::high}; }
   static Model reference(double rel_tol = 0.0) { return {ModelKind::reference, 0, rel_tol}; }
-  static Model structured_sampling() { return {ModelKind::structured_sampling}; }
-  static Model most_representative_point() { return {ModelKind::most_representative_point}; }
-  static Model monte_carlo(int samples, std::uint64_t seed = 1) {
-    return {ModelKind::monte_carlo, samples, 0.0, seed};
-  }
 };
 
 // A short name for tables and results ("paper", "lambert k=2", "adaptive 1e-3", ...).
@@ -54,10 +47,10 @@ std::string to_string(const Model& model);
 // >= 0. Light reaches the receiver only from above its horizon; the opening emits from both
 // faces with L = I / (A |cos|), so upward intensity reaches receivers behind the opening.
 // `occluder` (optional): the paper cubature, subdivided, adaptive, standard and reference models
-// test visibility per node / sample (soft shadows); the far field and the study baselines test
+// test visibility per node / sample (soft shadows); the far field tests
 // the one segment from the opening's centroid (hard shadows). nullptr costs nothing.
 double illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal,
-                   const Model& model, const Occluder* occluder = nullptr);
+                   const Model& model, const geometry::Visibility* occluder = nullptr);
 
 // The same for any receiver (receiver_kernel.h): a plane is the function above; cylindrical and
 // semi-cylindrical illuminance integrate the receiver's weight over the opening with the same
@@ -66,9 +59,9 @@ double illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal
 // (reference_illuminance) at the rung's tolerance: standard kStandardAreaFormRelTol, high and
 // adaptive 1e-3 (or the model's), reference 1e-6 (or the model's). The Lambert-exact rungs
 // (two-kernel, Duffy-sinh, paper, subdivided) rest on closed forms of the planar kernel and have
-// no cylindrical form; the paper, subdivided and study models get the area form at 1e-3.
+// no cylindrical form; the paper and subdivided models get the area form at 1e-3.
 double illuminance(const Emitter& emitter, const Vec3& point, const Receiver& receiver,
-                   const Model& model, const Occluder* occluder = nullptr);
+                   const Model& model, const geometry::Visibility* occluder = nullptr);
 
 // Weight of the far-field model at `point`, blended so the near/far switch draws no seam on an
 // isolux plot (smoothstep: continuous value and slope). With an error bound (emitter.far_bound,
@@ -100,11 +93,11 @@ enum class NearFieldSwitch { automatic, always, never };
 // `occluder` as in illuminance(): the far-field part uses the centroid segment.
 double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal,
                           const Model& near_model, NearFieldSwitch mode = NearFieldSwitch::automatic,
-                          const Occluder* occluder = nullptr);
+                          const geometry::Visibility* occluder = nullptr);
 // The same for any receiver: cylindrical and semi-cylindrical illuminance take the same
 // near/far decision as planar.
 double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Receiver& receiver,
                           const Model& near_model, NearFieldSwitch mode = NearFieldSwitch::automatic,
-                          const Occluder* occluder = nullptr);
+                          const geometry::Visibility* occluder = nullptr);
 
 }  // namespace luxgrid::nearfield

@@ -22,7 +22,7 @@ inline int grid_index(int i, int j, int n) { return j * (n + 1) - j * (j - 1) / 
 }  // namespace
 
 double subdivided_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, int n,
-                              TriangleRule rule, const Occluder* occluder) {
+                              TriangleRule rule, const geometry::Visibility* occluder) {
   if (e.is_point())
     return !occluder || occluder->visible(e.centroid, point) ? far_field_illuminance(e, point, normal) : 0.0;
   n = std::max(1, n);
@@ -114,7 +114,7 @@ class GlobalRefiner {
 // Globally adaptive: always split the cell with the largest indicator, until the summed
 // indicators are below rel_tol times the estimate or the lookup budget is spent.
 double adaptive_fan(const Emitter& e, const Vec3& point, const Vec3& normal, double rel_tol,
-                    TriangleRule rule, double* error_lx, int* samples, const Occluder* occluder,
+                    TriangleRule rule, double* error_lx, int* samples, const geometry::Visibility* occluder,
                     int max_splits = kMaxAdaptiveSplits) {
   if (error_lx) *error_lx = 0.0;
   if (samples) *samples = 0;
@@ -182,13 +182,13 @@ double adaptive_fan(const Emitter& e, const Vec3& point, const Vec3& normal, dou
 }  // namespace
 
 double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                            double rel_tol, double* error_lx, const Occluder* occluder) {
+                            double rel_tol, double* error_lx, const geometry::Visibility* occluder) {
   return adaptive_fan(e, point, normal, rel_tol, TriangleRule::two_kernel, error_lx, nullptr, occluder);
 }
 
 double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                             double rel_tol, TriangleRule rule, double* error_lx, int* samples,
-                            const Occluder* occluder) {
+                            const geometry::Visibility* occluder) {
   return adaptive_fan(e, point, normal, rel_tol, rule, error_lx, samples, occluder);
 }
 
@@ -354,7 +354,7 @@ double sinh_adaptive(const Emitter& e, const Vec3& point, const Vec3& normal, do
   for (int i = 0; i < fan.triangles; ++i) {
     if (!(tri_qg[i] > 0.0)) continue;
     const SinhTriangle& T = tris[i];
-    const double projected = triangle_projected_solid_angle(glm::normalize(T.a), glm::normalize(T.b),
+    const double projected = geometry::triangle_projected_solid_angle(glm::normalize(T.a), glm::normalize(T.b),
                                                             glm::normalize(T.c), normal);
     sum += tri_qi[i] * inv_area * projected / tri_qg[i];
   }
@@ -392,7 +392,7 @@ inline constexpr double kStandardAreaFormStart = 0.75;  // x largest dimension
 // kStandardAreaFormRelTol (models.h): the far tier's area-form tolerance.
 
 double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                            const Occluder* occluder) {
+                            const geometry::Visibility* occluder) {
   // A measured table (every photometric file of type C): the table rung, whose cells are the
   // table's own, so its kinks never sit inside a cell (table_cubature.cpp). On the paper's
   // protocol it is within 1.2e-4 of the cell maximum of the reference at every point and costs

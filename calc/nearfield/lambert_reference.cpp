@@ -1,10 +1,11 @@
-// Exact illuminance from a uniform (Lambertian) polygon: Lambert's formula, the "sum over edges
-// of angle times cosine" (Baum et al. 1989), on the polygon clipped by the receiver's horizon.
+// Exact illuminance from a uniform (Lambertian) polygon: L times the projected solid angle of the
+// polygon clipped by the receiver's horizon (Lambert's formula [Baum1989, Eq. 2],
+// geometry/spherical.h).
 #include <cmath>
 
 #include "calc/nearfield/fan_sample.h"
 #include "calc/nearfield/models.h"
-#include "calc/nearfield/spherical.h"
+#include "geometry/spherical.h"
 
 namespace luxgrid::nearfield {
 
@@ -12,16 +13,9 @@ double lambert_uniform_illuminance(const Emitter& e, const Vec3& point, const Ve
                                    double luminance_cd_m2) {
   if (e.is_point()) return 0.0;
   if (!(glm::dot(point - e.centroid, e.normal) > 0.0)) return 0.0;  // only the emitting side
-  const SmallPolygon poly = clip_to_horizon(e, point, normal);
-  if (poly.n < 3) return 0.0;
-  std::array<Vec3, kMaxPolygonVertices> u;
-  for (int i = 0; i < poly.n; ++i) {
-    const double d = glm::length(poly.v[i]);
-    u[i] = d > 0.0 ? poly.v[i] / d : Vec3(0.0);
-  }
-  Vec3 sum{0.0};
-  for (int i = 0; i < poly.n; ++i) sum += lambert_edge(u[i], u[(i + 1) % poly.n]);
-  return sanitize_illuminance(luminance_cd_m2 * 0.5 * std::abs(glm::dot(normal, sum)));
+  const OpeningPolygon poly = clip_to_horizon(e, point, normal);
+  return sanitize_illuminance(luminance_cd_m2 *
+                              geometry::projected_solid_angle(poly.v.data(), poly.n, normal));
 }
 
 }  // namespace luxgrid::nearfield

@@ -1,16 +1,26 @@
 #pragma once
 // The emitter models of the near-field ladder, each a plain function of (emitter, receiver point,
 // receiver unit normal) -> illuminance in lux. Most callers use illuminance() in
-// calc/nearfield/illuminance.h instead; these are public for tests, benchmarks and the study.
-// `occluder` (optional, occluder.h) multiplies each quadrature node's radiance by its
+// calc/nearfield/illuminance.h instead; these are public for tests, benchmarks and the accuracy study (study/).
+// `occluder` (optional, geometry/visibility.h) multiplies each quadrature node's radiance by its
 // visibility; nullptr (the default) is free.
 #include <cstdint>
 
 #include "calc/nearfield/emitter.h"
-#include "calc/nearfield/occluder.h"
 #include "calc/nearfield/receiver_kernel.h"
+#include "geometry/visibility.h"
 
 namespace luxgrid::nearfield {
+
+// The inverse-square law of a point source at `source` (m, world) with the distribution turned
+// into the world by `world_to_local` (R^T of the luminaire's rotation R): E = I(-w) g(w) / d^2,
+// w the unit direction from the receiver at `point` to the source and g the receiver's weight
+// (receiver_kernel.h; cos(theta_x) for a plane). Finite and >= 0; a receiver at the source
+// itself gets 0 (the point model has no answer there). The one copy of the far-field formula:
+// the far-field model below and calc/direct's luminaire form call it.
+double point_source_illuminance(const photometry::IntensityDistribution& distribution,
+                                const glm::dmat3& world_to_local, const Vec3& source, const Vec3& point,
+                                const Receiver& receiver);
 
 // Far-field point at the emitter centroid: E = I(-w) cos(theta_x) / d^2, finite and >= 0.
 double far_field_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal);
@@ -22,9 +32,9 @@ double far_field_illuminance(const Emitter& e, const Vec3& point, const Receiver
 // `shift_m` is the horizon epsilon shift; pass horizon_shift_m(e) (the default below) — other
 // values exist for the hard-case tests. Not sanitized: returns NaN where the method breaks.
 double paper_cubature_raw(const Emitter& e, const Vec3& point, const Vec3& normal, double shift_m,
-                          const Occluder* occluder = nullptr);
+                          const geometry::Visibility* occluder = nullptr);
 double paper_cubature_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                                  const Occluder* occluder = nullptr);
+                                  const geometry::Visibility* occluder = nullptr);
 
 // How one (sub)triangle of the fan is integrated.
 enum class TriangleRule {
@@ -40,7 +50,7 @@ enum class TriangleRule {
 // Every fan triangle split into n x n similar triangles in the emitter plane (n = 2^k gives the
 // issue's "subdivided k times", 4^k triangles), each integrated by `rule`.
 double subdivided_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, int n,
-                              TriangleRule rule, const Occluder* occluder = nullptr);
+                              TriangleRule rule, const geometry::Visibility* occluder = nullptr);
 
 // Adaptive rung (two-kernel rule unless given): globally adaptive, the triangle whose estimate
 // differs most from the sum of its four children's (edge-midpoint split) is split first, until
@@ -50,11 +60,11 @@ double subdivided_illuminance(const Emitter& e, const Vec3& point, const Vec3& n
 // at least half its value as error indicator, so the shadow edge is refined until it converges.
 double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                             double rel_tol, double* error_lx = nullptr,
-                            const Occluder* occluder = nullptr);
+                            const geometry::Visibility* occluder = nullptr);
 // The same with a chosen rule; `samples` (optional) receives the number of intensity lookups.
 double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                             double rel_tol, TriangleRule rule, double* error_lx, int* samples,
-                            const Occluder* occluder = nullptr);
+                            const geometry::Visibility* occluder = nullptr);
 
 // The tolerance of standard's area-form tier (ladder.cpp) and of standard's cylindrical and
 // semi-cylindrical illuminance where no table rung applies (illuminance.cpp): the 7-point rule's
@@ -64,7 +74,7 @@ inline constexpr double kStandardAreaFormRelTol = 3e-3;
 
 // quality "standard": see docs/nearfield.md. Within 1 % of the reference on the paper's protocol.
 double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                            const Occluder* occluder = nullptr);
+                            const geometry::Visibility* occluder = nullptr);
 
 // The table rung (docs/nearfield.md, "The table rung"), calc/nearfield/table_cubature.cpp: for
 // a distribution with a TableView (a type C table, possibly scaled), the area form in polar
@@ -99,22 +109,11 @@ struct ReferenceResult {
 // error estimate sees the discontinuity and refines along the shadow edge).
 ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                                       double rel_tol = 1e-7, std::int64_t max_evaluations = 4'000'000,
-                                      const Occluder* occluder = nullptr);
+                                      const geometry::Visibility* occluder = nullptr);
 // The same for any receiver (receiver_kernel.h): the integrand's cos_r becomes the receiver's
 // weight g(w); a cylinder has no horizon, so the fan covers the whole opening.
 ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
                                       double rel_tol = 1e-7, std::int64_t max_evaluations = 4'000'000,
-                                      const Occluder* occluder = nullptr);
-
-// Study-only baselines (Sec. 4 of the paper) ------------------------------------------------
-// Structured sampling (Eq. 4): corners of the clipped polygon + its centre, Omega/N sum L G.
-double structured_sampling_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal);
-// Most representative point (Drobot 2014 as adapted in Sec. 4.2): L_e at MRP times the exact
-// projected solid angle of the clipped polygon.
-double mrp_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal);
-// Monte Carlo with `samples` stratified solid-angle samples (Arvo 1995 spherical-triangle
-// sampling over the fan), seeded by `seed` — unbiased, noisy.
-double monte_carlo_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                               int samples, std::uint64_t seed);
+                                      const geometry::Visibility* occluder = nullptr);
 
 }  // namespace luxgrid::nearfield

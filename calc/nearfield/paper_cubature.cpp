@@ -1,12 +1,12 @@
-// The Luksch et al. 2020 cubature as published (Sec. 5.2, Eq. 10), on the fan of receiver_fan.
+// The cubature as published [Luksch2020, Sec. 5.2, Eq. 10], on the fan of receiver_fan.
 #include "calc/nearfield/fan_sample.h"
 #include "calc/nearfield/models.h"
-#include "calc/nearfield/spherical.h"
+#include "calc/nearfield/triangle_rule.h"
 
 namespace luxgrid::nearfield {
 
 double paper_cubature_raw(const Emitter& e, const Vec3& point, const Vec3& normal, double shift_m,
-                          const Occluder* occluder) {
+                          const geometry::Visibility* occluder) {
   if (e.is_point()) return far_field_illuminance(e, point, normal);
   const ReceiverFan fan = build_fan(e, point, normal, shift_m);
   if (fan.triangles == 0) return 0.0;
@@ -19,16 +19,14 @@ double paper_cubature_raw(const Emitter& e, const Vec3& point, const Vec3& norma
   double sum = 0.0;
   for (int i = 0; i < fan.triangles; ++i) {
     const FanSample next = (closed && i + 1 == fan.triangles) ? first : sample(fan.rim[i + 1]);
-    // Eq. 10: product of the averages of L and G, weighted by the spherical excess (Eq. 11).
-    sum += (apex.L + prev.L + next.L) / 3.0 * ((apex.G + prev.G + next.G) / 3.0) *
-           triangle_solid_angle(apex.w, prev.w, next.w);
+    sum += paper_triangle(apex, prev, next);  // [Luksch2020, Eq. 10]
     prev = next;
   }
   return sum;
 }
 
 double paper_cubature_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                                  const Occluder* occluder) {
+                                  const geometry::Visibility* occluder) {
   return sanitize_illuminance(paper_cubature_raw(e, point, normal, horizon_shift_m(e), occluder));
 }
 

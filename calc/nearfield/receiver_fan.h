@@ -26,12 +26,6 @@ inline double horizon_shift_m(const Emitter& e) {
   return kHorizonShiftRelative * e.largest_dimension_m;
 }
 
-// A small convex polygon in receiver-relative coordinates (vertex - receiver), fixed capacity.
-struct SmallPolygon {
-  std::array<Vec3, kMaxPolygonVertices> v;
-  int n = 0;
-};
-
 enum class ClosestPointCase { none, inside, edge, vertex };
 
 // Triangle fan around the closest point. Triangle i = (apex, rim[i], rim[i + 1]), i < triangles.
@@ -48,9 +42,9 @@ struct ReceiverFan {
 };
 
 // Clips the emitter polygon by the horizon plane {p : (p - point) . normal >= 0}, in
-// coordinates relative to `point`. Sutherland-Hodgman; a vertex exactly on the plane is kept
-// once. Fewer than three vertices means nothing is visible.
-SmallPolygon clip_to_horizon(const Emitter& e, const Vec3& point, const Vec3& normal);
+// coordinates relative to `point` (geometry::clip_to_half_space_relative). Fewer than three
+// vertices means nothing is visible.
+OpeningPolygon clip_to_horizon(const Emitter& e, const Vec3& point, const Vec3& normal);
 
 // The receiver moved off the emitter's plane by the horizon shift when closer than `shift_m`
 // (0 disables it), on its own side (the emitting side when exactly in the plane).

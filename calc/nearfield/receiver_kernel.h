@@ -5,7 +5,7 @@
 //   E = I * receiver_weight(receiver, u) / d^2,
 // and an area source the integral of (I / A) * receiver_weight(receiver, u) / d^2 over its
 // opening (the area form with L dA cos_e = I dA / A, Luksch et al. 2020 Eq. 1-2). The far field
-// (cylindrical.cpp), the table rung (table_cubature.cpp) and the area-form reference
+// (far_field.cpp), the table rung (table_cubature.cpp) and the area-form reference
 // (area_reference.cpp) all call receiver_weight, so the formulas live here only.
 #include <algorithm>
 #include <cmath>

@@ -188,7 +188,7 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiv
   if (!view.table || e.is_point() || !e.table_cells || e.table_cells->table != view.table) return false;
   lux = 0.0;
   const ShiftedReceiver shifted = shift_off_emitter_plane(e, point, horizon_shift_m(e));
-  const SmallPolygon clipped = clip_to_horizon(e, shifted.point, receiver.horizon_normal());
+  const OpeningPolygon clipped = clip_to_horizon(e, shifted.point, receiver.horizon_normal());
   if (clipped.n < 3) return true;
 
   // Luminaire frame, origin at the (shifted) receiver: a vertex's x, y are its offset from F,

@@ -2,9 +2,17 @@
 // The per-triangle quadrature rules of the ladder (see models.h, TriangleRule).
 #include "calc/nearfield/fan_sample.h"
 #include "calc/nearfield/models.h"
-#include "calc/nearfield/spherical.h"
+#include "geometry/spherical.h"
 
 namespace luxgrid::nearfield {
+
+// [Luksch2020, Eq. 10] without rho / pi (illuminance, not reflected radiance): the product of
+// the averages of L and G over the triangle's three nodes, weighted by its solid angle (the
+// spherical excess, [Luksch2020, Eq. 11]). The paper cubature and the `paper` rule of the
+// subdivided rungs call it.
+inline double paper_triangle(const FanSample& a, const FanSample& b, const FanSample& c) {
+  return (a.L + b.L + c.L) / 3.0 * ((a.G + b.G + c.G) / 3.0) * geometry::triangle_solid_angle(a.w, b.w, c.w);
+}
 
 // L average that is exact when both L and the area-form weight rho = cos_r cos_e / d^2 are
 // linear over the planar triangle: with barycentric lambda_i, int lambda_i lambda_j dA =
@@ -28,7 +36,7 @@ inline double isotropic_kernel(const FanSample& a, const FanSample& b, const Fan
                                const Vec3& normal, const Vec3& plane_normal, double side) {
   const Vec3 area2 = glm::cross(b.r - a.r, c.r - a.r);
   const double orient = glm::dot(area2, plane_normal) >= 0.0 ? 1.0 : -1.0;
-  Vec3 v = -side * triangle_solid_angle(a.w, b.w, c.w) * plane_normal;
+  Vec3 v = -side * geometry::triangle_solid_angle(a.w, b.w, c.w) * plane_normal;
   const FanSample* p[3] = {&a, &b, &c};
   for (int i = 0; i < 3; ++i) {
     const FanSample& u = *p[i];
@@ -61,7 +69,7 @@ inline double two_kernel_estimate(const FanSample& a, const FanSample& b, const 
   const double alpha = sxx > kMinRelativeCosSpread2 * cm * cm ? sxy / sxx : 0.0;
   const double beta = im - alpha * cm;
   double e = 0.0;
-  if (alpha != 0.0) e += alpha * triangle_projected_solid_angle(a.w, b.w, c.w, normal);
+  if (alpha != 0.0) e += alpha * geometry::triangle_projected_solid_angle(a.w, b.w, c.w, normal);
   if (beta != 0.0) e += beta * isotropic_kernel(a, b, c, normal, plane_normal, side);
   return std::max(0.0, e * inv_area);
 }
@@ -71,13 +79,11 @@ inline double triangle_estimate(const FanSample& a, const FanSample& b, const Fa
   const Vec3& normal = ctx.normal;
   switch (rule) {
     case TriangleRule::paper:
-      // Luksch et al. 2020 Eq. 10 (without rho/pi: illuminance, not reflected radiance).
-      return (a.L + b.L + c.L) / 3.0 * ((a.G + b.G + c.G) / 3.0) *
-             triangle_solid_angle(a.w, b.w, c.w);
+      return paper_triangle(a, b, c);
     case TriangleRule::lambert_mean:
-      return (a.L + b.L + c.L) / 3.0 * triangle_projected_solid_angle(a.w, b.w, c.w, normal);
+      return (a.L + b.L + c.L) / 3.0 * geometry::triangle_projected_solid_angle(a.w, b.w, c.w, normal);
     case TriangleRule::lambert_product:
-      return product_average(a, b, c) * triangle_projected_solid_angle(a.w, b.w, c.w, normal);
+      return product_average(a, b, c) * geometry::triangle_projected_solid_angle(a.w, b.w, c.w, normal);
     case TriangleRule::two_kernel:
       return two_kernel_estimate(a, b, c, normal, ctx.emitter_normal, ctx.side, ctx.inv_area);
   }

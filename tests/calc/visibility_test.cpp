@@ -26,8 +26,8 @@ Scene scene_from(const std::string& rooms, const std::string& lamp) {
 const char* kLRoom = R"([ { "name": "L", "outline": [[0,0],[6,0],[6,3],[3,3],[3,6],[0,6]], "height": 3 } ])";
 
 // E with visibility, as the direct calculation will form it.
-double shadowed(const Visibility* vis, const Luminaire& lum, const Vec3& p) {
-  if (vis && !vis->visible(lum.pose.position, p)) return 0.0;
+double shadowed(const geometry::Visibility* vis, const Luminaire& lum, const Vec3& p) {
+  if (geometry::blocked(vis, lum.pose.position, p)) return 0.0;
   return far_field_illuminance(lum, p, Vec3(0, 0, 1));
 }
 

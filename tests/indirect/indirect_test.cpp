@@ -103,12 +103,8 @@ double area_weighted(const std::vector<SurfaceGrid>& grids, const std::vector<st
 }
 
 // The scene's visibility test (the AABB tree of its room and obstacle faces), as the plan makes it.
-std::shared_ptr<const Visibility> tree_of(const Scene& s) {
-  return std::make_shared<const Visibility>(scene_faces(s));
-}
-OcclusionFn tree_occlusion(const Scene& s) {
-  auto vis = tree_of(s);
-  return [vis](const Vec3& a, const Vec3& b) { return !vis->visible(a, b); };
+std::shared_ptr<const geometry::OcclusionTree> tree_of(const Scene& s) {
+  return std::make_shared<const geometry::OcclusionTree>(scene_faces(s));
 }
 
 // Patch-level indirect irradiance averaged over the whole room: indirect flux received / area.
@@ -117,9 +113,10 @@ struct PatchLevel {
 };
 PatchLevel patch_level(const Scene& scene, double size, int bounces) {
   const PatchMesh mesh = build_patch_mesh(scene, size);
-  std::vector<OcclusionFn> occ(scene.rooms.size());
+  const auto tree = tree_of(scene);
+  std::vector<const geometry::Visibility*> occ(scene.rooms.size(), nullptr);
   for (size_t r = 0; r < scene.rooms.size(); ++r)
-    if (!outline_is_convex(scene.rooms[r])) occ[r] = tree_occlusion(scene);
+    if (!outline_is_convex(scene.rooms[r])) occ[r] = tree.get();
   const FirstBounce fb = first_bounce(scene, mesh, occ);
   const FormFactorMatrix F = form_factors(mesh, 0, occ[0], 5.0);
   std::vector<double> rho;
@@ -284,8 +281,9 @@ TEST(FirstBounce, ClosedRoomsReceiveTheWholeFlux) {
       Luminaire lum = which == 0 ? isotropic_at(pos, 10000.0) : lambertian_at(pos, 1000.0);
       const Scene s = scene_of(room, {lum});
       const PatchMesh m = build_patch_mesh(s, 0.5);
-      std::vector<OcclusionFn> occ(1);
-      if (!outline_is_convex(room)) occ[0] = tree_occlusion(s);
+      const auto tree = tree_of(s);
+      std::vector<const geometry::Visibility*> occ(1, nullptr);
+      if (!outline_is_convex(room)) occ[0] = tree.get();
       const FirstBounce fb = first_bounce(s, m, occ);
       const double emitted = luminous_flux(*lum.distribution);
       EXPECT_NEAR(fb.emitted_flux_lm, emitted, 1e-9 * emitted);
@@ -313,7 +311,7 @@ TEST(FirstBounce, PatchFluxMatchesDirectIlluminanceOnPatch) {
   const Luminaire lum = lambertian_at({1.3, 1.7, 2.9}, 1000.0);
   const Scene s = scene_of(box_room(4, 4, 3, 0.5, 0.5, 0.5), {lum});
   const PatchMesh m = build_patch_mesh(s, 0.5);
-  const FirstBounce fb = first_bounce(s, m, {OcclusionFn{}});
+  const FirstBounce fb = first_bounce(s, m, {nullptr});
   double worst = 0.0;
   for (size_t i = 0; i < m.patches.size(); i += 7) {
     const Patch& p = m.patches[i];
@@ -664,7 +662,8 @@ TEST(Obstacles, EnergyBalanceInClosedBoxWithObstacles) {
   // The geometry (mesh, direct flux, form factors) does not depend on rho: built once.
   Scene s = box_with_obstacles(0.5, {2.3, 1.8, 2.5});
   PatchMesh mesh = build_patch_mesh(s, 0.3);
-  const std::vector<OcclusionFn> occ = {tree_occlusion(s)};
+  const auto tree = tree_of(s);
+  const std::vector<const geometry::Visibility*> occ = {tree.get()};
   FirstBounce fb = first_bounce(s, mesh, occ);
   const FormFactorMatrix F = form_factors(mesh, 0, occ[0], 5.0);
   double vpl = 0.0, rho_received = 0.0;
@@ -706,8 +705,8 @@ TEST(Obstacles, TableShadowsTheFloorInTheFirstBounce) {
   const Vec3 lum(2, 2, 2.5);
   const Scene with = box_with_obstacles(0.5, lum), without = box_with_obstacles(0.5, lum, false);
   const PatchMesh mw = build_patch_mesh(with, 0.25), mo = build_patch_mesh(without, 0.25);
-  const FirstBounce fw = first_bounce(with, mw, {tree_occlusion(with)});
-  const FirstBounce fo = first_bounce(without, mo, {OcclusionFn{}});
+  const FirstBounce fw = first_bounce(with, mw, {tree_of(with).get()});
+  const FirstBounce fo = first_bounce(without, mo, {nullptr});
   auto under_table = [](const PatchMesh& m, const FirstBounce& fb) {
     double flux = 0.0;
     for (size_t i = 0; i < m.patches.size(); ++i) {
@@ -762,7 +761,7 @@ TEST(SphereLikeRoom, FirstBounceIsNearlyUniform) {
   // Off-centre, so that the direct light is far from uniform.
   const Scene s = scene_of(r, {isotropic_at({0.9, 0.4, 3.0}, 10000.0)});
   const PatchMesh mesh = build_patch_mesh(s, 0.25);
-  const FirstBounce fb = first_bounce(s, mesh, {OcclusionFn{}});
+  const FirstBounce fb = first_bounce(s, mesh, {nullptr});
   const FormFactorMatrix F = form_factors(mesh, 0, {}, 5.0);
   // Per face: direct and first-bounce indirect irradiance (flux received / area).
   std::map<std::pair<int, int>, std::array<double, 3>> faces;  // direct lm, indirect lm, area

@@ -98,7 +98,7 @@ double exact_area(const std::vector<XPoint>& p) {
   return 0.5 * std::sqrt(to_d(s.squared_length()));
 }
 
-double fast_area(const SmallPolygon& p) {
+double fast_area(const OpeningPolygon& p) {
   if (p.n < 3) return 0.0;
   Vec3 s(0.0);
   for (int i = 1; i + 1 < p.n; ++i) s += glm::cross(p.v[i] - p.v[0], p.v[i + 1] - p.v[0]);
@@ -153,7 +153,7 @@ void check_against_exact(const Emitter& e, const Vec3& point, const Vec3& normal
   SCOPED_TRACE(what);
   const double L = e.largest_dimension_m;
   const double tol = kLengthTol * std::max(L, glm::length(e.centroid - point));
-  const SmallPolygon fast = clip_to_horizon(e, point, normal);
+  const OpeningPolygon fast = clip_to_horizon(e, point, normal);
   ASSERT_LE(fast.n, kMaxPolygonVertices);
   ASSERT_LE(fast.n, static_cast<int>(e.vertices.size()) + 1) << "a convex clip adds one vertex";
   const std::vector<XPoint> exact = exact_clip(e, point, normal);
@@ -290,7 +290,7 @@ TEST(HotPathVsCgal, PlaneAlongAnEdge) {
     }
   }
   // Through the two middle vertices (z = 2): the clip keeps them once each.
-  const SmallPolygon half = clip_to_horizon(e, Vec3(1.0, 1.0, 2.0), Vec3(0.0, 0.0, 1.0));
+  const OpeningPolygon half = clip_to_horizon(e, Vec3(1.0, 1.0, 2.0), Vec3(0.0, 0.0, 1.0));
   EXPECT_EQ(half.n, 4);
 }
 
@@ -302,7 +302,7 @@ TEST(HotPathVsCgal, PolygonInTheHorizonPlane) {
     const Vec3 up(0.0, 0.0, 1.0);
     const Emitter e = polygon_emitter(random_convex_polygon(rng, n, Vec3(0.0, 0.0, 3.0), up, 1.0), up);
     for (const Vec3& point : {Vec3(0.0, 0.0, 3.0), Vec3(5.0, 1.0, 3.0)}) {
-      const SmallPolygon p = clip_to_horizon(e, point, up);
+      const OpeningPolygon p = clip_to_horizon(e, point, up);
       EXPECT_EQ(p.n, n);
       check_against_exact(e, point, up, "coplanar n=" + std::to_string(n));
       check_against_exact(e, point, -up, "coplanar, facing away, n=" + std::to_string(n));
@@ -321,7 +321,7 @@ TEST(HotPathVsCgal, TiltedPolygonNearlyInTheHorizonPlaneStaysInCapacity) {
     const Vec3 en = random_unit(rng);
     const Vec3 centre(1.25, -0.5, 2.0);
     const Emitter e = polygon_emitter(random_convex_polygon(rng, kMaxDiskSegments, centre, en, 1.0), en);
-    const SmallPolygon p = clip_to_horizon(e, e.vertices[5], en);
+    const OpeningPolygon p = clip_to_horizon(e, e.vertices[5], en);
     ASSERT_LE(p.n, static_cast<int>(e.vertices.size()) + 1) << "trial " << trial;
     for (int i = 0; i < p.n; ++i) EXPECT_NEAR(glm::dot(p.v[i], en), 0.0, 1e-12);
     // With the shift the receiver leaves the plane to the side its rounded distance has: in

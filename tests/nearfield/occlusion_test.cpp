@@ -1,4 +1,4 @@
-// Soft shadows in the near-field models (calc/nearfield/occluder.h): a 1 x 1
+// Soft shadows in the near-field models (geometry/visibility.h, calc/nearfield/fan_sample.h): a 1 x 1
 // Lambertian emitter 1 m above the receiver, partly hidden by an opaque half-plane screen
 // {z = kScreenZ, x >= kScreenEdgeX} between them. A ray from the receiver R to the emitter point
 // P passes the screen at x = R.x + kScreenZ (P.x - R.x) / h, so the part of the emitter that R sees
@@ -22,7 +22,7 @@ constexpr double kHeight = 1.0;       // emitter plane, m
 constexpr double kScreenZ = 0.5;      // screen plane, m
 constexpr double kScreenEdgeX = 0.1;  // the screen covers x >= this, m
 
-class HalfPlaneScreen final : public Occluder {
+class HalfPlaneScreen final : public geometry::Visibility {
  public:
   bool visible(const Vec3& p, const Vec3& r) const override {
     const double t = (kScreenZ - r.z) / (p.z - r.z);
@@ -31,12 +31,12 @@ class HalfPlaneScreen final : public Occluder {
   }
 };
 
-class Everything final : public Occluder {
+class Everything final : public geometry::Visibility {
  public:
   bool visible(const Vec3&, const Vec3&) const override { return false; }
 };
 
-class Nothing final : public Occluder {
+class Nothing final : public geometry::Visibility {
  public:
   bool visible(const Vec3&, const Vec3&) const override { return true; }
 };
@@ -88,7 +88,7 @@ TEST(Occlusion, FullyHiddenGivesZeroFullyVisibleGivesTheUnoccludedValue) {
   const HalfPlaneScreen screen;
   for (const Model& m : {Model::far_field(), Model::paper_cubature(), Model::subdivided(2),
                          Model::lambert_subdivided(1), Model::standard(), Model::adaptive(1e-3),
-                         Model::reference(1e-5), Model::structured_sampling(), Model::monte_carlo(16)}) {
+                         Model::reference(1e-5)}) {
     const Vec3 r(0.1, -0.2, 0.0);
     EXPECT_EQ(illuminance(e, r, kUp, m, &wall), 0.0) << to_string(m);
     EXPECT_EQ(illuminance(e, r, kUp, m, &open), illuminance(e, r, kUp, m)) << to_string(m);
@@ -131,8 +131,8 @@ TEST(Occlusion, ContinuousAcrossTheShadowEdge) {
 
 TEST(Occlusion, NodesOnTheOpeningEdgeAreTestedSlightlyInside) {
   // An occluder that blocks every segment starting exactly on the opening's boundary (as a wall
-  // face containing the edge would) must not darken the panel: nodes are inset (occluder.h).
-  class BlocksBoundary final : public Occluder {
+  // face containing the edge would) must not darken the panel: nodes are inset (fan_sample.h).
+  class BlocksBoundary final : public geometry::Visibility {
    public:
     bool visible(const Vec3& p, const Vec3&) const override {
       return std::abs(p.x) < 0.5 && std::abs(p.y) < 0.5;

@@ -10,9 +10,10 @@
 // Error measure: NRMS = sqrt(mean (E_model - E_ref)^2) / sqrt(mean E_ref^2) over the stitched
 // points (the RMS error relative to the RMS illuminance: scale-free, so candela values of the
 // files do not matter). "centre" is the signed relative error at the ground point straight below
-// the emitter facing down (orientation pi), the number the issue quotes (-28 % for a cosine
+// the emitter facing down (orientation pi), the number that shows the published cubature's bias most plainly (-28 % for a cosine
 // emitter at h = 0.1 with the paper's cubature).
 #include <filesystem>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -20,18 +21,32 @@
 #include "calc/nearfield/illuminance.h"
 #include "photometry/intensity_distribution.h"
 
-namespace luxgrid::cli {
+namespace luxgrid::study {
 
 struct AccuracyDataSet {
   std::string name;  // "cosine", "batwing", "zumtobel_arcos3_isym1", ...
   photometry::DistributionPtr distribution;
 };
 
+// A model of the study: a rung of the near-field ladder (calc/nearfield) or one of the
+// baselines it is measured against (baselines.h).
 struct AccuracyModel {
-  std::string name;  // nearfield::to_string(model)
-  nearfield::Model model;
-  bool is_monte_carlo() const { return model.kind == nearfield::ModelKind::monte_carlo; }
+  enum class Kind { ladder, structured_sampling, most_representative_point, monte_carlo };
+  std::string name;  // nearfield::to_string(ladder) for a rung; "structured sampling", "MRP", "MC N"
+  Kind kind = Kind::ladder;
+  nearfield::Model ladder;  // kind == ladder
+  int samples = 0;          // kind == monte_carlo
+  bool is_monte_carlo() const { return kind == Kind::monte_carlo; }
+
+  static AccuracyModel rung(const nearfield::Model& model);
+  static AccuracyModel structured_sampling();
+  static AccuracyModel most_representative_point();
+  static AccuracyModel monte_carlo(int samples);
 };
+
+// Illuminance (lx) of `model` at `point` with unit `normal`; `seed` seeds Monte Carlo.
+double evaluate(const AccuracyModel& model, const nearfield::Emitter& emitter, const Vec3& point,
+                const Vec3& normal, std::uint64_t seed);
 
 struct AccuracyOptions {
   std::vector<double> heights{0.1, 1.0, 2.5};
@@ -57,7 +72,7 @@ struct AccuracyCell {
   double nrms = 0.0;
   double max_rel = 0.0;    // largest |E - E_ref| / max(E_ref) over the stitched points
   double point_rel = 0.0;  // largest |E - E_ref| / E_ref over the points with E_ref >=
-                           // kPointErrorFloor x max(E_ref) (the issue's "1 % at every point")
+                           // kPointErrorFloor x max(E_ref) (the promise's "1 % at every point")
   double centre_rel = 0.0; // signed relative error below the centre, orientation pi
   double ns_per_eval = 0.0;
 };
@@ -83,7 +98,7 @@ struct AccuracyStudy {
 // with 8 to 4096 samples (quick: fewer Monte Carlo levels).
 std::vector<AccuracyModel> accuracy_models(bool quick);
 
-// The data sets: a cosine (Lambertian) emitter, the issue's batwing, then the given LDT/IES files
+// The data sets: a cosine (Lambertian) emitter, a batwing, then the given LDT/IES files
 // (loaded with load_photometry_file; the opening in the file is ignored: the protocol's 1 x 1
 // square is used).
 std::vector<AccuracyDataSet> accuracy_data_sets(const std::vector<std::filesystem::path>& files);
@@ -114,4 +129,4 @@ void write_accuracy_plot(const AccuracyStudy& study, const std::filesystem::path
 int monte_carlo_at_time(const AccuracyStudy& study, const std::string& data_set, double height,
                         double ns);
 
-}  // namespace luxgrid::cli
+}  // namespace luxgrid::study

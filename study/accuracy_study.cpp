@@ -1,4 +1,4 @@
-#include "cli/accuracy_study.h"
+#include "study/accuracy_study.h"
 
 #include <algorithm>
 #include <ctime>
@@ -15,9 +15,11 @@
 #include "report/png_file.h"
 #include "report/raster.h"
 #include "report/raster_text.h"
+#include "study/baselines.h"
 #include "util/error.h"
+#include "util/format.h"
 
-namespace luxgrid::cli {
+namespace luxgrid::study {
 
 namespace {
 
@@ -61,11 +63,7 @@ double thread_seconds() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
+std::string fmt(const char* f, double v) { return format_double(f, v); }
 
 std::string height_label(double h) { return fmt("%g", h); }
 
@@ -75,20 +73,57 @@ std::vector<double> protocol_orientations() {
   return {kPi / 2, 5 * kPi / 8, 3 * kPi / 4, 7 * kPi / 8, kPi};
 }
 
+AccuracyModel AccuracyModel::rung(const nearfield::Model& model) {
+  AccuracyModel m;
+  m.name = nearfield::to_string(model);
+  m.ladder = model;
+  return m;
+}
+AccuracyModel AccuracyModel::structured_sampling() {
+  AccuracyModel m;
+  m.name = "structured sampling";
+  m.kind = Kind::structured_sampling;
+  return m;
+}
+AccuracyModel AccuracyModel::most_representative_point() {
+  AccuracyModel m;
+  m.name = "MRP";
+  m.kind = Kind::most_representative_point;
+  return m;
+}
+AccuracyModel AccuracyModel::monte_carlo(int samples) {
+  AccuracyModel m;
+  m.name = "MC " + std::to_string(samples);
+  m.kind = Kind::monte_carlo;
+  m.samples = std::max(1, samples);
+  return m;
+}
+
+double evaluate(const AccuracyModel& model, const nearfield::Emitter& emitter, const Vec3& point,
+                const Vec3& normal, std::uint64_t seed) {
+  switch (model.kind) {
+    case AccuracyModel::Kind::ladder: return nearfield::illuminance(emitter, point, normal, model.ladder);
+    case AccuracyModel::Kind::structured_sampling: return structured_sampling_illuminance(emitter, point, normal);
+    case AccuracyModel::Kind::most_representative_point: return mrp_illuminance(emitter, point, normal);
+    case AccuracyModel::Kind::monte_carlo:
+      return monte_carlo_illuminance(emitter, point, normal, model.samples, seed);
+  }
+  return 0.0;
+}
+
 std::vector<AccuracyModel> accuracy_models(bool quick) {
   using nearfield::Model;
-  std::vector<Model> ms = {Model::far_field(), Model::structured_sampling(),
-                           Model::most_representative_point(), Model::paper_cubature()};
-  for (int k = 1; k <= 3; ++k) ms.push_back(Model::subdivided(k));
-  for (int k = 1; k <= 3; ++k) ms.push_back(Model::lambert_subdivided(k));
-  ms.push_back(Model::adaptive(1e-3));
-  ms.push_back(Model::standard());
-  ms.push_back(Model::reference(1e-5));
+  std::vector<AccuracyModel> out = {AccuracyModel::rung(Model::far_field()), AccuracyModel::structured_sampling(),
+                                    AccuracyModel::most_representative_point(),
+                                    AccuracyModel::rung(Model::paper_cubature())};
+  for (int k = 1; k <= 3; ++k) out.push_back(AccuracyModel::rung(Model::subdivided(k)));
+  for (int k = 1; k <= 3; ++k) out.push_back(AccuracyModel::rung(Model::lambert_subdivided(k)));
+  out.push_back(AccuracyModel::rung(Model::adaptive(1e-3)));
+  out.push_back(AccuracyModel::rung(Model::standard()));
+  out.push_back(AccuracyModel::rung(Model::reference(1e-5)));
   const std::vector<int> mc = quick ? std::vector<int>{8, 64, 512}
                                     : std::vector<int>{8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096};
-  for (int n : mc) ms.push_back(Model::monte_carlo(n));
-  std::vector<AccuracyModel> out;
-  for (const auto& m : ms) out.push_back({nearfield::to_string(m), m});
+  for (int n : mc) out.push_back(AccuracyModel::monte_carlo(n));
   return out;
 }
 
@@ -218,12 +253,9 @@ AccuracyStudy run_accuracy_study(const std::vector<AccuracyDataSet>& data_sets,
 
       std::vector<double> values(configs.size());
       for (int m = 0; m < static_cast<int>(models.size()); ++m) {
-        nearfield::Model model = models[m].model;
         const double t1 = thread_seconds();
-        for (size_t i = 0; i < configs.size(); ++i) {
-          if (models[m].is_monte_carlo()) model.seed = i + 1;  // independent noise per point
-          values[i] = nearfield::illuminance(configs[i].emitter, configs[i].point, up, model);
-        }
+        for (size_t i = 0; i < configs.size(); ++i)  // seed: independent Monte Carlo noise per point
+          values[i] = evaluate(models[m], configs[i].emitter, configs[i].point, up, i + 1);
         const double secs = thread_seconds() - t1;
         double err_sq = 0.0, max_abs = 0.0, point_rel = 0.0;
         for (size_t i = 0; i < configs.size(); ++i) {
@@ -397,4 +429,4 @@ void write_accuracy_plot(const AccuracyStudy& s, const std::filesystem::path& pn
   std::filesystem::rename(tmp, png);
 }
 
-}  // namespace luxgrid::cli
+}  // namespace luxgrid::study

@@ -38,7 +38,7 @@ OcclusionTree::OcclusionTree(const std::vector<Face>& faces) : impl_(std::make_u
 
 OcclusionTree::~OcclusionTree() = default;
 
-bool OcclusionTree::segment_free(const Vec3& a, const Vec3& b) const {
+bool OcclusionTree::visible(const Vec3& a, const Vec3& b) const {
   if (impl_->triangles.empty()) return true;
   const Vec3 d = b - a;
   const double len = glm::length(d);

@@ -1,44 +1,45 @@
 // Baselines for the accuracy-versus-time study ([Luksch2020, Sec. 4]; docs/accuracy.md):
 // structured sampling, the most representative point, and Monte Carlo.
+#include "study/baselines.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
 #include "calc/nearfield/fan_sample.h"
 #include "calc/nearfield/models.h"
-#include "calc/nearfield/spherical.h"
+#include "geometry/spherical.h"
 
-namespace luxgrid::nearfield {
+namespace luxgrid::study {
+
+using nearfield::build_fan;
+using nearfield::clip_to_horizon;
+using nearfield::Emitter;
+using nearfield::FanSample;
+using nearfield::far_field_illuminance;
+using nearfield::horizon_shift_m;
+using nearfield::kMaxPolygonVertices;
+using nearfield::OpeningPolygon;
+using nearfield::ReceiverFan;
+using nearfield::sanitize_illuminance;
+using nearfield::SampleContext;
+
 namespace {
-
-// Closest point of a convex polygon (relative coordinates, in the emitter plane) to `q` (in the
-// same plane): q itself when inside.
-Vec3 clamp_to_polygon(const SmallPolygon& p, const Vec3& q, const Vec3& plane_normal) {
-  bool inside = true;
-  for (int i = 0; i < p.n && inside; ++i)
-    if (glm::dot(glm::cross(p.v[(i + 1) % p.n] - p.v[i], q - p.v[i]), plane_normal) < 0.0) inside = false;
-  if (inside) return q;
-  double best = INFINITY;
-  Vec3 best_p = p.v[0];
-  for (int i = 0; i < p.n; ++i) {
-    const Vec3 edge = p.v[(i + 1) % p.n] - p.v[i];
-    const double len2 = glm::dot(edge, edge);
-    const double t = len2 > 0.0 ? std::clamp(glm::dot(q - p.v[i], edge) / len2, 0.0, 1.0) : 0.0;
-    const Vec3 c = p.v[i] + t * edge;
-    const double d2 = glm::dot(c - q, c - q);
-    if (d2 < best) best = d2, best_p = c;
-  }
-  return best_p;
-}
 
 double polygon_solid_angle(const std::array<Vec3, kMaxPolygonVertices>& u, int n) {
   double omega = 0.0;
-  for (int i = 1; i + 1 < n; ++i) omega += triangle_solid_angle(u[0], u[i], u[i + 1]);
+  for (int i = 1; i + 1 < n; ++i) omega += geometry::triangle_solid_angle(u[0], u[i], u[i + 1]);
   return omega;
+}
+
+// Closest point of the clipped opening (relative coordinates, in the emitter plane) to `q`.
+Vec3 closest(const OpeningPolygon& p, const Vec3& q, const Vec3& plane_normal) {
+  return geometry::closest_point(p, q, plane_normal).point;
 }
 
 struct Prepared {
   ReceiverFan fan;
-  SmallPolygon poly;  // clipped polygon relative to the shifted receiver
+  OpeningPolygon poly;  // clipped polygon relative to the shifted receiver
   double s = 0.0;     // signed plane distance of the shifted receiver
 };
 
@@ -128,15 +129,11 @@ double mrp_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal) 
     const Vec3 in_plane = dir - dn * nA;
     return in_plane * (1e6 * e.largest_dimension_m) / std::max(glm::length(in_plane), 1e-300) - p.s * nA;
   };
-  const Vec3 cp = clamp_to_polygon(p.poly, -p.s * nA, nA);
-  const Vec3 np = clamp_to_polygon(p.poly, onto_plane(normal), nA);
+  const Vec3 cp = closest(p.poly, -p.s * nA, nA);
+  const Vec3 np = closest(p.poly, onto_plane(normal), nA);
   const Vec3 half = glm::normalize(glm::normalize(cp) + glm::normalize(np));
-  const Vec3 mrp = clamp_to_polygon(p.poly, onto_plane(half), nA);
-  std::array<Vec3, kMaxPolygonVertices> u;
-  for (int i = 0; i < p.poly.n; ++i) u[i] = glm::normalize(p.poly.v[i]);
-  Vec3 edges{0.0};
-  for (int i = 0; i < p.poly.n; ++i) edges += lambert_edge(u[i], u[(i + 1) % p.poly.n]);
-  const double projected = 0.5 * std::abs(glm::dot(normal, edges));
+  const Vec3 mrp = closest(p.poly, onto_plane(half), nA);
+  const double projected = geometry::projected_solid_angle(p.poly.v.data(), p.poly.n, normal);
   return sanitize_illuminance(sample(mrp).L * projected);
 }
 
@@ -153,7 +150,7 @@ double monte_carlo_illuminance(const Emitter& e, const Vec3& point, const Vec3& 
   for (int i = 0; i <= m; ++i) u[i] = glm::normalize(p.fan.rim[i]);
   double omega = 0.0;
   for (int i = 0; i < m; ++i) {
-    omega += triangle_solid_angle(apex, u[i], u[i + 1]);
+    omega += geometry::triangle_solid_angle(apex, u[i], u[i + 1]);
     cdf[i] = omega;
   }
   if (!(omega > 0.0)) return 0.0;
@@ -174,4 +171,4 @@ double monte_carlo_illuminance(const Emitter& e, const Vec3& point, const Vec3& 
   return sanitize_illuminance(omega * sum / samples);
 }
 
-}  // namespace luxgrid::nearfield
+}  // namespace luxgrid::study

@@ -1,0 +1,47 @@
+#pragma once
+// The one visibility interface of luxgrid: does light travel freely between two points? Direct
+// light (calc/direct, through the near-field models per quadrature node), indirect light
+// (calc/indirect: first bounce, form factors, final gather) and glare (calc/glare) all ask it
+// through a `const Visibility*`, where null means "nothing blocks light" and costs nothing.
+// Plain doubles, no CGAL: calc/nearfield (the hot path, built without CGAL) uses it too. The
+// scene's implementation is the AABB tree of geometry/occlusion.h; tests implement their own.
+#include <vector>
+
+#include "geometry/box3.h"
+#include "util/robust_math.h"
+
+namespace luxgrid::geometry {
+
+class Visibility {
+ public:
+  virtual ~Visibility() = default;
+  // True when nothing lies between `from` and `to` (m, world). Symmetric. Called from worker
+  // threads: implementations must be thread-safe.
+  virtual bool visible(const Vec3& from, const Vec3& to) const = 0;
+};
+
+// True when `visibility` is set and says the segment is blocked (null: nothing blocks).
+inline bool blocked(const Visibility* visibility, const Vec3& from, const Vec3& to) {
+  return visibility && !visibility->visible(from, to);
+}
+
+// An exact test behind a cheap filter: only segments that meet one of `boxes` go to `exact`;
+// every other segment is visible. Exact (not an approximation) when every face that can block a
+// segment of interest lies inside some box: in a convex room only obstacles can block a segment
+// between two of its points, so their boxes are the filter (calc/indirect).
+class BoxFilteredVisibility final : public Visibility {
+ public:
+  BoxFilteredVisibility(const Visibility& exact, std::vector<Box3> boxes)
+      : exact_(exact), boxes_(std::move(boxes)) {}
+  bool visible(const Vec3& from, const Vec3& to) const override {
+    for (const Box3& box : boxes_)
+      if (segment_meets_box(from, to, box)) return exact_.visible(from, to);
+    return true;
+  }
+
+ private:
+  const Visibility& exact_;
+  std::vector<Box3> boxes_;
+};
+
+}  // namespace luxgrid::geometry
