@@ -96,7 +96,8 @@ LUXGRID_MODEL_BENCH(Mrp, luxgrid::study::AccuracyModel::most_representative_poin
 LUXGRID_MODEL_BENCH(PaperK1, luxgrid::study::AccuracyModel::rung(Model::subdivided(1)))
 LUXGRID_MODEL_BENCH(PaperK2, luxgrid::study::AccuracyModel::rung(Model::subdivided(2)))
 LUXGRID_MODEL_BENCH(PaperK3, luxgrid::study::AccuracyModel::rung(Model::subdivided(3)))
-LUXGRID_MODEL_BENCH(LambertProductK1, luxgrid::study::AccuracyModel::rung(Model::lambert_subdivided(1)))
+LUXGRID_MODEL_BENCH(LambertProductK1,
+                    luxgrid::study::AccuracyModel::rung(Model::lambert_subdivided(1)))
 LUXGRID_MODEL_BENCH(Standard, luxgrid::study::AccuracyModel::rung(Model::standard()))
 LUXGRID_MODEL_BENCH(Adaptive1e2, luxgrid::study::AccuracyModel::rung(Model::adaptive(1e-2)))
 LUXGRID_MODEL_BENCH(MonteCarlo64, luxgrid::study::AccuracyModel::monte_carlo(64))

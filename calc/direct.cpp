@@ -26,7 +26,8 @@ nearfield::Receiver receiver_of(geometry::Quantity q, const Vec3& normal) {
 double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3& normal) {
   // The rotation is orthonormal, so world -> luminaire frame is its transpose.
   return nearfield::point_source_illuminance(*lum.distribution, glm::transpose(lum.pose.rotation),
-                                             lum.pose.position, point, nearfield::Receiver::planar(normal));
+                                             lum.pose.position, point,
+                                             nearfield::Receiver::planar(normal));
 }
 
 std::vector<nearfield::Emitter> make_emitters(const Scene& scene) {

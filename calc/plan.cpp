@@ -38,10 +38,12 @@ nearfield::Model near_model_for(const Settings& settings) {
   if (name == "adaptive") return Model::adaptive(1e-3);
   if (name == "reference") return Model::reference();
   if (int k = suffix_number(name, "subdivided-"); k >= 0 && k <= 6) return Model::subdivided(k);
-  if (int k = suffix_number(name, "lambert-"); k >= 0 && k <= 6) return Model::lambert_subdivided(k);
-  throw InputError("/settings/near_field_model: unknown model \"" + name +
-                   "\" (expected paper, far-field, standard, high, adaptive, reference, subdivided-K or "
-                   "lambert-K with K from 0 to 6)");
+  if (int k = suffix_number(name, "lambert-"); k >= 0 && k <= 6)
+    return Model::lambert_subdivided(k);
+  throw InputError(
+      "/settings/near_field_model: unknown model \"" + name +
+      "\" (expected paper, far-field, standard, high, adaptive, reference, subdivided-K or "
+      "lambert-K with K from 0 to 6)");
 }
 
 Plan make_plan(const Scene& scene) {

@@ -3,11 +3,6 @@
 namespace luxgrid::calc {
 
 namespace {
-// Points this close outside a room still count as inside: luminaires are placed on ceilings
-// and grid points on walls, and their coordinates carry rounding. Same size as the occlusion
-// end allowance, so "inside" here and "not blocked" there agree.
-constexpr double kInsideTolerance_m = geometry::kOcclusionEndAllowance_m;
-
 std::string plural(size_t n, const std::string& one, const std::string& many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
@@ -32,11 +27,10 @@ std::vector<geometry::Face> scene_faces(const Scene& scene) {
   return faces;
 }
 
-bool inside_room(const Room& room, const Vec3& p) {
-  if (p.z < room.floor_z - kInsideTolerance_m) return false;
-  if (p.z > room.floor_z + room.height + kInsideTolerance_m) return false;
-  return geometry::locate(Vec2(p.x, p.y), room.outline, kInsideTolerance_m) !=
-         geometry::Location::outside;
+bool inside_room(const Room& room, const Vec3& p, double tolerance_m) {
+  if (p.z < room.floor_z - tolerance_m) return false;
+  if (p.z > room.floor_z + room.height + tolerance_m) return false;
+  return geometry::locate(Vec2(p.x, p.y), room.outline, tolerance_m) != geometry::Location::outside;
 }
 
 std::unique_ptr<geometry::OcclusionTree> make_visibility(const Scene& scene, std::string& reason) {

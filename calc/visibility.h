@@ -21,13 +21,18 @@ std::vector<geometry::Face> scene_faces(const Scene& scene);
 
 // The scene's AABB tree over scene_faces: visible(from, to) is true when nothing lies between;
 // hits within geometry::kOcclusionEndAllowance_m (1 um) of either end are ignored, so a luminaire
-// on the ceiling and a point on a floor, wall or obstacle top see each other. nullptr when nothing can block light: at most one room, convex, no obstacles, every
-// luminaire and every active surface point inside it (or no rooms and no obstacles at all).
-// `reason` is set for the plan either way, e.g. "off: convex room, no obstacles, every
-// luminaire inside" or "on: 2 obstacles, non-convex room 'L'".
+// on the ceiling and a point on a floor, wall or obstacle top see each other. nullptr when nothing
+// can block light: at most one room, convex, no obstacles, every luminaire and every active surface
+// point inside it (or no rooms and no obstacles at all). `reason` is set for the plan either way,
+// e.g. "off: convex room, no obstacles, every luminaire inside" or "on: 2 obstacles, non-convex
+// room 'L'".
 std::unique_ptr<geometry::OcclusionTree> make_visibility(const Scene& scene, std::string& reason);
 
-// True when `p` lies in the closed volume of `room` (within 1 um).
-bool inside_room(const Room& room, const Vec3& p);
+// True when `p` lies in the closed volume of `room`, within `tolerance_m`. Points this close
+// outside a room still count as inside: luminaires are placed on ceilings and grid points on
+// walls, and their coordinates carry rounding. The default is the occlusion test's end
+// allowance (1 um), so "inside" here and "not blocked" there agree.
+bool inside_room(const Room& room, const Vec3& p,
+                 double tolerance_m = geometry::kOcclusionEndAllowance_m);
 
 }  // namespace luxgrid::calc

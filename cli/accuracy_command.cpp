@@ -1,6 +1,7 @@
-// `luxgrid accuracy [-o|--out DIR] [--quick] [--grid N] [--photometry DIR]`: the accuracy-versus-time study of
-// the near-field models (docs/accuracy.md; study/accuracy_study.h describes the protocol). Writes
-// DIR/accuracy.md (tables) and DIR/accuracy.png (error versus time with the Pareto front).
+// `luxgrid accuracy [-o|--out DIR] [--quick] [--grid N] [--photometry DIR]`: the
+// accuracy-versus-time study of the near-field models (docs/accuracy.md; study/accuracy_study.h
+// describes the protocol). Writes DIR/accuracy.md (tables) and DIR/accuracy.png (error versus time
+// with the Pareto front).
 #include <cstdio>
 #include <filesystem>
 #include <fstream>

@@ -18,11 +18,13 @@ struct Box3 {
 // Largest (smallest) of n . (v - x) over the box [lo, hi].
 inline double box_max_height(const Vec3& n, const Vec3& x, const Vec3& lo, const Vec3& hi) {
   const Vec3 a = lo - x, b = hi - x;
-  return std::max(n.x * a.x, n.x * b.x) + std::max(n.y * a.y, n.y * b.y) + std::max(n.z * a.z, n.z * b.z);
+  return std::max(n.x * a.x, n.x * b.x) + std::max(n.y * a.y, n.y * b.y) +
+         std::max(n.z * a.z, n.z * b.z);
 }
 inline double box_min_height(const Vec3& n, const Vec3& x, const Vec3& lo, const Vec3& hi) {
   const Vec3 a = lo - x, b = hi - x;
-  return std::min(n.x * a.x, n.x * b.x) + std::min(n.y * a.y, n.y * b.y) + std::min(n.z * a.z, n.z * b.z);
+  return std::min(n.x * a.x, n.x * b.x) + std::min(n.y * a.y, n.y * b.y) +
+         std::min(n.z * a.z, n.z * b.z);
 }
 // Squared distance from x to the box [lo, hi].
 inline double box_distance2(const Vec3& x, const Vec3& lo, const Vec3& hi) {

@@ -3,7 +3,8 @@
 // ear-clipping triangulation, clipping. Outlines are lists of corners without a repeated closing
 // corner. Planar polygons in space are in polygon3.h.
 // The CGAL-backed set-up operations (validation with exact predicates, straight-skeleton insets)
-// live in room.h and workplane.h (implemented in geometry/cgal/); these helpers are for code that runs per point.
+// live in room.h and workplane.h (implemented in geometry/cgal/); these helpers are for code that
+// runs per point.
 #include <array>
 #include <string>
 #include <vector>

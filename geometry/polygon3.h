@@ -77,8 +77,8 @@ void clip_relative(const Vec3* corners, int count, const Vec3& origin, const Vec
 }  // namespace detail
 
 template <int Capacity>
-FixedPolygon3<Capacity> clip_to_half_space_relative(const Vec3* corners, int count, const Vec3& origin,
-                                                    const Vec3& n) {
+FixedPolygon3<Capacity> clip_to_half_space_relative(const Vec3* corners, int count,
+                                                    const Vec3& origin, const Vec3& n) {
   FixedPolygon3<Capacity> out;
   if (count < 3 || count > Capacity) return out;
   std::array<Vec3, Capacity> rel;
@@ -104,7 +104,8 @@ struct ClosestPoint {
   Vec3 point{0.0};
 };
 template <int Capacity>
-ClosestPoint closest_point(const FixedPolygon3<Capacity>& poly, const Vec3& q, const Vec3& plane_normal) {
+ClosestPoint closest_point(const FixedPolygon3<Capacity>& poly, const Vec3& q,
+                           const Vec3& plane_normal) {
   ClosestPoint out;
   const int n = poly.n;
   out.inside = true;
@@ -130,7 +131,8 @@ ClosestPoint closest_point(const FixedPolygon3<Capacity>& poly, const Vec3& q, c
       out.t = t;
     }
   }
-  if (out.edge >= 0) out.point = poly.v[out.edge] + out.t * (poly.v[(out.edge + 1) % n] - poly.v[out.edge]);
+  if (out.edge >= 0)
+    out.point = poly.v[out.edge] + out.t * (poly.v[(out.edge + 1) % n] - poly.v[out.edge]);
   return out;
 }
 

@@ -41,7 +41,8 @@ inline double triangle_projected_solid_angle(const Vec3& a, const Vec3& b, const
 
 // Solid angle (sr) of the planar triangle abc seen from s (triangle_solid_angle of the unit
 // directions); 0 when s is a vertex.
-inline double triangle_solid_angle_from(const Vec3& s, const Vec3& a, const Vec3& b, const Vec3& c) {
+inline double triangle_solid_angle_from(const Vec3& s, const Vec3& a, const Vec3& b,
+                                        const Vec3& c) {
   const Vec3 ra = a - s, rb = b - s, rc = c - s;
   const double la = glm::length(ra), lb = glm::length(rb), lc = glm::length(rc);
   if (!(la > 0.0 && lb > 0.0 && lc > 0.0)) return 0.0;
@@ -66,8 +67,10 @@ inline double projected_solid_angle(const Vec3* rel, size_t count, const Vec3& n
     const double len = glm::length(rel[k]);
     if (!(len > kMinCornerDistance_m)) continue;
     const Vec3 u = rel[k] / len;
-    if (have_prev) sum += lambert_edge(prev, u);
-    else first = u;
+    if (have_prev)
+      sum += lambert_edge(prev, u);
+    else
+      first = u;
     prev = u;
     have_prev = true;
   }

@@ -11,7 +11,8 @@ namespace luxgrid::study {
 
 // Structured sampling [Luksch2020, Eq. 4]: the corners of the clipped opening and its centre,
 // E = Omega / N sum L_e G.
-double structured_sampling_illuminance(const nearfield::Emitter& e, const Vec3& point, const Vec3& normal);
+double structured_sampling_illuminance(const nearfield::Emitter& e, const Vec3& point,
+                                       const Vec3& normal);
 
 // Most representative point (Drobot 2014 as adapted in [Luksch2020, Sec. 4.2]): L_e at the MRP
 // times the exact projected solid angle of the clipped opening.

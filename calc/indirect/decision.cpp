@@ -31,7 +31,8 @@ double mean_reflectance(const Room& room) {
   const double a = 2.0 * a_floor + a_walls;
   if (!(a > 0.0)) return 0.0;
   return (a_floor * (room.reflectance.floor + room.reflectance.ceiling) +
-          a_walls * room.reflectance.walls) / a;
+          a_walls * room.reflectance.walls) /
+         a;
 }
 
 }  // namespace
@@ -43,8 +44,7 @@ IndirectDecision decide_indirect(const Scene& scene) {
     return d;
   }
   bool any = false;
-  for (const auto& r : scene.rooms)
-  {
+  for (const auto& r : scene.rooms) {
     any = any || r.reflectance.floor > 0.0 || r.reflectance.walls > 0.0 ||
           r.reflectance.ceiling > 0.0;
     for (const auto& o : r.obstacles) any = any || o.reflectance > 0.0;
@@ -88,8 +88,10 @@ IndirectDecision decide_indirect(const Scene& scene) {
   for (const auto& s : scene.surfaces) {
     if (s.kind != geometry::SurfaceGrid::Kind::observers) continue;
     d.run = true;
-    d.reason = "on: observers surface '" + s.name + "' needs reflected light for UGR's background "
-               "luminance; integrating-sphere estimate " + format_double("%.4g", d.estimate_lx) + " lx";
+    d.reason = "on: observers surface '" + s.name +
+               "' needs reflected light for UGR's background "
+               "luminance; integrating-sphere estimate " +
+               format_double("%.4g", d.estimate_lx) + " lx";
     return d;
   }
   // Mean direct light on the calculation surfaces, far field, on a sample of points.
@@ -106,7 +108,8 @@ IndirectDecision decide_indirect(const Scene& scene) {
   tbb::parallel_for(size_t(0), samples.size(), [&](size_t k) {
     const auto& [s, i] = samples[k];
     double e = 0.0;
-    for (const auto& lum : scene.luminaires) e += far_field_illuminance(lum, s->points[i], s->normals[i]);
+    for (const auto& lum : scene.luminaires)
+      e += far_field_illuminance(lum, s->points[i], s->normals[i]);
     sample_e[k] = e;
   });
   double sum = 0.0;
@@ -115,13 +118,14 @@ IndirectDecision decide_indirect(const Scene& scene) {
   d.mean_direct_lx = count ? sum / count : 0.0;
   if (count > 0 && d.estimate_lx < kAutoSkipFraction * d.mean_direct_lx) {
     d.reason = "skipped: integrating-sphere estimate " + format_double("%.4g", d.estimate_lx) +
-               " lx is below 1 % of the mean direct illuminance " + format_double("%.4g", d.mean_direct_lx) +
-               " lx";
+               " lx is below 1 % of the mean direct illuminance " +
+               format_double("%.4g", d.mean_direct_lx) + " lx";
     return d;
   }
   d.run = true;
   d.reason = "on: integrating-sphere estimate " + format_double("%.4g", d.estimate_lx) + " lx" +
-             (count ? " against a mean direct illuminance of " + format_double("%.4g", d.mean_direct_lx) + " lx"
+             (count ? " against a mean direct illuminance of " +
+                          format_double("%.4g", d.mean_direct_lx) + " lx"
                     : std::string());
   return d;
 }

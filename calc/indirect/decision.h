@@ -11,9 +11,9 @@ namespace luxgrid::calc::indirect {
 
 struct IndirectDecision {
   bool run = false;
-  std::string reason;            // "skipped: all reflectances are 0", "on: ...", ...
-  double estimate_lx = 0.0;      // integrating-sphere estimate rho Phi / (A (1 - rho)), max over rooms
-  double mean_direct_lx = 0.0;   // mean far-field direct illuminance on the calculation surfaces
+  std::string reason;        // "skipped: all reflectances are 0", "on: ...", ...
+  double estimate_lx = 0.0;  // integrating-sphere estimate rho Phi / (A (1 - rho)), max over rooms
+  double mean_direct_lx = 0.0;  // mean far-field direct illuminance on the calculation surfaces
   // luminous_flux of each distinct distribution of the luminaires inside rooms (for
   // IndirectOptions::luminous_flux_lm).
   std::map<const photometry::IntensityDistribution*, double> luminous_flux_lm;

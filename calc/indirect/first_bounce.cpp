@@ -87,10 +87,10 @@ double patch_flux(const Source& src, const Patch& p, const geometry::Visibility*
 
 }  // namespace
 
-FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
-                         const std::vector<const geometry::Visibility*>& visibility, double max_angle_rad,
-                         const std::map<const photometry::IntensityDistribution*, double>*
-                             known_flux_lm) {
+FirstBounce first_bounce(
+    const Scene& scene, const PatchMesh& mesh,
+    const std::vector<const geometry::Visibility*>& visibility, double max_angle_rad,
+    const std::map<const photometry::IntensityDistribution*, double>* known_flux_lm) {
   FirstBounce fb;
   const size_t n = mesh.patches.size();
   fb.incident_flux_lm.assign(n, 0.0);
@@ -125,7 +125,8 @@ FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
     const geometry::Visibility* room_visibility = visibility[r];
     tbb::parallel_for(mesh.room_begin[r], mesh.room_begin[r + 1], [&](size_t i) {
       double sum = 0.0;
-      for (const Source& src : in_room[r]) sum += patch_flux(src, mesh.patches[i], room_visibility, max_angle_rad);
+      for (const Source& src : in_room[r])
+        sum += patch_flux(src, mesh.patches[i], room_visibility, max_angle_rad);
       fb.incident_flux_lm[i] = sum;
     });
   }

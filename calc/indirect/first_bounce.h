@@ -40,9 +40,9 @@ struct FirstBounce {
 // `max_angle_rad` is the largest angular size of one integration piece (0.08 rad by default:
 // I is sampled at least every ~4.6 degrees).
 // `known_flux_lm`: luminous_flux of distributions already integrated (others are computed).
-FirstBounce first_bounce(const Scene& scene, const PatchMesh& mesh,
-                         const std::vector<const geometry::Visibility*>& visibility, double max_angle_rad = 0.08,
-                         const std::map<const photometry::IntensityDistribution*, double>*
-                             known_flux_lm = nullptr);
+FirstBounce first_bounce(
+    const Scene& scene, const PatchMesh& mesh,
+    const std::vector<const geometry::Visibility*>& visibility, double max_angle_rad = 0.08,
+    const std::map<const photometry::IntensityDistribution*, double>* known_flux_lm = nullptr);
 
 }  // namespace luxgrid::calc::indirect

@@ -20,7 +20,8 @@ double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Polygon3& p
     for (size_t k = 0; k < clipped.size(); ++k) rel[k] = clipped[k] - x;
     psa = geometry::projected_solid_angle(rel.data(), rel.size(), n);
   } else {
-    const auto clipped = geometry::clip_to_half_space_relative<2 * kMaxStack>(polygon.data(), m, x, n);
+    const auto clipped =
+        geometry::clip_to_half_space_relative<2 * kMaxStack>(polygon.data(), m, x, n);
     psa = geometry::projected_solid_angle(clipped.v.data(), static_cast<size_t>(clipped.n), n);
   }
   return std::clamp(psa / kPi, 0.0, 1.0);

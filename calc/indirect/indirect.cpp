@@ -1,11 +1,11 @@
 #include "calc/indirect/indirect.h"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <algorithm>
-#include <array>
 #include <map>
 #include <memory>
 #include <optional>
@@ -71,7 +71,6 @@ double quality_tolerance(Quality q) {
   return 1e-3;
 }
 
-
 // The patch size at which the rooms' patch counts are estimated (surface area / size^2, the
 // count of a box room) to fit the per-room budget and kMaxTotalPatches: checked before the mesh
 // is built, so that a huge room is never meshed at a fine size first (1 km^2 at 0.5 m would be
@@ -92,20 +91,25 @@ double size_within_limits(const Scene& scene, const IndirectOptions& o, double s
   if (!(worst > budget) && !(total > limit)) return size;
   if (o.patch_size_m > 0.0) {
     if (worst > budget)
-      throw InputError("room '" + scene.rooms[worst_room].name + "': " + std::to_string(std::llround(worst)) +
-                       " patches at a patch size of " + format_double("%.3g", size) + " m exceed the budget of " +
+      throw InputError("room '" + scene.rooms[worst_room].name + "': " +
+                       std::to_string(std::llround(worst)) + " patches at a patch size of " +
+                       format_double("%.3g", size) + " m exceed the budget of " +
                        std::to_string(o.max_patches_per_room) + " patches per room");
-    throw InputError(std::to_string(std::llround(total)) + " patches in " + std::to_string(scene.rooms.size()) +
-                     " rooms at a patch size of " + format_double("%.3g", size) + " m exceed the limit of " +
+    throw InputError(std::to_string(std::llround(total)) + " patches in " +
+                     std::to_string(scene.rooms.size()) + " rooms at a patch size of " +
+                     format_double("%.3g", size) + " m exceed the limit of " +
                      std::to_string(kMaxTotalPatches) + " patches in all rooms");
   }
   const double grow = std::sqrt(std::max(worst / budget, total / limit));
-  notes.push_back((worst / budget >= total / limit
-                       ? "room '" + scene.rooms[worst_room].name + "': patch size raised from "
-                       : "all " + std::to_string(scene.rooms.size()) + " rooms: patch size raised from ") +
-                  format_double("%.3g", size) + " m to " + format_double("%.3g", size * grow) + " m to stay within " +
-                  (worst / budget >= total / limit ? std::to_string(o.max_patches_per_room) + " patches per room"
-                                                   : std::to_string(kMaxTotalPatches) + " patches in all rooms"));
+  notes.push_back(
+      (worst / budget >= total / limit
+           ? "room '" + scene.rooms[worst_room].name + "': patch size raised from "
+           : "all " + std::to_string(scene.rooms.size()) + " rooms: patch size raised from ") +
+      format_double("%.3g", size) + " m to " + format_double("%.3g", size * grow) +
+      " m to stay within " +
+      (worst / budget >= total / limit
+           ? std::to_string(o.max_patches_per_room) + " patches per room"
+           : std::to_string(kMaxTotalPatches) + " patches in all rooms"));
   return size * grow;
 }
 
@@ -147,21 +151,22 @@ PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, double size,
     if (worst <= o.max_patches_per_room) {
       // Obstacles and clipped boundary cells beyond the estimate of size_within_limits.
       if (o.patch_size_m > 0.0 || attempt > 20)
-        throw InputError(std::to_string(total) + " patches in " + std::to_string(scene.rooms.size()) +
-                         " rooms at a patch size of " + format_double("%.3g", size) + " m exceed the limit of " +
+        throw InputError(std::to_string(total) + " patches in " +
+                         std::to_string(scene.rooms.size()) + " rooms at a patch size of " +
+                         format_double("%.3g", size) + " m exceed the limit of " +
                          std::to_string(kMaxTotalPatches) + " patches in all rooms");
       const double grow = std::sqrt(static_cast<double>(total) / kMaxTotalPatches) * 1.05;
-      notes.push_back("all rooms: patch size raised from " + format_double("%.3g", size) + " m to " +
-                      format_double("%.3g", size * grow) + " m to stay within " + std::to_string(kMaxTotalPatches) +
-                      " patches in all rooms");
+      notes.push_back("all rooms: patch size raised from " + format_double("%.3g", size) +
+                      " m to " + format_double("%.3g", size * grow) + " m to stay within " +
+                      std::to_string(kMaxTotalPatches) + " patches in all rooms");
       size *= grow;
       continue;
     }
     if (o.patch_size_m > 0.0 || attempt > 20)
-      throw InputError(
-          "room '" + scene.rooms[worst_room].name + "': " + std::to_string(worst) +
-          " patches at a patch size of " + format_double("%.3g", size) + " m exceed the budget of " +
-          std::to_string(o.max_patches_per_room) + " patches per room");
+      throw InputError("room '" + scene.rooms[worst_room].name + "': " + std::to_string(worst) +
+                       " patches at a patch size of " + format_double("%.3g", size) +
+                       " m exceed the budget of " + std::to_string(o.max_patches_per_room) +
+                       " patches per room");
     const double grow = std::sqrt(static_cast<double>(worst) / o.max_patches_per_room) * 1.05;
     notes.push_back("room '" + scene.rooms[worst_room].name + "': patch size raised from " +
                     format_double("%.3g", size) + " m to " + format_double("%.3g", size * grow) +
@@ -214,7 +219,8 @@ bool faces_out_of_room(const Room& room, const Vec3& x, const Vec3& n) {
     const geometry::EdgeCoordinates e = geometry::edge_coordinates(room.outline, k, Vec2(x.x, x.y));
     if (!(e.length_m > 0.0)) continue;
     if (e.along_m < -kReceiverInset_m || e.along_m > e.length_m + kReceiverInset_m) continue;
-    if (std::abs(e.inside_m) < kReceiverInset_m && glm::dot(Vec2(n.x, n.y), e.inward) < -kFacingOutCosine)
+    if (std::abs(e.inside_m) < kReceiverInset_m &&
+        glm::dot(Vec2(n.x, n.y), e.inward) < -kFacingOutCosine)
       return true;
   }
   return false;
@@ -388,7 +394,8 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
         }
         const Patch& p = mesh.patches[set.patch[k]];
         double f = gather_form_factor(x, n, p, far_ratio, d2 > set.near_d2[k]);
-        if (f > 0.0 && visibility) f *= visible_fraction(visibility, x + n * kGatherLift_m, p, kGatherLift_m);
+        if (f > 0.0 && visibility)
+          f *= visible_fraction(visibility, x + n * kGatherLift_m, p, kGatherLift_m);
         near += flux[k] / p.area_m2 * f;
       }
     }
@@ -436,7 +443,8 @@ IndirectResult compute_indirect(const Scene& scene,
       room_visibility[r] = outline_is_convex(scene.rooms[r]) ? &*obstacles_only : vis;
   }
 
-  const FirstBounce fb = first_bounce(scene, mesh, room_visibility, 0.08, &options.luminous_flux_lm);
+  const FirstBounce fb =
+      first_bounce(scene, mesh, room_visibility, 0.08, &options.luminous_flux_lm);
   for (const auto& n : fb.notes) res.notes.push_back(n);
   res.vpls = fb.vpl_count;
   res.emitted_flux_lm = fb.emitted_flux_lm;
@@ -463,7 +471,8 @@ IndirectResult compute_indirect(const Scene& scene,
       none.n = end - begin;
       sol = solve_radiosity(none, rho, incident, 1, tol);
     } else {
-      const FormFactorMatrix F = form_factors(mesh, static_cast<int>(r), room_visibility[r], far_ratio);
+      const FormFactorMatrix F =
+          form_factors(mesh, static_cast<int>(r), room_visibility[r], far_ratio);
       res.max_row_correction = std::max(res.max_row_correction, F.max_row_correction);
       sol = solve_radiosity(F, rho, incident, bounces, tol);
     }
@@ -487,7 +496,8 @@ IndirectResult compute_indirect(const Scene& scene,
       const int r = room_containing(scene, grid.points[i], kRoomTolerance_m);
       if (r < 0 || faces_out_of_room(scene.rooms[r], grid.points[i], grid.normals[i])) return;
       const Vec3 x = inset_into_room(scene.rooms[r], grid.points[i]);
-      out[i] = gather_set_point(mesh, gather_sets[r], x, grid.normals[i], far_ratio, room_visibility[r]);
+      out[i] =
+          gather_set_point(mesh, gather_sets[r], x, grid.normals[i], far_ratio, room_visibility[r]);
     });
   }
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -496,18 +506,19 @@ IndirectResult compute_indirect(const Scene& scene,
                      : bounces > 1 ? std::to_string(bounces) + " bounces"
                                    : "converged interreflection (" + std::to_string(res.bounces_run) +
                                          " bounces" + (res.tail_added ? " + geometric tail" : "") + ")";
-  res.summary = what + ": " + std::to_string(res.patches) + " patches of " +
-                format_double("%.3g", res.patch_size_m) + " m, " + std::to_string(res.vpls) +
-                " virtual point lights, residual " + format_double("%.2g", res.residual) + "; direct flux on room faces " +
-                format_double("%.6g", res.received_flux_lm) + " lm of " + format_double("%.6g", res.emitted_flux_lm) +
-                " lm emitted into the rooms" +
-                (res.emitted_flux_lm < res.luminaire_flux_lm * (1.0 - kOutsideFluxFraction)
-                     ? " (of " + format_double("%.6g", res.luminaire_flux_lm) + " lm from the whole openings)"
-                     : std::string()) +
-                (options.visibility ? "; visibility: AABB tree of room and obstacle faces" : "") +
-                (obstacle_count ? "; " + std::to_string(obstacle_count) + " obstacle" +
-                                      (obstacle_count == 1 ? "" : "s") + " reflect and shade"
-                                : std::string());
+  res.summary =
+      what + ": " + std::to_string(res.patches) + " patches of " +
+      format_double("%.3g", res.patch_size_m) + " m, " + std::to_string(res.vpls) +
+      " virtual point lights, residual " + format_double("%.2g", res.residual) +
+      "; direct flux on room faces " + format_double("%.6g", res.received_flux_lm) + " lm of " +
+      format_double("%.6g", res.emitted_flux_lm) + " lm emitted into the rooms" +
+      (res.emitted_flux_lm < res.luminaire_flux_lm * (1.0 - kOutsideFluxFraction)
+           ? " (of " + format_double("%.6g", res.luminaire_flux_lm) + " lm from the whole openings)"
+           : std::string()) +
+      (options.visibility ? "; visibility: AABB tree of room and obstacle faces" : "") +
+      (obstacle_count ? "; " + std::to_string(obstacle_count) + " obstacle" +
+                            (obstacle_count == 1 ? "" : "s") + " reflect and shade"
+                      : std::string());
   return res;
 }
 

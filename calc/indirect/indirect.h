@@ -1,13 +1,13 @@
 #pragma once
 // Reflected light (docs/indirect.md): the public face of calc/indirect.
 //
-//   decide_indirect(scene)                 -> run it or not, and why (decision.h; make_plan calls it)
-//   compute_indirect(scene, surfaces, opt) -> E_indirect per point of every surface + a summary
+//   decide_indirect(scene)                 -> run it or not, and why (decision.h; make_plan calls
+//   it) compute_indirect(scene, surfaces, opt) -> E_indirect per point of every surface + a summary
 //
 // Method (docs/indirect.md): rooms are meshed into patches (patches.h); the first bounce
 // integrates every luminaire's intensity over each patch's solid angle and makes each lit patch a
-// virtual point light of flux rho x incident lumens (first_bounce.h, [Gadia2024]); the light is then
-// carried between patches with exact polygon form factors and solved to convergence, or for
+// virtual point light of flux rho x incident lumens (first_bounce.h, [Gadia2024]); the light is
+// then carried between patches with exact polygon form factors and solved to convergence, or for
 // exactly N reflections (radiosity.h); finally each grid point gathers from the patches with
 // Lambert's exact polygon form factor near a patch, the point kernel on its quarters extrapolated
 // (Richardson) at intermediate distances and the seed's point kernel far from it.

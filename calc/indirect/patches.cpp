@@ -1,4 +1,6 @@
 #include "calc/indirect/patches.h"
+
+#include "calc/visibility.h"
 #include "util/error.h"
 
 #include <algorithm>
@@ -209,13 +211,8 @@ bool outline_is_convex(const Room& room) {
 }
 
 int room_containing(const Scene& scene, const Vec3& p, double tolerance_m) {
-  for (size_t r = 0; r < scene.rooms.size(); ++r) {
-    const Room& room = scene.rooms[r];
-    if (p.z < room.floor_z - tolerance_m || p.z > room.floor_z + room.height + tolerance_m) continue;
-    const Vec2 q(p.x, p.y);
-    if (geometry::locate(q, room.outline, tolerance_m) != geometry::Location::outside)
-      return static_cast<int>(r);
-  }
+  for (size_t r = 0; r < scene.rooms.size(); ++r)
+    if (inside_room(scene.rooms[r], p, tolerance_m)) return static_cast<int>(r);
   return -1;
 }
 
@@ -330,8 +327,8 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
   return mesh;
 }
 
-double visible_fraction(const geometry::Visibility* visibility, const Vec3& from, const Patch& target,
-                        double lift_m) {
+double visible_fraction(const geometry::Visibility* visibility, const Vec3& from,
+                        const Patch& target, double lift_m) {
   if (!visibility) return 1.0;
   const Vec3 lift = target.normal * lift_m;
   int seen = visibility->visible(from, target.centroid + lift) ? 1 : 0;

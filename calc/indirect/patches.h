@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "calc/scene.h"
 #include "geometry/polygon.h"
 #include "geometry/polygon3.h"
-#include "calc/scene.h"
 #include "geometry/visibility.h"
 
 namespace luxgrid::calc::indirect {
@@ -72,7 +72,7 @@ int room_containing(const Scene& scene, const Vec3& p, double tolerance_m = 1e-3
 // Fraction of `target` visible from `from`: its centroid and the midpoints between centroid and
 // each vertex, each lifted off the patch by `lift_m` along its normal (so the patch's own face
 // does not hide them). 1 when `visibility` is null.
-double visible_fraction(const geometry::Visibility* visibility, const Vec3& from, const Patch& target,
-                        double lift_m);
+double visible_fraction(const geometry::Visibility* visibility, const Vec3& from,
+                        const Patch& target, double lift_m);
 
 }  // namespace luxgrid::calc::indirect

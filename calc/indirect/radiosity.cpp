@@ -75,8 +75,9 @@ void* allocate_huge_pages(size_t bytes) {
   return p;
 }
 
-FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const geometry::Visibility* visibility,
-                              double far_ratio, bool renormalise) {
+FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
+                              const geometry::Visibility* visibility, double far_ratio,
+                              bool renormalise) {
   FormFactorMatrix F;
   F.begin = mesh.room_begin[room];
   F.n = mesh.room_begin[room + 1] - F.begin;
@@ -213,7 +214,8 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const geometry::V
                                  : -1.0;
             if (f < 0.0) f = point_polygon_form_factor(sc, sn, dst.polygon);
           }
-          if (f > 0.0 && visibility) f *= visible_fraction(visibility, sc + sn * kShootLift_m, dst, kShootLift_m);
+          if (f > 0.0 && visibility)
+            f *= visible_fraction(visibility, sc + sn * kShootLift_m, dst, kShootLift_m);
           row[j] = static_cast<float>(f);
         }
       }

@@ -86,8 +86,9 @@ struct FormFactorMatrix {
 // in one branch-free loop. `renormalise`: scale rows to 1 (closed
 // rooms). Throws CalculationError naming the room index when the matrix would exceed
 // kMaxFormFactorMatrixBytes (limits.h), before allocating it.
-FormFactorMatrix form_factors(const PatchMesh& mesh, int room, const geometry::Visibility* visibility,
-                              double far_ratio, bool renormalise = true);
+FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
+                              const geometry::Visibility* visibility, double far_ratio,
+                              bool renormalise = true);
 
 struct RadiosityResult {
   std::vector<double> exitant_flux_lm;  // per patch of the room (index i - begin)

@@ -48,7 +48,8 @@ struct Integrand {
     const double value = e->intensity_towards(-w) * weight / d2 * inv_area;
     if (occluder && value != 0.0) {
       const Vec3 p = origin + r;
-      if (!occluder->visible(p + kVisibilityInsetRelative * (e->centroid - p), receiver)) return 0.0;
+      if (!occluder->visible(p + kVisibilityInsetRelative * (e->centroid - p), receiver))
+        return 0.0;
     }
     return value;
   }

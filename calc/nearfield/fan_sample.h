@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "geometry/visibility.h"
 #include "calc/nearfield/receiver_fan.h"
+#include "geometry/visibility.h"
 
 namespace luxgrid::nearfield {
 
@@ -54,9 +54,16 @@ struct SampleContext {
   // segments end there.
   SampleContext(const Emitter& e, const ReceiverFan& fan, const geometry::Visibility* occ = nullptr,
                 const Vec3& point = Vec3(0.0))
-      : emitter(&e), normal(fan.normal), inv_area_distance(1.0 / (e.area_m2 * fan.plane_distance)),
-        plane_distance(fan.plane_distance), emitter_normal(e.normal), side(fan.front ? 1.0 : -1.0),
-        inv_area(1.0 / e.area_m2), occluder(occ), receiver(point), shifted_receiver(fan.receiver),
+      : emitter(&e),
+        normal(fan.normal),
+        inv_area_distance(1.0 / (e.area_m2 * fan.plane_distance)),
+        plane_distance(fan.plane_distance),
+        emitter_normal(e.normal),
+        side(fan.front ? 1.0 : -1.0),
+        inv_area(1.0 / e.area_m2),
+        occluder(occ),
+        receiver(point),
+        shifted_receiver(fan.receiver),
         origin_to_centroid(e.centroid - fan.receiver) {}
 
   // Visibility of the emitter point at `r` (relative to the shifted receiver), tested from a

@@ -10,8 +10,8 @@ namespace luxgrid::nearfield {
 // The receiver's weight (receiver_kernel.h) replaces the cosine for cylindrical and
 // semi-cylindrical illuminance: E = I(-w) g(w) / d^2.
 double point_source_illuminance(const photometry::IntensityDistribution& distribution,
-                                const glm::dmat3& world_to_local, const Vec3& source, const Vec3& point,
-                                const Receiver& receiver) {
+                                const glm::dmat3& world_to_local, const Vec3& source,
+                                const Vec3& point, const Receiver& receiver) {
   const Vec3 r = source - point;
   const double d2 = glm::dot(r, r);
   if (!(d2 > 0.0)) return 0.0;

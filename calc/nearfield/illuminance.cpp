@@ -71,7 +71,8 @@ double illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, cons
       return adaptive_illuminance(e, point, normal, kHighAdaptiveRelTol, nullptr, occ);
     }
     case ModelKind::reference:
-      return reference_illuminance(e, point, normal, m.tolerance > 0 ? m.tolerance : kDefaultReferenceRelTol,
+      return reference_illuminance(e, point, normal,
+                                   m.tolerance > 0 ? m.tolerance : kDefaultReferenceRelTol,
                                    kReferenceMaxEvaluations, occ)
           .illuminance_lx;
   }
@@ -119,12 +120,14 @@ SwitchWeights switch_weights(const Emitter& e, const Vec3& point) {
 double far_field_weight(const Emitter& e, const Vec3& point) { return switch_weights(e, point).far; }
 
 double hybrid_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                          const Model& near_model, NearFieldSwitch mode, const geometry::Visibility* occ) {
+                          const Model& near_model, NearFieldSwitch mode,
+                          const geometry::Visibility* occ) {
   return hybrid_illuminance(e, point, Receiver::planar(normal), near_model, mode, occ);
 }
 
 double hybrid_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
-                          const Model& near_model, NearFieldSwitch mode, const geometry::Visibility* occ) {
+                          const Model& near_model, NearFieldSwitch mode,
+                          const geometry::Visibility* occ) {
   const Model far = Model::far_field();
   if (mode == NearFieldSwitch::never) return illuminance(e, point, receiver, far, occ);
   if (mode == NearFieldSwitch::always) return illuminance(e, point, receiver, near_model, occ);

@@ -1,26 +1,27 @@
 #pragma once
 // The one entry point the rest of luxgrid calls for direct light from one luminaire at one
-// receiver point, optionally with occlusion (geometry/visibility.h, tested per quadrature node: soft shadows), and
-// the near/far switch (an error bound per emitter, far_field_bound.h, or the five-times rule).
+// receiver point, optionally with occlusion (geometry/visibility.h, tested per quadrature node:
+// soft shadows), and the near/far switch (an error bound per emitter, far_field_bound.h, or the
+// five-times rule).
 #include <cstdint>
 #include <string>
 
 #include "calc/nearfield/emitter.h"
-#include "geometry/visibility.h"
 #include "calc/nearfield/receiver_kernel.h"
+#include "geometry/visibility.h"
 
 namespace luxgrid::nearfield {
 
 enum class ModelKind {
-  far_field,       // point at the centroid (quality draft)
-  paper_cubature,  // Luksch et al. 2020 as published ("near_field_model": "paper")
-  subdivided,      // every fan triangle split into 4^level with the paper's rule (Eq. 10)
+  far_field,           // point at the centroid (quality draft)
+  paper_cubature,      // Luksch et al. 2020 as published ("near_field_model": "paper")
+  subdivided,          // every fan triangle split into 4^level with the paper's rule (Eq. 10)
   lambert_subdivided,  // same split, exact projected solid angle and product average
-  adaptive,        // adaptive rung, local tolerance `tolerance`
-  standard,        // quality standard: within 1 % of the reference on the paper's protocol
-  high,            // quality high: the table rung for a measured table (exact to its
-                   // interpolant), else the adaptive rung at 1e-3
-  reference,       // converged area-form integrator, tolerance `tolerance` (quality reference)
+  adaptive,            // adaptive rung, local tolerance `tolerance`
+  standard,            // quality standard: within 1 % of the reference on the paper's protocol
+  high,                // quality high: the table rung for a measured table (exact to its
+                       // interpolant), else the adaptive rung at 1e-3
+  reference,           // converged area-form integrator, tolerance `tolerance` (quality reference)
 };
 // The baselines of [Luksch2020, Sec. 4] (structured sampling, the most representative point,
 // Monte Carlo) are research models of the accuracy study, not rungs: study/baselines.h.
@@ -92,12 +93,14 @@ enum class NearFieldSwitch { automatic, always, never };
 // fixed rule where the bound allows it, blended into the near model over its own band.
 // `occluder` as in illuminance(): the far-field part uses the centroid segment.
 double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal,
-                          const Model& near_model, NearFieldSwitch mode = NearFieldSwitch::automatic,
+                          const Model& near_model,
+                          NearFieldSwitch mode = NearFieldSwitch::automatic,
                           const geometry::Visibility* occluder = nullptr);
 // The same for any receiver: cylindrical and semi-cylindrical illuminance take the same
 // near/far decision as planar.
 double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Receiver& receiver,
-                          const Model& near_model, NearFieldSwitch mode = NearFieldSwitch::automatic,
+                          const Model& near_model,
+                          NearFieldSwitch mode = NearFieldSwitch::automatic,
                           const geometry::Visibility* occluder = nullptr);
 
 }  // namespace luxgrid::nearfield

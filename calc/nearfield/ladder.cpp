@@ -114,8 +114,8 @@ class GlobalRefiner {
 // Globally adaptive: always split the cell with the largest indicator, until the summed
 // indicators are below rel_tol times the estimate or the lookup budget is spent.
 double adaptive_fan(const Emitter& e, const Vec3& point, const Vec3& normal, double rel_tol,
-                    TriangleRule rule, double* error_lx, int* samples, const geometry::Visibility* occluder,
-                    int max_splits = kMaxAdaptiveSplits) {
+                    TriangleRule rule, double* error_lx, int* samples,
+                    const geometry::Visibility* occluder, int max_splits = kMaxAdaptiveSplits) {
   if (error_lx) *error_lx = 0.0;
   if (samples) *samples = 0;
   if (e.is_point())
@@ -181,13 +181,13 @@ double adaptive_fan(const Emitter& e, const Vec3& point, const Vec3& normal, dou
 
 }  // namespace
 
-double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                            double rel_tol, double* error_lx, const geometry::Visibility* occluder) {
+double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double rel_tol,
+                            double* error_lx, const geometry::Visibility* occluder) {
   return adaptive_fan(e, point, normal, rel_tol, TriangleRule::two_kernel, error_lx, nullptr, occluder);
 }
 
-double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                            double rel_tol, TriangleRule rule, double* error_lx, int* samples,
+double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double rel_tol,
+                            TriangleRule rule, double* error_lx, int* samples,
                             const geometry::Visibility* occluder) {
   return adaptive_fan(e, point, normal, rel_tol, rule, error_lx, samples, occluder);
 }
@@ -354,8 +354,8 @@ double sinh_adaptive(const Emitter& e, const Vec3& point, const Vec3& normal, do
   for (int i = 0; i < fan.triangles; ++i) {
     if (!(tri_qg[i] > 0.0)) continue;
     const SinhTriangle& T = tris[i];
-    const double projected = geometry::triangle_projected_solid_angle(glm::normalize(T.a), glm::normalize(T.b),
-                                                            glm::normalize(T.c), normal);
+    const double projected = geometry::triangle_projected_solid_angle(
+        glm::normalize(T.a), glm::normalize(T.b), glm::normalize(T.c), normal);
     sum += tri_qi[i] * inv_area * projected / tri_qg[i];
   }
   return sanitize_illuminance(sum);

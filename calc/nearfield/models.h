@@ -1,9 +1,9 @@
 #pragma once
 // The emitter models of the near-field ladder, each a plain function of (emitter, receiver point,
 // receiver unit normal) -> illuminance in lux. Most callers use illuminance() in
-// calc/nearfield/illuminance.h instead; these are public for tests, benchmarks and the accuracy study (study/).
-// `occluder` (optional, geometry/visibility.h) multiplies each quadrature node's radiance by its
-// visibility; nullptr (the default) is free.
+// calc/nearfield/illuminance.h instead; these are public for tests, benchmarks and the accuracy
+// study (study/). `occluder` (optional, geometry/visibility.h) multiplies each quadrature node's
+// radiance by its visibility; nullptr (the default) is free.
 #include <cstdint>
 
 #include "calc/nearfield/emitter.h"
@@ -19,8 +19,8 @@ namespace luxgrid::nearfield {
 // itself gets 0 (the point model has no answer there). The one copy of the far-field formula:
 // the far-field model below and calc/direct's luminaire form call it.
 double point_source_illuminance(const photometry::IntensityDistribution& distribution,
-                                const glm::dmat3& world_to_local, const Vec3& source, const Vec3& point,
-                                const Receiver& receiver);
+                                const glm::dmat3& world_to_local, const Vec3& source,
+                                const Vec3& point, const Receiver& receiver);
 
 // Far-field point at the emitter centroid: E = I(-w) cos(theta_x) / d^2, finite and >= 0.
 double far_field_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal);
@@ -58,12 +58,12 @@ double subdivided_illuminance(const Emitter& e, const Vec3& point, const Vec3& n
 // the children's sums; `error_lx` (optional) receives the summed |differences|. With an
 // occluder, a cell whose six nodes (corners and edge midpoints) disagree on visibility carries
 // at least half its value as error indicator, so the shadow edge is refined until it converges.
-double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                            double rel_tol, double* error_lx = nullptr,
+double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double rel_tol,
+                            double* error_lx = nullptr,
                             const geometry::Visibility* occluder = nullptr);
 // The same with a chosen rule; `samples` (optional) receives the number of intensity lookups.
-double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                            double rel_tol, TriangleRule rule, double* error_lx, int* samples,
+double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double rel_tol,
+                            TriangleRule rule, double* error_lx, int* samples,
                             const geometry::Visibility* occluder = nullptr);
 
 // The tolerance of standard's area-form tier (ladder.cpp) and of standard's cylindrical and
@@ -108,12 +108,14 @@ struct ReferenceResult {
 // With an occluder, each sample's integrand is multiplied by its visibility (the 7-point rule's
 // error estimate sees the discontinuity and refines along the shadow edge).
 ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                                      double rel_tol = 1e-7, std::int64_t max_evaluations = 4'000'000,
+                                      double rel_tol = 1e-7,
+                                      std::int64_t max_evaluations = 4'000'000,
                                       const geometry::Visibility* occluder = nullptr);
 // The same for any receiver (receiver_kernel.h): the integrand's cos_r becomes the receiver's
 // weight g(w); a cylinder has no horizon, so the fan covers the whole opening.
 ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
-                                      double rel_tol = 1e-7, std::int64_t max_evaluations = 4'000'000,
+                                      double rel_tol = 1e-7,
+                                      std::int64_t max_evaluations = 4'000'000,
                                       const geometry::Visibility* occluder = nullptr);
 
 }  // namespace luxgrid::nearfield

@@ -11,7 +11,8 @@ namespace luxgrid::nearfield {
 // spherical excess, [Luksch2020, Eq. 11]). The paper cubature and the `paper` rule of the
 // subdivided rungs call it.
 inline double paper_triangle(const FanSample& a, const FanSample& b, const FanSample& c) {
-  return (a.L + b.L + c.L) / 3.0 * ((a.G + b.G + c.G) / 3.0) * geometry::triangle_solid_angle(a.w, b.w, c.w);
+  return (a.L + b.L + c.L) / 3.0 * ((a.G + b.G + c.G) / 3.0) *
+         geometry::triangle_solid_angle(a.w, b.w, c.w);
 }
 
 // L average that is exact when both L and the area-form weight rho = cos_r cos_e / d^2 are
@@ -78,12 +79,13 @@ inline double triangle_estimate(const FanSample& a, const FanSample& b, const Fa
                                 const SampleContext& ctx, TriangleRule rule) {
   const Vec3& normal = ctx.normal;
   switch (rule) {
-    case TriangleRule::paper:
-      return paper_triangle(a, b, c);
+    case TriangleRule::paper: return paper_triangle(a, b, c);
     case TriangleRule::lambert_mean:
-      return (a.L + b.L + c.L) / 3.0 * geometry::triangle_projected_solid_angle(a.w, b.w, c.w, normal);
+      return (a.L + b.L + c.L) / 3.0 *
+             geometry::triangle_projected_solid_angle(a.w, b.w, c.w, normal);
     case TriangleRule::lambert_product:
-      return product_average(a, b, c) * geometry::triangle_projected_solid_angle(a.w, b.w, c.w, normal);
+      return product_average(a, b, c) *
+             geometry::triangle_projected_solid_angle(a.w, b.w, c.w, normal);
     case TriangleRule::two_kernel:
       return two_kernel_estimate(a, b, c, normal, ctx.emitter_normal, ctx.side, ctx.inv_area);
   }

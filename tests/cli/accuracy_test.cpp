@@ -2,12 +2,12 @@
 // writes its table and plot; bad input is exit 2.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
 
 #include "calc/nearfield/illuminance.h"
 #include "tests/cli/cli_support.h"

@@ -97,7 +97,8 @@ struct Balance {
 
 Balance first_bounce_balance(const Scene& scene) {
   const PatchMesh mesh = build_patch_mesh(scene, 0.25);
-  const FirstBounce fb = first_bounce(scene, mesh, std::vector<const geometry::Visibility*>(scene.rooms.size(), nullptr));
+  const FirstBounce fb = first_bounce(
+      scene, mesh, std::vector<const geometry::Visibility*>(scene.rooms.size(), nullptr));
   Balance b;
   b.emitted_lm = fb.emitted_flux_lm;
   b.received_lm = fb.received_flux_lm;
@@ -167,7 +168,8 @@ TEST(EmitterExtent, EnergyBalanceForOpeningsFromOneCentimetreToOneHundredMetres)
 TEST(EmitterExtent, AnOpeningPartlyOutsideItsRoomSaysSo) {
   const Scene scene = extent_scene("rectangle", 100.0);
   const PatchMesh mesh = build_patch_mesh(scene, 0.5);
-  const FirstBounce fb = first_bounce(scene, mesh, std::vector<const geometry::Visibility*>(1, nullptr));
+  const FirstBounce fb =
+      first_bounce(scene, mesh, std::vector<const geometry::Visibility*>(1, nullptr));
   ASSERT_EQ(fb.notes.size(), 1u);
   EXPECT_NE(fb.notes[0].find("99.84 % of its luminous opening (rectangle 100 x 100 m)"), std::string::npos)
       << fb.notes[0];

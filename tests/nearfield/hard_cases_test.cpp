@@ -16,8 +16,9 @@ namespace {
 using testing::kUp;
 using testing::paper_emitter;
 
-const Model kAllModels[] = {Model::far_field(), Model::paper_cubature(), Model::subdivided(2),
-                            Model::lambert_subdivided(1), Model::adaptive(1e-3), Model::standard(),
+const Model kAllModels[] = {Model::far_field(),    Model::paper_cubature(),
+                            Model::subdivided(2),  Model::lambert_subdivided(1),
+                            Model::adaptive(1e-3), Model::standard(),
                             Model::reference(1e-5)};  // the study's baselines: tests/study
 
 void expect_sane_everywhere(const Emitter& e, const Vec3& p, const Vec3& n, const char* what) {

@@ -163,8 +163,9 @@ TEST(FarField, InverseSquareCosine) {
 TEST(EntryPoint, EveryModelNamesItselfAndAgreesFarAway) {
   const Emitter e = paper_emitter(20.0, kPi, testing::batwing());
   const double ff = illuminance(e, Vec3(1.0, 2.0, 0.0), kUp, Model::far_field());
-  for (const Model& m : {Model::paper_cubature(), Model::subdivided(2), Model::lambert_subdivided(1),
-                         Model::adaptive(1e-4), Model::standard(), Model::reference()}) {
+  for (const Model& m :
+       {Model::paper_cubature(), Model::subdivided(2), Model::lambert_subdivided(1),
+        Model::adaptive(1e-4), Model::standard(), Model::reference()}) {
     EXPECT_FALSE(to_string(m).empty());
     EXPECT_NEAR(illuminance(e, Vec3(1.0, 2.0, 0.0), kUp, m), ff, 2e-3 * ff) << to_string(m);
   }

@@ -1,7 +1,7 @@
-// Soft shadows in the near-field models (geometry/visibility.h, calc/nearfield/fan_sample.h): a 1 x 1
-// Lambertian emitter 1 m above the receiver, partly hidden by an opaque half-plane screen
-// {z = kScreenZ, x >= kScreenEdgeX} between them. A ray from the receiver R to the emitter point
-// P passes the screen at x = R.x + kScreenZ (P.x - R.x) / h, so the part of the emitter that R sees
+// Soft shadows in the near-field models (geometry/visibility.h, calc/nearfield/fan_sample.h): a 1 x
+// 1 Lambertian emitter 1 m above the receiver, partly hidden by an opaque half-plane screen {z =
+// kScreenZ, x >= kScreenEdgeX} between them. A ray from the receiver R to the emitter point P
+// passes the screen at x = R.x + kScreenZ (P.x - R.x) / h, so the part of the emitter that R sees
 // is exactly the strip P.x < x_c = R.x + (kScreenEdgeX - R.x) h / kScreenZ: the value to match
 // is Lambert's exact formula on that clipped rectangle with the emitter's luminance.
 #include <gtest/gtest.h>

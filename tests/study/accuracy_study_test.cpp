@@ -26,7 +26,7 @@ const AccuracyStudy& quick_study() {
     auto files = luxgrid::study::paper_ldt_files(kLdtDir);
     files.resize(1);
     return luxgrid::study::run_accuracy_study(luxgrid::study::accuracy_data_sets(files),
-                                            luxgrid::study::accuracy_models(true), o);
+                                              luxgrid::study::accuracy_models(true), o);
   }();
   return study;
 }
@@ -55,7 +55,8 @@ TEST(AccuracyStudy, EveryCellIsFiniteAndComplete) {
   EXPECT_EQ(s.cells.size(), s.data_sets.size() * s.options.heights.size() * s.models.size());
   EXPECT_EQ(s.points_per_cell, 5 * 4 * 4);
   for (const auto& c : s.cells) {
-    EXPECT_TRUE(std::isfinite(c.nrms) && c.nrms >= 0.0) << c.data_set << " " << c.height << " " << c.model;
+    EXPECT_TRUE(std::isfinite(c.nrms) && c.nrms >= 0.0)
+        << c.data_set << " " << c.height << " " << c.model;
     EXPECT_TRUE(std::isfinite(c.max_rel) && c.max_rel >= 0.0) << c.model;
     EXPECT_TRUE(std::isfinite(c.centre_rel)) << c.model;
     EXPECT_TRUE(std::isfinite(c.ns_per_eval) && c.ns_per_eval > 0.0) << c.model;
@@ -93,14 +94,16 @@ TEST(AccuracyStudy, LambertRungIsExactForCosineAndStandardWithinOnePercent) {
     for (const auto& ds : s.data_sets) {  // quality standard: within 1 % (docs/accuracy.md)
       EXPECT_LT(s.cell(ds, h, model_index(s, Model::standard())).max_rel, 0.01) << ds << " h=" << h;
       // ... of every point's own value, for the points brighter than 1e-3 of the cell's peak.
-      EXPECT_LT(s.cell(ds, h, model_index(s, Model::standard())).point_rel, 0.01) << ds << " h=" << h;
+      EXPECT_LT(s.cell(ds, h, model_index(s, Model::standard())).point_rel, 0.01)
+          << ds << " h=" << h;
     }
   }
 }
 
 TEST(AccuracyStudy, SubdivisionReducesThePaperError) {
   const auto& s = quick_study();
-  EXPECT_LT(s.mean_nrms(model_index(s, Model::subdivided(3))), 0.5 * s.mean_nrms(model_index(s, Model::paper_cubature())));
+  EXPECT_LT(s.mean_nrms(model_index(s, Model::subdivided(3))),
+            0.5 * s.mean_nrms(model_index(s, Model::paper_cubature())));
 }
 
 TEST(AccuracyStudy, MonteCarloErrorFallsWithSamples) {
@@ -117,7 +120,8 @@ TEST(AccuracyStudy, MonteCarloErrorFallsWithSamples) {
 TEST(AccuracyStudy, MarkdownNamesEveryModelAndDataSet) {
   const auto& s = quick_study();
   const std::string md = luxgrid::study::format_accuracy_markdown(s, "test");
-  for (const auto& m : s.models) EXPECT_NE(md.find("| " + m.name + " |"), std::string::npos) << m.name;
+  for (const auto& m : s.models)
+    EXPECT_NE(md.find("| " + m.name + " |"), std::string::npos) << m.name;
   for (const auto& d : s.data_sets) EXPECT_NE(md.find("| " + d + " |"), std::string::npos) << d;
 }
 

@@ -48,7 +48,8 @@ TEST(Baselines, AgreeWithTheFarFieldFarAway) {
   const Emitter e = paper_emitter(20.0, kPi, nearfield::testing::batwing());
   const Vec3 p(1.0, 2.0, 0.0);
   const double ff = nearfield::far_field_illuminance(e, p, kUp);
-  for (const AccuracyModel& m : {AccuracyModel::structured_sampling(), AccuracyModel::monte_carlo(256)})
+  for (const AccuracyModel& m :
+       {AccuracyModel::structured_sampling(), AccuracyModel::monte_carlo(256)})
     EXPECT_NEAR(evaluate(m, e, p, kUp, 1), ff, 2e-3 * ff) << m.name;
   EXPECT_NEAR(evaluate(AccuracyModel::most_representative_point(), e, p, kUp, 1), ff, 2e-2 * ff);
 }
