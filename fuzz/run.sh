@@ -17,10 +17,7 @@ if [ -z "$CXX_CLANG" ]; then
 fi
 LAUNCHER=""
 if command -v ccache >/dev/null 2>&1; then LAUNCHER="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"; fi
-# CI builds cold: precompiled headers there (as scripts/build.sh does for the main build).
-PCH=""
-if [ "${CI:-}" = true ]; then PCH="-DLUXGRID_PCH=ON"; fi
-cmake -S "$ROOT/fuzz" -B "$BUILD" -DCMAKE_CXX_COMPILER="$CXX_CLANG" -DCMAKE_BUILD_TYPE=RelWithDebInfo $LAUNCHER $PCH >/dev/null
+cmake -S "$ROOT/fuzz" -B "$BUILD" -DCMAKE_CXX_COMPILER="$CXX_CLANG" -DCMAKE_BUILD_TYPE=RelWithDebInfo $LAUNCHER >/dev/null
 cmake --build "$BUILD" -j"$(nproc)"
 
 echo "== sanitized unit tests (ASan + UBSan): photometric readers and project loader"

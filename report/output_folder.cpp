@@ -83,7 +83,7 @@ void check_replaceable(const fs::path& target, const std::vector<fs::path>& inpu
     const std::string name = e.path().filename().string();
     if (name == kOutputMarker) continue;
     if (!has_marker) {
-      throw InputError(SourceLocation{target.string()}, "is a folder that luxgrid did not write (it has no " +
+      throw InputError(SourceLocation{target.string()}, std::string("is a folder that luxgrid did not write (it has no ") +
                        kOutputMarker + " file) and it is not empty; choose a new or empty folder (-o)");
     }
     if (!listed.count(name)) {

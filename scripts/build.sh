@@ -7,11 +7,10 @@ cd "$(dirname "$0")/.."
 launcher=()
 if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 # In CI (CI=true, as GitHub Actions and most CI services set it) warnings are errors, and the
-# Google Benchmark programs (bench/, run by hand: docs/performance.md) are not built and the
-# gtest and nlohmann-json headers are precompiled (LUXGRID_PCH), to keep the job within its time
-# on a 2-core machine.
+# Google Benchmark programs (bench/, run by hand: docs/performance.md) are not built, to keep the
+# job within its time on a 2-core machine.
 options=()
-if [ "${CI:-}" = true ]; then options+=(-DLUXGRID_WERROR=ON -DLUXGRID_BUILD_BENCH=OFF -DLUXGRID_PCH=ON); fi
+if [ "${CI:-}" = true ]; then options+=(-DLUXGRID_WERROR=ON -DLUXGRID_BUILD_BENCH=OFF); fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" "${options[@]}" >/dev/null
 if [ "$#" -gt 0 ]; then
   cmake --build build -j"$(nproc)" --target "$@"

@@ -34,9 +34,9 @@ TEST(QueriedKeys, AKeyNoReaderTakesIsNamedWithTheKeysItsObjectWasReadFor) {
             "name, photometry, position, rotation)");
 }
 
-TEST(QueriedKeys, AKeyReadOnlyInAnotherBranchIsRefused) {
-  // "size" belongs to rectangles: a disk emitter never reads it. The old allow-list accepted any
-  // key of the emitter object in either shape.
+TEST(QueriedKeys, TheKeysOfferedAreThoseTheBranchTakenAskedFor) {
+  // A point emitter asks only whether "size" or "diameter" is there (to refuse them): with the
+  // shape, those are the keys offered for a misspelt one.
   auto doc = office();
   doc["luminaires"][0]["emitter"] = {{"shape", "point"}, {"diameter_mm", 5}};
   EXPECT_EQ(error_of(doc), "p.json /luminaires/0/emitter/diameter_mm: unknown key \"diameter_mm\" "

@@ -11,7 +11,6 @@
 #include "util/error.h"
 
 namespace luxgrid::project {
-using namespace calc;
 namespace {
 
 std::string error_of(const std::string& text) {
