@@ -6,20 +6,6 @@
 
 namespace luxgrid::calc {
 
-namespace {
-
-// A whole number after `prefix` in `name` ("lambert-3" -> 3), or -1.
-int suffix_number(const std::string& name, const std::string& prefix) {
-  if (name.rfind(prefix, 0) != 0 || name.size() == prefix.size()) return -1;
-  const std::string digits = name.substr(prefix.size());
-  for (char c : digits) {
-    if (c < '0' || c > '9') return -1;
-  }
-  return digits.size() > 6 ? -1 : std::atoi(digits.c_str());
-}
-
-}  // namespace
-
 nearfield::Model near_model_for(const Settings& settings) {
   using nearfield::Model;
   const std::string& name = settings.near_field_model;
@@ -31,19 +17,9 @@ nearfield::Model near_model_for(const Settings& settings) {
       case Quality::reference: return Model::reference();
     }
   }
-  if (name == "paper") return Model::paper_cubature();
-  if (name == "far-field") return Model::far_field();
-  if (name == "standard") return Model::standard();
-  if (name == "high") return Model::high();
-  if (name == "adaptive") return Model::adaptive(1e-3);
-  if (name == "reference") return Model::reference();
-  if (int k = suffix_number(name, "subdivided-"); k >= 0 && k <= 6) return Model::subdivided(k);
-  if (int k = suffix_number(name, "lambert-"); k >= 0 && k <= 6)
-    return Model::lambert_subdivided(k);
-  throw InputError(
-      "/settings/near_field_model: unknown model \"" + name +
-      "\" (expected paper, far-field, standard, high, adaptive, reference, subdivided-K or "
-      "lambert-K with K from 0 to 6)");
+  if (auto model = near_model_named(name)) return *model;
+  throw InputError(SourceLocation{"", 0, 0, "/settings/near_field_model"},
+                   "unknown model \"" + name + "\" (expected " + kNearFieldModelNames + ")");
 }
 
 Plan make_plan(const Scene& scene) {

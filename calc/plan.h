@@ -3,10 +3,12 @@
 // recorded in words, so results say what was simulated ("indirect: skipped, all reflectances are
 // 0"). Later capabilities add their decisions here.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "calc/indirect/decision.h"
+#include "calc/near_model_name.h"
 #include "calc/nearfield/illuminance.h"
 #include "calc/scene.h"
 #include "calc/visibility.h"
@@ -31,9 +33,9 @@ struct Plan {
   std::vector<std::string> notes;
 };
 
-// The near-field rung for a quality, or for settings.near_field_model when it is set
-// ("paper", "standard", "high", "reference", "far-field", "subdivided-K", "lambert-K",
-// "adaptive"). Throws InputError for an unknown name.
+// The near-field rung for a quality, or for settings.near_field_model when it is set. Throws
+// InputError at /settings/near_field_model for an unknown name (a scene built in code; a loaded
+// project has been checked).
 nearfield::Model near_model_for(const Settings& settings);
 
 Plan make_plan(const Scene& scene);

@@ -1,6 +1,6 @@
 #pragma once
 // The scene as the calculation sees it: everything in the project file, resolved, validated and
-// in SI units and radians. Built by calc/project_file, read by calc/plan, calc/direct, report/.
+// in SI units and radians. Built by project/project_file, read by calc/plan, calc/direct, report/.
 #include <filesystem>
 #include <map>
 #include <optional>

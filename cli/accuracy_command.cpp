@@ -44,7 +44,7 @@ void add_accuracy_command(CLI::App& app, Runner& run) {
       if (!opt->quick)
         for (const auto& f : contrast_files(photometry)) files.push_back(f);
       for (const auto& f : files)
-        if (!fs::exists(f)) throw InputError(f.string() + ": photometry file of the study not found (--photometry)");
+        if (!fs::exists(f)) throw InputError(SourceLocation{f.string()}, "photometry file of the study not found (--photometry)");
       AccuracyOptions options;
       if (opt->quick) {
         files.resize(1);

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "project/project_file.h"
 #include "cli/run_project.h"
 
 namespace luxgrid::cli {
@@ -18,7 +19,7 @@ void add_cost_command(CLI::App& app, Runner& run) {
   cmd->add_option("PROJECT", opt->project, "Project file (JSON)")->required();
   cmd->callback([opt, &run] {
     run = [opt] {
-      const LoadedProject loaded = load_project_with_requirements(opt->project);
+      const project::Project loaded = project::load_project(opt->project);
       for (const auto& w : loaded.scene.warnings) std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
       const auto table = run_cost(loaded.scene, true);
       std::fputs(report::format_cost_table(table).c_str(), stdout);

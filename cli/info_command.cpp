@@ -141,7 +141,7 @@ void write_polar_png(const Photometry& p, const std::filesystem::path& path) {
   }
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
-  if (ec) throw InputError(path.string() + ": cannot write the image: " + ec.message());
+  if (ec) throw InputError(SourceLocation{path.string()}, "cannot write the image: " + ec.message());
 }
 
 int run_info(const std::string& file, bool json, const std::vector<std::string>& at_args,
@@ -163,7 +163,7 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
     try {
       ugr_table = calc::glare::ugr_table(p.distribution, p.opening, calc::glare::table_lamp_flux_lm(p, *p.distribution));
     } catch (const InputError& e) {
-      throw InputError(file + ": " + e.what());
+      throw InputError(SourceLocation{file}, e.what());
     }
   }
   std::vector<double> intensities;

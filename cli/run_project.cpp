@@ -3,8 +3,7 @@
 #include <chrono>
 
 #include "calc/pipeline.h"
-#include "calc/project_file.h"
-#include "calc/safe_json.h"
+#include "project/project_file.h"
 #include "cli/progress.h"
 #include "report/colour_rendering.h"
 #include "report/output_folder.h"
@@ -21,20 +20,6 @@ std::filesystem::path default_output_dir(const std::filesystem::path& project) {
   return out;
 }
 
-LoadedProject load_project_with_requirements(const std::filesystem::path& project) {
-  // One safe parse (size, depth, duplicate keys, number range) feeds both readers.
-  // The bytes are read once: the hash in results.json is of exactly what was parsed.
-  const std::string text = calc::read_bounded_file(project);
-  const nlohmann::json doc = calc::parse_json_text(text, project.string());
-  const std::string label = project.filename().string();
-  LoadedProject out;
-  out.scene = calc::parse_project(report::without_requirements(doc), label, project.parent_path());
-  out.scene.project_file = project;
-  out.scene.project_sha256 = sha256_hex(text);
-  out.requirements = report::parse_requirements(doc, label);
-  return out;
-}
-
 std::vector<std::filesystem::path> input_files(const calc::Scene& scene) {
   std::vector<std::filesystem::path> out{scene.project_file};
   const std::filesystem::path dir = scene.project_file.parent_path();
@@ -44,10 +29,10 @@ std::vector<std::filesystem::path> input_files(const calc::Scene& scene) {
   return out;
 }
 
-RunOutcome run_project(const std::filesystem::path& project, const std::filesystem::path& out_dir,
+RunOutcome run_project(const std::filesystem::path& project_file, const std::filesystem::path& out_dir,
                        const RunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
-  LoadedProject loaded = load_project_with_requirements(project);
+  project::Project loaded = project::load_project(project_file);
   calc::Scene& scene = loaded.scene;
   if (options.quality) scene.settings.quality = *options.quality;
   const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -62,7 +47,7 @@ RunOutcome run_project(const std::filesystem::path& project, const std::filesyst
   } catch (const InputError& e) {
     // Found only while calculating (a room whose faces exceed the patch budget): name the file.
     end_progress();
-    throw InputError(project.filename().string() + ": " + e.what());
+    throw e.in_file(project_file.filename().string());
   }
   end_progress();
   outcome.results.timing_s.insert(outcome.results.timing_s.begin(), {"load", load_s});

@@ -36,15 +36,6 @@ struct RunOutcome {
   std::vector<std::string> kept;  // files of the previous output carried over (report.html under --no-report)
 };
 
-// A project and the requirements its surfaces state. The loader does not know the
-// "requirements" key yet, so they are read from the raw document and removed before it parses
-// (harmless once it does).
-struct LoadedProject {
-  calc::Scene scene;
-  report::Requirements requirements;
-};
-LoadedProject load_project_with_requirements(const std::filesystem::path& project);
-
 // Loads `project`, runs it and writes every output into `out_dir` atomically.
 RunOutcome run_project(const std::filesystem::path& project, const std::filesystem::path& out_dir,
                        const RunOptions& options);

@@ -17,20 +17,20 @@ constexpr std::size_t kReadChunkBytes = 64u << 10;
 void check_size(std::size_t size, const std::string& name, std::size_t max_bytes,
                 const char* kind) {
   if (size > max_bytes)
-    throw InputError(name + ": file is " + std::to_string(size) + " bytes; " + kind +
+    throw InputError(SourceLocation{name}, "file is " + std::to_string(size) + " bytes; " + kind +
                      " files are expected below " + std::to_string(max_bytes) + " bytes");
 }
 
 std::string read_bounded_file(const std::filesystem::path& file, const std::string& name,
                               std::size_t max_bytes, const char* kind) {
   std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) throw InputError(name + ": file not found");
-  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(name + ": not a regular file");
+  if (!std::filesystem::exists(file, ec)) throw InputError(SourceLocation{name}, "file not found");
+  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(SourceLocation{name}, "not a regular file");
   const auto size = std::filesystem::file_size(file, ec);
-  if (ec) throw InputError(name + ": cannot read the file size: " + ec.message());
+  if (ec) throw InputError(SourceLocation{name}, "cannot read the file size: " + ec.message());
   check_size(static_cast<std::size_t>(size), name, max_bytes, kind);
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(name + ": cannot open the file");
+  if (!in) throw InputError(SourceLocation{name}, "cannot open the file");
   // Read in chunks and stop past the limit: the file may have grown since its size was taken,
   // and files under /proc report size 0 whatever they hold.
   std::string bytes;
@@ -52,7 +52,7 @@ void check_is_text(std::string_view bytes, const std::string& name, const char* 
     if (c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f') ++control;
   }
   if (nul || control * 10 > head.size() * kMaxControlBytesPerTen)
-    throw InputError(name + ": expected a text file (" + expected + "), found binary data");
+    throw InputError(SourceLocation{name}, std::string("expected a text file (") + expected + "), found binary data");
 }
 
 }  // namespace luxgrid::photometry

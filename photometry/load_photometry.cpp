@@ -56,7 +56,7 @@ bool looks_like_ies(std::string_view bytes) {
 
 Photometry load_photometry_text(std::string_view bytes, const std::string& name,
                                 const LoadOptions& options) {
-  if (bytes.empty()) throw InputError(name + ": file is empty");
+  if (bytes.empty()) throw InputError(SourceLocation{name}, "file is empty");
   // Photometric files are text: NUL bytes or mostly control bytes mean something else.
   check_is_text(bytes, name, "IES or EULUMDAT");
   const std::filesystem::path dir = std::filesystem::path(name).parent_path();

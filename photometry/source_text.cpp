@@ -36,7 +36,7 @@ std::string SourceText::where(int line) const {
 }
 
 void SourceText::fail(int line, const std::string& message) const {
-  throw InputError(where(line) + ": " + message);
+  throw InputError(SourceLocation{name_, std::max(line, 0)}, message);
 }
 
 std::vector<Token> SourceText::tokens_from(int first_line) const {

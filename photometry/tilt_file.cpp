@@ -36,7 +36,7 @@ std::string read_tilt_file(const SourceText& ies, int tilt_line, std::string_vie
   path_out = path;
   try {
     std::string bytes = read_bounded_file(path, path.string(), kMaxTiltFileBytes, "TILT");
-    if (bytes.empty()) throw InputError(path.string() + ": file is empty");
+    if (bytes.empty()) throw InputError(SourceLocation{path.string()}, "file is empty");
     check_is_text(bytes, path.string(), "TILT data");
     return bytes;
   } catch (const InputError& e) {

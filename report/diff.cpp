@@ -6,7 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "calc/safe_json.h"
+#include "project/json_reader.h"
+#include "project/safe_json.h"
 #include "report/results_json.h"
 #include "util/error.h"
 
@@ -37,15 +38,18 @@ PointDifference point_difference(const std::vector<double>& a, const std::vector
 
 namespace {
 
-std::vector<double> numbers_at(const nlohmann::json& s, const char* key, const std::string& where) {
+// The array of numbers s[key], s being /surfaces/<index> of the file `label`.
+std::vector<double> numbers_at(const nlohmann::json& s, const char* key, const std::string& label, size_t index) {
+  const std::string where = "/surfaces/" + std::to_string(index) + "/" + key;
   const auto it = s.find(key);
-  if (it == s.end() || !it->is_array()) throw InputError(where + "/" + key + ": expected an array of numbers");
+  if (it == s.end() || !it->is_array()) throw InputError(SourceLocation{label, 0, 0, where}, "expected an array of numbers");
   std::vector<double> out;
   out.reserve(it->size());
   for (size_t i = 0; i < it->size(); ++i) {
     const auto& v = (*it)[i];
     if (!v.is_number()) {
-      throw InputError(where + "/" + key + "/" + std::to_string(i) + ": expected a number, got " + v.dump());
+      throw InputError(SourceLocation{label, 0, 0, where + "/" + std::to_string(i)},
+                       "expected a number, got " + project::json_type_name(v));
     }
     out.push_back(v.get<double>());
   }
@@ -92,14 +96,14 @@ calc::Statistics stats_of(const nlohmann::json& s) {
 const nlohmann::json& surfaces_of(const nlohmann::json& doc, const std::string& label) {
   if (!doc.is_object() || !doc.contains("format") ||
       (doc["format"] != kResultsFormat && doc["format"] != kResultsFormatV1)) {
-    throw InputError(label + ": not a luxgrid results file (expected \"format\": \"" +
+    throw InputError(SourceLocation{label}, "not a luxgrid results file (expected \"format\": \"" +
                      std::string(kResultsFormat) + "\")");
   }
   const auto it = doc.find("surfaces");
-  if (it == doc.end() || !it->is_array()) throw InputError(label + " /surfaces: expected an array");
+  if (it == doc.end() || !it->is_array()) throw InputError(SourceLocation{label, 0, 0, "/surfaces"}, "expected an array");
   for (size_t i = 0; i < it->size(); ++i) {
     if (!(*it)[i].is_object() || !(*it)[i].contains("name") || !(*it)[i]["name"].is_string()) {
-      throw InputError(label + " /surfaces/" + std::to_string(i) + "/name: expected a string");
+      throw InputError(SourceLocation{label, 0, 0, "/surfaces/" + std::to_string(i) + "/name"}, "expected a string");
     }
   }
   return *it;
@@ -120,11 +124,11 @@ ResultsDiff diff_results(const nlohmann::json& a, const std::string& label_a,
   // Every surface must be in both: a missing one is named, from whichever side lacks it.
   for (const auto& s : sa) {
     const std::string name = s["name"];
-    if (!find(sb, name)) throw InputError(label_b + ": surface \"" + name + "\" of " + label_a + " is missing");
+    if (!find(sb, name)) throw InputError(SourceLocation{label_b}, "surface \"" + name + "\" of " + label_a + " is missing");
   }
   for (const auto& s : sb) {
     const std::string name = s["name"];
-    if (!find(sa, name)) throw InputError(label_a + ": surface \"" + name + "\" of " + label_b + " is missing");
+    if (!find(sa, name)) throw InputError(SourceLocation{label_a}, "surface \"" + name + "\" of " + label_b + " is missing");
   }
   ResultsDiff out{label_a, label_b, {}, 0.0};
   for (size_t i = 0; i < sa.size(); ++i) {
@@ -132,8 +136,8 @@ ResultsDiff diff_results(const nlohmann::json& a, const std::string& label_a,
     const nlohmann::json& other = *find(sb, name);
     size_t j = 0;
     while (sb[j]["name"] != name) ++j;
-    auto ea = numbers_at(sa[i], "E", label_a + " /surfaces/" + std::to_string(i));
-    auto eb = numbers_at(other, "E", label_b + " /surfaces/" + std::to_string(j));
+    auto ea = numbers_at(sa[i], "E", label_a, i);
+    auto eb = numbers_at(other, "E", label_b, j);
     if (ea.size() != eb.size()) {
       throw InputError("surface \"" + name + "\": " + label_a + " has " + std::to_string(ea.size()) +
                        " points, " + label_b + " has " + std::to_string(eb.size()));
@@ -149,7 +153,7 @@ ResultsDiff diff_results(const nlohmann::json& a, const std::string& label_a,
 nlohmann::json read_results_file(const fs::path& path) {
   fs::path file = path;
   if (fs::is_directory(file)) file /= "results.json";
-  return calc::read_json_file(file, calc::kMaxResultsFileBytes, "results file");
+  return project::read_json_file(file, project::kMaxResultsFileBytes, "results file");
 }
 
 std::string format_diff(const ResultsDiff& d) {

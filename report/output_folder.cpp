@@ -65,7 +65,7 @@ void check_replaceable(const fs::path& target, const std::vector<fs::path>& inpu
   std::error_code ec;
   for (const auto& input : inputs) {
     if (lies_within(input, target)) {
-      throw InputError(target.string() + ": the output folder would replace " + input.string() +
+      throw InputError(SourceLocation{target.string()}, "the output folder would replace " + input.string() +
                        ", an input of this run; choose another output folder (-o)");
     }
   }
@@ -83,16 +83,16 @@ void check_replaceable(const fs::path& target, const std::vector<fs::path>& inpu
     const std::string name = e.path().filename().string();
     if (name == kOutputMarker) continue;
     if (!has_marker) {
-      throw InputError(target.string() + ": is a folder that luxgrid did not write (it has no " +
+      throw InputError(SourceLocation{target.string()}, std::string("is a folder that luxgrid did not write (it has no ") +
                        kOutputMarker + " file) and it is not empty; choose a new or empty folder (-o)");
     }
     if (!listed.count(name)) {
-      throw InputError(target.string() + ": holds \"" + name +
+      throw InputError(SourceLocation{target.string()}, "holds \"" + name +
                        "\", which luxgrid did not write; it is left as it is (move it away or "
                        "choose another -o)");
     }
   }
-  if (ec) throw InputError(target.string() + ": cannot read the folder: " + ec.message());
+  if (ec) throw InputError(SourceLocation{target.string()}, "cannot read the folder: " + ec.message());
 }
 
 // Staging folders `.NAME.tmp-PID-SEQ` (and `.old` ones) of processes that no longer run: a run killed
@@ -168,18 +168,18 @@ OutputFolder::OutputFolder(fs::path target, std::vector<fs::path> inputs)
   if (fs::is_symlink(link)) {
     // Followed, never replaced: the folder it points to is the target.
     if (!fs::exists(fs::status(target_, ec))) {
-      throw InputError(target_.string() + ": is a symbolic link to nothing; give a folder (-o)");
+      throw InputError(SourceLocation{target_.string()}, "is a symbolic link to nothing; give a folder (-o)");
     }
     target_ = fs::canonical(target_, ec);
-    if (ec) throw InputError(target_.string() + ": cannot resolve the symbolic link: " + ec.message());
+    if (ec) throw InputError(SourceLocation{target_.string()}, "cannot resolve the symbolic link: " + ec.message());
   }
   if (target_.filename().empty() || target_ == target_.root_path()) {
-    throw InputError(target_.string() + ": cannot be an output folder (choose a new folder, -o)");
+    throw InputError(SourceLocation{target_.string()}, "cannot be an output folder (choose a new folder, -o)");
   }
   check_replaceable(target_, inputs_);
   const fs::path parent = target_.parent_path();
   fs::create_directories(parent, ec);
-  if (ec) throw InputError(parent.string() + ": cannot create the folder: " + ec.message());
+  if (ec) throw InputError(SourceLocation{parent.string()}, "cannot create the folder: " + ec.message());
   remove_stale_staging(parent, target_.filename().string());
   // PID-SEQ: unique per process and per folder object, so two in one process do not collide.
   static std::atomic<unsigned> sequence{0};

@@ -1,5 +1,6 @@
 #pragma once
-// Requirement checks, EN 12464-1 style [EN12464-1]. A calculation surface (a task area) may carry
+// Requirement checks, EN 12464-1 style [EN12464-1]: the results against what the project's
+// surfaces must meet (read by project/requirements.h). A calculation surface (a task area) may carry
 //   "requirements": { "preset": "office-writing", "Em": 500, "U0": 0.6, "Emin": 300, "Emax": 1000,
 //                     "UGR_L": 19, "Ra": 80, "Ez": 150, "Esc": 50, "modelling": [0.3, 0.6],
 //                     "glare_observers": "eyes", "cylindrical": "faces", "horizontal": "faces h" }
@@ -16,41 +17,14 @@
 #include <nlohmann/json.hpp>
 
 #include "calc/results.h"
+#include "project/requirements.h"
 
 namespace luxgrid::report {
 
-// What one grid must meet.
-struct SurfaceRequirements {
-  std::string role = "task area";  // "task area", "wall", "ceiling", "floor"
-  std::map<std::string, double> limits;  // "Em", "U0", "Emin", "Emax", "Ez", "Esc", "UGR_L", "Ra"
-  // The quantities a preset filled (an explicit key overrides the preset and is not listed), with
-  // the row's citation: "office-writing: EN 12464-1:2021 Table 5.26 Offices, ref. 5.26.2".
-  std::map<std::string, std::string> from_preset;
-  std::optional<std::pair<double, double>> modelling;  // Ez / Eh at every point within [lo, hi]
-  std::string preset;                        // the preset key, or empty
-  std::vector<std::string> glare_observers;  // observers surfaces for UGR_L; empty: every one
-  std::string cylindrical;  // the cylindrical surface giving Ez (and modelling's numerator)
-  std::string horizontal;   // on a cylindrical surface: the horizontal one giving modelling's Eh
-};
-
-struct Requirements {
-  std::map<std::string, SurfaceRequirements> surfaces;  // by grid name ("room ceiling" included)
-  // room_surfaces entry name -> what each of its "<name> wall k" grids must meet.
-  std::map<std::string, SurfaceRequirements> walls;
-  bool empty() const { return surfaces.empty() && walls.empty(); }
-};
-
-// Reads the "requirements" of every entry of /surfaces in a raw project document. Throws
-// InputError naming `label` and the JSON pointer: an unknown quantity
-// (`p.json /surfaces/0/requirements/Eav: unknown quantity "Eav", expected ...`), a value that
-// is not a positive number, U0 above 1, an unknown preset, a quantity the surface does not
-// compute (Ez on a planar surface that names no cylindrical one), a named surface that does not
-// exist or computes the wrong quantity.
-Requirements parse_requirements(const nlohmann::json& project, const std::string& label);
-
-// Returns a copy of the project document without the "requirements" keys, for a loader that does
-// not know them.
-nlohmann::json without_requirements(const nlohmann::json& project);
+// The requirements as read with the project (project/requirements.h).
+using project::parse_requirements;
+using project::Requirements;
+using project::SurfaceRequirements;
 
 // What the results alone do not hold: the lamps' colour rendering index (report/colour_rendering.h).
 struct ComplianceInputs {

@@ -5,7 +5,7 @@
 
 #include "calc/direct.h"
 #include "calc/pipeline.h"
-#include "calc/project_file.h"
+#include "project/project_file.h"
 #include "photometry/builtin.h"
 
 namespace luxgrid::calc {
@@ -83,7 +83,7 @@ TEST(FarField, GridSumsLuminairesAndAppliesMaintenanceFactor) {
     "luminaires": [ { "photometry": "iso", "array": {"origin": [1, 2, 2], "count": [2, 1], "spacing": [2, 1]} } ],
     "surfaces": [ { "name": "p", "points": [ {"at": [2, 2, 0], "normal": [0, 0, 1]} ] } ]
   })");
-  const Results r = run_scene(parse_project(doc, "p.json", "."));
+  const Results r = run_scene(project::parse_project(doc, "p.json", ".").scene);
   const double d = std::sqrt(5.0);
   const double each = 400.0 * 2.0 / (d * d * d);
   // Every part is maintained: x 0.5, so E_direct = E (no indirect light).

@@ -5,7 +5,7 @@
 
 #include "calc/direct.h"
 #include "calc/luminaire_tilt.h"
-#include "calc/project_file.h"
+#include "project/project_file.h"
 
 namespace luxgrid::calc {
 namespace {
@@ -32,7 +32,7 @@ TEST(LuminaireTilt, TiltTableScalesTheLuminaire) {
     "surfaces": [ { "name": "p", "points": [ {"at": [2, 2, 0], "normal": [0, 0, 1]} ] } ]
   })");
   doc["photometry"]["t"] = file;
-  Scene scene = parse_project(doc, "p.json", "/");
+  Scene scene = project::parse_project(doc, "p.json", "/").scene;
   const auto& ph = scene.photometry.at("t");
   ASSERT_TRUE(ph.tilt) << "the fixture must carry a tilt table";
   // parse_project applies the tilt factors itself (no explicit call here: loading a project

@@ -16,7 +16,7 @@
 #include "calc/nearfield/far_field_bound.h"
 #include "calc/nearfield/illuminance.h"
 #include "calc/pipeline.h"
-#include "calc/project_file.h"
+#include "project/project_file.h"
 #include "photometry/photometry.h"
 
 namespace luxgrid::calc {
@@ -180,7 +180,7 @@ TEST(NearFarDecision, BatwingPanelTilted) {
 TEST(NearFarDecision, BundledOfficeThroughThePipeline) {
   // The office: desk probe (2, 2, 0.75) was 630.5 lx at standard and high against 618.6
   // at reference (+1.9 %), 8 of 240 workplane points > 1 % off. Direct light only.
-  Scene scene = load_project(std::string(LUXGRID_SOURCE_DIR) + "/examples/office/project.json");
+  Scene scene = project::load_project(std::string(LUXGRID_SOURCE_DIR) + "/examples/office/project.json").scene;
   scene.settings.indirect = IndirectMode::off;
   // Its observers surface needs reflected light (UGR); this test is about direct light only.
   std::erase_if(scene.surfaces, [](const auto& g) { return g.kind == geometry::SurfaceGrid::Kind::observers; });

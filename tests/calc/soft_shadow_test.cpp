@@ -13,7 +13,7 @@
 #include "calc/nearfield/models.h"
 #include "calc/plan.h"
 #include "photometry/builtin.h"
-#include "calc/project_file.h"
+#include "project/project_file.h"
 
 namespace luxgrid::calc {
 namespace {
@@ -21,7 +21,7 @@ namespace {
 constexpr double kI0 = 1000.0;  // cd, so L = 1000 cd/m^2 on the 1 m^2 panel
 
 Scene partition_scene(const std::string& obstacles) {
-  return parse_project(nlohmann::json::parse(R"({
+  return project::parse_project(nlohmann::json::parse(R"({
     "format": "luxgrid-project/1",
     "settings": { "quality": "standard", "indirect": "off", "near_field": "always" },
     "photometry": { "panel": { "builtin": "lambertian", "intensity_cd": 1000 } },
@@ -37,7 +37,7 @@ Scene partition_scene(const std::string& obstacles) {
       { "at": [1.65, 2.3, 0], "normal": [0, 0, 1] },
       { "at": [1.8, 2.0, 0], "normal": [0, 0, 1] },
       { "at": [1.85, 1.6, 0], "normal": [0, 0, 1] } ] } ]
-  })"), "soft.json", ".");
+  })"), "soft.json", ".").scene;
 }
 
 const char* kPartition = R"([ { "name": "partition", "box": { "min": [1.9, 0, 0], "max": [2.0, 4, 1.5] } } ])";

@@ -5,7 +5,7 @@
 
 #include "calc/direct.h"
 #include "calc/pipeline.h"
-#include "calc/project_file.h"
+#include "project/project_file.h"
 #include "calc/visibility.h"
 
 #include <filesystem>
@@ -14,13 +14,13 @@ namespace luxgrid::calc {
 namespace {
 
 Scene scene_from(const std::string& rooms, const std::string& lamp) {
-  return parse_project(nlohmann::json::parse(R"({
+  return project::parse_project(nlohmann::json::parse(R"({
     "format": "luxgrid-project/1",
     "photometry": { "iso": { "builtin": "isotropic", "intensity_cd": 1000 } },
     "rooms": )" + rooms + R"(,
     "luminaires": [ { "photometry": "iso", "position": )" + lamp + R"( } ],
     "surfaces": [ { "name": "p", "points": [ { "at": [1, 1, 0], "normal": [0, 0, 1] } ] } ]
-  })"), "v.json", ".");
+  })"), "v.json", ".").scene;
 }
 
 const char* kLRoom = R"([ { "name": "L", "outline": [[0,0],[6,0],[6,3],[3,3],[3,6],[0,6]], "height": 3 } ])";
@@ -88,8 +88,8 @@ TEST(Visibility, Cie171Case57ShadowEdgesMatchTheDerivation) {
   // cases/cie171_5_7_obstruction: S2 is the wall y = 4; from the floor point (2, 0.5, 0) the
   // README's z_min = (4 - 0.5) / (1.9 - 0.5) = 2.5 m; from the wall point (2, 0, 0.5)
   // z_min = 0.5 + 0.5 * 4 / 1.9 = 1.5526 m. The AABB tree must agree on both sides of each edge.
-  const Scene scene = load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) /
-                                   "cases/cie171_5_7_obstruction/project.json");
+  const Scene scene = project::load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) /
+                                   "cases/cie171_5_7_obstruction/project.json").scene;
   std::string reason;
   const auto vis = make_visibility(scene, reason);
   ASSERT_TRUE(vis);
@@ -115,14 +115,14 @@ TEST(Visibility, EarlierCasesNeedNone) {
   // visibility must stay off so their results cannot change.
   for (const char* c : {"cie171_5_2_directional_point", "point_isotropic_horizontal",
                         "point_isotropic_vertical", "point_lambertian_tilted"}) {
-    const Scene scene = load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) / "cases" / c / "project.json");
+    const Scene scene = project::load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) / "cases" / c / "project.json").scene;
     std::string reason;
     EXPECT_EQ(make_visibility(scene, reason), nullptr) << c << ": " << reason;
   }
 }
 
 TEST(Visibility, LShapeExampleLoads) {
-  const Scene scene = load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) / "examples/lshape/project.json");
+  const Scene scene = project::load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) / "examples/lshape/project.json").scene;
   EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
   std::string reason;
   const auto vis = make_visibility(scene, reason);
@@ -147,7 +147,7 @@ TEST(Visibility, LShapeExampleLoads) {
 // the visibility edge at the walls to its quadrature cells.
 TEST(Visibility, OpeningReachingThroughTheWallsIsClippedByThem) {
   auto scene_with = [](double size_m) {
-    return parse_project(nlohmann::json::parse(R"({
+    return project::parse_project(nlohmann::json::parse(R"({
       "format": "luxgrid-project/1", "settings": { "quality": "reference", "indirect": "off" },
       "photometry": { "panel": { "builtin": "lambertian", "intensity_cd": 1000 } },
       "rooms": [ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3 } ],
@@ -156,7 +156,7 @@ TEST(Visibility, OpeningReachingThroughTheWallsIsClippedByThem) {
                                                std::to_string(size_m) + R"(] } } ],
       "surfaces": [ { "name": "p", "points": [ { "at": [2, 2, 0], "normal": [0, 0, 1] },
                                               { "at": [0.5, 1, 0.8], "normal": [0, 0, 1] } ] } ]
-    })"), "v.json", ".");
+    })"), "v.json", ".").scene;
   };
   const Scene big = scene_with(6.0), filling = scene_with(4.0);
   std::string reason;

@@ -31,7 +31,7 @@ const fs::path kBad = fs::path(LUXGRID_SOURCE_DIR) / "tests/data/bad";
 // must still end in a clear message, not a crash); the corpus's peak must stay well below it.
 constexpr rlim_t kAddressSpaceLimit = rlim_t{2} << 30;  // 2 GiB: TBB and CGAL map ~0.3 GiB at start
 // The largest refused project builds the grids it accepted before the total grid limit refuses
-// the next (calc/project_limits.h: three of 2.56 million points, ~640 MiB).
+// the next (project/project_limits.h: three of 2.56 million points, ~640 MiB).
 constexpr long kPeakResidentLimit_kiB = 1024 * 1024;
 // Each run gets this much CPU time; a refusal takes milliseconds.
 constexpr rlim_t kCpuLimit_s = 60;

@@ -13,7 +13,7 @@
 #include "calc/indirect/first_bounce.h"
 #include "calc/indirect/patches.h"
 #include "calc/pipeline.h"
-#include "calc/project_file.h"
+#include "project/project_file.h"
 
 namespace luxgrid::calc::indirect {
 namespace {
@@ -40,7 +40,7 @@ Scene extent_scene(const std::string& shape, double size_m, int bounces = 1) {
                                      : nlohmann::json{{"shape", "rectangle"}, {"size", {size_m, size_m}}}}}}},
       {"surfaces",
        {{{"name", "floor"}, {"workplane", {{"room", "box"}, {"height", 0.0}, {"border", 0.0}}}, {"spacing", 0.25}}}}};
-  return parse_project(doc, "extent.json", ".");
+  return project::parse_project(doc, "extent.json", ".").scene;
 }
 
 // Point-to-rectangle form factor for a receiver point parallel to a rectangle, the point above
@@ -222,7 +222,7 @@ TEST(EmitterExtent, LShapedRoomsAndObstaclesCutTheOpening) {
     EXPECT_FALSE(c.position.x < 2.0 && c.position.y < 2.0) << c.position.x << " " << c.position.y;
 }
 
-// The largest emitter a project may give (1000 m, calc/project_file's limit; the 1e9 m
+// The largest emitter a project may give (1000 m, project/project_file.cpp's limit; the 1e9 m
 // one is refused at load): its 4 x 4 m part inside (1.6e-5 of it) is real light: pi I0 x 1.6e-5
 // enters, and lands on the patches.
 TEST(EmitterExtent, AKilometreEmitterLetsInItsPartInside) {

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "calc/pipeline.h"
-#include "calc/project_file.h"
+#include "project/project_file.h"
 #include "photometry/builtin.h"
 #include "util/error.h"
 
@@ -36,7 +36,7 @@ Scene huge_scene(const std::string& indirect) {
          {"points", {{{"at", {1, 1, 0.75}}, {"normal", {0, 0, 1}}},
                      {{"at", {2, 2, 2.0}}, {"normal", {0, 0, 1}}},
                      {{"at", {2.1, 2, 2.0}}, {"normal", {0, 0, 1}}}}}}}}};
-  Scene s = parse_project(doc, "huge.json", ".");
+  Scene s = project::parse_project(doc, "huge.json", ".").scene;
   s.luminaires[0].distribution = std::make_shared<HugeDistribution>();
   return s;
 }

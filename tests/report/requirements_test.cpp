@@ -76,11 +76,5 @@ TEST(Requirements, BadValues) {
   EXPECT_THROW(parse_requirements(project(nlohmann::json::array({500})), "p.json"), InputError);
 }
 
-TEST(Requirements, StrippedForTheLoader) {
-  const auto p = without_requirements(project({{"Em", 500}}));
-  EXPECT_FALSE(p["surfaces"][0].contains("requirements"));
-  EXPECT_EQ(p["surfaces"][0]["name"], "wp");
-}
-
 }  // namespace
 }  // namespace luxgrid::report

@@ -7,7 +7,8 @@
 #include "project_error.h"
 #include "util/error.h"
 
-namespace luxgrid::calc {
+namespace luxgrid::project {
+using namespace calc;
 namespace {
 
 nlohmann::json project() {
@@ -24,7 +25,7 @@ nlohmann::json project() {
 }
 
 TEST(ObserversProject, OnePointPerViewFacingIt) {
-  const Scene s = parse_project(project(), "p.json", ".");
+  const Scene s = parse_project(project(), "p.json", ".").scene;
   ASSERT_EQ(s.surfaces.size(), 1u);
   const auto& g = s.surfaces[0];
   EXPECT_EQ(g.kind, geometry::SurfaceGrid::Kind::observers);
@@ -89,4 +90,4 @@ TEST(ObserversProject, ViewLuminairePairsAreLimited) {
 }
 
 }  // namespace
-}  // namespace luxgrid::calc
+}  // namespace luxgrid::project

@@ -1,14 +1,15 @@
-#include "calc/safe_json.h"
+#include "project/safe_json.h"
 
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <utility>
 #include <vector>
 
-#include "calc/json_reader.h"
+#include "project/json_reader.h"
 #include "util/error.h"
 
-namespace luxgrid::calc {
+namespace luxgrid::project {
 
 namespace {
 
@@ -42,10 +43,10 @@ class CountingIterator {
   const char** read_ = nullptr;
 };
 
-// "line:column" of the last character read when `consumed` characters have been read (the same
-// convention as nlohmann's parse_error::byte).
-std::string line_column(std::string_view text, std::size_t consumed) {
-  std::size_t line = 1, column = 1;
+// The line and column of the last character read when `consumed` characters have been read (the
+// same convention as nlohmann's parse_error::byte).
+std::pair<int, int> line_column(std::string_view text, std::size_t consumed) {
+  int line = 1, column = 1;
   for (std::size_t i = 0; i + 1 < consumed && i < text.size(); ++i) {
     if (text[i] == '\n') {
       ++line;
@@ -54,7 +55,7 @@ std::string line_column(std::string_view text, std::size_t consumed) {
       ++column;
     }
   }
-  return std::to_string(line) + ":" + std::to_string(column);
+  return {line, column};
 }
 
 // nlohmann's DOM builder with three checks in front of it. It tracks where it is (one frame per
@@ -87,8 +88,8 @@ class CheckedDomBuilder {
     f.child = json_pointer_escape(k);
     const auto [it, fresh] = f.keys.emplace(k, consumed());
     if (!fresh) {
-      fail(consumed(), " " + pointer() + ": duplicate key \"" + k + "\" (first given on line " +
-                           line_of(it->second) + ")");
+      fail(consumed(), pointer(),
+           "duplicate key \"" + k + "\" (first given on line " + std::to_string(line_column(text_, it->second).first) + ")");
     }
     return dom_.key(k);
   }
@@ -113,8 +114,8 @@ class CheckedDomBuilder {
       const auto quote = what.find('\'');
       const std::string number =
           quote == std::string::npos ? "" : what.substr(quote + 1, what.size() - quote - 2);
-      fail(byte, " " + pointer_of_next_value() + ": the number " + number +
-                     " is out of range (a number must fit a double, |x| < 1.8e308)");
+      fail(byte, pointer_of_next_value(),
+           "the number " + number + " is out of range (a number must fit a double, |x| < 1.8e308)");
     }
     // nlohmann ends with "; last read: '<bytes>'": those bytes are not shown (they may be any
     // file's), only what was wrong.
@@ -122,7 +123,7 @@ class CheckedDomBuilder {
     std::string message = syntax != std::string::npos ? what.substr(syntax) : what;
     const auto last_read = message.find("; last read:");
     if (last_read != std::string::npos) message.erase(last_read);
-    fail(byte, ": malformed JSON: " + message);
+    fail(byte, "", "malformed JSON: " + message);
   }
 
  private:
@@ -134,13 +135,9 @@ class CheckedDomBuilder {
   };
 
   std::size_t consumed() const { return static_cast<std::size_t>(*read_ - text_.data()); }
-  std::string line_of(std::size_t consumed) const {
-    const std::string lc = line_column(text_, consumed);
-    return lc.substr(0, lc.find(':'));
-  }
-
-  [[noreturn]] void fail(std::size_t at, const std::string& what) const {
-    throw InputError(label_ + ":" + line_column(text_, at) + what);
+  [[noreturn]] void fail(std::size_t at, const std::string& pointer, const std::string& message) const {
+    const auto [line, column] = line_column(text_, at);
+    throw InputError(SourceLocation{label_, line, column, pointer}, message);
   }
 
   // A value starts: in an array, it is the next element.
@@ -154,8 +151,8 @@ class CheckedDomBuilder {
   void open(bool is_array) {
     next_value();
     if (frames_.size() >= static_cast<std::size_t>(kMaxJsonDepth)) {
-      fail(consumed(), ": objects and arrays nested deeper than the limit of " +
-                           std::to_string(kMaxJsonDepth) + " levels");
+      fail(consumed(), "", "objects and arrays nested deeper than the limit of " +
+                               std::to_string(kMaxJsonDepth) + " levels");
     }
     frames_.push_back(Frame{is_array, 0, {}, {}});
   }
@@ -185,14 +182,14 @@ class CheckedDomBuilder {
 void check_is_utf8_text(std::string_view text, const std::string& label) {
   const auto starts = [&](std::string_view bom) { return text.substr(0, bom.size()) == bom; };
   if (starts("\xFF\xFE") || starts("\xFE\xFF") || starts(std::string_view("\0\0\xFE\xFF", 4)))
-    throw InputError(label + ": the file is UTF-16 or UTF-32 text; save it as UTF-8");
+    throw InputError(SourceLocation{label}, "the file is UTF-16 or UTF-32 text; save it as UTF-8");
   // NUL and the other C0 controls but tab, LF and CR never occur in JSON text (RFC 8259
   // section 7: inside strings they must be escaped).
   const std::string_view head = text.substr(0, 4096);
   for (char ch : head) {
     const auto c = static_cast<unsigned char>(ch);
     if (c < 0x20 && c != '\t' && c != '\n' && c != '\r')
-      throw InputError(label + ": expected a JSON text file, found binary data");
+      throw InputError(SourceLocation{label}, "expected a JSON text file, found binary data");
   }
 }
 
@@ -212,14 +209,14 @@ std::string read_bounded_file(const std::filesystem::path& file, std::uintmax_t 
                               const std::string& kind) {
   std::error_code ec;
   const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
-  if (ec) throw InputError(file.string() + ": cannot open the " + kind);
+  if (ec) throw InputError(SourceLocation{file.string()}, "cannot open the " + kind);
   if (bytes > max_bytes) {
-    throw InputError(file.string() + ": the file is " + std::to_string(bytes) +
+    throw InputError(SourceLocation{file.string()}, "the file is " + std::to_string(bytes) +
                      " bytes, more than the limit of " + std::to_string(max_bytes) + " bytes (" +
                      std::to_string(max_bytes >> 20) + " MiB) for a " + kind);
   }
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot open the " + kind);
+  if (!in) throw InputError(SourceLocation{file.string()}, "cannot open the " + kind);
   std::string text(static_cast<std::size_t>(bytes), '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<std::size_t>(in.gcount()));
@@ -231,4 +228,4 @@ nlohmann::json read_json_file(const std::filesystem::path& file, std::uintmax_t 
   return parse_json_text(read_bounded_file(file, max_bytes, kind), file.string());
 }
 
-}  // namespace luxgrid::calc
+}  // namespace luxgrid::project

@@ -2,12 +2,13 @@
 // What the project loader refuses as too big, too small or too far, before any memory or time is
 // spent on it. Each refusal is an InputError naming the limit, the value and the JSON pointer
 // (docs/project-format.md, "Limits"). The JSON layer's own limits (file size, nesting) are in
-// calc/safe_json.h; the intensity limit shared with the photometry readers is in util/limits.h.
+// project/safe_json.h; the intensity limit shared with the photometry readers is in util/limits.h.
 #include <cstddef>
 
+#include "calc/indirect/limits.h"
 #include "util/limits.h"
 
-namespace luxgrid::calc {
+namespace luxgrid::project {
 
 // Luminaires in a project, arrays expanded. Each costs time per grid point (below) and, for
 // indirect light and near-field models, far more; 20 000 covers a warehouse of 150 x 130
@@ -26,10 +27,8 @@ inline constexpr double kMaxTotalGridPoints = 8e6;
 // are ~35 s, or ~8 minutes with obstacles; 20 000 luminaires still get a 50 000-point grid.
 inline constexpr double kMaxLuminairePointPairs = 1e9;
 
-// Interreflection bounces when given as a number: the reflected light falls by the mean
-// reflectance (< 0.9) per bounce, so after 1000 bounces it is below 1e-45 of the direct light;
-// more is only time (1e9 bounces hung).
-inline constexpr int kMaxBounces = 1000;
+// Interreflection bounces when given as a number: the solver's own limit (calc/indirect/limits.h).
+inline constexpr int kMaxBounces = calc::indirect::kMaxBounces;
 
 // Rooms in a project and obstacles over all rooms: each is CGAL geometry (straight skeletons,
 // exact polygon tests) and visibility faces; 1000 rooms and 10 000 obstacles is a large building.
@@ -90,4 +89,4 @@ inline constexpr double kMaxViewLuminairePairs = 1e6;
 // this sine of the vertical are refused.
 inline constexpr double kMinViewHorizontalPart = 1e-3;
 
-}  // namespace luxgrid::calc
+}  // namespace luxgrid::project

@@ -5,15 +5,16 @@
 #include <filesystem>
 #include <fstream>
 
-#include "calc/project_file.h"
-#include "calc/project_limits.h"
+#include "project/project_file.h"
+#include "project/project_limits.h"
 #include "calc/scaled_distribution.h"
 #include "geometry/polygon.h"
 #include "temp_folder.h"
 #include "project_error.h"
 #include "util/error.h"
 
-namespace luxgrid::calc {
+namespace luxgrid::project {
+using namespace calc;
 namespace {
 
 nlohmann::json minimal() {
@@ -28,7 +29,7 @@ nlohmann::json minimal() {
 }
 
 TEST(ProjectFile, MinimalProjectLoads) {
-  const Scene s = parse_project(minimal(), "p.json", ".");
+  const Scene s = parse_project(minimal(), "p.json", ".").scene;
   EXPECT_EQ(s.name, "t");
   ASSERT_EQ(s.luminaires.size(), 1u);
   EXPECT_EQ(s.luminaires[0].pose.position, Vec3(2, 1.5, 2.5));
@@ -45,7 +46,7 @@ TEST(ProjectFile, ArrayExpandsAlongXThenY) {
   auto doc = minimal();
   doc["luminaires"][0] = {{"photometry", "iso"},
                           {"array", {{"origin", {1, 1, 2.5}}, {"count", {3, 2}}, {"spacing", {1.0, 0.5}}}}};
-  const Scene s = parse_project(doc, "p.json", ".");
+  const Scene s = parse_project(doc, "p.json", ".").scene;
   ASSERT_EQ(s.luminaires.size(), 6u);
   EXPECT_EQ(s.luminaires[1].pose.position, Vec3(2, 1, 2.5));
   EXPECT_EQ(s.luminaires[3].pose.position, Vec3(1, 1.5, 2.5));
@@ -56,7 +57,7 @@ TEST(ProjectFile, SettingsAreRead) {
   auto doc = minimal();
   doc["settings"] = {{"quality", "draft"}, {"near_field", "never"}, {"indirect", "off"},
                      {"bounces", 3}, {"maintenance_factor", 0.8}};
-  const Scene s = parse_project(doc, "p.json", ".");
+  const Scene s = parse_project(doc, "p.json", ".").scene;
   EXPECT_EQ(s.settings.quality, Quality::draft);
   EXPECT_EQ(s.settings.near_field, NearFieldMode::never);
   EXPECT_EQ(s.settings.indirect, IndirectMode::off);
@@ -68,33 +69,33 @@ TEST(ProjectFile, MaintenanceFactorFromItsCie97Parts) {
   // MF = LLMF x LSF x LMF x RSMF [CIE97]: 0.9 x 0.98 x 0.95 x 0.94 = 0.787626 (by hand).
   auto doc = minimal();
   doc["settings"] = {{"maintenance", {{"LLMF", 0.9}, {"LSF", 0.98}, {"LMF", 0.95}, {"RSMF", 0.94}}}};
-  const Scene s = parse_project(doc, "p.json", ".");
+  const Scene s = parse_project(doc, "p.json", ".").scene;
   EXPECT_NEAR(s.settings.maintenance_factor, 0.787626, 1e-15);
   ASSERT_TRUE(s.settings.maintenance_parts.has_value());
   EXPECT_EQ(s.settings.maintenance_parts->LSF, 0.98);
   // A plain number under the new key means the same as maintenance_factor.
   doc["settings"] = {{"maintenance", 0.7}};
-  const Scene n = parse_project(doc, "p.json", ".");
+  const Scene n = parse_project(doc, "p.json", ".").scene;
   EXPECT_EQ(n.settings.maintenance_factor, 0.7);
   EXPECT_FALSE(n.settings.maintenance_parts.has_value());
   // A missing factor is an error, not a silent 1.
   doc["settings"] = {{"maintenance", {{"LLMF", 0.9}, {"LSF", 0.98}, {"LMF", 0.95}}}};
   try {
-    parse_project(doc, "p.json", ".");
+    parse_project(doc, "p.json", ".").scene;
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/settings/maintenance"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("RSMF"), std::string::npos) << e.what();
   }
   doc["settings"] = {{"maintenance", {{"LLMF", 0.0}, {"LSF", 1}, {"LMF", 1}, {"RSMF", 1}}}};
-  EXPECT_THROW(parse_project(doc, "p.json", "."), InputError);
+  EXPECT_THROW(parse_project(doc, "p.json", ".").scene, InputError);
 }
 
 TEST(ProjectFile, PlaneGridNormalIsUCrossV) {
   auto doc = minimal();
   doc["surfaces"][0] = nlohmann::json::parse(
       R"({"name": "wall", "plane": {"origin": [4,0,0], "u": [0,2,0], "v": [0,0,1], "size": [3, 2.5]}, "spacing": 1})");
-  const Scene s = parse_project(doc, "p.json", ".");
+  const Scene s = parse_project(doc, "p.json", ".").scene;
   const auto& g = s.surfaces[0];
   EXPECT_EQ(g.nu, 3);
   EXPECT_EQ(g.nv, 3);  // 2.5 m at <= 1 m -> 3 cells of 0.8333 m
@@ -106,7 +107,7 @@ TEST(ProjectFile, PlaneGridNormalIsUCrossV) {
 TEST(ProjectFile, AutoSpacingFollowsEn12464) {
   auto doc = minimal();
   doc["surfaces"][0]["spacing"] = "auto";
-  const Scene s = parse_project(doc, "p.json", ".");
+  const Scene s = parse_project(doc, "p.json", ".").scene;
   // Longer side d = 3 m: p = 0.2 * 5^log10(3) = 0.2 * 2.1555 = 0.4311 m -> ceil(3 / 0.4311) = 7.
   EXPECT_EQ(s.surfaces[0].nu, 7);
   EXPECT_EQ(s.surfaces[0].nv, 5);  // 2 m / 0.4311 = 4.64 -> 5
@@ -132,7 +133,7 @@ INSTANTIATE_TEST_SUITE_P(
     Messages, ProjectFileBad,
     ::testing::Values(
         BadCase{"unknown_top_key", "/reflectence", "1",
-                "p.json /reflectence: unknown key \"reflectence\" (expected one of: format, name, settings, photometry, rooms, luminaires, surfaces)"},
+                "p.json /reflectence: unknown key \"reflectence\" (expected one of: format, luminaires, name, photometry, rooms, settings, surfaces)"},
         BadCase{"wrong_format", "/format", "\"luxgrid-project/2\"",
                 "p.json /format: expected \"luxgrid-project/1\", got \"luxgrid-project/2\""},
         BadCase{"rotation_two_numbers", "/luminaires/0/rotation", "[0, 90]",
@@ -148,7 +149,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"reflectance_above_one", "/rooms/0/reflectance", "{\"walls\": 1.2}",
                 "p.json /rooms/0/reflectance/walls: expected a number in [0, 1], got 1.2"},
         BadCase{"reflectance_unknown", "/rooms/0/reflectance", "{\"wall\": 0.5}",
-                "p.json /rooms/0/reflectance/wall: unknown key \"wall\" (expected one of: floor, walls, ceiling)"},
+                "p.json /rooms/0/reflectance/wall: unknown key \"wall\" (expected one of: ceiling, floor, walls)"},
         BadCase{"empty_outline", "/rooms/0/outline", "[]",
                 "p.json /rooms/0/outline: expected at least 3 corners, got 0"},
         BadCase{"unknown_photometry", "/luminaires/0/photometry", "\"panel\"",
@@ -224,7 +225,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"prism_self_intersecting", "/rooms/0/obstacles", "[{\"name\": \"x\", \"prism\": {\"outline\": [[1,1],[2,2],[2,1],[1,2]], \"z0\": 0, \"z1\": 1}}]",
                 "p.json /rooms/0/obstacles/0/prism/outline: obstacle \"x\": the outline crosses itself (edge 0-1 meets edge 2-3)"},
         BadCase{"obstacle_unknown_key", "/rooms/0/obstacles", "[{\"box\": {\"min\": [1,1,0], \"max\": [2,2,1], \"rotation\": 30}}]",
-                "p.json /rooms/0/obstacles/0/box/rotation: unknown key \"rotation\" (expected one of: min, max, rotation_z)"},
+                "p.json /rooms/0/obstacles/0/box/rotation: unknown key \"rotation\" (expected one of: max, min, rotation_z)"},
         BadCase{"zero_size_plane", "/surfaces/0", "{\"name\": \"w\", \"plane\": {\"origin\": [0,0,0], \"u\": [1,0,0], \"v\": [0,0,1], \"size\": [0, 2]}, \"spacing\": 0.5}",
                 "p.json /surfaces/0/plane/size: expected two positive sizes in metres"},
         BadCase{"zero_spacing", "/surfaces/0/spacing", "0",
@@ -256,7 +257,7 @@ nlohmann::json l_room() {
 }
 
 TEST(ProjectFile, LShapedRoomWithObstacles) {
-  const Scene s = parse_project(l_room(), "p.json", ".");
+  const Scene s = parse_project(l_room(), "p.json", ".").scene;
   ASSERT_EQ(s.rooms[0].obstacles.size(), 3u);
   EXPECT_EQ(s.rooms[0].obstacles[1].name, "table");
   EXPECT_DOUBLE_EQ(s.rooms[0].obstacles[1].reflectance, 0.5);  // the default
@@ -277,7 +278,7 @@ TEST(ProjectFile, LShapedRoomWithObstacles) {
 TEST(ProjectFile, ClockwiseRoomIsReversedWithAWarning) {
   auto doc = minimal();
   doc["rooms"][0]["outline"] = nlohmann::json::parse("[[0,3],[4,3],[4,0],[0,0]]");
-  const Scene s = parse_project(doc, "p.json", ".");
+  const Scene s = parse_project(doc, "p.json", ".").scene;
   ASSERT_EQ(s.warnings.size(), 1u);
   EXPECT_EQ(s.warnings[0], "room \"r\": the outline is clockwise; reversed to counter-clockwise");
   EXPECT_GT(geometry::signed_area(s.rooms[0].outline), 0.0);
@@ -288,7 +289,7 @@ TEST(ProjectFile, LuminaireOutsideEveryRoomOrInsideAnObstacleWarns) {
   auto doc = l_room();
   doc["luminaires"][0]["position"] = {5, 5, 2.9};  // in the missing quadrant of the L
   doc["luminaires"].push_back({{"name", "in column"}, {"photometry", "iso"}, {"position", {2, 2, 2}}});
-  const Scene s = parse_project(doc, "p.json", ".");
+  const Scene s = parse_project(doc, "p.json", ".").scene;
   ASSERT_EQ(s.warnings.size(), 3u);
   EXPECT_EQ(s.warnings[1], "luminaire 0: outside every room");
   EXPECT_EQ(s.warnings[2], "in column: inside obstacle \"column\" of room \"r\"");
@@ -297,7 +298,7 @@ TEST(ProjectFile, LuminaireOutsideEveryRoomOrInsideAnObstacleWarns) {
 TEST(ProjectFile, RoomSurfacesGiveOneGridPerFace) {
   auto doc = l_room();
   doc["surfaces"][0] = nlohmann::json::parse(R"({ "name": "L", "room_surfaces": { "room": "r" }, "spacing": 0.5 })");
-  const Scene s = parse_project(doc, "p.json", ".");
+  const Scene s = parse_project(doc, "p.json", ".").scene;
   ASSERT_EQ(s.surfaces.size(), 8u);  // floor, ceiling, 6 walls
   const auto& floor = s.surfaces[0];
   EXPECT_EQ(floor.name, "L floor");
@@ -319,18 +320,18 @@ TEST(ProjectFile, QuantitiesSetReceiverNormals) {
   auto doc = minimal();
   doc["surfaces"][0]["quantity"] = "vertical";
   doc["surfaces"][0]["facing"] = {0, -2};
-  Scene s = parse_project(doc, "p.json", ".");
+  Scene s = parse_project(doc, "p.json", ".").scene;
   EXPECT_EQ(s.surfaces[0].quantity, geometry::Quantity::vertical);
   EXPECT_EQ(s.surfaces[0].normals[0], Vec3(0, -1, 0));
   doc["surfaces"][0].erase("facing");
   doc["surfaces"][0]["quantity"] = "cylindrical";
-  s = parse_project(doc, "p.json", ".");
+  s = parse_project(doc, "p.json", ".").scene;
   EXPECT_EQ(s.surfaces[0].quantity, geometry::Quantity::cylindrical);
   EXPECT_EQ(s.surfaces[0].normals[0], Vec3(0, 0, 1));
   // A half cylinder faces `facing` (normalised): the loader stores it as every point's normal.
   doc["surfaces"][0]["quantity"] = "semi-cylindrical";
   doc["surfaces"][0]["facing"] = {3, 4};
-  s = parse_project(doc, "p.json", ".");
+  s = parse_project(doc, "p.json", ".").scene;
   EXPECT_EQ(s.surfaces[0].quantity, geometry::Quantity::semi_cylindrical);
   EXPECT_NEAR(s.surfaces[0].normals[0].x, 0.6, 1e-15);
   EXPECT_NEAR(s.surfaces[0].normals[0].y, 0.8, 1e-15);
@@ -339,7 +340,7 @@ TEST(ProjectFile, QuantitiesSetReceiverNormals) {
   // A wall plane asked for vertical illuminance keeps its own horizontal normal u x v = +x.
   doc["surfaces"][0] = nlohmann::json::parse(
       R"({"name": "wall", "plane": {"origin": [4,0,0], "u": [0,1,0], "v": [0,0,1], "size": [3, 2.5]}, "spacing": 1, "quantity": "vertical"})");
-  s = parse_project(doc, "p.json", ".");
+  s = parse_project(doc, "p.json", ".").scene;
   EXPECT_EQ(s.surfaces[0].normals[0], Vec3(1, 0, 0));
 }
 
@@ -348,7 +349,7 @@ TEST(ProjectFile, MalformedJsonNamesLineAndColumn) {
   const auto file = dir.write("broken.json",
                               "{\n  \"format\": \"luxgrid-project/1\",\n  \"name\": \"x\"\n  \"rooms\": []\n}\n");
   try {
-    load_project(file);
+    load_project(file).scene;
     FAIL() << "expected an error";
   } catch (const InputError& e) {
     const std::string msg = e.what();
@@ -448,7 +449,7 @@ TEST(ProjectFile, DeeplyNestedUnknownKeyFailsWithoutCrashing) {
   for (int i = 0; i < 100000; ++i) text += "{\"a\":";
   text += "1" + std::string(100000, '}') + "}";
   try {
-    parse_project_text(text, "p.json", ".");
+    parse_project_text(text, "p.json", ".").scene;
     FAIL() << "expected an error";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), "p.json:1:" + std::to_string(prefix + 63 * 5 + 1) +
@@ -461,7 +462,7 @@ TEST(ProjectFile, DuplicateLuminairesKeyIsAnError) {
   std::string text = minimal().dump();
   text.insert(text.size() - 1, ",\n\"luminaires\": []");
   try {
-    parse_project_text(text, "p.json", ".");
+    parse_project_text(text, "p.json", ".").scene;
     FAIL() << "expected an error";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), "p.json:2:12 /luminaires: duplicate key \"luminaires\" (first given on line 1)");
@@ -482,7 +483,7 @@ nlohmann::json with_file_photometry(const nlohmann::json& entry) {
 
 std::string error_in(const nlohmann::json& doc, const std::filesystem::path& base_dir) {
   try {
-    parse_project(doc, "p.json", base_dir);
+    parse_project(doc, "p.json", base_dir).scene;
   } catch (const InputError& e) {
     return e.what();
   }
@@ -498,7 +499,7 @@ TEST(ProjectFile, MultiplierAndFluxMayNotScaleBeyondTheIntensityLimit) {
   // At the limit exactly it loads.
   EXPECT_EQ(error_in(with_file_photometry({{"file", "lamp.ies"}, {"multiplier", 1e6}}), dir.path()), "(no error)");
   // flux_lm: the factor is the target over the distribution's own flux.
-  const Scene plain = parse_project(with_file_photometry("lamp.ies"), "p.json", dir.path());
+  const Scene plain = parse_project(with_file_photometry("lamp.ies"), "p.json", dir.path()).scene;
   const double flux = luminous_flux(*plain.photometry.at("lamp").distribution);
   char factor[32];
   std::snprintf(factor, sizeof factor, "%g", 1e15 / flux);
@@ -514,7 +515,7 @@ TEST(ProjectFile, PhotometryWarningsReachTheSceneOncePerEntry) {
   dir.write("old.ies", small_ies("IESNA95"));
   auto doc = with_file_photometry("old.ies");
   doc["photometry"]["again"] = "old.ies";
-  const Scene s = parse_project(doc, "p.json", dir.path());
+  const Scene s = parse_project(doc, "p.json", dir.path()).scene;
   const auto& file_warnings = s.photometry.at("lamp").warnings;
   ASSERT_EQ(file_warnings.size(), 1u);
   ASSERT_EQ(s.warnings.size(), 2u);
@@ -542,20 +543,20 @@ TEST(ProjectFile, PhotometryOutsideTheProjectFolderNeedsTheSetting) {
   // With the setting, both load.
   auto allowed = doc;
   allowed["settings"] = {{"allow_files_outside_project", true}};
-  EXPECT_EQ(parse_project(allowed, "p.json", project_dir).photometry.at("lamp").source, "../shared/lamp.ies");
+  EXPECT_EQ(parse_project(allowed, "p.json", project_dir).scene.photometry.at("lamp").source, "../shared/lamp.ies");
   allowed["photometry"]["lamp"] = absolute;
-  EXPECT_EQ(parse_project(allowed, "p.json", project_dir).photometry.at("lamp").source, absolute);
+  EXPECT_EQ(parse_project(allowed, "p.json", project_dir).scene.photometry.at("lamp").source, absolute);
 }
 
 TEST(ProjectFile, LoadProjectReadsThroughTheSafeParse) {
   const testing_support::TempFolder dir;
   std::string text = minimal().dump();
   const auto file = dir.write("p.json", text);
-  EXPECT_EQ(load_project(file).name, "t");
+  EXPECT_EQ(load_project(file).scene.name, "t");
   text.insert(text.size() - 1, R"(,"name": "u")");
   const auto dup = dir.write("dup.json", text);
   try {
-    load_project(dup);
+    load_project(dup).scene;
     FAIL() << "expected an error";
   } catch (const InputError& e) {
     const size_t closing_quote = text.rfind("\"name\"") + 5;
@@ -565,4 +566,4 @@ TEST(ProjectFile, LoadProjectReadsThroughTheSafeParse) {
 }
 
 }  // namespace
-}  // namespace luxgrid::calc
+}  // namespace luxgrid::project

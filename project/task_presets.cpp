@@ -1,6 +1,6 @@
-#include "report/task_presets.h"
+#include "project/task_presets.h"
 
-namespace luxgrid::report {
+namespace luxgrid::project {
 
 // The rows, copied from the edition each names [EN12464-1] [EN12464-1-2011]. Reference numbers
 // and table numbers are those of the 2011 edition's schedule (clause 5), which public copies
@@ -44,4 +44,4 @@ std::string task_preset_keys() {
   return out;
 }
 
-}  // namespace luxgrid::report
+}  // namespace luxgrid::project

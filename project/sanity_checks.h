@@ -4,10 +4,10 @@
 // luminaire aimed into a wall close by, a grid that faces out of every room. Each becomes a
 // warning in Scene::warnings (the CLI prints it on stderr, results.json lists it) that names the
 // object by its JSON pointer and says what luxgrid assumed; the calculation runs as written.
-#include "calc/json_reader.h"
+#include "project/json_reader.h"
 #include "calc/scene.h"
 
-namespace luxgrid::calc {
+namespace luxgrid::project {
 
 // A length above this in a room's plan, a plane's size or a spacing reads as millimetres: no
 // room or calculation plane of a lighting design is a kilometre long. (A room this high is
@@ -26,10 +26,10 @@ inline constexpr double kFacingProbe_m = 0.01;
 
 // `root` is the project document the scene was parsed from (for the pointers and the values as
 // written); the scene is complete (luminaires expanded, grids built).
-void add_sanity_warnings(Scene& scene, const JsonValue& root);
+void add_sanity_warnings(calc::Scene& scene, const JsonValue& root);
 
 // The intensity-weighted mean direction of a distribution in its own frame (unit), or a zero
 // vector when its light has no main direction (isotropic, as much up as down).
 Vec3 main_beam_direction(const photometry::IntensityDistribution& d);
 
-}  // namespace luxgrid::calc
+}  // namespace luxgrid::project

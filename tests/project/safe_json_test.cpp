@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <string>
 
-#include "calc/safe_json.h"
+#include "project/safe_json.h"
 #include "temp_folder.h"
 #include "util/error.h"
 
-namespace luxgrid::calc {
+namespace luxgrid::project {
 namespace {
 
 std::string error_of(const std::string& text) {
@@ -129,4 +129,4 @@ TEST(SafeJson, MissingFileIsInputError) {
 }
 
 }  // namespace
-}  // namespace luxgrid::calc
+}  // namespace luxgrid::project

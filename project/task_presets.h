@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace luxgrid::report {
+namespace luxgrid::project {
 
 struct TaskPreset {
   const char* key;        // what a project writes: "office-writing"
@@ -43,4 +43,4 @@ inline constexpr const char* kWallsAndCeilingsPreset = "walls-and-ceilings";
 inline constexpr double kMinWall_lx = 50.0;
 inline constexpr double kMinCeiling_lx = 30.0;
 
-}  // namespace luxgrid::report
+}  // namespace luxgrid::project

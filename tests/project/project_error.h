@@ -3,18 +3,19 @@
 // that compare the exact message.
 #include <string>
 
-#include "calc/project_file.h"
+#include "project/project_file.h"
 #include "util/error.h"
 
-namespace luxgrid::calc {
+namespace luxgrid::project {
+using namespace calc;
 
 inline std::string error_of(const nlohmann::json& doc) {
   try {
-    parse_project(doc, "p.json", ".");
+    parse_project(doc, "p.json", ".").scene;
   } catch (const InputError& e) {
     return e.what();
   }
   return "(no error)";
 }
 
-}  // namespace luxgrid::calc
+}  // namespace luxgrid::project

@@ -1,4 +1,4 @@
-#include "calc/project_file.h"
+#include "project/project_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -6,11 +6,13 @@
 #include <map>
 #include <set>
 
-#include "calc/json_reader.h"
+#include "project/json_reader.h"
 #include "calc/luminaire_tilt.h"
-#include "calc/project_limits.h"
-#include "calc/safe_json.h"
-#include "calc/sanity_checks.h"
+#include "calc/near_model_name.h"
+#include "project/project_limits.h"
+#include "project/requirements.h"
+#include "project/safe_json.h"
+#include "project/sanity_checks.h"
 #include "calc/scaled_distribution.h"
 #include "calc/visibility.h"
 #include "geometry/workplane.h"
@@ -21,7 +23,10 @@
 #include "util/sha256.h"
 #include "util/output_names.h"
 
-namespace luxgrid::calc {
+namespace luxgrid::project {
+
+// The loader builds calc's types (Scene, Room, Luminaire, Settings) on every line.
+using namespace calc;
 
 namespace {
 
@@ -78,7 +83,7 @@ void parse_maintenance(const JsonValue& m, Settings& out) {
     m.fail("expected a maintenance factor in [" + number_text(kMinMaintenanceFactor) +
            ", 1] or its parts {\"LLMF\", \"LSF\", \"LMF\", \"RSMF\"}, got " + json_type_name(m.raw()));
   }
-  m.expect_object({"LLMF", "LSF", "LMF", "RSMF"});
+  m.expect_object();
   MaintenanceFactors f;
   const std::pair<const char*, double*> parts[] = {{"LLMF", &f.LLMF}, {"LSF", &f.LSF}, {"LMF", &f.LMF}, {"RSMF", &f.RSMF}};
   for (const auto& [key, value] : parts) {
@@ -96,8 +101,7 @@ void parse_maintenance(const JsonValue& m, Settings& out) {
 }
 
 Settings parse_settings(const JsonValue& s) {
-  s.expect_object({"quality", "near_field", "near_field_model", "indirect", "bounces",
-                   "maintenance_factor", "maintenance", "allow_files_outside_project"});
+  s.expect_object();
   Settings out;
   if (auto q = s.find("quality")) {
     const auto parsed = quality_from_string(q->as_string());
@@ -112,7 +116,12 @@ Settings parse_settings(const JsonValue& s) {
     else if (v == "never") out.near_field = NearFieldMode::never;
     else n->fail("expected \"auto\", \"always\" or \"never\", got \"" + v + "\"");
   }
-  if (auto m = s.find("near_field_model")) out.near_field_model = m->as_string();
+  if (auto m = s.find("near_field_model")) {
+    out.near_field_model = m->as_string();
+    if (!near_model_named(out.near_field_model)) {
+      m->fail("unknown model \"" + out.near_field_model + "\" (expected " + kNearFieldModelNames + ")");
+    }
+  }
   if (auto i = s.find("indirect")) {
     const std::string v = i->as_string();
     if (v == "auto") out.indirect = IndirectMode::automatic;
@@ -147,7 +156,7 @@ Settings parse_settings(const JsonValue& s) {
 }
 
 photometry::Photometry parse_builtin(const JsonValue& e) {
-  e.expect_object({"builtin", "intensity_cd"});
+  e.expect_object();
   const auto kind = e.at("builtin");
   const auto i0_v = e.at("intensity_cd");
   const double i0 = i0_v.as_non_negative();
@@ -246,7 +255,7 @@ photometry::Photometry parse_photometry_entry(const JsonValue& e, const FilePoli
   if (e.is_string()) return load_file_entry(e, e.as_string(), policy);
   if (!e.is_object()) e.fail("expected a file path or an object, got " + json_type_name(e.raw()));
   if (e.has("builtin")) return parse_builtin(e);
-  e.expect_object({"file", "flux_lm", "multiplier"});
+  e.expect_object();
   const auto file = e.at("file");
   auto p = load_file_entry(file, file.as_string(), policy);
   const double peak_cd = peak_intensity_cd(p);
@@ -276,7 +285,7 @@ void check_emitter_size(const JsonValue& where, double size_m) {
 }
 
 photometry::LuminousOpening parse_emitter(const JsonValue& e) {
-  e.expect_object({"shape", "size", "diameter"});
+  e.expect_object();
   const auto shape = e.at("shape");
   const std::string s = shape.as_string();
   photometry::LuminousOpening o;
@@ -308,7 +317,7 @@ photometry::LuminousOpening parse_emitter(const JsonValue& e) {
 
 geometry::Obstacle parse_obstacle(const JsonValue& o, size_t index, const Room& room,
                                   std::vector<std::string>& warnings) {
-  o.expect_object({"name", "box", "prism", "reflectance"});
+  o.expect_object();
   const std::string name =
       o.has("name") ? o.at("name").as_string() : "obstacle " + std::to_string(index);
   // Furniture and columns: mid-grey unless given, like the room's walls.
@@ -318,13 +327,13 @@ geometry::Obstacle parse_obstacle(const JsonValue& o, size_t index, const Room& 
   if (o.has("box") == o.has("prism")) o.fail("expected exactly one of \"box\" or \"prism\"");
   geometry::Obstacle out;
   if (auto b = o.find("box")) {
-    b->expect_object({"min", "max", "rotation_z"});
+    b->expect_object();
     const Vec3 lo = point3(b->at("min")), hi = point3(b->at("max"));
     const double rot = b->has("rotation_z") ? b->at("rotation_z").as_number() * kDegToRad : 0.0;
     out = at_place(*b, [&] { return geometry::make_box(name, lo, hi, rot, rho); });
   } else {
     const auto p = o.at("prism");
-    p.expect_object({"outline", "z0", "z1"});
+    p.expect_object();
     const auto outline_v = p.at("outline");
     geometry::Polygon2 outline;
     check_count(outline_v, kMaxOutlineCorners, "corners");
@@ -347,7 +356,7 @@ geometry::Obstacle parse_obstacle(const JsonValue& o, size_t index, const Room& 
 }
 
 Room parse_room(const JsonValue& r, std::vector<std::string>& warnings) {
-  r.expect_object({"name", "outline", "floor_z", "height", "reflectance", "obstacles"});
+  r.expect_object();
   Room room;
   room.name = r.at("name").as_string();
   const auto outline = r.at("outline");
@@ -374,7 +383,7 @@ Room parse_room(const JsonValue& r, std::vector<std::string>& warnings) {
                   "(divide them by 1000)");
   }
   if (auto refl = r.find("reflectance")) {
-    refl->expect_object({"floor", "walls", "ceiling"});
+    refl->expect_object();
     if (auto f = refl->find("floor")) room.reflectance.floor = f->as_number_in(0.0, 1.0);
     if (auto w = refl->find("walls")) room.reflectance.walls = w->as_number_in(0.0, 1.0);
     if (auto c = refl->find("ceiling")) room.reflectance.ceiling = c->as_number_in(0.0, 1.0);
@@ -409,7 +418,7 @@ void check_luminaire_count(const JsonValue& where, size_t total) {
 
 void parse_luminaire(const JsonValue& l, size_t index, const Scene& scene,
                      std::vector<Luminaire>& out) {
-  l.expect_object({"name", "photometry", "position", "rotation", "array", "emitter"});
+  l.expect_object();
   const auto ph = l.at("photometry");
   const std::string key = ph.as_string();
   const auto it = scene.photometry.find(key);
@@ -433,7 +442,7 @@ void parse_luminaire(const JsonValue& l, size_t index, const Scene& scene,
     return;
   }
   const auto a = l.at("array");
-  a.expect_object({"origin", "count", "spacing"});
+  a.expect_object();
   const Vec3 origin = point3(a.at("origin"));
   const auto count_v = a.at("count");
   count_v.as_numbers(2);
@@ -624,7 +633,7 @@ geometry::SurfaceGrid parse_observers(const JsonValue& s, const JsonValue& obs, 
   g.kind = geometry::SurfaceGrid::Kind::observers;
   size_t index = 0;
   for (const auto& o : obs.items()) {
-    o.expect_object({"at", "directions"});
+    o.expect_object();
     const Vec3 at = point3(o.at("at"));
     const auto dirs = o.at("directions");
     std::vector<Vec3> views;
@@ -665,7 +674,7 @@ geometry::SurfaceGrid parse_observers(const JsonValue& s, const JsonValue& obs, 
 std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const Scene& scene,
                                                       const std::string& name, GridBudget& budget) {
   if (auto w = s.find("workplane")) {
-    w->expect_object({"room", "height", "border"});
+    w->expect_object();
     const auto room_v = w->at("room");
     const Room& room = find_room(room_v, scene, room_v.as_string());
     const auto height_v = w->at("height");
@@ -686,7 +695,7 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
     return {std::move(g)};
   }
   if (auto rs = s.find("room_surfaces")) {
-    rs->expect_object({"room"});
+    rs->expect_object();
     const auto room_v = rs->at("room");
     const Room& room = find_room(room_v, scene, room_v.as_string());
     const auto spacing_v = s.find("spacing");
@@ -715,7 +724,7 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
     return geometry::make_room_surface_grids(name, shape, spacing, room.obstacles);
   }
   if (auto p = s.find("plane")) {
-    p->expect_object({"origin", "u", "v", "size"});
+    p->expect_object();
     const Vec3 origin = point3(p->at("origin"));
     const auto u_v = p->at("u"), v_v = p->at("v");
     const Vec3 u = point3(u_v), v = point3(v_v);
@@ -738,7 +747,7 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
   g.name = name;
   g.kind = geometry::SurfaceGrid::Kind::points;
   for (const auto& p : pts.items()) {
-    p.expect_object({"at", "normal"});
+    p.expect_object();
     g.points.push_back(point3(p.at("at")));
     const auto nv = p.at("normal");
     const Vec3 n = point3(nv);
@@ -798,10 +807,8 @@ class OutputNames {
 
 std::vector<geometry::SurfaceGrid> parse_surface(const JsonValue& s, const Scene& scene,
                                                  GridBudget& budget) {
-  // "requirements" (EN 12464-1 checks) belongs to the report: report::parse_requirements reads
-  // and validates it from the raw document; the scene does not need it.
-  s.expect_object({"name", "workplane", "plane", "points", "room_surfaces", "observers", "spacing",
-                   "quantity", "facing", "requirements"});
+  // "requirements" (EN 12464-1 checks) is read by parse_project into Project::requirements.
+  s.expect_object();
   const std::string name = s.at("name").as_string();
   check_name_length(s.at("name"), name);
   const int kinds = s.has("workplane") + s.has("plane") + s.has("points") + s.has("room_surfaces") +
@@ -863,24 +870,31 @@ void warn_about_luminaires(Scene& scene) {
 
 }  // namespace
 
-Scene parse_project(const nlohmann::json& doc, const std::string& label,
-                    const std::filesystem::path& base_dir) {
-  const JsonValue root(doc, label, "");
-  root.expect_object({"format", "name", "settings", "photometry", "rooms", "luminaires", "surfaces"});
+Project parse_project(const nlohmann::json& doc, const std::string& label,
+                      const std::filesystem::path& base_dir) {
+  const JsonDocument document(doc, label);
+  const JsonValue root = document.root();
+  root.expect_object();
   const auto format = root.at("format");
   if (format.as_string() != kProjectFormat) {
     format.fail(std::string("expected \"") + kProjectFormat + "\", got \"" + format.as_string() + "\"");
   }
-  Scene scene;
+  Project project;
+  Scene& scene = project.scene;
   scene.name = root.has("name") ? root.at("name").as_string() : "unnamed project";
-  if (auto s = root.find("settings")) scene.settings = parse_settings(*s);
+  if (auto s = root.find("settings")) {
+    scene.settings = parse_settings(*s);
+    s->report_unqueried();
+  }
 
   const FilePolicy files{base_dir, scene.settings.allow_files_outside_project};
   const auto ph = root.at("photometry");
   if (!ph.is_object()) ph.fail("expected an object of named entries, got " + json_type_name(ph.raw()));
   check_count(ph, kMaxPhotometryEntries, "photometry entries");
   for (const auto& [key, _] : ph.raw().items()) {
-    auto p = parse_photometry_entry(ph.at(key.c_str()), files);
+    const auto entry = ph.at(key.c_str());
+    auto p = parse_photometry_entry(entry, files);
+    entry.report_unqueried();
     // The reader's warnings name the file; say which entry loaded it, once per entry.
     for (const auto& w : p.warnings) scene.warnings.push_back("photometry \"" + key + "\": " + w);
     scene.photometry.emplace(key, std::move(p));
@@ -898,13 +912,17 @@ Scene parse_project(const nlohmann::json& doc, const std::string& label,
       }
     }
     Room room = parse_room(r, scene.warnings);
+    r.report_unqueried();
     for (const auto& other : scene.rooms) {
       if (other.name == room.name) r.at("name").fail("a room named \"" + room.name + "\" already exists");
     }
     scene.rooms.push_back(std::move(room));
   }
   size_t index = 0;
-  for (const auto& l : root.at("luminaires").items()) parse_luminaire(l, index++, scene, scene.luminaires);
+  for (const auto& l : root.at("luminaires").items()) {
+    parse_luminaire(l, index++, scene, scene.luminaires);
+    l.report_unqueried();
+  }
   warn_about_luminaires(scene);
   const auto surfaces = root.at("surfaces");
   check_count(surfaces, kMaxSurfaces, "surfaces");
@@ -914,6 +932,8 @@ Scene parse_project(const nlohmann::json& doc, const std::string& label,
   for (const auto& s : surfaces.items()) {
     auto grids = parse_surface(s, scene, budget);
     check_observers_inputs(s, scene);
+    if (auto r = s.find("requirements")) parse_requirements(*r, s, surfaces, project.requirements);
+    s.report_unqueried();
     for (auto& grid : grids) {
       const auto name_v = s.at("name");
       if (!names.insert(grid.name).second) name_v.fail("a surface named \"" + grid.name + "\" already exists");
@@ -932,21 +952,23 @@ Scene parse_project(const nlohmann::json& doc, const std::string& label,
   apply_tilt_factors(scene);
   // Legal input that is usually a mistake (millimetres, kilolumens, radians, ...): warnings.
   add_sanity_warnings(scene, root);
-  return scene;
+  root.report_unqueried();
+  return project;
 }
 
-Scene parse_project_text(std::string_view text, const std::string& label,
+Project parse_project_text(std::string_view text, const std::string& label,
                          const std::filesystem::path& base_dir) {
   return parse_project(parse_json_text(text, label), label, base_dir);
 }
 
-Scene load_project(const std::filesystem::path& file) {
-  // JSON-level messages name the file as given; the scene's name only its file name.
+Project load_project(const std::filesystem::path& file) {
+  // JSON-level messages name the file as given; the scene's name only its file name. The bytes
+  // are read once: the hash in results.json is of exactly what was parsed.
   const std::string text = read_bounded_file(file);
-  Scene scene = parse_project(parse_json_text(text, file.string()), file.filename().string(), file.parent_path());
-  scene.project_file = file;
-  scene.project_sha256 = sha256_hex(text);
-  return scene;
+  Project project = parse_project(parse_json_text(text, file.string()), file.filename().string(), file.parent_path());
+  project.scene.project_file = file;
+  project.scene.project_sha256 = sha256_hex(text);
+  return project;
 }
 
-}  // namespace luxgrid::calc
+}  // namespace luxgrid::project

@@ -5,13 +5,14 @@
 
 #include <algorithm>
 
-#include "calc/project_file.h"
-#include "calc/project_limits.h"
-#include "calc/sanity_checks.h"
+#include "project/project_file.h"
+#include "project/project_limits.h"
+#include "project/sanity_checks.h"
 #include "photometry/builtin.h"
 #include "util/error.h"
 
-namespace luxgrid::calc {
+namespace luxgrid::project {
+using namespace calc;
 namespace {
 
 // A 6 x 4 x 2.8 m office, one Lambertian downlight in the middle, a workplane and a wall plane
@@ -31,7 +32,7 @@ nlohmann::json office() {
 }
 
 std::vector<std::string> warnings_of(const nlohmann::json& doc, const std::string& base = ".") {
-  return parse_project(doc, "p.json", base).warnings;
+  return parse_project(doc, "p.json", base).scene.warnings;
 }
 
 // The one warning of `doc`, which must contain every piece of `expected`.
@@ -66,7 +67,7 @@ TEST(SanityChecks, ARoomHigherThanAnyHallIsRefusedAsMillimetres) {
   auto doc = office();
   doc["rooms"][0]["height"] = 2800;
   try {
-    parse_project(doc, "p.json", ".");
+    parse_project(doc, "p.json", ".").scene;
     FAIL() << "accepted a 2800 m high room";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
@@ -75,7 +76,7 @@ TEST(SanityChecks, ARoomHigherThanAnyHallIsRefusedAsMillimetres) {
   }
   doc["rooms"][0]["height"] = kMaxRoomHeight_m;  // the limit itself is a room
   doc["luminaires"][0]["position"] = {3, 2, kMaxRoomHeight_m};
-  EXPECT_NO_THROW(parse_project(doc, "p.json", "."));
+  EXPECT_NO_THROW(parse_project(doc, "p.json", ".").scene);
 }
 
 TEST(SanityChecks, ASpacingLargerThanTheSurfaceWarnsAndSoDoesTheOnePointGrid) {
@@ -174,4 +175,4 @@ TEST(SanityChecks, MainBeamOfAPointSymmetricSourceIsNone) {
 }
 
 }  // namespace
-}  // namespace luxgrid::calc
+}  // namespace luxgrid::project

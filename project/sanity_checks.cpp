@@ -1,4 +1,4 @@
-#include "calc/sanity_checks.h"
+#include "project/sanity_checks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,10 @@
 #include "geometry/workplane.h"
 #include "photometry/tabular_distribution.h"
 
-namespace luxgrid::calc {
+namespace luxgrid::project {
+
+// The checks read calc's Scene, rooms and luminaires throughout.
+using namespace calc;
 
 namespace {
 
@@ -299,4 +302,4 @@ void add_sanity_warnings(Scene& scene, const JsonValue& root) {
   scene.warnings.insert(scene.warnings.end(), out.begin(), out.end());
 }
 
-}  // namespace luxgrid::calc
+}  // namespace luxgrid::project

@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace luxgrid::calc {
+namespace luxgrid::project {
 
 // The largest project file read, bytes. A big real project (20 000 luminaires written out one by
 // one, ~100 bytes each) is 2 MB; nlohmann's DOM takes up to ~16 bytes per byte of dense text, so
@@ -42,4 +42,4 @@ nlohmann::json read_json_file(const std::filesystem::path& file,
                               std::uintmax_t max_bytes = kMaxProjectFileBytes,
                               const std::string& kind = "project file");
 
-}  // namespace luxgrid::calc
+}  // namespace luxgrid::project
