@@ -2,12 +2,14 @@
 
 #include <chrono>
 
+#include "calc/emergency_scene.h"
 #include "calc/pipeline.h"
 #include "calc/project_file.h"
 #include "calc/safe_json.h"
 #include "cli/progress.h"
 #include "report/colour_rendering.h"
 #include "report/output_folder.h"
+#include "report/requirements_en1838.h"
 #include "report/write_outputs.h"
 #include "util/error.h"
 #include "util/output_names.h"
@@ -21,7 +23,8 @@ std::filesystem::path default_output_dir(const std::filesystem::path& project) {
   return out;
 }
 
-LoadedProject load_project_with_requirements(const std::filesystem::path& project) {
+LoadedProject load_project_with_requirements(const std::filesystem::path& project,
+                                             std::optional<calc::LightingScene> scene) {
   // One safe parse (size, depth, duplicate keys, number range) feeds both readers.
   // The bytes are read once: the hash in results.json is of exactly what was parsed.
   const std::string text = calc::read_bounded_file(project);
@@ -32,7 +35,24 @@ LoadedProject load_project_with_requirements(const std::filesystem::path& projec
   out.scene.project_file = project;
   out.scene.project_sha256 = sha256_hex(text);
   out.requirements = report::parse_requirements(doc, label);
+  if (scene) out.scene.settings.scene = *scene;
+  if (out.scene.settings.scene == calc::LightingScene::emergency) {
+    try {
+      out.scene = calc::make_emergency_scene(out.scene);
+    } catch (const InputError& e) {
+      throw InputError(label + ": " + e.what());
+    }
+  }
   return out;
+}
+
+std::vector<report::RequirementCheck> scene_checks(const LoadedProject& loaded,
+                                                   const calc::Results& results) {
+  if (results.scene == calc::LightingScene::emergency) {
+    return report::check_en1838(results, loaded.scene.emergency_surfaces);
+  }
+  const auto ra = report::scene_colour_rendering(loaded.scene);
+  return report::check_requirements(results, loaded.requirements, {ra.Ra, ra.source});
 }
 
 std::vector<std::filesystem::path> input_files(const calc::Scene& scene) {
@@ -47,7 +67,7 @@ std::vector<std::filesystem::path> input_files(const calc::Scene& scene) {
 RunOutcome run_project(const std::filesystem::path& project, const std::filesystem::path& out_dir,
                        const RunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
-  LoadedProject loaded = load_project_with_requirements(project);
+  LoadedProject loaded = load_project_with_requirements(project, options.scene);
   calc::Scene& scene = loaded.scene;
   if (options.quality) scene.settings.quality = *options.quality;
   const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -66,8 +86,7 @@ RunOutcome run_project(const std::filesystem::path& project, const std::filesyst
   }
   end_progress();
   outcome.results.timing_s.insert(outcome.results.timing_s.begin(), {"load", load_s});
-  const auto ra = report::scene_colour_rendering(scene);
-  outcome.checks = report::check_requirements(outcome.results, loaded.requirements, {ra.Ra, ra.source});
+  outcome.checks = scene_checks(loaded, outcome.results);
   if (options.with_cost) outcome.cost = run_cost(scene, options.show_progress);
 
   report::OutputOptions out;

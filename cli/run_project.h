@@ -16,6 +16,7 @@ namespace luxgrid::cli {
 
 struct RunOptions {
   std::optional<calc::Quality> quality;  // overrides the project's setting
+  std::optional<calc::LightingScene> scene;  // --scene: overrides settings.scene
   bool show_progress = false;
   bool report = true;                          // report.html (--no-report switches it off)
   std::optional<report::ColourScale> scale;    // --scale MIN:MAX
@@ -38,12 +39,19 @@ struct RunOutcome {
 
 // A project and the requirements its surfaces state. The loader does not know the
 // "requirements" key yet, so they are read from the raw document and removed before it parses
-// (harmless once it does).
+// (harmless once it does). With the emergency scene (settings.scene, or `scene` when given) the
+// scene is already the emergency one (calc/emergency_scene.h).
 struct LoadedProject {
   calc::Scene scene;
   report::Requirements requirements;
 };
-LoadedProject load_project_with_requirements(const std::filesystem::path& project);
+LoadedProject load_project_with_requirements(
+    const std::filesystem::path& project, std::optional<calc::LightingScene> scene = std::nullopt);
+
+// The checks of a calculated scene: the project's EN 12464-1 requirements in the normal scene,
+// EN 1838's on its escape routes and open areas in the emergency scene.
+std::vector<report::RequirementCheck> scene_checks(const LoadedProject& loaded,
+                                                   const calc::Results& results);
 
 // Loads `project`, runs it and writes every output into `out_dir` atomically.
 RunOutcome run_project(const std::filesystem::path& project, const std::filesystem::path& out_dir,

@@ -351,6 +351,12 @@ Requirements parse_requirements(const nlohmann::json& project, const std::string
     if (!req.is_object()) req.fail("expected an object such as {\"Em\": 500, \"U0\": 0.6}, got " + calc::json_type_name(req.raw()));
     const std::string name = s.has("name") && s.at("name").is_string() ? s.at("name").as_string() : "";
     if (name.empty()) s.at("name").fail("expected the surface's name");
+    if (s.has("escape_route") || s.has("open_area")) {
+      req.fail(
+          "an escape_route or open_area surface takes no requirements: EN 1838's checks are made "
+          "on it in "
+          "the emergency scene (docs/compliance.md)");
+    }
     if (s.has("room_surfaces")) {
       parse_room_surfaces(req, name, out);
     } else {
