@@ -87,6 +87,8 @@ Results run_scene(const Scene& scene, const Progress& progress) {
   Results results;
   results.project = scene.name;
   results.plan = make_plan(scene);
+  results.scene = scene.settings.scene;
+  for (const auto& n : scene.notes) results.plan.notes.push_back(n);
 
   const auto t_direct = std::chrono::steady_clock::now();
   run_direct(scene, results, progress);

@@ -32,6 +32,7 @@ struct Results {
   std::string project;
   Quality quality = Quality::standard;  // the quality the calculation ran at
   double maintenance_factor = 1.0;      // applied to every E above
+  LightingScene scene = LightingScene::normal;  // normal lighting, or EN 1838's emergency scene
   Plan plan;
   std::vector<SurfaceResult> surfaces;
   std::vector<std::pair<std::string, double>> timing_s;  // phase -> seconds, in run order

@@ -14,6 +14,10 @@ const char* to_string(Quality q) {
   return "?";
 }
 
+const char* to_string(LightingScene s) {
+  return s == LightingScene::emergency ? "emergency" : "normal";
+}
+
 std::optional<Quality> quality_from_string(const std::string& s) {
   if (s == "draft") return Quality::draft;
   if (s == "standard") return Quality::standard;

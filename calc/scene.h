@@ -9,6 +9,7 @@
 
 #include <glm/mat3x3.hpp>
 
+#include "calc/emergency_surfaces.h"
 #include "geometry/room.h"
 #include "geometry/surface_grid.h"
 #include "photometry/photometry.h"
@@ -18,8 +19,12 @@ namespace luxgrid::calc {
 enum class Quality { draft, standard, high, reference };
 enum class NearFieldMode { automatic, always, never };
 enum class IndirectMode { automatic, off, on };
+// Which lighting is calculated: the normal lighting, or the emergency lighting of EN 1838
+// (calc/emergency_scene.h: direct light only, from the luminaires' emergency output).
+enum class LightingScene { normal, emergency };
 
 const char* to_string(Quality q);
+const char* to_string(LightingScene s);  // "normal", "emergency"
 std::optional<Quality> quality_from_string(const std::string& s);
 
 // The maintenance factor's parts [CIE97]: MF = LLMF x LSF x LMF x RSMF (lamp lumen maintenance,
@@ -42,6 +47,7 @@ struct Settings {
   // Set when the project gives the parts (settings.maintenance as an object); maintenance_factor
   // is then their product.
   std::optional<MaintenanceFactors> maintenance_parts;
+  LightingScene scene = LightingScene::normal;  // settings.scene, or `calc --scene`
   // Photometry files may lie outside the project file's folder (absolute paths, ../); off by
   // default, so a project received from elsewhere cannot read arbitrary files.
   bool allow_files_outside_project = false;
@@ -72,12 +78,22 @@ struct Pose {
 // Rotation [rx, ry, rz] in radians about the world x, then y, then z axis (docs/project-format.md).
 glm::dmat3 rotation_xyz(double rx, double ry, double rz);
 
+// A luminaire's emergency output [EN1838]: its own distribution times `factor` (a fraction of
+// its output, or the emergency flux over the file's flux), or a separate photometry entry.
+struct EmergencyOutput {
+  double factor = 1.0;      // on the luminaire's own distribution; 1 with `photometry`
+  std::string photometry;   // non-empty: the photometry entry giving the emergency distribution
+  std::string description;  // for the plan: "0.1 of its output", "250 lm", "photometry \"em\""
+};
+
 struct Luminaire {
   std::string label;       // "luminaire 3" or "luminaire 3 [1,0]" for array members
   std::string photometry;  // key into Scene::photometry
   Pose pose;
   photometry::DistributionPtr distribution;
   photometry::LuminousOpening opening;  // from the file, or the project's "emitter" override
+  // The luminaire's output in the emergency scene (its "emergency" entry); none: it stays dark.
+  std::optional<EmergencyOutput> emergency;
 };
 
 struct Scene {
@@ -89,6 +105,12 @@ struct Scene {
   std::vector<Room> rooms;
   std::vector<Luminaire> luminaires;
   std::vector<geometry::SurfaceGrid> surfaces;
+  // The grids of escape routes and open areas (calc/emergency_surfaces.h), checked against
+  // EN 1838 in the emergency scene.
+  std::vector<EmergencySurface> emergency_surfaces;
+  // What was done to the project before the calculation (the emergency scene's choices): the
+  // pipeline copies them into the plan's notes.
+  std::vector<std::string> notes;
   // Legal but suspicious input, each naming the object ("room \"L\": the outline is clockwise;
   // reversed to counter-clockwise"). The CLI prints them; results may list them.
   std::vector<std::string> warnings;

@@ -1,4 +1,5 @@
-// `luxgrid calc PROJECT [-o DIR] [--quality Q] [--no-report] [--scale MIN:MAX] [--check]
+// `luxgrid calc PROJECT [-o DIR] [--quality Q] [--scene normal|emergency] [--no-report] [--scale
+// MIN:MAX] [--check]
 //  [--with-cost] [--arrays npy]`
 #include <cstdio>
 #include <memory>
@@ -11,7 +12,7 @@ namespace luxgrid::cli {
 
 void add_calc_command(CLI::App& app, Runner& run) {
   struct Options {
-    std::string project, out, quality, scale, arrays;
+    std::string project, out, quality, scale, arrays, scene;
     bool no_report = false, check = false, with_cost = false;
   };
   auto opt = std::make_shared<Options>();
@@ -20,6 +21,11 @@ void add_calc_command(CLI::App& app, Runner& run) {
   cmd->add_option("-o,--output", opt->out, "Output folder (default: <project>.out beside the project)");
   cmd->add_option("--quality", opt->quality, "Override settings.quality")
       ->check(CLI::IsMember({"draft", "standard", "high", "reference"}));
+  cmd->add_option("--scene", opt->scene,
+                  "Override settings.scene: normal, or emergency (EN 1838: direct light from the "
+                  "luminaires' "
+                  "emergency output, escape-route and open-area checks)")
+      ->check(CLI::IsMember({"normal", "emergency"}));
   cmd->add_flag("--no-report", opt->no_report, "Do not write report.html");
   cmd->add_option("--scale", opt->scale, "Fix the colour scale of every plot to MIN:MAX lux (e.g. 0:1000)");
   cmd->add_option("--arrays", opt->arrays,
@@ -33,6 +39,10 @@ void add_calc_command(CLI::App& app, Runner& run) {
       RunOptions options;
       if (!opt->quality.empty()) options.quality = calc::quality_from_string(opt->quality);
       if (!opt->scale.empty()) options.scale = report::parse_scale(opt->scale);
+      if (!opt->scene.empty()) {
+        options.scene = opt->scene == "emergency" ? calc::LightingScene::emergency
+                                                  : calc::LightingScene::normal;
+      }
       options.report = !opt->no_report;
       options.with_cost = opt->with_cost;
       options.arrays_npy = opt->arrays == "npy";

@@ -2,11 +2,13 @@
 
 #include <chrono>
 
+#include "calc/emergency_scene.h"
 #include "calc/pipeline.h"
 #include "project/project_file.h"
 #include "cli/progress.h"
 #include "report/colour_rendering.h"
 #include "report/output_folder.h"
+#include "report/requirements_en1838.h"
 #include "report/write_outputs.h"
 #include "util/error.h"
 #include "util/output_names.h"
@@ -18,6 +20,27 @@ std::filesystem::path default_output_dir(const std::filesystem::path& project) {
   std::filesystem::path out = project;
   out.replace_extension(".out");
   return out;
+}
+
+// The emergency scene (settings.scene, or --scene) replaces the loaded scene by its emergency
+// counterpart (calc/emergency_scene.h) before anything is planned.
+void apply_lighting_scene(project::Project& loaded, std::optional<calc::LightingScene> scene) {
+  if (scene) loaded.scene.settings.scene = *scene;
+  if (loaded.scene.settings.scene != calc::LightingScene::emergency) return;
+  try {
+    loaded.scene = calc::make_emergency_scene(loaded.scene);
+  } catch (const InputError& e) {
+    throw e.in_file(loaded.scene.project_file.filename().string());
+  }
+}
+
+std::vector<report::RequirementCheck> scene_checks(const project::Project& loaded,
+                                                   const calc::Results& results) {
+  if (results.scene == calc::LightingScene::emergency) {
+    return report::check_en1838(results, loaded.scene.emergency_surfaces);
+  }
+  const auto ra = report::scene_colour_rendering(loaded.scene);
+  return report::check_requirements(results, loaded.requirements, {ra.Ra, ra.source});
 }
 
 std::vector<std::filesystem::path> input_files(const calc::Scene& scene) {
@@ -33,6 +56,7 @@ RunOutcome run_project(const std::filesystem::path& project_file, const std::fil
                        const RunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   project::Project loaded = project::load_project(project_file);
+  apply_lighting_scene(loaded, options.scene);
   calc::Scene& scene = loaded.scene;
   if (options.quality) scene.settings.quality = *options.quality;
   const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -51,8 +75,7 @@ RunOutcome run_project(const std::filesystem::path& project_file, const std::fil
   }
   end_progress();
   outcome.results.timing_s.insert(outcome.results.timing_s.begin(), {"load", load_s});
-  const auto ra = report::scene_colour_rendering(scene);
-  outcome.checks = report::check_requirements(outcome.results, loaded.requirements, {ra.Ra, ra.source});
+  outcome.checks = scene_checks(loaded, outcome.results);
   if (options.with_cost) outcome.cost = run_cost(scene, options.show_progress);
 
   report::OutputOptions out;

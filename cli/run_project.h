@@ -8,6 +8,7 @@
 
 #include "calc/results.h"
 #include "calc/scene.h"
+#include "project/project_file.h"
 #include "report/colour_scale.h"
 #include "report/diff.h"
 #include "report/requirements.h"
@@ -16,6 +17,7 @@ namespace luxgrid::cli {
 
 struct RunOptions {
   std::optional<calc::Quality> quality;  // overrides the project's setting
+  std::optional<calc::LightingScene> scene;  // --scene: overrides settings.scene
   bool show_progress = false;
   bool report = true;                          // report.html (--no-report switches it off)
   std::optional<report::ColourScale> scale;    // --scale MIN:MAX
@@ -35,6 +37,15 @@ struct RunOutcome {
   std::optional<report::CostTable> cost;         // with_cost only
   std::vector<std::string> kept;  // files of the previous output carried over (report.html under --no-report)
 };
+
+// The emergency scene (settings.scene, or `scene` when given) replaces the loaded scene by its
+// emergency counterpart (calc/emergency_scene.h).
+void apply_lighting_scene(project::Project& loaded, std::optional<calc::LightingScene> scene);
+
+// The checks of a calculated scene: the project's EN 12464-1 requirements in the normal scene,
+// EN 1838's on its escape routes and open areas in the emergency scene.
+std::vector<report::RequirementCheck> scene_checks(const project::Project& loaded,
+                                                   const calc::Results& results);
 
 // Loads `project`, runs it and writes every output into `out_dir` atomically.
 RunOutcome run_project(const std::filesystem::path& project, const std::filesystem::path& out_dir,

@@ -81,6 +81,9 @@ inline constexpr double kMinMaintenanceFactor = 0.1;
 // practice (DIALux uses 15-degree steps); 1000 seated positions cover a large open-plan floor.
 inline constexpr std::size_t kMaxObservers = 1000;
 inline constexpr std::size_t kMaxViewsPerObserver = 360;
+// Corners of an escape route's path (calc/emergency_surfaces.h): a building's longest route has
+// tens; the points along it are charged to the grid budget as for any surface.
+inline constexpr std::size_t kMaxEscapeRouteCorners = 1000;
 // Views x luminaires over all observers surfaces: results.json lists a term per luminaire in
 // each view, ~100 bytes each, so 1e6 pairs keep the file near 100 MB at most.
 inline constexpr double kMaxViewLuminairePairs = 1e6;

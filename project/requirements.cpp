@@ -192,6 +192,11 @@ void parse_requirements(const JsonValue& req, const JsonValue& surface, const Js
                         Requirements& out) {
   if (!req.is_object()) req.fail("expected an object such as {\"Em\": 500, \"U0\": 0.6}, got " + json_type_name(req.raw()));
   const std::string name = surface.at("name").as_string();
+  if (surface.has("escape_route") || surface.has("open_area")) {
+    req.fail(
+        "an escape_route or open_area surface takes no requirements: EN 1838's checks are made "
+        "on it in the emergency scene (docs/compliance.md)");
+  }
   if (surface.has("room_surfaces")) {
     parse_room_surfaces(req, name, out);
   } else {

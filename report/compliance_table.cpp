@@ -1,9 +1,11 @@
 #include "report/compliance_table.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <set>
 
 #include "report/html_report.h"
+#include "report/requirements_en1838.h"
 
 namespace luxgrid::report {
 
@@ -30,10 +32,18 @@ const char* quantity_label(const std::string& q) {
   if (q == "Esc") return "E<sub>sc</sub> (semi-cylindrical)";
   if (q == "modelling") return "Modelling E<sub>z</sub> / E<sub>h</sub>";
   if (q == "UGR_L") return "UGR<sub>L</sub>";
+  if (q == kDiversityQuantity) return "E<sub>max</sub> / E<sub>min</sub>";
   return "R<sub>a</sub>";
 }
 
 }  // namespace
+
+std::string lighting_scene_row_html(calc::LightingScene scene) {
+  if (scene == calc::LightingScene::normal) return "";
+  return "<tr><th>Scene</th><td data-meta=\"scene\">emergency (EN 1838): direct light only, "
+         "emergency output of "
+         "the emergency luminaires</td></tr>";
+}
 
 const char* check_result(const RequirementCheck& c) {
   if (!c.calculated) return "not calculated";
@@ -52,8 +62,24 @@ std::string compliance_table_html(const std::vector<RequirementCheck>& checks) {
   if (!ok) {
     verdict += " (" + std::to_string(failed) + " not met, " + std::to_string(missing) + " not calculated).";
   }
-  std::string h = "<h2>Compliance</h2>\n<p class=\"" + std::string(ok ? "met" : "notmet") + "\" data-requirements=\"" +
-                  (ok ? "met" : "not met") + "\">" + verdict + "</p>\n";
+  // The emergency scene's checks are EN 1838's, on escape routes and open areas.
+  const bool emergency = std::any_of(checks.begin(), checks.end(),
+                                     [](const RequirementCheck& c) { return c.fixed_by_standard; });
+  std::string h = std::string(emergency ? "<h2>Compliance: emergency lighting (EN 1838)</h2>\n"
+                                        : "<h2>Compliance</h2>\n");
+  if (emergency) {
+    h += "<p class=\"muted\">Direct light only, from the luminaires with an emergency entry at "
+         "their emergency "
+         "output; horizontal illuminance on the floor. Escape routes: centre line E<sub>min</sub> "
+         "&ge; 1 lx and "
+         "E<sub>max</sub> / E<sub>min</sub> &le; 40, central band (half the route's width) "
+         "E<sub>min</sub> &ge; "
+         "0.5 lx; open areas, without a 0.5 m border: E<sub>min</sub> &ge; 0.5 lx and "
+         "E<sub>max</sub> / "
+         "E<sub>min</sub> &le; 40.</p>\n";
+  }
+  h += "<p class=\"" + std::string(ok ? "met" : "notmet") + "\" data-requirements=\"" +
+       (ok ? "met" : "not met") + "\">" + verdict + "</p>\n";
   h += "<table class=\"compliance\"><tr><th>Surface</th><th>Quantity</th><th class=\"num\">Required</th>"
        "<th class=\"num\">Achieved</th><th>Result</th><th class=\"num\">Margin</th><th>Source</th></tr>";
   std::set<std::string> citations;
@@ -72,8 +98,11 @@ std::string compliance_table_html(const std::vector<RequirementCheck>& checks) {
     }
     const char* result = check_result(c);
     const char* css = !c.calculated ? "notcalc" : c.met ? "met" : "notmet";
-    std::string source = c.source.empty() ? "stated" : "preset " + html_escape(c.source.substr(0, c.source.find(':')));
-    if (!c.source.empty()) citations.insert(c.source);
+    std::string source = c.fixed_by_standard ? html_escape(c.source)
+                         : c.source.empty()
+                             ? "stated"
+                             : "preset " + html_escape(c.source.substr(0, c.source.find(':')));
+    if (!c.source.empty() && !c.fixed_by_standard) citations.insert(c.source);
     if (!c.note.empty()) source += "<br><span class=\"muted\">" + html_escape(c.note) + "</span>";
     const std::string surface = c.surface == previous ? "" : html_escape(c.surface) + " <span class=\"muted\">(" + c.role + ")</span>";
     previous = c.surface;

@@ -12,6 +12,9 @@ namespace luxgrid::report {
 // The HTML section (an <h2>, the verdict and the table); empty for no checks.
 std::string compliance_table_html(const std::vector<RequirementCheck>& checks);
 
+// The report's "Scene" row for the emergency scene (empty for the normal one).
+std::string lighting_scene_row_html(calc::LightingScene scene);
+
 // "met", "not met" or "not calculated".
 const char* check_result(const RequirementCheck& c);
 

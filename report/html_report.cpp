@@ -120,6 +120,7 @@ std::string html_report(const ReportInput& in) {
     }
     h += " (all illuminances are maintained values)</td></tr>";
   }
+  h += lighting_scene_row_html(r.scene);
   h += "</table>\n";
 
   // --- requirement checks -------------------------------------------------------------------

@@ -86,6 +86,9 @@ nlohmann::json results_to_json(const calc::Results& results, const std::vector<s
   j["project"] = results.project;
   j["project_sha256"] = origin.project_sha256;
   j["quality"] = calc::to_string(results.quality);
+  // "emergency": EN 1838's scene, direct light from the emergency luminaires only
+  // (calc/emergency_scene.h).
+  j["scene"] = calc::to_string(results.scene);
   j["maintenance_factor"] = results.maintenance_factor;
   // Every E, E_direct and E_indirect below: E = E_direct + E_indirect, all times the factor.
   j["values"] = "maintained";
