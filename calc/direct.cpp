@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -39,23 +40,46 @@ std::vector<nearfield::Emitter> make_emitters(const Scene& scene) {
   return out;
 }
 
-std::vector<double> direct_illuminance(const Plan& plan, const std::vector<nearfield::Emitter>& emitters,
+std::vector<double> direct_illuminance(const Plan& plan,
+                                       const std::vector<nearfield::Emitter>& emitters,
                                        const geometry::SurfaceGrid& grid, const Progress& progress,
-                                       DirectCounts* counts) {
+                                       DirectCounts* counts, const GridReach* reach) {
   std::vector<double> E(grid.points.size(), 0.0);
   std::atomic<size_t> done{0};
   std::mutex count_mutex;
   const size_t total = grid.points.size();
   const bool automatic = plan.near_switch == nearfield::NearFieldSwitch::automatic;
-  // nullptr when nothing can occlude: the near-field models then skip every test.
-  const geometry::Visibility* visibility = plan.visibility_test.get();
+  // Per zone its luminaires and its visibility test (nullptr when nothing can occlude: the
+  // near-field models then skip every test). Without `reach` one zone: every luminaire, the
+  // plan's test.
+  struct Zone {
+    std::vector<uint32_t> all;  // used when no reach is given
+    const std::vector<uint32_t>* luminaires = nullptr;
+    const geometry::Visibility* visibility = nullptr;
+  };
+  std::vector<Zone> zones(reach ? reach->reach.zone_count() : 1);
+  for (size_t z = 0; z < zones.size(); ++z) {
+    zones[z].visibility = plan.visibility_test.get();
+    if (reach) {
+      const ReachZone& rz = reach->reach.zone(static_cast<uint32_t>(z));
+      zones[z].luminaires = &rz.luminaires;
+      zones[z].visibility = rz.visibility.get();
+    } else {
+      zones[z].all.resize(emitters.size());
+      for (uint32_t k = 0; k < emitters.size(); ++k) zones[z].all[k] = k;
+      zones[z].luminaires = &zones[z].all;
+    }
+  }
   tbb::parallel_for(tbb::blocked_range<size_t>(0, total, 16), [&](const auto& range) {
     DirectCounts local;
     for (size_t i = range.begin(); i != range.end(); ++i) {
       if (!grid.active.empty() && !grid.active[i]) continue;
       double sum = 0.0;
       const nearfield::Receiver receiver = receiver_of(grid.quantity, grid.normals[i]);
-      for (const auto& emitter : emitters) {
+      const Zone& zone = zones[reach ? reach->zone_of_point[i] : 0];
+      const geometry::Visibility* visibility = zone.visibility;
+      for (const uint32_t k : *zone.luminaires) {
+        const nearfield::Emitter& emitter = emitters[k];
         // Soft shadows: the near-field models test visibility per node, the far field from
         // the opening's centre.
         sum += nearfield::hybrid_illuminance(emitter, grid.points[i], receiver, plan.near_model,

@@ -4,6 +4,7 @@
 #include <functional>
 #include <vector>
 
+#include "calc/direct_reach.h"
 #include "calc/plan.h"
 #include "calc/scene.h"
 
@@ -25,11 +26,16 @@ std::vector<nearfield::Emitter> make_emitters(const Scene& scene);
 // (when it has one): per quadrature node for the near-field models (soft shadows), from the
 // opening's centre for the far field; inactive points get 0. The grid's quantity picks the
 // receiver (nearfield/receiver_kernel.h): a plane on each point's normal, a cylinder, or a half
-// cylinder facing the point's normal; every quantity takes the same near/far decision. `progress` may be
-// empty; it is called from worker threads. `counts`, when given, is increased by the pairs each
-// model served.
-std::vector<double> direct_illuminance(const Plan& plan, const std::vector<nearfield::Emitter>& emitters,
+// cylinder facing the point's normal; every quantity takes the same near/far decision. `progress`
+// may be empty; it is called from worker threads. `counts`, when given, is increased by the pairs
+// each model served. `reach`, when given, limits each point to the luminaires of its zone, tested
+// through the zone's visibility tree (calc/direct_reach.h); the luminaires left out cannot
+// reach the point, so the sums are the same, added in the same order.
+std::vector<double> direct_illuminance(const Plan& plan,
+                                       const std::vector<nearfield::Emitter>& emitters,
                                        const geometry::SurfaceGrid& grid,
-                                       const Progress& progress = {}, DirectCounts* counts = nullptr);
+                                       const Progress& progress = {},
+                                       DirectCounts* counts = nullptr,
+                                       const GridReach* reach = nullptr);
 
 }  // namespace luxgrid::calc

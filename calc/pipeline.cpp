@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "calc/direct_reach.h"
 #include "calc/far_field_bounds.h"
 #include "calc/glare/ugr.h"
 #include "calc/indirect/indirect.h"
@@ -18,14 +19,17 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Direct light on every surface; progress runs from 0 to 1 over all points.
+// Direct light on every surface; progress runs from 0 to 1 over all points. Each point tests
+// only the luminaires that can reach it (calc/direct_reach.h).
 void run_direct(const Scene& scene, Results& results, const Progress& progress) {
   size_t total_points = 0;
   for (const auto& s : scene.surfaces) total_points += s.points.size();
   auto emitters = make_emitters(scene);
   results.plan.near_far_per_emitter = attach_far_field_bounds(scene, results.plan, emitters);
+  DirectReach reach(scene, results.plan.visibility_test);
   DirectCounts counts;
   size_t points_before = 0;
+  size_t pairs_unreachable = 0;
   for (const auto& grid : scene.surfaces) {
     SurfaceResult r;
     r.grid = grid;
@@ -35,12 +39,25 @@ void run_direct(const Scene& scene, Results& results, const Progress& progress) 
       const double offset = static_cast<double>(points_before) / total_points;
       surface_progress = [=](double f) { progress(offset + share * f); };
     }
-    r.E_direct = direct_illuminance(results.plan, emitters, grid, surface_progress, &counts);
+    const GridReach grid_reach{reach, reach.zones_of(grid)};
+    r.E_direct =
+        direct_illuminance(results.plan, emitters, grid, surface_progress, &counts, &grid_reach);
+    for (size_t i = 0; i < grid.points.size(); ++i) {
+      if (grid.active.empty() || grid.active[i])
+        pairs_unreachable +=
+            emitters.size() - reach.zone(grid_reach.zone_of_point[i]).luminaires.size();
+    }
     r.E_indirect.assign(r.E_direct.size(), 0.0);
     points_before += grid.points.size();
     results.surfaces.push_back(std::move(r));
   }
   results.plan.direct = describe_direct(results.plan, counts);
+  if (pairs_unreachable > 0) {
+    results.plan.direct +=
+        "; " + std::to_string(pairs_unreachable) +
+        " luminaire-point pairs not computed: the luminaire's opening lies in none of the "
+        "point's rooms, and light does not pass through a room's walls, floor or ceiling";
+  }
 }
 
 // Reflected light, when the plan's decision says the scene needs it.

@@ -243,10 +243,15 @@ void OutputFolder::commit() {
 }
 
 void write_text_file(const fs::path& path, const std::string& text) {
+  write_file_streamed(path, [&](std::ostream& out) { out << text; });
+}
+
+void write_file_streamed(const fs::path& path, const std::function<void(std::ostream&)>& write) {
   const fs::path tmp = path.string() + ".tmp";
   {
     std::ofstream out(tmp, std::ios::binary);
-    out << text;
+    write(out);
+    out.flush();
     if (!out) throw CalculationError(path.string() + ": cannot write the file");
   }
   std::error_code ec;

@@ -16,6 +16,8 @@
 // are removed by the next run into the same target. Two runs into the same target do not
 // interleave: commit() holds an exclusive lock on the parent folder while it checks and swaps.
 #include <filesystem>
+#include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -60,5 +62,9 @@ class OutputFolder {
 
 // Writes `text` to `path` atomically (temporary file + rename).
 void write_text_file(const std::filesystem::path& path, const std::string& text);
+
+// The same for a file written piece by piece: `write` fills the stream.
+void write_file_streamed(const std::filesystem::path& path,
+                         const std::function<void(std::ostream&)>& write);
 
 }  // namespace luxgrid::report

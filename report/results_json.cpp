@@ -1,8 +1,26 @@
 #include "report/results_json.h"
 
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string_view>
+
 namespace luxgrid::report {
 
 namespace {
+// The per-point arrays of a surface, in the order results_outline_json leaves placeholders.
+enum class PointArray { points, normals, active, E, E_direct, E_indirect };
+constexpr std::array<std::pair<PointArray, const char*>, 6> kPointArrays = {
+    {{PointArray::points, "points"},
+     {PointArray::normals, "normals"},
+     {PointArray::active, "active"},
+     {PointArray::E, "E"},
+     {PointArray::E_direct, "E_direct"},
+     {PointArray::E_indirect, "E_indirect"}}};
+// A placeholder's text starts with a control character, which dump() writes escaped: the
+// escaped form after a key at the start of a line cannot come from any string of the input.
+constexpr std::string_view kPlaceholderTag = "\\u0001points ";
+
 nlohmann::json vec3(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
 const char* kind_name(geometry::SurfaceGrid::Kind k) {
@@ -38,7 +56,10 @@ nlohmann::json observers_json(const std::vector<calc::glare::ObserverResult>& ob
   return out;
 }
 
-nlohmann::json surface_json(const calc::SurfaceResult& r) {
+// `index`: the surface's place in the results; with `arrays` false the per-point arrays are
+// placeholders naming it (character 1, "points", the surface and the array: "\\u0001points 3 4"
+// once dumped).
+nlohmann::json surface_json(const calc::SurfaceResult& r, size_t index, bool arrays) {
   using nlohmann::json;
   const auto& g = r.grid;
   json s;
@@ -53,20 +74,27 @@ nlohmann::json surface_json(const calc::SurfaceResult& r) {
   s["quantity"] = geometry::to_string(g.quantity);
   s["points_outside"] = g.points_outside;
   s["points_in_obstacles"] = g.points_in_obstacles;
-  json points = json::array(), normals = json::array();
-  for (size_t i = 0; i < g.points.size(); ++i) {
-    points.push_back(vec3(g.points[i]));
-    normals.push_back(vec3(g.normals[i]));
+  if (arrays) {
+    json points = json::array(), normals = json::array();
+    for (size_t i = 0; i < g.points.size(); ++i) {
+      points.push_back(vec3(g.points[i]));
+      normals.push_back(vec3(g.normals[i]));
+    }
+    s["points"] = std::move(points);
+    s["normals"] = std::move(normals);
+    // false for the points left out above: their E is 0 and the statistics skip them.
+    json active = json::array();
+    for (size_t i = 0; i < g.points.size(); ++i) active.push_back(g.active.empty() || g.active[i]);
+    s["active"] = std::move(active);
+    s["E"] = r.E;
+    s["E_direct"] = r.E_direct;
+    s["E_indirect"] = r.E_indirect;
+  } else {
+    for (const auto& [array, key] : kPointArrays) {
+      s[key] =
+          "\x01points " + std::to_string(index) + " " + std::to_string(static_cast<int>(array));
+    }
   }
-  s["points"] = std::move(points);
-  s["normals"] = std::move(normals);
-  // false for the points left out above: their E is 0 and the statistics skip them.
-  json active = json::array();
-  for (size_t i = 0; i < g.points.size(); ++i) active.push_back(g.active.empty() || g.active[i]);
-  s["active"] = std::move(active);
-  s["E"] = r.E;
-  s["E_direct"] = r.E_direct;
-  s["E_indirect"] = r.E_indirect;
   s["stats"] = {{"Emin", r.stats.Emin}, {"Eavg", r.stats.Eavg}, {"Emax", r.stats.Emax},
                 {"U0", r.stats.U0}, {"Ud", r.stats.Ud}};
   if (g.kind == geometry::SurfaceGrid::Kind::observers) {
@@ -75,10 +103,9 @@ nlohmann::json surface_json(const calc::SurfaceResult& r) {
   }
   return s;
 }
-}  // namespace
 
-nlohmann::json results_to_json(const calc::Results& results, const std::vector<std::string>& warnings,
-                               const ResultsOrigin& origin) {
+nlohmann::json document(const calc::Results& results, const std::vector<std::string>& warnings,
+                        const ResultsOrigin& origin, bool arrays) {
   using nlohmann::json;
   json j;
   j["format"] = kResultsFormat;
@@ -98,8 +125,122 @@ nlohmann::json results_to_json(const calc::Results& results, const std::vector<s
                {"notes", results.plan.notes}};
   j["warnings"] = warnings;
   j["surfaces"] = json::array();
-  for (const auto& s : results.surfaces) j["surfaces"].push_back(surface_json(s));
+  for (size_t k = 0; k < results.surfaces.size(); ++k)
+    j["surfaces"].push_back(surface_json(results.surfaces[k], k, arrays));
   return j;
+}
+
+// Writes through a buffer of its own: a million small writes to an ostream cost more than the
+// numbers' formatting.
+class Buffered {
+ public:
+  explicit Buffered(std::ostream& out) : out_(out) { buf_.reserve(kFlushAt + 256); }
+  ~Buffered() { flush(); }
+  Buffered(const Buffered&) = delete;
+  Buffered& operator=(const Buffered&) = delete;
+  void text(std::string_view t) {
+    buf_.append(t);
+    if (buf_.size() >= kFlushAt) flush();
+  }
+  void indent(size_t n) { buf_.append(n, ' '); }
+  // A number exactly as nlohmann::json's dump writes it: the shortest text that reads back to
+  // the same double, "null" for a non-finite value.
+  void number(double v) {
+    if (!std::isfinite(v)) return text("null");
+    std::array<char, 64> digits;
+    const char* end = nlohmann::detail::to_chars(digits.data(), digits.data() + digits.size(), v);
+    text(std::string_view(digits.data(), static_cast<size_t>(end - digits.data())));
+  }
+  void flush() {
+    out_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
+    buf_.clear();
+  }
+
+ private:
+  static constexpr size_t kFlushAt = 1 << 20;
+  std::ostream& out_;
+  std::string buf_;
+};
+
+// One array in dump(1)'s layout at `depth` (the indent of the line holding its key): "[]" when
+// empty, else one element a line at depth + 1 and the closing bracket at depth.
+template <typename Element>
+void write_array(Buffered& out, size_t count, size_t depth, const Element& element) {
+  if (count == 0) return out.text("[]");
+  out.text("[\n");
+  for (size_t i = 0; i < count; ++i) {
+    out.indent(depth + 1);
+    element(i, depth + 1);
+    out.text(i + 1 < count ? ",\n" : "\n");
+  }
+  out.indent(depth);
+  out.text("]");
+}
+
+void write_point_array(Buffered& out, const calc::SurfaceResult& r, PointArray array,
+                       size_t depth) {
+  const auto& g = r.grid;
+  auto vectors = [&](const std::vector<Vec3>& v) {
+    write_array(out, v.size(), depth, [&](size_t i, size_t d) {
+      write_array(out, 3, d,
+                  [&](size_t c, size_t) { out.number(v[i][static_cast<glm::length_t>(c)]); });
+    });
+  };
+  auto numbers = [&](const std::vector<double>& v) {
+    write_array(out, v.size(), depth, [&](size_t i, size_t) { out.number(v[i]); });
+  };
+  switch (array) {
+    case PointArray::points: return vectors(g.points);
+    case PointArray::normals: return vectors(g.normals);
+    case PointArray::active:
+      return write_array(out, g.points.size(), depth, [&](size_t i, size_t) {
+        out.text(g.active.empty() || g.active[i] ? "true" : "false");
+      });
+    case PointArray::E: return numbers(r.E);
+    case PointArray::E_direct: return numbers(r.E_direct);
+    case PointArray::E_indirect: return numbers(r.E_indirect);
+  }
+}
+}  // namespace
+
+nlohmann::json results_to_json(const calc::Results& results,
+                               const std::vector<std::string>& warnings,
+                               const ResultsOrigin& origin) {
+  return document(results, warnings, origin, true);
+}
+
+nlohmann::json results_outline_json(const calc::Results& results,
+                                    const std::vector<std::string>& warnings,
+                                    const ResultsOrigin& origin) {
+  return document(results, warnings, origin, false);
+}
+
+void write_results_json(std::ostream& stream, const nlohmann::json& outline,
+                        const calc::Results& results) {
+  const std::string text = outline.dump(1);
+  Buffered out(stream);
+  size_t from = 0;
+  // Each placeholder is the value of a key at the start of a line: `\n<indent>"key": "\u0001points
+  // K A"`.
+  const std::string tag = "\"" + std::string(kPlaceholderTag);
+  for (size_t at = text.find(tag); at != std::string::npos; at = text.find(tag, at + 1)) {
+    const size_t line = text.rfind('\n', at);
+    if (line == std::string::npos) continue;
+    const size_t depth = text.find_first_not_of(' ', line + 1) - (line + 1);
+    if (text[line + 1 + depth] != '"' || text.compare(at - 3, 3, "\": ") != 0) continue;
+    const size_t close = text.find('"', at + 1);
+    size_t surface = 0;
+    int array = 0;
+    if (std::sscanf(text.c_str() + at + tag.size(), "%zu %d", &surface, &array) != 2 ||
+        surface >= results.surfaces.size() || array < 0 ||
+        array >= static_cast<int>(kPointArrays.size()))
+      continue;
+    out.text(std::string_view(text).substr(from, at - from));
+    write_point_array(out, results.surfaces[surface], static_cast<PointArray>(array), depth);
+    from = close + 1;
+  }
+  out.text(std::string_view(text).substr(from));
+  out.text("\n");
 }
 
 nlohmann::json timing_to_json(const calc::Results& results) {

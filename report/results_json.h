@@ -1,6 +1,7 @@
 #pragma once
 // results.json, exactly as docs/project-format.md describes it, and timing.json beside it. The
 // times live apart so that two runs of the same input write byte-identical results.json files.
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -22,10 +23,24 @@ struct ResultsOrigin {
 };
 
 // `warnings`: legal but suspicious input (calc::Scene::warnings) and output problems, written as
-// the top-level "warnings" array (empty when there are none).
+// the top-level "warnings" array (empty when there are none). The whole document, point arrays
+// included: for tests and small results; results.json itself is written by write_results_json.
 nlohmann::json results_to_json(const calc::Results& results,
                                const std::vector<std::string>& warnings = {},
                                const ResultsOrigin& origin = {});
+
+// The same document without its per-point arrays: each surface's "points", "normals", "active",
+// "E", "E_direct" and "E_indirect" hold a placeholder that write_results_json fills from
+// `results`. Callers may add keys (the CLI adds "maintenance" and "requirements").
+nlohmann::json results_outline_json(const calc::Results& results,
+                                    const std::vector<std::string>& warnings = {},
+                                    const ResultsOrigin& origin = {});
+
+// Writes `outline` (from results_outline_json) to `out` byte for byte as the whole document's
+// dump(1) followed by a newline, the point arrays streamed from `results` rather than built as
+// JSON values: a 10^6-point grid's results.json costs no memory beyond the results themselves.
+void write_results_json(std::ostream& out, const nlohmann::json& outline,
+                        const calc::Results& results);
 
 // timing.json: {"timing_s": {phase: seconds, ...}} in run order of the phases.
 nlohmann::json timing_to_json(const calc::Results& results);

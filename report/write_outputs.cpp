@@ -139,7 +139,8 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   ResultsOrigin origin;
   origin.version = options.version;
   if (options.scene) origin.project_sha256 = options.scene->project_sha256;
-  nlohmann::json j = results_to_json(results, all_warnings, origin);
+  // Without the point arrays: write_results_json streams them from `results`.
+  nlohmann::json j = results_outline_json(results, all_warnings, origin);
   if (options.scene) {
     // The maintenance factor every E includes, and its parts when the project gave them [CIE97].
     const auto& settings = options.scene->settings;
@@ -161,7 +162,8 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
     }
     j["requirements_met"] = all_met(options.checks);
   }
-  write_text_file(folder.file(kResultsFile), j.dump(1) + "\n");
+  write_file_streamed(folder.file(kResultsFile),
+                      [&](std::ostream& out) { write_results_json(out, j, results); });
   write_text_file(folder.file(kTimingFile), timing_to_json(results).dump(1) + "\n");
   return warnings;
 }

@@ -1,4 +1,6 @@
 // results.json follows docs/project-format.md, key by key.
+#include <sstream>
+
 #include <gtest/gtest.h>
 
 #include "report/colour_scale.h"
@@ -83,6 +85,35 @@ TEST(ResultsJson, SaysWhereTheResultsCameFrom) {
   const auto& s = j["surfaces"][0];
   for (size_t i = 0; i < s["E"].size(); ++i)
     EXPECT_DOUBLE_EQ(s["E_direct"][i].get<double>() + s["E_indirect"][i].get<double>(), s["E"][i].get<double>());
+}
+
+TEST(ResultsJson, StreamedFileIsTheDocumentByteForByte) {
+  // results.json is streamed (write_results_json) rather than dumped from the whole document; the
+  // bytes must be the same. Numbers that stress the formatting: integers (written "96.0"), -0.0,
+  // exponents both ways, the shortest round trip of 0.1 and of a 17-digit value; inactive points;
+  // a second surface with no points ("[]"); a user string that imitates a placeholder; and keys a
+  // caller adds to the outline after it is built.
+  calc::Results r = sample();
+  r.project = "demo \x01points 0 3\n  \"E\": \"\x01points 0 3\"";
+  auto& s = r.surfaces[0];
+  s.grid.active = {true, false, false, true, true, true, false, true};
+  s.E = {96.0, -0.0, 1e-5, 1.5e20, 0.1, 1.0 / 3.0, 123456.789, 2.5e-300};
+  s.grid.points[3] = {-1e-7, 12345678901234567.0, 0.8};
+  calc::SurfaceResult empty;
+  empty.grid.name = "none";
+  empty.grid.kind = geometry::SurfaceGrid::Kind::points;
+  r.surfaces.push_back(empty);
+  nlohmann::json whole = results_to_json(r, {"w"}, {"1.2.3", "ab"});
+  nlohmann::json outline = results_outline_json(r, {"w"}, {"1.2.3", "ab"});
+  for (auto* j : {&whole, &outline}) {
+    (*j)["maintenance"] = {{"factor", 0.8}};
+    (*j)["surfaces"][0]["requirements"].push_back({{"what", "Eavg"}, {"met", true}});
+  }
+  std::ostringstream streamed;
+  write_results_json(streamed, outline, r);
+  EXPECT_EQ(streamed.str(), whole.dump(1) + "\n");
+  // The outline itself holds no point arrays: that is where the memory goes for large grids.
+  EXPECT_TRUE(outline["surfaces"][0]["E"].is_string());
 }
 
 TEST(Sha256, MatchesThePublishedVectors) {
