@@ -61,7 +61,8 @@ nlohmann::json optional_number(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
 
-void write_polar_png(const Photometry& p, const std::string& title, const std::filesystem::path& path) {
+void write_polar_png(const Photometry& p, const std::string& title,
+                     const std::filesystem::path& path) {
   // Without the font the diagram is still drawn, just unlabelled.
   const report::Raster img = report::polar_diagram(*p.distribution, title, 640);
   // Written beside the target and renamed, so no partial image is ever left behind.

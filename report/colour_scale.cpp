@@ -1,7 +1,7 @@
 #include "report/colour_scale.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include "util/error.h"
@@ -22,11 +22,14 @@ namespace {
 std::vector<double> ticks_every(double min, double max, double step) {
   std::vector<double> t;
   // Multiples of step by index (not by repeated addition, which drifts: 0.1 + 0.2 != 0.3).
-  for (long k = static_cast<long>(std::ceil(min / step - 1e-9)); k * step <= max * (1 + 1e-9) + 1e-12; ++k)
+  for (long k = static_cast<long>(std::ceil(min / step - 1e-9));
+       k * step <= max * (1 + 1e-9) + 1e-12; ++k)
     t.push_back(k * step);
   return t;
 }
-std::vector<double> ticks_for(double min, double max) { return ticks_every(min, max, nice_ceil((max - min) / 5.0)); }
+std::vector<double> ticks_for(double min, double max) {
+  return ticks_every(min, max, nice_ceil((max - min) / 5.0));
+}
 }  // namespace
 
 ColourScale auto_scale(double emax) {
@@ -51,8 +54,9 @@ ColourScale fit_scale(double emin, double emax) {
   ColourScale best;
   double best_range = INFINITY;
   for (double step = nice_ceil(range / 8.0), k = 0; k < 8; ++k, step = nice_ceil(step * 1.0001)) {
-    const double lo = std::floor(emin / step * (1 + 1e-12)) * step;
-    const double hi = std::ceil(emax / step * (1 - 1e-12)) * step;
+    // k * step may land an ulp beyond the data (3 * 0.1 = 0.30000000000000004): the data wins.
+    const double lo = std::min(emin, std::floor(emin / step * (1 + 1e-12)) * step);
+    const double hi = std::max(emax, std::ceil(emax / step * (1 - 1e-12)) * step);
     const double n = std::round((hi - lo) / step);
     if (n < 3 || n > 8) continue;
     if (hi - lo <= best_range) {

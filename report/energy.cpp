@@ -30,15 +30,19 @@ std::vector<RoomEnergy> room_energy(const calc::Scene& scene, const calc::Result
     double watts = 0.0;
     bool all_known = true;
     for (const auto& l : scene.luminaires) {
-      if (geometry::locate(Vec2(l.pose.position), room.outline, 1e-6) == geometry::Location::outside) continue;
+      if (geometry::locate(Vec2(l.pose.position), room.outline, 1e-6) ==
+          geometry::Location::outside)
+        continue;
       ++e.luminaires;
       const auto p = scene.photometry.find(l.photometry);
-      const auto power = p == scene.photometry.end() ? std::nullopt : luminaire_data(p->second).power_W;
+      const auto power =
+          p == scene.photometry.end() ? std::nullopt : luminaire_data(p->second).power_W;
       if (power) {
         watts += *power;
       } else {
         all_known = false;
-        if (std::find(e.without_power.begin(), e.without_power.end(), l.photometry) == e.without_power.end())
+        if (std::find(e.without_power.begin(), e.without_power.end(), l.photometry) ==
+            e.without_power.end())
           e.without_power.push_back(l.photometry);
       }
     }
@@ -47,7 +51,8 @@ std::vector<RoomEnergy> room_energy(const calc::Scene& scene, const calc::Result
     int best_rank = 3;
     for (const auto& s : results.surfaces) {
       const auto& g = s.grid;
-      if (g.kind != geometry::SurfaceGrid::Kind::grid || glm::cross(g.u_dir, g.v_dir).z < 0.7) continue;
+      if (g.kind != geometry::SurfaceGrid::Kind::grid || glm::cross(g.u_dir, g.v_dir).z < 0.7)
+        continue;
       if (map_frame(g, &scene).room != &room) continue;
       bool em = false;
       for (const auto& c : checks) em = em || (c.surface == g.name && c.quantity == "Em");

@@ -15,11 +15,11 @@ namespace luxgrid::report {
 
 struct RoomEnergy {
   std::string room;
-  double area_m2 = 0.0;     // floor area of the outline
-  int luminaires = 0;       // luminaires whose position lies over the outline
-  std::optional<double> power_W;  // installed; none when a file gives no power
+  double area_m2 = 0.0;                    // floor area of the outline
+  int luminaires = 0;                      // luminaires whose position lies over the outline
+  std::optional<double> power_W;           // installed; none when a file gives no power
   std::vector<std::string> without_power;  // photometry entries whose file gives no power
-  std::string reference_surface;  // the horizontal grid whose Eavg normalises; empty: none
+  std::string reference_surface;           // the horizontal grid whose Eavg normalises; empty: none
   std::optional<double> Eavg_lx;
 
   std::optional<double> W_per_m2() const;

@@ -20,7 +20,8 @@ namespace {
 // Layout in pixels. The map is drawn to scale: its longer side at most kMapMaxW wide or kMapMaxH
 // tall, whichever binds first.
 constexpr double kMapMaxW = 560.0, kMapMaxH = 400.0;
-constexpr int kTop = 92, kLeft = 58, kBottom = 44, kLegendGap = 22, kBarW = 20, kLegendTextW = 96, kMinWidth = 640;
+constexpr int kTop = 92, kLeft = 58, kBottom = 44, kLegendGap = 22, kBarW = 20, kLegendTextW = 96,
+              kMinWidth = 640;
 constexpr int kTitlePx = 17, kStatsPx = 13, kNotePx = 12, kAxisPx = 12, kLabelPx = 12;
 
 const Rgb kWhite{1, 1, 1}, kBlack{0, 0, 0}, kOutsideRoom{1, 1, 1};
@@ -49,7 +50,8 @@ struct Box {
 // them is active or (by default) the nearest is not.
 class Field {
  public:
-  explicit Field(const calc::SurfaceResult& r) : r_(r), nu_(std::max(1, r.grid.nu)), nv_(std::max(1, r.grid.nv)) {}
+  explicit Field(const calc::SurfaceResult& r)
+      : r_(r), nu_(std::max(1, r.grid.nu)), nv_(std::max(1, r.grid.nv)) {}
 
   bool on(int i, int j) const {
     const size_t k = static_cast<size_t>(j) * nu_ + i;
@@ -61,8 +63,11 @@ class Field {
   // grey); false when the caller draws the obstacles' real footprints instead.
   double sample(double fi, double fj, bool nearest_must_be_on = true) const {
     fi = std::clamp(fi, 0.0, nu_ - 1.0), fj = std::clamp(fj, 0.0, nv_ - 1.0);
-    if (nearest_must_be_on && !on(static_cast<int>(std::lround(fi)), static_cast<int>(std::lround(fj)))) return NAN;
-    const int i0 = std::min(static_cast<int>(fi), std::max(nu_ - 2, 0)), j0 = std::min(static_cast<int>(fj), std::max(nv_ - 2, 0));
+    if (nearest_must_be_on &&
+        !on(static_cast<int>(std::lround(fi)), static_cast<int>(std::lround(fj))))
+      return NAN;
+    const int i0 = std::min(static_cast<int>(fi), std::max(nu_ - 2, 0)),
+              j0 = std::min(static_cast<int>(fj), std::max(nv_ - 2, 0));
     const double tx = nu_ > 1 ? fi - i0 : 0.0, ty = nv_ > 1 ? fj - j0 : 0.0;
     double sum = 0.0, weight = 0.0;
     for (int dj = 0; dj <= (nv_ > 1 ? 1 : 0); ++dj) {
@@ -91,8 +96,10 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
                                    MapPixels* where) {
   const auto& g = r.grid;
   const MapFrame frame = map_frame(g, overlay.scene);
-  const bool horizontal = frame.view == MapFrame::View::plan || frame.view == MapFrame::View::ceiling;
-  const double ppm = std::min(kMapMaxW / frame.width_m, kMapMaxH / frame.height_m);  // pixels per metre
+  const bool horizontal =
+      frame.view == MapFrame::View::plan || frame.view == MapFrame::View::ceiling;
+  const double ppm =
+      std::min(kMapMaxW / frame.width_m, kMapMaxH / frame.height_m);  // pixels per metre
   const int map_w = std::max(1, static_cast<int>(std::lround(frame.width_m * ppm)));
   const int map_h = std::max(1, static_cast<int>(std::lround(frame.height_m * ppm)));
   const int bar_h = std::max(map_h, 160);
@@ -113,7 +120,8 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
       const int o = t - thickness / 2;
       const bool steep = std::abs(y1 - y0) > std::abs(x1 - x0);
       canvas.line(int(std::lround(x0)) + (steep ? o : 0), int(std::lround(y0)) + (steep ? 0 : o),
-                  int(std::lround(x1)) + (steep ? o : 0), int(std::lround(y1)) + (steep ? 0 : o), c);
+                  int(std::lround(x1)) + (steep ? o : 0), int(std::lround(y1)) + (steep ? 0 : o),
+                  c);
     }
   };
   auto polygon_plan = [&](const std::vector<Vec2>& poly, double z, Rgb c, int thickness) {
@@ -126,7 +134,8 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
   // --- the map: each pixel's centre in the grid's frame, then bilinear between grid points ------
   const Field field(r);
   const double span = scale.max - scale.min;
-  const double su = g.nu > 0 ? g.size_u / g.nu : 1.0, sv = g.nv > 0 ? g.size_v / g.nv : 1.0;  // cell size, m
+  const double su = g.nu > 0 ? g.size_u / g.nu : 1.0,
+               sv = g.nv > 0 ? g.size_v / g.nv : 1.0;  // cell size, m
   // On plans, the footprints of the obstacles the surface's height cuts are drawn as they are
   // (a rotated cabinet as a rotated rectangle), not as the staircase of the points they remove.
   std::vector<const std::vector<Vec2>*> cut;
@@ -139,17 +148,21 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
       const Vec3 rel = w - g.origin;
       const double u = glm::dot(rel, g.u_dir), v = glm::dot(rel, g.v_dir);
       Rgb c = kOutsideRoom;
-      if (horizontal && frame.room && geometry::locate(Vec2(w), frame.room->outline, 0.0) != geometry::Location::outside)
+      if (horizontal && frame.room &&
+          geometry::locate(Vec2(w), frame.room->outline, 0.0) != geometry::Location::outside)
         c = kNotCalculated;
       const bool in_rect = u >= 0 && u <= g.size_u && v >= 0 && v <= g.size_v;
       bool in_region = in_rect;
       if (in_rect && !g.region.empty()) {
         in_region = false;
         for (const auto& poly : g.region)
-          in_region = in_region || geometry::locate(Vec2(w), poly, 0.0) != geometry::Location::outside;
+          in_region =
+              in_region || geometry::locate(Vec2(w), poly, 0.0) != geometry::Location::outside;
       }
       bool in_obstacle = false;
-      for (const auto* fp : cut) in_obstacle = in_obstacle || geometry::locate(Vec2(w), *fp, 0.0) != geometry::Location::outside;
+      for (const auto* fp : cut)
+        in_obstacle =
+            in_obstacle || geometry::locate(Vec2(w), *fp, 0.0) != geometry::Location::outside;
       if (in_region && in_obstacle) {
         c = kObstacle;
       } else if (in_region) {
@@ -213,16 +226,19 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
 
   // --- isolux lines: round values and each requirement; labels placed where they fit -----------
   if (overlay.isolux && g.kind == geometry::SurfaceGrid::Kind::grid && g.nu >= 2 && g.nv >= 2) {
-    // The bilinear field sampled S times finer than the grid, so the contours follow the colours
-    // (curves within a cell) instead of the straight chords of the coarse grid.
+    // The field as the map shows it sampled S times finer than the grid, over the whole
+    // rectangle (the outermost half cells hold the edge values), so the contours follow the
+    // colours (curves within a cell) and run to the surface's edge instead of stopping at the
+    // outermost points. Fine sample (i, j) sits at grid index coordinates (i / S - 0.5, j / S -
+    // 0.5).
     const double cell_px = std::min(su, sv) * ppm;
     const int S = std::clamp(static_cast<int>(cell_px / 4.0), 1, 8);
-    const int fu = (g.nu - 1) * S + 1, fv = (g.nv - 1) * S + 1;
+    const int fu = g.nu * S + 1, fv = g.nv * S + 1;
     std::vector<double> fine(static_cast<size_t>(fu) * fv);
     std::vector<bool> fine_on(fine.size());
     for (int j = 0; j < fv; ++j)
       for (int i = 0; i < fu; ++i) {
-        const double e = field.sample(double(i) / S, double(j) / S);
+        const double e = field.sample(double(i) / S - 0.5, double(j) / S - 0.5);
         fine[static_cast<size_t>(j) * fu + i] = std::isnan(e) ? 0.0 : e;
         fine_on[static_cast<size_t>(j) * fu + i] = !std::isnan(e);
       }
@@ -239,7 +255,7 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
       if (!dup) levels.push_back({lx, false});
     }
     auto grid_world = [&](double x, double y) {
-      return g.origin + g.u_dir * ((x / S + 0.5) * su) + g.v_dir * ((y / S + 0.5) * sv);
+      return g.origin + g.u_dir * (x / S * su) + g.v_dir * (y / S * sv);
     };
     struct Pending {
       Level level;
@@ -253,7 +269,8 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
       // and in grey print. Requirement lines are drawn 3 px wide, round values 1 px.
       const float shade = (level.lx - scale.min) / span < 0.55 ? 1.0f : 0.08f;
       for (const auto& sg : segments)
-        line_world(grid_world(sg.x0, sg.y0), grid_world(sg.x1, sg.y1), Rgb{shade, shade, shade}, level.required ? 3 : 1);
+        line_world(grid_world(sg.x0, sg.y0), grid_world(sg.x1, sg.y1), Rgb{shade, shade, shade},
+                   level.required ? 3 : 1);
       drawn.push_back({level, std::move(segments)});
     }
     // Labels: requirement lines first; for each level the first candidate position along its
@@ -293,17 +310,20 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
   };
   {
     const double step = axis_step(frame.width_m);
-    for (long k = static_cast<long>(std::ceil(frame.axis_x0 / step - 1e-9)); k * step <= frame.axis_x0 + frame.width_m + 1e-9; ++k) {
+    for (long k = static_cast<long>(std::ceil(frame.axis_x0 / step - 1e-9));
+         k * step <= frame.axis_x0 + frame.width_m + 1e-9; ++k) {
       const int x = kLeft + static_cast<int>(std::lround((k * step - frame.axis_x0) * ppm));
       canvas.fill(x, x + 1, kTop + map_h, kTop + map_h + 5, kBlack);
       const std::string s = format_m(k * step);
       text(x - text_width(s, kAxisPx, kPlotFont) / 2, kTop + map_h + 18, s, kAxisPx);
     }
-    text(kLeft + map_w / 2 - text_width(frame.x_label, kAxisPx, kPlotFont) / 2, kTop + map_h + 36, frame.x_label, kAxisPx);
+    text(kLeft + map_w / 2 - text_width(frame.x_label, kAxisPx, kPlotFont) / 2, kTop + map_h + 36,
+         frame.x_label, kAxisPx);
   }
   {
     const double step = axis_step(frame.height_m);
-    for (long k = static_cast<long>(std::ceil(frame.axis_y0 / step - 1e-9)); k * step <= frame.axis_y0 + frame.height_m + 1e-9; ++k) {
+    for (long k = static_cast<long>(std::ceil(frame.axis_y0 / step - 1e-9));
+         k * step <= frame.axis_y0 + frame.height_m + 1e-9; ++k) {
       const int y = kTop + map_h - static_cast<int>(std::lround((k * step - frame.axis_y0) * ppm));
       canvas.fill(kLeft - 5, kLeft, y, y + 1, kBlack);
       const std::string s = format_m(k * step);
@@ -317,7 +337,9 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
   for (int y = 0; y < bar_h; ++y)
     canvas.fill(bar_x, bar_x + kBarW, kTop + y, kTop + y + 1, viridis(1.0 - (y + 0.5) / bar_h));
   canvas.box(bar_x, kTop, bar_x + kBarW - 1, kTop + bar_h - 1, kBlack, false);
-  auto bar_y = [&](double lx) { return kTop + static_cast<int>(std::lround((1.0 - (lx - scale.min) / span) * (bar_h - 1))); };
+  auto bar_y = [&](double lx) {
+    return kTop + static_cast<int>(std::lround((1.0 - (lx - scale.min) / span) * (bar_h - 1)));
+  };
   for (double tick : scale.ticks) {
     const int y = bar_y(tick);
     canvas.fill(bar_x + kBarW, bar_x + kBarW + 5, y, y + 1, kBlack);
@@ -331,7 +353,8 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
 
   // --- title: name, statistics, the view in words ----------------------------------------------
   char stats[200];
-  std::snprintf(stats, sizeof stats, "Emin %.1f  Eavg %.1f  Emax %.1f lx   U0 %.2f   %d x %d points", r.stats.Emin,
+  std::snprintf(stats, sizeof stats,
+                "Emin %.1f  Eavg %.1f  Emax %.1f lx   U0 %.2f   %d x %d points", r.stats.Emin,
                 r.stats.Eavg, r.stats.Emax, r.stats.U0, g.nu, g.nv);
   text(kLeft, 20, g.name, kTitlePx);
   text(kLeft, 40, stats, kStatsPx);

@@ -20,9 +20,10 @@
 namespace luxgrid::report {
 
 struct PlotOverlay {
-  bool isolux = true;                // contour lines at the scale's ticks and at required_lx
-  const calc::Scene* scene = nullptr;  // rooms (outline, obstacles) and luminaires; null: none drawn
-  std::vector<double> required_lx;   // stated requirement values (Em, Emin): a labelled line each
+  bool isolux = true;  // contour lines at the scale's ticks and at required_lx
+  const calc::Scene* scene =
+      nullptr;                      // rooms (outline, obstacles) and luminaires; null: none drawn
+  std::vector<double> required_lx;  // stated requirement values (Em, Emin): a labelled line each
 };
 
 // Where the map lies in the picture: its top-left pixel, its size in pixels and its scale.

@@ -20,9 +20,12 @@ const calc::Room* room_of(const geometry::SurfaceGrid& g, const calc::Scene* sce
   if (!scene) return nullptr;
   const Vec3 centre = g.origin + g.u_dir * (g.size_u / 2) + g.v_dir * (g.size_v / 2);
   for (const auto& room : scene->rooms) {
-    if (centre.z < room.floor_z - kOnRoomTolerance_m || centre.z > room.floor_z + room.height + kOnRoomTolerance_m)
+    if (centre.z < room.floor_z - kOnRoomTolerance_m ||
+        centre.z > room.floor_z + room.height + kOnRoomTolerance_m)
       continue;
-    if (geometry::locate(Vec2(centre), room.outline, kOnRoomTolerance_m) != geometry::Location::outside) return &room;
+    if (geometry::locate(Vec2(centre), room.outline, kOnRoomTolerance_m) !=
+        geometry::Location::outside)
+      return &room;
   }
   return nullptr;
 }
@@ -35,7 +38,9 @@ std::string xy(const Vec3& p) {
 
 }  // namespace
 
-Vec3 frame_point(const MapFrame& f, double a_m, double b_m) { return f.origin + f.right * a_m + f.up * b_m; }
+Vec3 frame_point(const MapFrame& f, double a_m, double b_m) {
+  return f.origin + f.right * a_m + f.up * b_m;
+}
 
 void frame_coords(const MapFrame& f, const Vec3& world, double& a_m, double& b_m) {
   a_m = glm::dot(world - f.origin, f.right);
@@ -46,7 +51,8 @@ MapFrame map_frame(const geometry::SurfaceGrid& g, const calc::Scene* scene) {
   MapFrame f;
   f.room = room_of(g, scene);
   const Vec3 n = glm::cross(g.u_dir, g.v_dir);
-  const Vec3 corners[4] = {g.origin, g.origin + g.u_dir * g.size_u, g.origin + g.u_dir * g.size_u + g.v_dir * g.size_v,
+  const Vec3 corners[4] = {g.origin, g.origin + g.u_dir * g.size_u,
+                           g.origin + g.u_dir * g.size_u + g.v_dir * g.size_v,
                            g.origin + g.v_dir * g.size_v};
   if (std::abs(n.z) >= kHorizontalNormalZ) {
     f.view = n.z > 0 ? MapFrame::View::plan : MapFrame::View::ceiling;
@@ -66,7 +72,8 @@ MapFrame map_frame(const geometry::SurfaceGrid& g, const calc::Scene* scene) {
     f.x_label = "x (m)", f.y_label = "y (m)";
     f.description = f.view == MapFrame::View::plan
                         ? "Seen from above, as the plan: x to the right, y (north) up."
-                        : "Ceiling seen from below, drawn as a reflected ceiling plan (as in a mirror on the floor) so "
+                        : "Ceiling seen from below, drawn as a reflected ceiling plan (as in a "
+                          "mirror on the floor) so "
                           "it lines up with the plan: x to the right, y (north) up.";
   } else {
     const bool vertical = std::abs(n.z) < kVerticalNormalZ;
@@ -96,8 +103,9 @@ MapFrame map_frame(const geometry::SurfaceGrid& g, const calc::Scene* scene) {
       f.axis_x0 = 0.0, f.axis_y0 = f.origin.z;
       f.x_label = "along the surface from its left end (m)", f.y_label = "z (m)";
       const Vec3 left = f.origin, right = f.origin + f.right * f.width_m;
-      f.description = std::string(f.room ? "Seen from inside the room" : "Seen from the side it faces") +
-                      ", up at the top: left end at " + xy(left) + ", right end at " + xy(right) + ".";
+      f.description =
+          std::string(f.room ? "Seen from inside the room" : "Seen from the side it faces") +
+          ", up at the top: left end at " + xy(left) + ", right end at " + xy(right) + ".";
     } else {
       f.axis_x0 = 0.0, f.axis_y0 = 0.0;
       f.x_label = "u (m)", f.y_label = "v (m)";

@@ -18,7 +18,7 @@ namespace luxgrid::report {
 struct MapFrame {
   enum class View { plan, ceiling, wall, tilted };
   View view = View::plan;
-  Vec3 origin{0.0};             // world point at the lower-left corner of the drawn area
+  Vec3 origin{0.0};                  // world point at the lower-left corner of the drawn area
   Vec3 right{1, 0, 0}, up{0, 1, 0};  // unit world directions of image right and image up
   double width_m = 1.0, height_m = 1.0;
   double axis_x0 = 0.0, axis_y0 = 0.0;  // axis readings at `origin` (m)

@@ -68,7 +68,8 @@ void write_png(const Raster& raster, const std::filesystem::path& path) {
 std::string encode_png(const Raster& raster) {
   std::vector<png_bytep> rows(static_cast<std::size_t>(raster.height()));
   auto* base = const_cast<png_bytep>(raster.pixels().data());
-  for (int y = 0; y < raster.height(); ++y) rows[y] = base + static_cast<std::size_t>(y) * raster.width() * 3;
+  for (int y = 0; y < raster.height(); ++y)
+    rows[y] = base + static_cast<std::size_t>(y) * raster.width() * 3;
   // The same encoder as write_png, into a POSIX memory stream.
   char* buffer = nullptr;
   std::size_t size = 0;

@@ -15,14 +15,17 @@ namespace {
 constexpr double kStepDeg = 0.5;  // 721 samples per plane: smooth at 640 px, cheap to compute
 // The plane colours, the same in every diagram luxgrid draws.
 const Rgb kC0{0.12f, 0.25f, 0.56f}, kC90{0.75f, 0.22f, 0.17f};
-const Rgb kRing{0.78f, 0.78f, 0.78f}, kGreyText{0.33f, 0.33f, 0.33f}, kBlack{0, 0, 0}, kWhite{1, 1, 1};
+const Rgb kRing{0.78f, 0.78f, 0.78f}, kGreyText{0.33f, 0.33f, 0.33f}, kBlack{0, 0, 0},
+    kWhite{1, 1, 1};
 }  // namespace
 
 double polar_outer_ring_cd(double imax_cd) { return nice_ceil(imax_cd); }
 
-Raster polar_diagram(const photometry::IntensityDistribution& d, const std::string& title, int size_px, bool* font_ok) {
+Raster polar_diagram(const photometry::IntensityDistribution& d, const std::string& title,
+                     int size_px, bool* font_ok) {
   const double k = size_px / 640.0;  // everything below is laid out for 640 px and scaled
-  const int title_h = static_cast<int>(std::lround(34 * k)), legend_h = static_cast<int>(std::lround(30 * k));
+  const int title_h = static_cast<int>(std::lround(34 * k)),
+            legend_h = static_cast<int>(std::lround(30 * k));
   // Text about 1/36 of the side: 18 px on `info --plot`'s 640 px, readable when the report shows
   // its 600 px diagram 300 px wide.
   const int font_px = std::max(9, size_px / 36);
@@ -42,8 +45,9 @@ Raster polar_diagram(const photometry::IntensityDistribution& d, const std::stri
   bool fonts = true;
   auto text = [&](double x, double y, const std::string& s, Rgb colour, bool centred = false) {
     const int w = centred ? text_width(s, font_px, kPlotFont) : 0;
-    fonts = draw_text(img, static_cast<int>(std::lround(x)) - w / 2, static_cast<int>(std::lround(y)), s, font_px,
-                      kPlotFont, colour) && fonts;
+    fonts = draw_text(img, static_cast<int>(std::lround(x)) - w / 2,
+                      static_cast<int>(std::lround(y)), s, font_px, kPlotFont, colour) &&
+            fonts;
   };
   // Point at signed angle s from nadir (deg; > 0 towards the right: C0 or C90) and radius r px.
   auto xy = [&](double s_deg, double r, double& x, double& y) {
@@ -87,12 +91,13 @@ Raster polar_diagram(const photometry::IntensityDistribution& d, const std::stri
   };
   curve(a, kC0, false);
   curve(b, kC90, true);
-  // Ring values along the upward spoke, on white so the curves do not hide them.
+  // Ring values beside the upward spoke, on white so the curves do not hide them.
   for (int q = 1; q <= 4; ++q) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%g", ring * q / 4.0);
     const int w = text_width(buf, font_px, kPlotFont);
-    const double y = cy - radius * q / 4.0 + font_px / 2.0 - 1;
+    const double y =
+        cy - radius * q / 4.0 + font_px + 2;  // just inside the ring, clear of the 180 deg label
     img.fill(int(cx) + 3, int(cx) + 3 + w + 4, int(y) - font_px + 2, int(y) + 3, kWhite);
     text(cx + 5, y, buf, kGreyText);
   }
@@ -102,7 +107,8 @@ Raster polar_diagram(const photometry::IntensityDistribution& d, const std::stri
   text(46 * k, ly, "C0-C180", kC0);
   const double rx = size_px / 2.0 + 12 * k;
   for (int dash = 0; dash < 3; ++dash)
-    seg(rx + dash * 10 * k, ly - font_px / 3.0, rx + dash * 10 * k + 6 * k, ly - font_px / 3.0, kC90, thick);
+    seg(rx + dash * 10 * k, ly - font_px / 3.0, rx + dash * 10 * k + 6 * k, ly - font_px / 3.0,
+        kC90, thick);
   text(rx + 34 * k, ly, "C90-C270", kC90);
   if (font_ok) *font_ok = fonts;
   return img;

@@ -12,8 +12,8 @@ namespace luxgrid::report {
 
 // The diagram on a `size_px` square. `font_ok` (if given) is set false when the labels could not
 // be drawn for want of the font (the curves are drawn regardless).
-Raster polar_diagram(const photometry::IntensityDistribution& d, const std::string& title, int size_px,
-                     bool* font_ok = nullptr);
+Raster polar_diagram(const photometry::IntensityDistribution& d, const std::string& title,
+                     int size_px, bool* font_ok = nullptr);
 
 // The outer ring's value for a largest intensity of `imax_cd`: the round value >= it.
 double polar_outer_ring_cd(double imax_cd);

@@ -81,7 +81,8 @@ int text_width(std::string_view text, int size_px, const char* font_file) {
   return static_cast<int>((pen_x + 63) >> 6);
 }
 
-bool draw_text(Raster& raster, int x, int y, std::string_view text, int size_px, const char* font_file, Rgb colour) {
+bool draw_text(Raster& raster, int x, int y, std::string_view text, int size_px,
+               const char* font_file, Rgb colour) {
   FT_Face face = fonts.face(font_file);
   if (!face || FT_Set_Pixel_Sizes(face, 0, static_cast<FT_UInt>(size_px)) != 0) return false;
   const bool kerning = FT_HAS_KERNING(face);

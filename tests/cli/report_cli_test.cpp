@@ -281,7 +281,8 @@ TEST(ReportChromium, ExampleOfficeRendersWithEveryImageAndTheRightNumbers) {
   const std::string url = "file://" + html.string();
 
   const std::string shot_log = chromium("--window-size=1000,3000 --screenshot=" + quote(dir / "report.png") + " " + url);
-  const std::string pdf_log = chromium("--no-pdf-header-footer --print-to-pdf=" + quote(dir / "report.pdf") + " " + url);
+  const std::string pdf_log =
+      chromium("--no-pdf-header-footer --print-to-pdf=" + quote(dir / "report.pdf") + " " + url);
   const std::string dom = chromium("--dump-dom " + url);
   for (const std::string* log : {&shot_log, &pdf_log}) {
     EXPECT_EQ(log->find("CONSOLE("), std::string::npos) << *log;
@@ -303,7 +304,8 @@ TEST(ReportChromium, ExampleOfficeRendersWithEveryImageAndTheRightNumbers) {
     const std::string tag = dom.substr(at, std::min<size_t>(end - at, 400));
     const size_t src = tag.find("src=\"");
     ASSERT_NE(src, std::string::npos) << tag.substr(0, 120);
-    EXPECT_EQ(tag.compare(src + 5, 33, "data:image/png;base64,iVBORw0KGgo"), 0) << tag.substr(0, 120);
+    EXPECT_EQ(tag.compare(src + 5, 33, "data:image/png;base64,iVBORw0KGgo"), 0)
+        << tag.substr(0, 120);
     maps += tag.find("alt=\"false-colour illuminance of ") != std::string::npos;
     polars += tag.find("alt=\"polar diagram of ") != std::string::npos;
   }
@@ -313,13 +315,15 @@ TEST(ReportChromium, ExampleOfficeRendersWithEveryImageAndTheRightNumbers) {
 
   // What a client looks for: the room's data, the luminaire with its product data, positions and
   // power, and the energy figures.
-  for (const char* text : {"Floor area", "24.00 m&sup2;", "20.00 m", "2.80 m", "0.20 / 0.50 / 0.70",
-                           "MIRL NIV LED2800-830 M625Q LDO", "ZUMTOBEL", "42925637", "Mounting height",
-                           "Installed power", "W/m&sup2;", "How the values were calculated",
-                           "Appendix: technical calculation plan"}) {
+  for (const char* text :
+       {"Floor area", "24.00 m\u00b2", "20.00 m", "2.80 m", "0.20 / 0.50 / 0.70",
+        "MIRL NIV LED2800-830 M625Q LDO", "ZUMTOBEL", "42925637", "Mounting height",
+        "Installed power", "W/m\u00b2", "How the values were calculated",
+        "Appendix: technical calculation plan"}) {
     EXPECT_NE(dom.find(text), std::string::npos) << text;
   }
-  EXPECT_NE(dom.find("data-luminaire=\"6\""), std::string::npos) << "six luminaires in the positions table";
+  EXPECT_NE(dom.find("data-luminaire=\"6\""), std::string::npos)
+      << "six luminaires in the positions table";
   EXPECT_EQ(dom.find("data-luminaire=\"7\""), std::string::npos);
 
   // The statistics printed in the page equal those in results.json (to the printed digits).
@@ -328,7 +332,8 @@ TEST(ReportChromium, ExampleOfficeRendersWithEveryImageAndTheRightNumbers) {
   const std::string stat_key = "\" data-stat=\"";
   for (size_t at = dom.find(stat_key); at != std::string::npos; at = dom.find(stat_key, at + 1)) {
     const size_t name_end = at, name_start = dom.rfind("data-surface=\"", at);
-    if (name_start == std::string::npos || dom.find('>', name_start) < name_end) continue;  // not a stat cell
+    if (name_start == std::string::npos || dom.find('>', name_start) < name_end)
+      continue;  // not a stat cell
     const std::string surface = dom.substr(name_start + 14, name_end - name_start - 14);
     const size_t stat_end = dom.find('"', at + stat_key.size());
     const std::string stat = dom.substr(at + stat_key.size(), stat_end - at - stat_key.size());
@@ -376,7 +381,8 @@ TEST(ReportChromium, ExampleOfficeRendersWithEveryImageAndTheRightNumbers) {
   // The printed PDF: A4 pages with the running header (project name) and footer (page N of M)
   // on every page. poppler-utils reads it when installed.
   if (std::system("which pdfinfo pdftotext > /dev/null 2>&1") != 0) {
-    if (std::getenv("CI")) FAIL() << "poppler-utils is required in CI (apt-get install poppler-utils)";
+    if (std::getenv("CI"))
+      FAIL() << "poppler-utils is required in CI (apt-get install poppler-utils)";
     GTEST_SKIP() << "poppler-utils not installed: the PDF's pages are not checked";
   }
   const Outcome info = shell("pdfinfo " + quote(dir / "report.pdf"));
@@ -396,7 +402,8 @@ TEST(ReportChromium, ExampleOfficeRendersWithEveryImageAndTheRightNumbers) {
        at = text.output.find("Example office 6 x 4 m", at + 1))
     ++headers;
   for (int p = 1; p <= pages; ++p)
-    footers += text.output.find("Page " + std::to_string(p) + " of " + std::to_string(pages)) != std::string::npos;
+    footers += text.output.find("Page " + std::to_string(p) + " of " + std::to_string(pages)) !=
+               std::string::npos;
   EXPECT_GE(headers, static_cast<size_t>(pages)) << "the project name heads every page";
   EXPECT_EQ(footers, static_cast<size_t>(pages)) << "every page says 'Page N of M'";
 }

@@ -3,12 +3,12 @@
 
 #include <cmath>
 
+#include "photometry/builtin.h"
 #include "report/colour_scale.h"
 #include "report/html_report.h"
 #include "report/isolux.h"
 #include "report/polar_diagram.h"
 #include "report/raster_text.h"
-#include "photometry/builtin.h"
 #include "util/error.h"
 
 namespace luxgrid::report {
@@ -121,7 +121,8 @@ TEST(Polar, OneRendererWithTheReportsColoursAndRingValues) {
   ASSERT_EQ(img.width(), 640);
   ASSERT_EQ(img.height(), 640);
   auto is = [](Rgb c, Rgb want) {
-    return std::abs(c.r - want.r) < 0.02f && std::abs(c.g - want.g) < 0.02f && std::abs(c.b - want.b) < 0.02f;
+    return std::abs(c.r - want.r) < 0.02f && std::abs(c.g - want.g) < 0.02f &&
+           std::abs(c.b - want.b) < 0.02f;
   };
   const Rgb blue{0.12f, 0.25f, 0.56f}, red{0.75f, 0.22f, 0.17f};
   int blue_px = 0, red_px = 0, lowest_blue = 0, highest_curve = 640;
@@ -131,7 +132,8 @@ TEST(Polar, OneRendererWithTheReportsColoursAndRingValues) {
       const bool b = is(c, blue), r = is(c, red);
       blue_px += b, red_px += r;
       if (b && x > 200 && x < 440) lowest_blue = std::max(lowest_blue, y);
-      if ((b || r) && x > 200 && x < 440 && y > 60 && y < 600) highest_curve = std::min(highest_curve, y);
+      if ((b || r) && x > 200 && x < 440 && y > 60 && y < 600)
+        highest_curve = std::min(highest_curve, y);
     }
   EXPECT_GT(blue_px, 500) << "the C0-C180 curve in the report's blue";
   EXPECT_GT(red_px, 300) << "the C90-C270 curve in the report's red";

@@ -134,7 +134,9 @@ TEST(Viridis, EndsMatchMatplotlibAndLightnessRises) {
 }
 
 // Rec. 709 luma of a decoded pixel, 0..255: viridis rises monotonically in it.
-double luma(const Decoded& d, int x, int y) { return 0.2126 * d.at(x, y, 0) + 0.7152 * d.at(x, y, 1) + 0.0722 * d.at(x, y, 2); }
+double luma(const Decoded& d, int x, int y) {
+  return 0.2126 * d.at(x, y, 0) + 0.7152 * d.at(x, y, 1) + 0.0722 * d.at(x, y, 2);
+}
 
 // A surface whose illuminance rises linearly towards one world corner (the bright corner), with
 // the statistics the plot prints.
@@ -143,7 +145,8 @@ calc::SurfaceResult rising_towards(const geometry::SurfaceGrid& g, const Vec3& b
   s.grid = g;
   double far = 0.0;
   for (const Vec3& p : g.points) far = std::max(far, glm::length(p - bright_corner));
-  for (const Vec3& p : g.points) s.E.push_back(100.0 + 400.0 * (1.0 - glm::length(p - bright_corner) / far));
+  for (const Vec3& p : g.points)
+    s.E.push_back(100.0 + 400.0 * (1.0 - glm::length(p - bright_corner) / far));
   s.E_direct = s.E;
   s.E_indirect.assign(s.E.size(), 0.0);
   s.stats = calc::compute_statistics(s.E, s.grid.active);
@@ -158,10 +161,13 @@ std::string brightest_quarter(const Decoded& d, const MapPixels& m) {
     for (int qx = 0; qx < 2; ++qx) {
       double sum = 0.0;
       int n = 0;
-      for (int y = m.y0 + qy * m.height / 2 + m.height / 8; y < m.y0 + (qy + 1) * m.height / 2 - m.height / 8; ++y)
-        for (int x = m.x0 + qx * m.width / 2 + m.width / 8; x < m.x0 + (qx + 1) * m.width / 2 - m.width / 8; ++x)
+      for (int y = m.y0 + qy * m.height / 2 + m.height / 8;
+           y < m.y0 + (qy + 1) * m.height / 2 - m.height / 8; ++y)
+        for (int x = m.x0 + qx * m.width / 2 + m.width / 8;
+             x < m.x0 + (qx + 1) * m.width / 2 - m.width / 8; ++x)
           sum += luma(d, x, y), ++n;
-      if (n && sum / n > best) best = sum / n, name = std::string(qy ? "bottom" : "top") + (qx ? " right" : " left");
+      if (n && sum / n > best)
+        best = sum / n, name = std::string(qy ? "bottom" : "top") + (qx ? " right" : " left");
     }
   }
   return name;
@@ -232,7 +238,8 @@ TEST(FalseColour, SmoothBetweenGridPointsNotBlocks) {
   double previous = -1.0;
   for (int x = m.x0 + 1; x < m.x0 + m.width - 1; ++x) {
     const double l = luma(d, x, y);
-    EXPECT_GE(l, previous - 1.0) << "rises monotonically left to right (1 of 255 for rounding), x " << x;
+    EXPECT_GE(l, previous - 1.0) << "rises monotonically left to right (1 of 255 for rounding), x "
+                                 << x;
     distinct += std::abs(l - previous) > 0.0;
     previous = l;
   }
@@ -271,7 +278,8 @@ TEST(FalseColour, LShapedWorkplaneKeepsItsShapeInsideTheRoomOutline) {
   write_false_colour_png(s, fit_scale(s.stats.Emin, s.stats.Emax), dir / "wp.png", overlay, &m);
   const Decoded d = decode(dir / "wp.png");
   auto px = [&](double x, double y, int& ix, int& iy) {
-    ix = m.x0 + static_cast<int>(x * m.px_per_m), iy = m.y0 + m.height - 1 - static_cast<int>(y * m.px_per_m);
+    ix = m.x0 + static_cast<int>(x * m.px_per_m),
+    iy = m.y0 + m.height - 1 - static_cast<int>(y * m.px_per_m);
   };
   int x, y;
   px(6.0, 6.0, x, y);  // the missing quarter
@@ -282,7 +290,8 @@ TEST(FalseColour, LShapedWorkplaneKeepsItsShapeInsideTheRoomOutline) {
   EXPECT_EQ(d.at(x, y, 0), d.at(x, y, 2)) << "grey";
   EXPECT_GT(d.at(x, y, 0), 200);
   EXPECT_LT(d.at(x, y, 0), 255);
-  px(1.5, 2.0, x, y);  // on the workplane, off the isolux lines (300, 320, ... lx at x = 0, 2, ... m): viridis
+  px(1.5, 2.0, x,
+     y);  // on the workplane, off the isolux lines (300, 320, ... lx at x = 0, 2, ... m): viridis
   EXPECT_NE(d.at(x, y, 0), d.at(x, y, 2));
   px(2.0, 0.0, x, y);  // the south wall
   int dark = 0;
@@ -316,7 +325,8 @@ TEST(FalseColour, TheRequiredValueGetsItsIsoluxLine) {
     int rows = 0;
     for (int y = m.y0 + 2; y < m.y0 + m.height - 2; ++y) {
       bool white = false;
-      for (int x = xc - 3; x <= xc + 3; ++x) white = white || (d.at(x, y, 0) == 255 && d.at(x, y, 1) == 255 && d.at(x, y, 2) == 255);
+      for (int x = xc - 3; x <= xc + 3; ++x)
+        white = white || (d.at(x, y, 0) == 255 && d.at(x, y, 1) == 255 && d.at(x, y, 2) == 255);
       rows += white;
     }
     return std::pair<int, int>(rows, m.height - 4);
