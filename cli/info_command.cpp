@@ -25,8 +25,7 @@
 #include "photometry/tabular_distribution.h"
 #include "photometry/tilt.h"
 #include "report/png_file.h"
-#include "report/raster.h"
-#include "report/raster_text.h"
+#include "report/polar_diagram.h"
 #include "util/error.h"
 
 namespace luxgrid::cli {
@@ -62,74 +61,10 @@ nlohmann::json optional_number(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
 
-// A round number >= v for the outer ring (1, 2, 2.5, 5 x 10^k).
-double nice_ceiling(double v) {
-  if (!(v > 0)) return 1.0;
-  const double p = std::pow(10.0, std::floor(std::log10(v)));
-  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
-    if (m * p >= v * (1 - 1e-12)) return m * p;
-  return 10 * p;
-}
-
-void write_polar_png(const Photometry& p, const std::filesystem::path& path) {
-  constexpr int kSize = 640, kMargin = 40;
-  const double cx = kSize / 2.0, cy = kSize / 2.0, radius = kSize / 2.0 - kMargin;
-  const IntensityDistribution& d = *p.distribution;
-  // Sample both planes every 0.5 deg of signed angle from nadir.
-  std::vector<double> a, b;
-  double peak = 0.0;
-  for (int k = 0; k <= 720; ++k) {
-    const double s = -180.0 + 0.5 * k;
-    a.push_back(plane_intensity(d, 0.0, s));
-    b.push_back(plane_intensity(d, 90.0, s));
-    peak = std::max({peak, a.back(), b.back()});
-  }
-  const double ring = nice_ceiling(peak);
-  using report::Rgb;
-  const Rgb white{1, 1, 1}, grey{0.8f, 0.8f, 0.8f}, black{0, 0, 0}, red{0.8f, 0.1f, 0.1f}, blue{0.1f, 0.2f, 0.8f};
-  report::Raster img(kSize, kSize, white);
-  // Point at signed angle s (deg from nadir; > 0 towards the right) and intensity v.
-  auto xy = [&](double s, double v, double& x, double& y) {
-    const double r = radius * v / ring, t = s * kDegToRad;
-    x = cx + r * std::sin(t);
-    y = cy + r * std::cos(t);  // image y grows downwards: nadir at the bottom
-  };
-  for (int q = 1; q <= 4; ++q) {  // rings at 25 % steps
-    double x0, y0, x1, y1;
-    for (int k = 0; k < 360; ++k) {
-      xy(k, ring * q / 4.0, x0, y0);
-      xy(k + 1, ring * q / 4.0, x1, y1);
-      img.line(int(x0), int(y0), int(x1), int(y1), grey);
-    }
-  }
-  for (int k = 0; k < 360; k += 30) {  // spokes every 30 deg
-    double x, y;
-    xy(k, ring, x, y);
-    img.line(int(cx), int(cy), int(x), int(y), grey);
-  }
-  auto curve = [&](const std::vector<double>& v, Rgb colour, bool dashed) {
-    for (std::size_t k = 0; k + 1 < v.size(); ++k) {
-      if (dashed && (k / 6) % 2 == 1) continue;
-      double x0, y0, x1, y1;
-      xy(-180.0 + 0.5 * k, v[k], x0, y0);
-      xy(-180.0 + 0.5 * (k + 1), v[k + 1], x1, y1);
-      img.line(int(std::lround(x0)), int(std::lround(y0)), int(std::lround(x1)), int(std::lround(y1)), colour);
-    }
-  };
-  curve(a, red, false);
-  curve(b, blue, true);
-  auto text = [&](int x, int y, const std::string& s, Rgb colour) {
-    // Without the font the diagram is still drawn, just unlabelled.
-    (void)report::draw_text(img, x, y, s, 14, report::kPlotFont, colour);
-  };
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "%s   outer ring %g cd", p.format.c_str(), ring);
-  text(10, 20, buf, black);
-  text(10, kSize - 28, "C0-C180 (solid)", red);
-  text(10, kSize - 10, "C90-C270 (dashed)", blue);
-  text(int(cx) + 4, kSize - kMargin + 16, "0", black);
-  text(int(cx) + 4, kMargin - 6, "180", black);
-
+void write_polar_png(const Photometry& p, const std::string& title,
+                     const std::filesystem::path& path) {
+  // Without the font the diagram is still drawn, just unlabelled.
+  const report::Raster img = report::polar_diagram(*p.distribution, title, 640);
   // Written beside the target and renamed, so no partial image is ever left behind.
   const std::filesystem::path tmp = path.parent_path() / (path.stem().string() + ".partial" + path.extension().string());
   try {
@@ -242,7 +177,7 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
   }
   // On stderr, as every command prints its warnings (--json keeps them in its "warnings" too).
   for (const auto& w : p.warnings) std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
-  if (!plot.empty()) write_polar_png(p, plot);
+  if (!plot.empty()) write_polar_png(p, std::filesystem::path(file).filename().string(), plot);
   return 0;
 }
 

@@ -43,6 +43,10 @@ struct SurfaceGrid {
   Quantity quantity = Quantity::planar;
   // observers: the observer (index into the surface's list) each point belongs to.
   std::vector<size_t> observer;
+  // Region grids (workplane, room floor and ceiling): the plan polygons the active points lie in,
+  // counter-clockwise, so plots draw the surface's real outline (an L-shaped workplane as an L);
+  // empty for rectangles, walls and points.
+  std::vector<std::vector<Vec2>> region;
 };
 
 // EN 12464-1 automatic grid spacing: p = 0.2 * 5^log10(d) for the longer side d, capped at 10 m

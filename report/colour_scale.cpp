@@ -1,5 +1,6 @@
 #include "report/colour_scale.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -18,11 +19,16 @@ double nice_ceil(double x) {
 }
 
 namespace {
-std::vector<double> ticks_for(double min, double max) {
-  const double step = nice_ceil((max - min) / 5.0);
+std::vector<double> ticks_every(double min, double max, double step) {
   std::vector<double> t;
-  for (double v = std::ceil(min / step) * step; v <= max * (1 + 1e-9); v += step) t.push_back(v);
+  // Multiples of step by index (not by repeated addition, which drifts: 0.1 + 0.2 != 0.3).
+  for (long k = static_cast<long>(std::ceil(min / step - 1e-9));
+       k * step <= max * (1 + 1e-9) + 1e-12; ++k)
+    t.push_back(k * step);
   return t;
+}
+std::vector<double> ticks_for(double min, double max) {
+  return ticks_every(min, max, nice_ceil((max - min) / 5.0));
 }
 }  // namespace
 
@@ -32,6 +38,34 @@ ColourScale auto_scale(double emax) {
   s.max = emax > 0.0 ? nice_ceil(emax) : 1.0;
   s.ticks = ticks_for(s.min, s.max);
   return s;
+}
+
+ColourScale fit_scale(double emin, double emax) {
+  if (!(emax > 0.0) || !std::isfinite(emax)) return auto_scale(0.0);
+  emin = std::isfinite(emin) ? std::clamp(emin, 0.0, emax) : 0.0;
+  double range = emax - emin;
+  if (range < 1e-6 * emax) {  // constant: centre a 10 % window on the value
+    range = 0.1 * emax;
+    emin = std::max(0.0, emin - range / 2);
+    emax = emin + range;
+  }
+  // Candidate steps from range / 8 upwards through the 1, 2, 2.5, 5 sequence; the tightest
+  // range with 3..8 intervals wins (ties: the larger step, fewer ticks).
+  ColourScale best;
+  double best_range = INFINITY;
+  for (double step = nice_ceil(range / 8.0), k = 0; k < 8; ++k, step = nice_ceil(step * 1.0001)) {
+    // k * step may land an ulp beyond the data (3 * 0.1 = 0.30000000000000004): the data wins.
+    const double lo = std::min(emin, std::floor(emin / step * (1 + 1e-12)) * step);
+    const double hi = std::max(emax, std::ceil(emax / step * (1 - 1e-12)) * step);
+    const double n = std::round((hi - lo) / step);
+    if (n < 3 || n > 8) continue;
+    if (hi - lo <= best_range) {
+      best_range = hi - lo;
+      best = ColourScale{lo, hi, ticks_every(lo, hi, step)};
+    }
+  }
+  if (!std::isfinite(best_range)) best = fixed_scale(0.0, nice_ceil(emax));
+  return best;
 }
 
 ColourScale fixed_scale(double min, double max) {

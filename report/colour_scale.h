@@ -15,6 +15,12 @@ double nice_ceil(double x);
 
 // 0 to a nice value above `emax` (an all-dark surface gets 0..1 lx), ticks every nice step.
 ColourScale auto_scale(double emax);
+
+// A scale fitted to data in [emin, emax]: round limits at the nearest multiples of a round step
+// (1, 2, 2.5 or 5 x 10^k) below emin and above emax, the step chosen so the legend has 3 to 8
+// intervals and the range is as tight as possible (534-622 lx gives 525-625 lx in steps of 25).
+// A constant surface gets a range of about 10 % around its value; an all-dark one 0..1 lx.
+ColourScale fit_scale(double emin, double emax);
 ColourScale fixed_scale(double min, double max);
 
 // "MIN:MAX" in lux (the --scale option) -> a fixed scale. Throws InputError naming the text when

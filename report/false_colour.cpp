@@ -4,7 +4,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "geometry/polygon.h"
 #include "report/isolux.h"
+#include "report/luminaire_outline.h"
+#include "report/map_frame.h"
 #include "report/png_file.h"
 #include "report/raster.h"
 #include "report/raster_text.h"
@@ -14,8 +17,16 @@ namespace luxgrid::report {
 
 namespace {
 
-constexpr int kPlotTargetPx = 480;  // the longer side of the map, before rounding to whole cells
-constexpr int kTitleH = 56, kMargin = 16, kLegendW = 150, kBarW = 22, kFontPx = 14;
+// Layout in pixels. The map is drawn to scale: its longer side at most kMapMaxW wide or kMapMaxH
+// tall, whichever binds first.
+constexpr double kMapMaxW = 560.0, kMapMaxH = 400.0;
+constexpr int kTop = 92, kLeft = 58, kBottom = 44, kLegendGap = 22, kBarW = 20, kLegendTextW = 96,
+              kMinWidth = 640;
+constexpr int kTitlePx = 17, kStatsPx = 13, kNotePx = 12, kAxisPx = 12, kLabelPx = 12;
+
+const Rgb kWhite{1, 1, 1}, kBlack{0, 0, 0}, kOutsideRoom{1, 1, 1};
+const Rgb kNotCalculated{0.93f, 0.93f, 0.93f};  // inside the room, outside the surface
+const Rgb kObstacle{0.72f, 0.72f, 0.72f};       // points left out inside the surface
 
 std::string format_lux(double v) {
   char buf[32];
@@ -23,20 +34,57 @@ std::string format_lux(double v) {
   return buf;
 }
 
-}  // namespace
-
-bool plot_position(const geometry::SurfaceGrid& g, const Vec3& world, double& fx, double& fy) {
-  // 0.7 ~ cos 45 deg: floors, workplanes and ceilings get marks; walls do not.
-  constexpr double kHorizontalNormalZ = 0.7;
-  const Vec3 n = glm::cross(g.u_dir, g.v_dir);
-  if (std::abs(n.z) < kHorizontalNormalZ || !(g.size_u > 0.0) || !(g.size_v > 0.0)) return false;
-  const Vec3 rel = world - g.origin;
-  const double u = glm::dot(rel, g.u_dir), v = glm::dot(rel, g.v_dir);
-  if (u < 0.0 || u > g.size_u || v < 0.0 || v > g.size_v) return false;
-  fx = u / g.size_u;
-  fy = 1.0 - v / g.size_v;
-  return true;
+std::string format_m(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", std::abs(v) < 1e-9 ? 0.0 : v);
+  return buf;
 }
+
+struct Box {
+  int x0, y0, x1, y1;
+  bool overlaps(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+
+// The grid's value at fractional index coordinates (fi, fj) (point (i, j) at fi = i, fj = j):
+// bilinear between the four surrounding points, over the active ones only; NaN where none of
+// them is active or (by default) the nearest is not.
+class Field {
+ public:
+  explicit Field(const calc::SurfaceResult& r)
+      : r_(r), nu_(std::max(1, r.grid.nu)), nv_(std::max(1, r.grid.nv)) {}
+
+  bool on(int i, int j) const {
+    const size_t k = static_cast<size_t>(j) * nu_ + i;
+    return k < r_.E.size() && (k >= r_.grid.active.size() || r_.grid.active[k]);
+  }
+  double at(int i, int j) const { return r_.E[static_cast<size_t>(j) * nu_ + i]; }
+
+  // `nearest_must_be_on`: NaN where the nearest point is left out (the left-out cell is drawn
+  // grey); false when the caller draws the obstacles' real footprints instead.
+  double sample(double fi, double fj, bool nearest_must_be_on = true) const {
+    fi = std::clamp(fi, 0.0, nu_ - 1.0), fj = std::clamp(fj, 0.0, nv_ - 1.0);
+    if (nearest_must_be_on &&
+        !on(static_cast<int>(std::lround(fi)), static_cast<int>(std::lround(fj))))
+      return NAN;
+    const int i0 = std::min(static_cast<int>(fi), std::max(nu_ - 2, 0)),
+              j0 = std::min(static_cast<int>(fj), std::max(nv_ - 2, 0));
+    const double tx = nu_ > 1 ? fi - i0 : 0.0, ty = nv_ > 1 ? fj - j0 : 0.0;
+    double sum = 0.0, weight = 0.0;
+    for (int dj = 0; dj <= (nv_ > 1 ? 1 : 0); ++dj) {
+      for (int di = 0; di <= (nu_ > 1 ? 1 : 0); ++di) {
+        const double w = (di ? tx : 1 - tx) * (dj ? ty : 1 - ty);
+        if (w > 0.0 && on(i0 + di, j0 + dj)) sum += w * at(i0 + di, j0 + dj), weight += w;
+      }
+    }
+    return weight > 0.0 ? sum / weight : NAN;
+  }
+
+ private:
+  const calc::SurfaceResult& r_;
+  int nu_, nv_;
+};
+
+}  // namespace
 
 std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourScale& scale,
                                    const std::filesystem::path& path) {
@@ -44,81 +92,289 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
 }
 
 std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourScale& scale,
-                                   const std::filesystem::path& path, const PlotOverlay& overlay) {
+                                   const std::filesystem::path& path, const PlotOverlay& overlay,
+                                   MapPixels* where) {
   const auto& g = r.grid;
-  const int nu = std::max(1, g.nu), nv = std::max(1, g.nv);
-  const int cell = std::max(1, kPlotTargetPx / std::max(nu, nv));
-  const int plot_w = cell * nu, plot_h = cell * nv;
-  const int width = kMargin + plot_w + kMargin + kLegendW;
-  const int height = kTitleH + std::max(plot_h, 200) + kMargin;
-  const Rgb white{1, 1, 1}, black{0, 0, 0};
-  Raster canvas(width, height, white);
+  const MapFrame frame = map_frame(g, overlay.scene);
+  const bool horizontal =
+      frame.view == MapFrame::View::plan || frame.view == MapFrame::View::ceiling;
+  const double ppm =
+      std::min(kMapMaxW / frame.width_m, kMapMaxH / frame.height_m);  // pixels per metre
+  const int map_w = std::max(1, static_cast<int>(std::lround(frame.width_m * ppm)));
+  const int map_h = std::max(1, static_cast<int>(std::lround(frame.height_m * ppm)));
+  const int bar_h = std::max(map_h, 160);
+  const int width = std::max(kMinWidth, kLeft + map_w + kLegendGap + kBarW + kLegendTextW);
+  const int height = kTop + std::max(map_h, bar_h) + kBottom;
+  Raster canvas(width, height, kWhite);
+  if (where) *where = MapPixels{kLeft, kTop, map_w, map_h, ppm};
+  // World point -> pixel (x right, y down) and back.
+  auto to_px = [&](const Vec3& w, double& x, double& y) {
+    double a = 0, b = 0;
+    frame_coords(frame, w, a, b);
+    x = kLeft + a * ppm, y = kTop + map_h - b * ppm;
+  };
+  auto line_world = [&](const Vec3& p, const Vec3& q, Rgb c, int thickness) {
+    double x0, y0, x1, y1;
+    to_px(p, x0, y0), to_px(q, x1, y1);
+    for (int t = 0; t < thickness; ++t) {
+      const int o = t - thickness / 2;
+      const bool steep = std::abs(y1 - y0) > std::abs(x1 - x0);
+      canvas.line(int(std::lround(x0)) + (steep ? o : 0), int(std::lround(y0)) + (steep ? 0 : o),
+                  int(std::lround(x1)) + (steep ? o : 0), int(std::lround(y1)) + (steep ? 0 : o),
+                  c);
+    }
+  };
+  auto polygon_plan = [&](const std::vector<Vec2>& poly, double z, Rgb c, int thickness) {
+    for (size_t k = 0; k < poly.size(); ++k) {
+      const Vec2 a = poly[k], b = poly[(k + 1) % poly.size()];
+      line_world({a.x, a.y, z}, {b.x, b.y, z}, c, thickness);
+    }
+  };
 
-  // One square of cell x cell pixels per grid point, v up (the top row is the last grid row);
-  // points left out (inside obstacles) are drawn mid grey.
+  // --- the map: each pixel's centre in the grid's frame, then bilinear between grid points ------
+  const Field field(r);
   const double span = scale.max - scale.min;
-  for (int j = 0; j < nv; ++j) {
-    for (int i = 0; i < nu; ++i) {
-      const size_t k = static_cast<size_t>(j) * nu + i;
-      const bool inactive = k < g.active.size() && !g.active[k];
-      const double t = k < r.E.size() ? std::clamp((r.E[k] - scale.min) / span, 0.0, 1.0) : 0.0;
-      const int x = kMargin + i * cell, y = kTitleH + (nv - 1 - j) * cell;
-      canvas.fill(x, x + cell, y, y + cell, inactive ? Rgb{0.5f, 0.5f, 0.5f} : viridis(t));
+  const double su = g.nu > 0 ? g.size_u / g.nu : 1.0,
+               sv = g.nv > 0 ? g.size_v / g.nv : 1.0;  // cell size, m
+  // On plans, the footprints of the obstacles the surface's height cuts are drawn as they are
+  // (a rotated cabinet as a rotated rectangle), not as the staircase of the points they remove.
+  std::vector<const std::vector<Vec2>*> cut;
+  if (horizontal && frame.room)
+    for (const auto& o : frame.room->obstacles)
+      if (o.z0 <= frame.origin.z && frame.origin.z <= o.z1) cut.push_back(&o.footprint);
+  for (int py = 0; py < map_h; ++py) {
+    for (int px = 0; px < map_w; ++px) {
+      const Vec3 w = frame_point(frame, (px + 0.5) / ppm, (map_h - py - 0.5) / ppm);
+      const Vec3 rel = w - g.origin;
+      const double u = glm::dot(rel, g.u_dir), v = glm::dot(rel, g.v_dir);
+      Rgb c = kOutsideRoom;
+      if (horizontal && frame.room &&
+          geometry::locate(Vec2(w), frame.room->outline, 0.0) != geometry::Location::outside)
+        c = kNotCalculated;
+      const bool in_rect = u >= 0 && u <= g.size_u && v >= 0 && v <= g.size_v;
+      bool in_region = in_rect;
+      if (in_rect && !g.region.empty()) {
+        in_region = false;
+        for (const auto& poly : g.region)
+          in_region =
+              in_region || geometry::locate(Vec2(w), poly, 0.0) != geometry::Location::outside;
+      }
+      bool in_obstacle = false;
+      for (const auto* fp : cut)
+        in_obstacle =
+            in_obstacle || geometry::locate(Vec2(w), *fp, 0.0) != geometry::Location::outside;
+      if (in_region && in_obstacle) {
+        c = kObstacle;
+      } else if (in_region) {
+        const double e = field.sample(u / su - 0.5, v / sv - 0.5, cut.empty());
+        c = std::isnan(e) ? kObstacle : viridis(std::clamp((e - scale.min) / span, 0.0, 1.0));
+      }
+      canvas.set(kLeft + px, kTop + py, c);
     }
   }
 
-  // Legend bar: top = scale.max, each row the colour at its centre.
-  const int bar_x = kMargin + plot_w + kMargin, bar_h = std::max(plot_h, 200);
-  for (int y = 0; y < bar_h; ++y) canvas.fill(bar_x, bar_x + kBarW, kTitleH + y, kTitleH + y + 1, viridis(1.0 - (y + 0.5) / bar_h));
+  // --- outlines: the room and its obstacles (plans), the surface's own outline -----------------
+  const double z = frame.origin.z;
+  if (horizontal && frame.room) {
+    for (const auto& o : frame.room->obstacles) {
+      if (o.z0 <= z && z <= o.z1) polygon_plan(o.footprint, z, Rgb{0.3f, 0.3f, 0.3f}, 1);
+    }
+  }
+  if (!g.region.empty()) {
+    for (const auto& poly : g.region) polygon_plan(poly, z, Rgb{0.15f, 0.15f, 0.15f}, 1);
+  }
+  if (horizontal && frame.room) {
+    polygon_plan(frame.room->outline, z, kBlack, 3);
+  } else {
+    canvas.box(kLeft, kTop, kLeft + map_w - 1, kTop + map_h - 1, kBlack, false);
+  }
 
   std::string warning;
-  auto text = [&](int x, int y, const std::string& s, int px) {
+  auto text = [&](int x, int y, const std::string& s, int px, Rgb colour = kBlack) {
     if (!warning.empty()) return;
-    if (!draw_text(canvas, x, y, s, px, kPlotFont, black)) {
+    if (!draw_text(canvas, x, y, s, px, kPlotFont, colour)) {
       warning = path.filename().string() + ": plot written without labels (font " + kPlotFont +
                 " unavailable: install fonts-dejavu-core)";
     }
   };
-  // Isolux lines: light lines on the dark half of the map, dark lines on the light half, so
-  // each stays visible in colour and in grey print; one label per level on a white box.
-  if (overlay.isolux && g.kind == geometry::SurfaceGrid::Kind::grid) {
-    for (double level : isolux_levels(scale, r.stats.Emin, r.stats.Emax)) {
-      const auto segments = isolux_segments(r.E, nu, nv, level, g.active);
-      if (segments.empty()) continue;
-      const bool dark_map = (level - scale.min) / span < 0.55;
-      const float shade = dark_map ? 1.0f : 0.1f;
-      const Rgb line_colour{shade, shade, shade};
-      auto px = [&](double x) { return kMargin + static_cast<int>(std::lround((x + 0.5) * cell)); };
-      auto py = [&](double y) { return kTitleH + static_cast<int>(std::lround((nv - 1 - y + 0.5) * cell)); };
-      for (const auto& sg : segments) canvas.line(px(sg.x0), py(sg.y0), px(sg.x1), py(sg.y1), line_colour);
-      const auto& mid = segments[segments.size() / 2];
-      const std::string label = format_lux(level);
-      const int lx = (px(mid.x0) + px(mid.x1)) / 2, ly = (py(mid.y0) + py(mid.y1)) / 2;
-      const int w = static_cast<int>(label.size()) * 7 + 4;
-      canvas.fill(lx - w / 2, lx + w / 2 + 1, ly - 7, ly + 6, white);
-      text(lx - w / 2 + 2, ly + 4, label, 11);
+  std::vector<Box> taken;  // label boxes and luminaire marks, so no label covers another
+
+  // --- luminaires over plans: their luminous opening to scale, white with a black edge ----------
+  if (horizontal && overlay.scene) {
+    for (const auto& l : overlay.scene->luminaires) {
+      double cx, cy;
+      to_px({l.pose.position.x, l.pose.position.y, z}, cx, cy);
+      if (cx < kLeft || cx > kLeft + map_w || cy < kTop || cy > kTop + map_h) continue;
+      auto outline = luminous_outline(l);
+      double x0 = cx, y0 = cy, x1 = cx, y1 = cy;
+      if (outline.size() >= 3) {
+        std::vector<Vec2> plan;
+        for (const Vec3& p : outline) plan.emplace_back(p.x, p.y);
+        polygon_plan(plan, z, kBlack, 1);
+        for (const Vec3& p : outline) {
+          double x, y;
+          to_px({p.x, p.y, z}, x, y);
+          x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+        }
+      }
+      const int ix = int(std::lround(cx)), iy = int(std::lround(cy));
+      canvas.box(ix - 3, iy - 3, ix + 3, iy + 3, kWhite, true);
+      canvas.box(ix - 3, iy - 3, ix + 3, iy + 3, kBlack, false);
+      taken.push_back({int(x0) - 2, int(y0) - 2, int(x1) + 3, int(y1) + 3});
     }
   }
-  // Luminaires: a white square with a black outline and centre dot at each position.
-  for (const Vec3& p : overlay.luminaires) {
-    double fx = 0.0, fy = 0.0;
-    if (!plot_position(g, p, fx, fy)) continue;
-    const int x = kMargin + static_cast<int>(std::lround(fx * plot_w));
-    const int y = kTitleH + static_cast<int>(std::lround(fy * plot_h));
-    canvas.box(x - 5, y - 5, x + 5, y + 5, white, true);
-    canvas.box(x - 5, y - 5, x + 5, y + 5, black, false);
-    canvas.box(x - 1, y - 1, x + 1, y + 1, black, true);
+
+  // --- isolux lines: round values and each requirement; labels placed where they fit -----------
+  if (overlay.isolux && g.kind == geometry::SurfaceGrid::Kind::grid && g.nu >= 2 && g.nv >= 2) {
+    // The field as the map shows it sampled S times finer than the grid, over the whole
+    // rectangle (the outermost half cells hold the edge values), so the contours follow the
+    // colours (curves within a cell) and run to the surface's edge instead of stopping at the
+    // outermost points. Fine sample (i, j) sits at grid index coordinates (i / S - 0.5, j / S -
+    // 0.5).
+    const double cell_px = std::min(su, sv) * ppm;
+    const int S = std::clamp(static_cast<int>(cell_px / 4.0), 1, 8);
+    const int fu = g.nu * S + 1, fv = g.nv * S + 1;
+    std::vector<double> fine(static_cast<size_t>(fu) * fv);
+    std::vector<bool> fine_on(fine.size());
+    for (int j = 0; j < fv; ++j)
+      for (int i = 0; i < fu; ++i) {
+        const double e = field.sample(double(i) / S - 0.5, double(j) / S - 0.5);
+        fine[static_cast<size_t>(j) * fu + i] = std::isnan(e) ? 0.0 : e;
+        fine_on[static_cast<size_t>(j) * fu + i] = !std::isnan(e);
+      }
+    struct Level {
+      double lx;
+      bool required;
+    };
+    std::vector<Level> levels;
+    for (double lx : overlay.required_lx)
+      if (lx > r.stats.Emin && lx < r.stats.Emax) levels.push_back({lx, true});
+    for (double lx : isolux_levels(scale, r.stats.Emin, r.stats.Emax)) {
+      bool dup = false;
+      for (const Level& l : levels) dup = dup || std::abs(l.lx - lx) < 1e-9 * std::max(1.0, lx);
+      if (!dup) levels.push_back({lx, false});
+    }
+    auto grid_world = [&](double x, double y) {
+      return g.origin + g.u_dir * (x / S * su) + g.v_dir * (y / S * sv);
+    };
+    struct Pending {
+      Level level;
+      std::vector<IsoSegment> segments;
+    };
+    std::vector<Pending> drawn;
+    for (const Level& level : levels) {
+      auto segments = isolux_segments(fine, fu, fv, level.lx, fine_on);
+      if (segments.empty()) continue;
+      // Light lines on the dark half of the map, dark lines on the light half: visible in colour
+      // and in grey print. Requirement lines are drawn 3 px wide, round values 1 px.
+      const float shade = (level.lx - scale.min) / span < 0.55 ? 1.0f : 0.08f;
+      for (const auto& sg : segments)
+        line_world(grid_world(sg.x0, sg.y0), grid_world(sg.x1, sg.y1), Rgb{shade, shade, shade},
+                   level.required ? 3 : 1);
+      drawn.push_back({level, std::move(segments)});
+    }
+    // Labels: requirement lines first; for each level the first candidate position along its
+    // line (from the middle outwards) whose box is inside the map and free.
+    for (const auto& p : drawn) {
+      const std::string label = format_lux(p.level.lx) + (p.level.required ? " lx required" : "");
+      const int tw = text_width(label, kLabelPx, kPlotFont) + 6, th = kLabelPx + 4;
+      const size_t n = p.segments.size();
+      for (size_t step = 0; step < std::min<size_t>(n, 64); ++step) {
+        // 1/2, 1/4, 3/4, 1/8, 3/8, ... of the way along the segment list
+        size_t denominator = 2, k = step;
+        while (k >= denominator / 2) k -= denominator / 2, denominator *= 2;
+        const size_t index = std::min(n - 1, (2 * k + 1) * n / denominator);
+        const auto& sg = p.segments[index];
+        double x0, y0, x1, y1;
+        to_px(grid_world(sg.x0, sg.y0), x0, y0), to_px(grid_world(sg.x1, sg.y1), x1, y1);
+        const int cx = int(std::lround((x0 + x1) / 2)), cy = int(std::lround((y0 + y1) / 2));
+        const Box b{cx - tw / 2, cy - th / 2, cx - tw / 2 + tw, cy - th / 2 + th};
+        if (b.x0 < kLeft || b.y0 < kTop || b.x1 > kLeft + map_w || b.y1 > kTop + map_h) continue;
+        bool free = true;
+        for (const Box& t : taken) free = free && !b.overlaps(t);
+        if (!free) continue;
+        canvas.fill(b.x0, b.x1, b.y0, b.y1, kWhite);
+        if (p.level.required) canvas.box(b.x0, b.y0, b.x1 - 1, b.y1 - 1, kBlack, false);
+        text(b.x0 + 3, b.y1 - 4, label, kLabelPx);
+        taken.push_back(b);
+        break;
+      }
+    }
   }
+
+  // --- axes in metres: ticks below and left of the map at a round step -------------------------
+  auto axis_step = [&](double extent_m) {
+    double step = nice_ceil(extent_m / 8.0);
+    while (step * ppm < 40.0) step = nice_ceil(step * 1.0001);  // ticks at least 40 px apart
+    return step;
+  };
+  {
+    const double step = axis_step(frame.width_m);
+    for (long k = static_cast<long>(std::ceil(frame.axis_x0 / step - 1e-9));
+         k * step <= frame.axis_x0 + frame.width_m + 1e-9; ++k) {
+      const int x = kLeft + static_cast<int>(std::lround((k * step - frame.axis_x0) * ppm));
+      canvas.fill(x, x + 1, kTop + map_h, kTop + map_h + 5, kBlack);
+      const std::string s = format_m(k * step);
+      text(x - text_width(s, kAxisPx, kPlotFont) / 2, kTop + map_h + 18, s, kAxisPx);
+    }
+    text(kLeft + map_w / 2 - text_width(frame.x_label, kAxisPx, kPlotFont) / 2, kTop + map_h + 36,
+         frame.x_label, kAxisPx);
+  }
+  {
+    const double step = axis_step(frame.height_m);
+    for (long k = static_cast<long>(std::ceil(frame.axis_y0 / step - 1e-9));
+         k * step <= frame.axis_y0 + frame.height_m + 1e-9; ++k) {
+      const int y = kTop + map_h - static_cast<int>(std::lround((k * step - frame.axis_y0) * ppm));
+      canvas.fill(kLeft - 5, kLeft, y, y + 1, kBlack);
+      const std::string s = format_m(k * step);
+      text(kLeft - 8 - text_width(s, kAxisPx, kPlotFont), y + kAxisPx / 2 - 1, s, kAxisPx);
+    }
+    text(4, kTop - 6, frame.y_label, kAxisPx);
+  }
+
+  // --- legend: the colour bar with the scale's ticks and the requirement values ---------------
+  const int bar_x = kLeft + map_w + kLegendGap;
+  for (int y = 0; y < bar_h; ++y)
+    canvas.fill(bar_x, bar_x + kBarW, kTop + y, kTop + y + 1, viridis(1.0 - (y + 0.5) / bar_h));
+  canvas.box(bar_x, kTop, bar_x + kBarW - 1, kTop + bar_h - 1, kBlack, false);
+  auto bar_y = [&](double lx) {
+    return kTop + static_cast<int>(std::lround((1.0 - (lx - scale.min) / span) * (bar_h - 1)));
+  };
   for (double tick : scale.ticks) {
-    const int y = kTitleH + static_cast<int>(std::lround((1.0 - (tick - scale.min) / span) * (bar_h - 1)));
-    canvas.fill(bar_x + kBarW, bar_x + kBarW + 6, y, y + 1, black);
-    text(bar_x + kBarW + 10, y + kFontPx / 2 - 1, format_lux(tick) + " lx", kFontPx);
+    const int y = bar_y(tick);
+    canvas.fill(bar_x + kBarW, bar_x + kBarW + 5, y, y + 1, kBlack);
+    text(bar_x + kBarW + 8, y + kAxisPx / 2 - 1, format_lux(tick) + " lx", kAxisPx);
   }
+  for (double lx : overlay.required_lx) {
+    if (lx < scale.min || lx > scale.max) continue;
+    const int y = bar_y(lx);
+    canvas.fill(bar_x - 4, bar_x + kBarW + 4, y - 1, y + 2, Rgb{0.75f, 0.1f, 0.1f});
+  }
+
+  // --- title: name, statistics, the view in words ----------------------------------------------
   char stats[200];
-  std::snprintf(stats, sizeof stats, "Emin %.4g  Eavg %.4g  Emax %.4g lx   U0 %.2f   %d x %d points",
-                r.stats.Emin, r.stats.Eavg, r.stats.Emax, r.stats.U0, g.nu, g.nv);
-  text(kMargin, 22, g.name, 18);
-  text(kMargin, 44, stats, 13);
+  std::snprintf(stats, sizeof stats,
+                "Emin %.1f  Eavg %.1f  Emax %.1f lx   U0 %.2f   %d x %d points", r.stats.Emin,
+                r.stats.Eavg, r.stats.Emax, r.stats.U0, g.nu, g.nv);
+  text(kLeft, 20, g.name, kTitlePx);
+  text(kLeft, 40, stats, kStatsPx);
+  // The view in words, wrapped to the picture's width.
+  std::string line;
+  int line_y = 58;
+  auto flush = [&] {
+    text(kLeft, line_y, line, kNotePx, Rgb{0.25f, 0.25f, 0.25f});
+    line.clear(), line_y += 15;
+  };
+  for (size_t start = 0; start < frame.description.size();) {
+    size_t end = frame.description.find(' ', start);
+    if (end == std::string::npos) end = frame.description.size();
+    const std::string word = frame.description.substr(start, end - start);
+    const std::string candidate = line.empty() ? word : line + " " + word;
+    if (!line.empty() && kLeft + text_width(candidate, kNotePx, kPlotFont) > width - 8) flush();
+    line = line.empty() ? word : line + " " + word;
+    start = end + 1;
+  }
+  if (!line.empty()) flush();
 
   write_png(canvas, path);
   return warning;

@@ -1,32 +1,44 @@
 #pragma once
-// False-colour PNG of a grid surface: viridis (perceptual, monotonic in lightness so it survives
-// grey print), a legend in lux, the surface name and its statistics, isolux lines at the legend's
-// round values with labels, and luminaire positions. The HTML report embeds these same PNGs.
+// False-colour PNG of a grid surface, drawn to scale with axes in metres: viridis (perceptual,
+// monotonic in lightness so it survives grey print), interpolated bilinearly between the grid
+// points, the room outline and obstacles, the surface's own outline, isolux lines at the legend's
+// round values and at each stated requirement, labels that do not overlap, luminaire openings,
+// and a legend in lux. The HTML report embeds these same PNGs.
+//
+// Orientation (report/map_frame.h): horizontal surfaces are drawn as the plan, +x right and +y up
+// (a ceiling as a reflected ceiling plan: seen from below as in a mirror on the floor, so it
+// lines up with the plan); vertical surfaces seen from the side their normal faces (a room's wall
+// from inside the room), up at the top; tilted surfaces along their own u (right) and v (up).
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "calc/results.h"
+#include "calc/scene.h"
 #include "report/colour_scale.h"
 
 namespace luxgrid::report {
 
 struct PlotOverlay {
-  bool isolux = true;            // contour lines at the scale's ticks, labelled in lux
-  std::vector<Vec3> luminaires;  // world positions; marked where they project into a
-                                 // horizontal grid's rectangle (walls get no marks)
+  bool isolux = true;  // contour lines at the scale's ticks and at required_lx
+  const calc::Scene* scene =
+      nullptr;                      // rooms (outline, obstacles) and luminaires; null: none drawn
+  std::vector<double> required_lx;  // stated requirement values (Em, Emin): a labelled line each
+};
+
+// Where the map lies in the picture: its top-left pixel, its size in pixels and its scale.
+struct MapPixels {
+  int x0 = 0, y0 = 0, width = 0, height = 0;
+  double px_per_m = 0.0;
 };
 
 // Writes `path` (PNG). Returns "" on success or a warning (e.g. no font for labels: the image
-// is written without text, and the caller reports the warning).
+// is written without text, and the caller reports the warning). `where`, when given, receives
+// the map's place in the picture (its origin is map_frame(r.grid, overlay.scene).origin).
 std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourScale& scale,
-                                   const std::filesystem::path& path, const PlotOverlay& overlay);
+                                   const std::filesystem::path& path, const PlotOverlay& overlay,
+                                   MapPixels* where = nullptr);
 std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourScale& scale,
                                    const std::filesystem::path& path);
-
-// Where a world point falls on the plot of grid `g`, as fractions of its width (left to right,
-// along u) and height (top to bottom, v up). False when `g` is not roughly horizontal (normal
-// within 45 degrees of vertical) or the point lies outside its rectangle.
-bool plot_position(const geometry::SurfaceGrid& g, const Vec3& world, double& fx, double& fy);
 
 }  // namespace luxgrid::report

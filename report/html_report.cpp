@@ -1,12 +1,20 @@
 #include "report/html_report.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "calc/glare/ugr_table.h"
+#include "calc/scaled_distribution.h"
+#include "geometry/polygon.h"
 #include "photometry/derived_photometry.h"
 #include "report/compliance_table.h"
+#include "report/energy.h"
+#include "report/luminaire_data.h"
+#include "report/map_frame.h"
 #include "report/observers_html.h"
 #include "report/plan_view_svg.h"
+#include "report/png_file.h"
 #include "report/polar_diagram.h"
 
 namespace luxgrid::report {
@@ -17,55 +25,316 @@ namespace {
 // the grid values to be documented; beyond 30 x 30 a table no longer fits a printed page).
 constexpr int kMaxValueTableSide = 30;
 
-constexpr const char* kStyle = R"(
-body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; font-size: 10.5pt; color: #111;
-       max-width: 190mm; margin: 1.5em auto; padding: 0 1em; line-height: 1.35; }
-h1 { font-size: 18pt; margin: 0 0 .2em; } h2 { font-size: 13.5pt; border-bottom: 1.5px solid #333;
-     margin-top: 1.4em; } h3 { font-size: 11.5pt; margin: 1em 0 .3em; }
-table { border-collapse: collapse; margin: .4em 0; } td, th { border: 1px solid #bbb; padding: 2px 6px;
-     text-align: left; vertical-align: top; } th { background: #eee; }
-td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; }
-table.values { font-size: 6.5pt; } table.values td { padding: 0 2px; text-align: right; border-color: #ddd; }
-.met { color: #0a6b2f; font-weight: bold; } .notmet { color: #a10f0f; font-weight: bold; }
-.notcalc { color: #8a5a00; font-weight: bold; } table.compliance { font-size: 9.5pt; } table.compliance td.num { white-space: nowrap; }
-table.compliance td:last-child { overflow-wrap: anywhere; }
-.surface { break-inside: avoid; page-break-inside: avoid; } .surface img { max-width: 100%; height: auto; }
-.plan, .polar { max-width: 100%; height: auto; } .luminaire-card { display: inline-block; margin: 0 1em 1em 0;
-     vertical-align: top; break-inside: avoid; } .muted { color: #666; }
-@page { size: A4; margin: 14mm 12mm; }
-@media print { body { margin: 0; padding: 0; max-width: none; } h2 { break-after: avoid; }
-  .surface, .room, table.values, .luminaire-card { break-inside: avoid; } a { color: inherit; } }
-)";
-
 std::string fmt(const char* f, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
 }
 
+// A CSS string literal: quotes and backslashes escaped, '<' as an escape so "</style>" in a
+// project name cannot end the style sheet.
+std::string css_string(const std::string& s) {
+  std::string out = "\"";
+  for (char ch : s) {
+    if (ch == '"' || ch == '\\')
+      out += '\\', out += ch;
+    else if (ch == '<')
+      out += "\\3C ";
+    else if (ch == '\n' || ch == '\r')
+      out += ' ';
+    else
+      out += ch;
+  }
+  return out + "\"";
+}
+
+// Screen and print styles. Print: A4 with a running header (project name, report title) and a
+// footer (date, "page N of M") in the page margins (CSS Paged Media margin boxes, which Chromium
+// prints), the cover on a page of its own, no table or map split across pages.
+std::string style(const std::string& project, const std::string& date) {
+  std::string css = std::string("body { font-family: ") + kReportFontFamily +
+                    R"(; font-size: 10pt; color: #111;
+       max-width: 186mm; margin: 1.5em auto; padding: 0 1em; line-height: 1.35; }
+h1 { font-size: 22pt; margin: .2em 0 .6em; } h2 { font-size: 14pt; border-bottom: 1.5px solid #333;
+     margin-top: 1.4em; } h3 { font-size: 11.5pt; margin: 1em 0 .3em; }
+table { border-collapse: collapse; margin: .4em 0; } td, th { border: 1px solid #bbb; padding: 2px 5px;
+     text-align: left; vertical-align: top; } th { background: #eee; font-weight: 600; }
+td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; }
+table.values { font-size: 6.5pt; } table.values td { padding: 0 2px; text-align: right; border-color: #ddd; }
+table.positions, table.types { width: 100%; font-size: 8pt; } table.positions td, table.types td { overflow-wrap: anywhere; }
+table.meta th { width: 38mm; } .kicker { color: #555; font-size: 12pt; margin: 30mm 0 0; }
+.met { color: #0a6b2f; font-weight: bold; } .notmet { color: #a10f0f; font-weight: bold; }
+.notcalc { color: #8a5a00; font-weight: bold; } table.compliance { font-size: 9pt; } table.compliance td.num { white-space: nowrap; }
+table.compliance td:last-child { overflow-wrap: anywhere; }
+.surface { break-inside: avoid; page-break-inside: avoid; } .surface img, img.polar { max-width: 100%; height: auto; }
+img.polar { width: 300px; } .plan { max-width: 100%; height: auto; } .luminaire-card { display: inline-block;
+     margin: 0 1em 1em 0; vertical-align: top; break-inside: avoid; } .muted { color: #666; }
+.keep { break-inside: avoid; } .caption { color: #444; font-size: 8.5pt; margin: .2em 0 .8em; } .method p { margin: .3em 0; }
+@page { size: A4; margin: 18mm 13mm 16mm;
+  @top-left { content: )" +
+                    css_string(project) + R"(; font: 8pt sans-serif; color: #555; }
+  @top-right { content: "Lighting calculation report"; font: 8pt sans-serif; color: #555; }
+  @bottom-left { content: )" +
+                    css_string(date) + R"(; font: 8pt sans-serif; color: #555; }
+  @bottom-right { content: "Page " counter(page) " of " counter(pages); font: 8pt sans-serif; color: #555; } }
+@media print { body { margin: 0; padding: 0; max-width: none; } h2 { break-after: avoid; }
+  .cover { break-after: page; } h2.appendix { break-before: page; }
+  .surface, .room, table.values, .luminaire-card, tr { break-inside: avoid; } a { color: inherit; } }
+)";
+  return css;
+}
+
 std::string stat_cell(const std::string& surface, const char* key, const std::string& text) {
   return "<td class=\"num\" data-surface=\"" + html_escape(surface) + "\" data-stat=\"" + key + "\">" + text + "</td>";
+}
+
+// The luminaire types (one row per photometry entry: the product as the file names it, count,
+// flux and power) with their polar diagrams, then every luminaire's position.
+std::string luminaire_sections(const calc::Scene& scene) {
+  std::string h =
+      "<h2>Luminaires</h2>\n<table class=\"types\"><tr><th>Type</th><th>Luminaire (from the "
+      "file)</th>"
+      "<th>Photometry file</th><th class=\"num\">Count</th><th class=\"num\">Flux each</th>"
+      "<th class=\"num\">Power each</th><th class=\"num\">LOR</th>"
+      "<th class=\"num\">UGR 4H&times;8H<br>crosswise / endwise</th></tr>";
+  std::string cards;
+  for (const auto& [key, p] : scene.photometry) {
+    int count = 0;
+    const calc::Luminaire* first = nullptr;
+    for (const auto& l : scene.luminaires) {
+      if (l.photometry != key) continue;
+      ++count;
+      if (!first) first = &l;
+    }
+    // As used: a project flux_lm or multiplier applied, and the project's "emitter", if any.
+    const photometry::IntensityDistribution* dist =
+        first && first->distribution ? first->distribution.get() : p.distribution.get();
+    const photometry::LuminousOpening* opening = first ? &first->opening : &p.opening;
+    const auto file = luminaire_data(p);
+    std::string product;
+    if (!file.name.empty()) product += "<strong>" + html_escape(file.name) + "</strong>";
+    if (!file.manufacturer.empty())
+      product += (product.empty() ? "" : "<br>") + html_escape(file.manufacturer);
+    if (!file.article.empty())
+      product +=
+          (product.empty() ? "" : "<br>") + std::string("article ") + html_escape(file.article);
+    if (product.empty())
+      product = "<span class=\"muted\">" + html_escape(p.format) + ", no product data</span>";
+    const bool have_flux = dist != nullptr;
+    const double flux_lm = have_flux ? calc::luminous_flux(*dist) : 0.0;
+    const auto d = photometry::derive(p);
+    const auto lor = d.lor ? d.lor : p.stated_lor;
+    // CIE 190's 4H x 8H value at 0.7/0.5/0.2 (crosswise / endwise) for the luminaire as used:
+    // the 1000 lm table plus 8 log10(F / 1000) is the UGR of the distribution itself.
+    std::string ugr = "&ndash;";
+    if (dist && opening->shape != photometry::LuminousOpening::Shape::point) {
+      const calc::glare::TableRoom room{4, 8};
+      const auto c =
+          calc::glare::table_ugr(*dist, *opening, room, calc::glare::kTableReflectances[0],
+                                 calc::glare::Viewing::crosswise);
+      const auto e = calc::glare::table_ugr(
+          *dist, *opening, room, calc::glare::kTableReflectances[0], calc::glare::Viewing::endwise);
+      if (c && e) ugr = fmt("%.1f", *c) + " / " + fmt("%.1f", *e);
+    }
+    h += "<tr data-type=\"" + html_escape(key) + "\"><td>" + html_escape(key) + "</td><td>" +
+         product + "</td><td>" + html_escape(std::filesystem::path(p.source).filename().string()) +
+         "</td><td class=\"num\">" + std::to_string(count) + "</td><td class=\"num\">" +
+         (have_flux ? fmt("%.0f", flux_lm) + " lm" : "&ndash;") +
+         "</td><td class=\"num\" data-power=\"" + html_escape(key) + "\">" +
+         (file.power_W ? fmt("%.1f", *file.power_W) + " W" : std::string("not in file")) +
+         "</td><td class=\"num\">" + (lor ? fmt("%.2f", *lor) : std::string("&ndash;")) +
+         "</td><td class=\"num\" data-ugr-table=\"" + html_escape(key) + "\">" + ugr + "</td></tr>";
+    if (dist) {
+      const Raster polar = polar_diagram(*dist, key, 600);
+      cards += "<div class=\"luminaire-card\"><img class=\"polar\" alt=\"polar diagram of " +
+               html_escape(key) + "\" src=\"data:image/png;base64," + base64(encode_png(polar)) +
+               "\"></div>";
+    }
+  }
+  h += "</table>\n<p class=\"caption\">Flux each: the luminaire's flux as used in the calculation "
+       "(the file's, or the "
+       "project's flux_lm). Power each: as the photometric file states it. LOR: light output "
+       "ratio. UGR: the CIE 190 "
+       "tabular value for a 4H &times; 8H room with reflectances 0.7 / 0.5 / 0.2, without "
+       "maintenance factor.</p>\n" +
+       cards + "\n";
+  // Positions: the numbers are those of the plan view.
+  h += "<h3>Positions</h3><table class=\"positions\"><tr><th "
+       "class=\"num\">No.</th><th>Luminaire</th><th>Type</th>"
+       "<th class=\"num\">x</th><th class=\"num\">y</th><th class=\"num\">z</th><th "
+       "class=\"num\">Mounting height</th>"
+       "<th class=\"num\">C0 towards</th><th class=\"num\">Tilt</th></tr>";
+  for (size_t i = 0; i < scene.luminaires.size(); ++i) {
+    const auto& l = scene.luminaires[i];
+    const Vec3 p = l.pose.position;
+    // Mounting height: above the floor of the room it hangs in (the first whose outline holds it).
+    std::string mounting = "&ndash;";
+    for (const auto& room : scene.rooms) {
+      if (geometry::locate(Vec2(p), room.outline, 1e-6) != geometry::Location::outside) {
+        mounting = fmt("%.2f", p.z - room.floor_z) + " m";
+        break;
+      }
+    }
+    const Vec3 c0 = l.pose.rotation * Vec3(1, 0, 0), aim = l.pose.rotation * Vec3(0, 0, -1);
+    // C0's bearing in the plan, counter-clockwise from +x; the tilt is the aim's angle from
+    // straight down.
+    const double bearing = std::atan2(c0.y, c0.x) / kDegToRad;
+    const double tilt = std::acos(std::clamp(-aim.z, -1.0, 1.0)) / kDegToRad;
+    char row[512];
+    std::snprintf(row, sizeof row,
+                  "<tr data-luminaire=\"%zu\"><td class=\"num\">%zu</td><td>%s</td><td>%s</td><td "
+                  "class=\"num\">%.2f</td>"
+                  "<td class=\"num\">%.2f</td><td class=\"num\">%.2f</td><td "
+                  "class=\"num\">%s</td><td class=\"num\">%.0f&deg;</td>"
+                  "<td class=\"num\">%.0f&deg;</td></tr>",
+                  i + 1, i + 1, html_escape(l.label).c_str(), html_escape(l.photometry).c_str(),
+                  p.x, p.y, p.z, mounting.c_str(), std::abs(bearing) < 0.5 ? 0.0 : bearing, tilt);
+    h += row;
+  }
+  h += "</table>\n<p class=\"caption\">x, y, z: the centre of the luminous opening in metres. "
+       "Mounting height: above "
+       "the room's floor. C0 towards: the direction of the luminaire's C0 plane in the plan, in "
+       "degrees "
+       "counter-clockwise from +x. Tilt: the angle between its axis and straight down.</p>\n";
+  return h;
+}
+
+// One surface: its map with what the picture shows, the statistics, its requirement rows, and
+// for small grids the values themselves.
+std::string surface_section(const calc::SurfaceResult& s, const calc::Scene* scene,
+                            const ReportInput& in) {
+  const auto& g = s.grid;
+  const bool grid = g.kind == geometry::SurfaceGrid::Kind::grid;
+  std::string h = "<div class=\"surface\" data-surface=\"" + html_escape(g.name) + "\"><h3>" +
+                  html_escape(g.name) + "</h3>\n";
+  const auto png = in.png.find(g.name);
+  if (png != in.png.end()) {
+    h += "<img alt=\"false-colour illuminance of " + html_escape(g.name) +
+         "\" src=\"data:image/png;base64," + base64(png->second) + "\">\n<p class=\"caption\">" +
+         html_escape(map_frame(g, scene).description) +
+         " Colours: maintained illuminance in lx (legend on the right), smooth between the grid "
+         "points; white and "
+         "black lines: isolux lines at the legend's values, the thick ones at a required value "
+         "(marked red on the "
+         "legend). Light grey: inside the room but outside the surface; mid grey: points left out "
+         "(inside an "
+         "obstacle).</p>\n";
+  }
+  h +=
+      "<table><tr><th class=\"num\">Emin</th><th class=\"num\">Eavg</th><th class=\"num\">Emax</th>"
+      "<th class=\"num\">U0</th><th class=\"num\">Ud</th><th>Points</th></tr><tr>";
+  h += stat_cell(g.name, "Emin", format_lux_value(s.stats.Emin) + " lx");
+  h += stat_cell(g.name, "Eavg", format_lux_value(s.stats.Eavg) + " lx");
+  h += stat_cell(g.name, "Emax", format_lux_value(s.stats.Emax) + " lx");
+  h += stat_cell(g.name, "U0", format_ratio_value(s.stats.U0));
+  h += stat_cell(g.name, "Ud", format_ratio_value(s.stats.Ud));
+  h += grid ? "<td>" + std::to_string(g.nu) + " x " + std::to_string(g.nv) + ", spacing " +
+                  fmt("%.3f", g.spacing_u) + " x " + fmt("%.3f", g.spacing_v) + " m</td>"
+            : "<td>" + std::to_string(g.points.size()) + " points</td>";
+  h += "</tr></table>\n";
+  std::string rows;
+  for (const auto& c : in.checks) {
+    if (c.surface != g.name) continue;
+    const std::string unit = requirement_unit(c.quantity);
+    const char* f = c.quantity == "U0" || c.quantity == "modelling" ? "%.3f" : "%.1f";
+    std::string required =
+        std::string(c.upper_limit ? "&le; " : "&ge; ") + fmt(f, c.required) + unit;
+    if (c.required_max) required = fmt(f, c.required) + " to " + fmt(f, *c.required_max);
+    const char* cls = !c.calculated ? "notcalc" : c.met ? "met" : "notmet";
+    rows += "<tr><td>" + html_escape(c.quantity) + "</td><td class=\"num\">" + required +
+            "</td><td class=\"num\">" +
+            (c.calculated ? fmt(f, c.achieved) + unit : std::string("&ndash;")) +
+            "</td><td class=\"" + cls + "\">" + check_result(c) + "</td></tr>";
+  }
+  if (!rows.empty())
+    h += "<table class=\"checks\"><tr><th>Requirement</th><th class=\"num\">Required</th><th "
+         "class=\"num\">Achieved</th>"
+         "<th>Result</th></tr>" +
+         rows + "</table>\n";
+  if (grid && g.nu <= kMaxValueTableSide && g.nv <= kMaxValueTableSide) {
+    h += "<details open><summary>Values in lx (rows from the far edge, v, to the near edge; "
+         "columns along u)</summary>"
+         "<table class=\"values\">";
+    for (int j = g.nv - 1; j >= 0; --j) {
+      h += "<tr>";
+      for (int i = 0; i < g.nu; ++i) {
+        const size_t k = static_cast<size_t>(j) * g.nu + i;
+        const bool on = k >= g.active.size() || g.active[k];
+        h += "<td>" + (on && k < s.E.size() ? fmt("%.0f", s.E[k]) : std::string("&ndash;")) +
+             "</td>";
+      }
+      h += "</tr>";
+    }
+    h += "</table></details>\n";
+  } else if (g.kind == geometry::SurfaceGrid::Kind::observers) {
+    h += observers_html(s);
+  } else if (!grid) {
+    h += "<table><tr><th>Point</th><th>Position (m)</th><th class=\"num\">E (lx)</th></tr>";
+    for (size_t k = 0; k < g.points.size() && k < s.E.size(); ++k) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf,
+                    "<tr><td>P%zu</td><td>%.3f, %.3f, %.3f</td><td class=\"num\">%.1f</td></tr>",
+                    k + 1, g.points[k].x, g.points[k].y, g.points[k].z, s.E[k]);
+      h += buf;
+    }
+    h += "</table>\n";
+  }
+  return h + "</div>\n";
+}
+
+// How the numbers were obtained, in words a client reads; the technical plan is in the appendix.
+std::string method_section(const calc::Results& r, const calc::Scene* scene) {
+  bool indirect = false, obstacles = false;
+  for (const auto& s : r.surfaces)
+    for (double e : s.E_indirect) indirect = indirect || e > 0.0;
+  if (scene)
+    for (const auto& room : scene->rooms) obstacles = obstacles || !room.obstacles.empty();
+  std::string h = "<h2>How the values were calculated</h2>\n<div class=\"method\">";
+  h += "<p><strong>Light straight from the luminaires.</strong> For every calculation point "
+       "luxgrid adds up the light "
+       "of each luminaire from its measured light distribution (the photometric file), its "
+       "distance and the angle at "
+       "which the light arrives. Where a point is close to a large luminaire, the luminaire is "
+       "treated as a glowing "
+       "surface rather than a point, so values right under a luminaire stay correct.</p>";
+  if (obstacles)
+    h += "<p><strong>Shadows.</strong> Obstacles in the rooms (columns, cabinets and the like) "
+         "block the light that "
+         "would pass through them.</p>";
+  h += indirect ? "<p><strong>Light reflected by the room.</strong> Walls, floor, ceiling and "
+                  "obstacles reflect part of "
+                  "the light they receive, in proportion to their reflectance (see Rooms). luxgrid "
+                  "divides them into "
+                  "small patches and follows the light from patch to patch until further "
+                  "reflections add nothing "
+                  "measurable; every point then receives this reflected light as well.</p>"
+                : "<p><strong>Light reflected by the room</strong> was <em>not</em> included in "
+                  "this calculation: the "
+                  "values are direct light only and lower than in the real room.</p>";
+  if (scene) {
+    h += "<p><strong>Maintenance.</strong> Luminaires and rooms get dirtier and lamps dimmer over "
+         "time. Every "
+         "illuminance in this report is the maintained value: the value of a new installation "
+         "multiplied by the "
+         "maintenance factor " +
+         fmt("%.2f", scene->settings.maintenance_factor) + ".</p>";
+    h += std::string("<p><strong>Accuracy.</strong> The calculation ran at the quality &ldquo;") +
+         calc::to_string(scene->settings.quality) +
+         "&rdquo;; docs/accuracy.md gives the accuracy each quality "
+         "promises. The appendix lists the technical settings.</p>";
+  }
+  h += "<p><strong>Statistics.</strong> E<sub>min</sub>, E<sub>avg</sub> and E<sub>max</sub>: the "
+       "smallest, average and "
+       "largest illuminance over the points of a surface; U<sub>0</sub> = E<sub>min</sub> / "
+       "E<sub>avg</sub> "
+       "(uniformity); U<sub>d</sub> = E<sub>min</sub> / E<sub>max</sub>.</p>";
+  return h + "</div>\n";
 }
 
 }  // namespace
 
 std::string format_lux_value(double lx) { return fmt("%.1f", lx); }
 std::string format_ratio_value(double ratio) { return fmt("%.3f", ratio); }
-
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (char ch : s) {
-    switch (ch) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += ch;
-    }
-  }
-  return out;
-}
 
 std::string base64(const std::string& bytes) {
   static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -98,152 +367,161 @@ std::string base64(const std::string& bytes) {
 std::string html_report(const ReportInput& in) {
   const calc::Results& r = *in.results;
   const calc::Scene* scene = in.scene;
+  const std::string project = r.project.empty() ? std::string("Lighting project") : r.project;
   std::string h;
   h += "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
        "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
-       "<meta name=\"generator\" content=\"luxgrid " + html_escape(in.version) + "\">"
-       "<title>" + html_escape(r.project) + " - luxgrid report</title><style>" + kStyle + "</style></head><body>\n";
-  h += "<h1>" + html_escape(r.project) + "</h1>\n<p class=\"muted\">Lighting calculation report</p>\n";
+       "<meta name=\"generator\" content=\"luxgrid " +
+       html_escape(in.version) +
+       "\">"
+       "<title>" +
+       html_escape(project) + " - lighting report</title><style>" + style(project, in.date) +
+       "</style></head><body>\n";
 
-  // --- what this is -------------------------------------------------------------------------
-  h += "<table class=\"meta\">";
+  // --- cover ----------------------------------------------------------------------------------
+  h += "<section class=\"cover\">\n<p class=\"kicker\">Lighting calculation report</p>\n<h1>" +
+       html_escape(project) + "</h1>\n<table class=\"meta\">";
+  if (scene)
+    h += "<tr><th>Project file</th><td>" + html_escape(scene->project_file.filename().string()) +
+         "</td></tr>";
   h += "<tr><th>Date</th><td>" + html_escape(in.date) + "</td></tr>";
-  h += "<tr><th>luxgrid version</th><td>" + html_escape(in.version) + "</td></tr>";
   if (scene) {
-    h += "<tr><th>Project file</th><td>" + html_escape(scene->project_file.filename().string()) + "</td></tr>";
-    h += std::string("<tr><th>Quality</th><td data-meta=\"quality\">") + calc::to_string(scene->settings.quality) + "</td></tr>";
+    h += "<tr><th>Rooms</th><td>" + std::to_string(scene->rooms.size()) + "</td></tr>";
+    h += "<tr><th>Luminaires</th><td>" + std::to_string(scene->luminaires.size()) + "</td></tr>";
+    h += std::string("<tr><th>Calculation quality</th><td data-meta=\"quality\">") +
+         calc::to_string(scene->settings.quality) + "</td></tr>";
     h += "<tr><th>Maintenance factor</th><td data-meta=\"maintenance_factor\">" +
          fmt("%.2f", scene->settings.maintenance_factor);
     if (const auto& m = scene->settings.maintenance_parts) {
       h += " = LLMF " + fmt("%.2f", m->LLMF) + " &times; LSF " + fmt("%.2f", m->LSF) + " &times; LMF " +
            fmt("%.2f", m->LMF) + " &times; RSMF " + fmt("%.2f", m->RSMF) + " (CIE 97:2005)";
     }
-    h += " (all illuminances are maintained values)</td></tr>";
+    h += "<br><span class=\"muted\">All illuminances in this report are maintained "
+         "values.</span></td></tr>";
   }
   h += lighting_scene_row_html(r.scene);
+  if (!in.checks.empty()) {
+    const bool ok = all_met(in.checks);
+    h += std::string("<tr><th>Requirements</th><td class=\"") + (ok ? "met" : "notmet") + "\">" +
+         (ok ? "all met" : "not all met (see Compliance)") + "</td></tr>";
+  }
+  h += "<tr><th>Calculated with</th><td>luxgrid " + html_escape(in.version) + "</td></tr>";
   h += "</table>\n";
+  std::vector<RoomEnergy> energy;
+  if (scene) energy = room_energy(*scene, r, in.checks);
+  h += "</section>\n";
 
-  // --- requirement checks -------------------------------------------------------------------
+  // --- requirement checks ---------------------------------------------------------------------
   h += compliance_table_html(in.checks);
 
-  // --- what was simulated -------------------------------------------------------------------
-  h += "<h2>What was calculated</h2>\n<table>";
-  h += "<tr><th>Direct light</th><td>" + html_escape(r.plan.direct) + "</td></tr>";
-  h += "<tr><th>Reflected light</th><td>" + html_escape(r.plan.indirect) + "</td></tr>";
-  h += "<tr><th>Visibility</th><td>" + html_escape(r.plan.visibility) + "</td></tr>";
-  for (const auto& n : r.plan.notes) h += "<tr><th>Note</th><td>" + html_escape(n) + "</td></tr>";
-  h += "</table>\n\n";
-
-  // --- plan views ---------------------------------------------------------------------------
+  // --- rooms ----------------------------------------------------------------------------------
   if (scene && !scene->rooms.empty()) {
-    h += "<h2>Plan view</h2>\n";
+    h += "<div class=\"keep\"><h2>Rooms</h2>\n<table class=\"rooms\"><tr><th>Room</th><th "
+         "class=\"num\">Floor area</th>"
+         "<th class=\"num\">Perimeter</th><th class=\"num\">Size (x &times; y)</th><th "
+         "class=\"num\">Height</th>"
+         "<th class=\"num\">Reflectance floor / walls / ceiling</th><th class=\"num\">Maintenance "
+         "factor</th></tr>";
     for (const auto& room : scene->rooms) {
-      h += "<div class=\"room\"><h3>" + html_escape(room.name) + "</h3>" +
-           plan_view_svg(room, scene->luminaires, scene->surfaces) +
-           "<p class=\"muted\">Seen from above, north (+y) up. Circles: luminaires (numbered, the bar "
-           "along C0), red line: aiming of tilted luminaires; dashed: calculation grids.</p></div>\n";
-    }
-  }
-
-  // --- surfaces -----------------------------------------------------------------------------
-  h += "<h2>Calculation surfaces</h2>\n";
-  for (const auto& s : r.surfaces) {
-    const auto& g = s.grid;
-    const bool grid = g.kind == geometry::SurfaceGrid::Kind::grid;
-    h += "<div class=\"surface\" data-surface=\"" + html_escape(g.name) + "\"><h3>" + html_escape(g.name) + "</h3>\n";
-    const auto png = in.png.find(g.name);
-    if (png != in.png.end()) {
-      h += "<img alt=\"false-colour illuminance of " + html_escape(g.name) + "\" src=\"data:image/png;base64," +
-           base64(png->second) + "\">\n";
-    }
-    h += "<table><tr><th class=\"num\">Emin</th><th class=\"num\">Eavg</th><th class=\"num\">Emax</th>"
-         "<th class=\"num\">U0</th><th class=\"num\">Ud</th><th>Points</th></tr><tr>";
-    h += stat_cell(g.name, "Emin", format_lux_value(s.stats.Emin) + " lx");
-    h += stat_cell(g.name, "Eavg", format_lux_value(s.stats.Eavg) + " lx");
-    h += stat_cell(g.name, "Emax", format_lux_value(s.stats.Emax) + " lx");
-    h += stat_cell(g.name, "U0", format_ratio_value(s.stats.U0));
-    h += stat_cell(g.name, "Ud", format_ratio_value(s.stats.Ud));
-    h += grid ? "<td>" + std::to_string(g.nu) + " x " + std::to_string(g.nv) + ", spacing " + fmt("%.3f", g.spacing_u) +
-                    " x " + fmt("%.3f", g.spacing_v) + " m</td>"
-              : "<td>" + std::to_string(g.points.size()) + " points</td>";
-    h += "</tr></table>\n";
-    if (grid && g.nu <= kMaxValueTableSide && g.nv <= kMaxValueTableSide) {
-      h += "<details open><summary>Values in lx (rows from the far edge, v, to the near edge; columns along u)</summary>"
-           "<table class=\"values\">";
-      for (int j = g.nv - 1; j >= 0; --j) {
-        h += "<tr>";
-        for (int i = 0; i < g.nu; ++i) {
-          const size_t k = static_cast<size_t>(j) * g.nu + i;
-          const bool on = k >= g.active.size() || g.active[k];
-          h += "<td>" + (on && k < s.E.size() ? fmt("%.0f", s.E[k]) : std::string("&ndash;")) + "</td>";
-        }
-        h += "</tr>";
+      double perimeter = 0.0, x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+      for (size_t k = 0; k < room.outline.size(); ++k) {
+        perimeter += glm::length(room.outline[(k + 1) % room.outline.size()] - room.outline[k]);
+        x0 = std::min(x0, room.outline[k].x), x1 = std::max(x1, room.outline[k].x);
+        y0 = std::min(y0, room.outline[k].y), y1 = std::max(y1, room.outline[k].y);
       }
-      h += "</table></details>\n";
-    } else if (g.kind == geometry::SurfaceGrid::Kind::observers) {
-      h += observers_html(s);
-    } else if (!grid) {
-      h += "<table><tr><th>Point</th><th>Position (m)</th><th class=\"num\">E (lx)</th></tr>";
-      for (size_t k = 0; k < g.points.size() && k < s.E.size(); ++k) {
-        char buf[160];
-        std::snprintf(buf, sizeof buf, "<tr><td>%zu</td><td>%.3f, %.3f, %.3f</td><td class=\"num\">%.1f</td></tr>", k + 1,
-                      g.points[k].x, g.points[k].y, g.points[k].z, s.E[k]);
-        h += buf;
-      }
+      h += "<tr data-room=\"" + html_escape(room.name) + "\"><td>" + html_escape(room.name) +
+           "</td><td class=\"num\">" + fmt("%.2f", std::abs(geometry::signed_area(room.outline))) +
+           " m&sup2;</td><td class=\"num\">" + fmt("%.2f", perimeter) +
+           " m</td><td class=\"num\">" + fmt("%.2f", x1 - x0) + " &times; " + fmt("%.2f", y1 - y0) +
+           " m</td><td class=\"num\">" + fmt("%.2f", room.height) +
+           " m</td><td class=\"num\" data-stat=\"reflectance\">" +
+           fmt("%.2f", room.reflectance.floor) + " / " + fmt("%.2f", room.reflectance.walls) +
+           " / " + fmt("%.2f", room.reflectance.ceiling) + "</td><td class=\"num\">" +
+           fmt("%.2f", scene->settings.maintenance_factor) + "</td></tr>";
+    }
+    h += "</table>\n";
+    bool any_obstacle = false;
+    for (const auto& room : scene->rooms) any_obstacle = any_obstacle || !room.obstacles.empty();
+    if (any_obstacle) {
+      h += "<table class=\"obstacles\"><tr><th>Room</th><th>Obstacle</th><th class=\"num\">From / "
+           "to height</th>"
+           "<th class=\"num\">Reflectance</th></tr>";
+      for (const auto& room : scene->rooms)
+        for (const auto& o : room.obstacles)
+          h += "<tr><td>" + html_escape(room.name) + "</td><td>" + html_escape(o.name) +
+               "</td><td class=\"num\">" + fmt("%.2f", o.z0) + " / " + fmt("%.2f", o.z1) +
+               " m</td><td class=\"num\">" + fmt("%.2f", o.reflectance) + "</td></tr>";
       h += "</table>\n";
     }
     h += "</div>\n";
   }
 
-  // --- luminaire schedule -------------------------------------------------------------------
+  // --- luminaires -----------------------------------------------------------------------------
   if (scene && !scene->photometry.empty()) {
-    h += "<h2>Luminaire schedule</h2>\n<table><tr><th>Entry</th><th>File</th><th>Description</th>"
-         "<th class=\"num\">Count</th><th class=\"num\">Flux (lm)</th><th class=\"num\">LOR</th>"
-         "<th class=\"num\">UGR 4H&times;8H (CIE 190, 0.7/0.5/0.2, crosswise / endwise)</th></tr>";
-    std::string cards;
-    for (const auto& [key, p] : scene->photometry) {
-      int count = 0;
-      for (const auto& l : scene->luminaires) count += l.photometry == key ? 1 : 0;
-      const auto d = photometry::derive(p);
-      std::string desc;
-      for (const auto& [k, v] : p.keywords) {
-        if (k.empty() || k[0] == '_') continue;
-        if (!desc.empty()) desc += "<br>";
-        desc += html_escape(k) + ": " + html_escape(v);
-      }
-      if (desc.empty()) desc = html_escape(p.format);
-      const auto lor = d.lor ? d.lor : p.stated_lor;
-      h += "<tr><td>" + html_escape(key) + "</td><td>" + html_escape(p.source) + "</td><td>" + desc +
-           "</td><td class=\"num\">" + std::to_string(count) + "</td><td class=\"num\">" + fmt("%.0f", d.flux_lm) +
-           "</td><td class=\"num\">" + (lor ? fmt("%.2f", *lor) : std::string("&ndash;")) + "</td>";
-      const photometry::IntensityDistribution* dist = p.distribution.get();
-      const photometry::LuminousOpening* opening = &p.opening;
-      for (const auto& l : scene->luminaires) {
-        if (l.photometry == key && l.distribution) {
-          dist = l.distribution.get();  // as used: a project flux_lm or multiplier applied
-          opening = &l.opening;         // and the project's "emitter", if any
-          break;
-        }
-      }
-      // CIE 190's 4H x 8H value at 0.7/0.5/0.2 (crosswise / endwise) for the luminaire as used:
-      // the 1000 lm table plus 8 log10(F / 1000) is the UGR of the distribution itself.
-      std::string ugr = "&ndash;";
-      if (dist && opening->shape != photometry::LuminousOpening::Shape::point) {
-        const calc::glare::TableRoom room{4, 8};
-        const auto c = calc::glare::table_ugr(*dist, *opening, room, calc::glare::kTableReflectances[0],
-                                              calc::glare::Viewing::crosswise);
-        const auto e = calc::glare::table_ugr(*dist, *opening, room, calc::glare::kTableReflectances[0],
-                                              calc::glare::Viewing::endwise);
-        if (c && e) ugr = fmt("%.1f", *c) + " / " + fmt("%.1f", *e);
-      }
-      h += "<td class=\"num\" data-ugr-table=\"" + html_escape(key) + "\">" + ugr + "</td></tr>";
-      if (dist) {
-        cards += "<div class=\"luminaire-card\"><h3>" + html_escape(key) + "</h3>" + polar_diagram_svg(*dist) + "</div>";
-      }
-    }
-    h += "</table>\n" + cards + "\n";
+    h += luminaire_sections(*scene);
   }
 
+  // --- plan views -----------------------------------------------------------------------------
+  if (scene && !scene->rooms.empty()) {
+    h += "<h2>Plan view</h2>\n";
+    for (const auto& room : scene->rooms) {
+      h += "<div class=\"room\"><h3>" + html_escape(room.name) + "</h3>" +
+           plan_view_svg(room, scene->luminaires, scene->surfaces) +
+           "<p class=\"caption\">Seen from above, to scale, north (+y) up. Yellow: the luminous "
+           "opening of each "
+           "luminaire at its real size, numbered as in the luminaire table; blue bar: its C0 "
+           "direction; red line: "
+           "where a tilted luminaire points. Dashed green: calculation surfaces as their real "
+           "outline; green bands "
+           "along walls: wall grids; crosses: single points (P1, P2, ...); circles with a line: "
+           "glare observers and "
+           "their view. Walls are numbered as the surfaces named \"&hellip; wall N\" use "
+           "them.</p></div>\n";
+    }
+  }
+
+  // --- energy ---------------------------------------------------------------------------------
+  if (!energy.empty()) {
+    h += "<div class=\"keep\"><h2>Energy</h2>\n<table class=\"energy\"><tr><th>Room</th><th "
+         "class=\"num\">Luminaires</th>"
+         "<th class=\"num\">Installed power</th><th class=\"num\">Floor area</th><th "
+         "class=\"num\">Power density</th>"
+         "<th>Reference surface</th><th class=\"num\">E<sub>avg</sub></th><th class=\"num\">per "
+         "100 lx</th></tr>";
+    for (const auto& e : energy) {
+      const auto na = std::string("&ndash;");
+      h += "<tr><td>" + html_escape(e.room) + "</td><td class=\"num\">" +
+           std::to_string(e.luminaires) + "</td><td class=\"num\" data-energy=\"power\">" +
+           (e.power_W ? fmt("%.1f", *e.power_W) + " W" : na) + "</td><td class=\"num\">" +
+           fmt("%.2f", e.area_m2) + " m&sup2;</td><td class=\"num\" data-energy=\"density\">" +
+           (e.W_per_m2() ? fmt("%.2f", *e.W_per_m2()) + " W/m&sup2;" : na) + "</td><td>" +
+           html_escape(e.reference_surface) + "</td><td class=\"num\">" +
+           (e.Eavg_lx ? format_lux_value(*e.Eavg_lx) + " lx" : na) +
+           "</td><td class=\"num\" data-energy=\"per100lx\">" +
+           (e.W_per_m2_per_100lx() ? fmt("%.2f", *e.W_per_m2_per_100lx()) + " W/m&sup2;" : na) +
+           "</td></tr>";
+    }
+    h += "</table>\n<p class=\"caption\">Installed power: the sum of the power each luminaire's "
+         "photometric file "
+         "states (with its control gear where the file includes it). Power density: installed "
+         "power / floor area. "
+         "Per 100 lx: power density / (E<sub>avg</sub> / 100 lx), with E<sub>avg</sub> the "
+         "maintained average on the "
+         "reference surface (the room's task area, else its workplane, else its floor).";
+    for (const auto& e : energy)
+      for (const auto& key : e.without_power)
+        h += " <strong>" + html_escape(e.room) + ":</strong> the file of &ldquo;" +
+             html_escape(key) +
+             "&rdquo; gives no power, so the room's energy figures are not given.";
+    h += "</p></div>\n";
+  }
+
+  // --- surfaces -------------------------------------------------------------------------------
+  h += "<h2>Calculation surfaces</h2>\n";
+  for (const auto& s : r.surfaces) h += surface_section(s, scene, in);
+
+  // --- method ---------------------------------------------------------------------------------
+  h += method_section(r, scene);
   // --- cost of accuracy ---------------------------------------------------------------------
   if (in.cost && !in.cost->levels.empty()) {
     h += "<h2>What accuracy costs on this project</h2>\n<p>The same project at each quality; differences are "
@@ -269,6 +547,17 @@ std::string html_report(const ReportInput& in) {
     }
     h += "</table>\n";
   }
+  // --- appendix: the technical plan -----------------------------------------------------------
+  h += "<h2 class=\"appendix\">Appendix: technical calculation plan</h2>\n<p class=\"caption\">How "
+       "luxgrid set up "
+       "this calculation, for a lighting engineer who wants to check it (docs/accuracy.md explains "
+       "the terms).</p>"
+       "<table class=\"plan-text\">";
+  h += "<tr><th>Direct light</th><td>" + html_escape(r.plan.direct) + "</td></tr>";
+  h += "<tr><th>Reflected light</th><td>" + html_escape(r.plan.indirect) + "</td></tr>";
+  h += "<tr><th>Visibility</th><td>" + html_escape(r.plan.visibility) + "</td></tr>";
+  for (const auto& n : r.plan.notes) h += "<tr><th>Note</th><td>" + html_escape(n) + "</td></tr>";
+  h += "</table>\n";
   h += "<p class=\"muted\">Generated by luxgrid " + html_escape(in.version) + ".</p>\n</body></html>\n";
   return h;
 }

@@ -9,6 +9,7 @@
 #include "calc/results.h"
 #include "calc/scene.h"
 #include "report/diff.h"
+#include "report/html_text.h"
 #include "report/requirements.h"
 
 namespace luxgrid::report {
@@ -16,7 +17,7 @@ namespace luxgrid::report {
 struct ReportInput {
   const calc::Results* results = nullptr;
   const calc::Scene* scene = nullptr;          // null: no plan view, no luminaire schedule
-  std::map<std::string, std::string> png;      // surface name -> PNG file bytes
+  std::map<std::string, std::string> png;      // surface name -> PNG file bytes (the maps)
   std::vector<RequirementCheck> checks;
   const CostTable* cost = nullptr;             // --with-cost
   std::string version;                         // "0.1.0"
@@ -27,9 +28,6 @@ std::string html_report(const ReportInput& in);
 
 // RFC 4648 base64 of `bytes`.
 std::string base64(const std::string& bytes);
-
-// Text safe inside HTML elements and attribute values.
-std::string html_escape(const std::string& s);
 
 // The numbers as the report prints them (tests compare the page with results.json through these).
 std::string format_lux_value(double lx);     // "%.1f"

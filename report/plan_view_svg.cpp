@@ -5,24 +5,16 @@
 #include <cstdio>
 
 #include "report/colour_scale.h"
+#include "report/html_text.h"
+#include "report/luminaire_outline.h"
 
 namespace luxgrid::report {
 
 namespace {
 
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char ch : s) {
-    switch (ch) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += ch;
-    }
-  }
-  return out;
-}
+// 0.7 ~ cos 45 deg: a normal within 45 degrees of vertical makes a horizontal grid (drawn as its
+// outline); others are vertical (drawn as a line along their foot).
+constexpr double kHorizontalNormalZ = 0.7;
 
 }  // namespace
 
@@ -35,28 +27,53 @@ std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Lumina
   }
   if (room.outline.empty()) { x0 = y0 = 0.0; x1 = y1 = 1.0; }
   const double w_m = std::max(x1 - x0, 1e-3), h_m = std::max(y1 - y0, 1e-3);
-  constexpr double kPad = 40.0;  // px around the room for the north arrow and the scale bar
+  // px around the room for wall numbers, the north arrow and the scale bar
+  constexpr double kPad = 40.0;
   const double scale = (width_px - 2 * kPad) / w_m;  // px per metre
   const int height_px = static_cast<int>(std::ceil(h_m * scale + 2 * kPad + 20));
   auto sx = [&](double x) { return kPad + (x - x0) * scale; };
   auto sy = [&](double y) { return kPad + (y1 - y) * scale; };
+  auto inside_box = [&](double x, double y, double slack) {
+    return x >= x0 - slack && x <= x1 + slack && y >= y0 - slack && y <= y1 + slack;
+  };
 
-  char buf[512];
+  char buf[4096];
   std::string svg;
   std::snprintf(buf, sizeof buf,
-                "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"plan\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\" "
-                "font-family=\"DejaVu Sans, sans-serif\" font-size=\"11\"><title>Plan of %s</title>",
-                width_px, height_px, width_px, height_px, escape(room.name).c_str());
+                "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"plan\" width=\"%d\" "
+                "height=\"%d\" viewBox=\"0 0 %d %d\" "
+                "font-family='%s' font-size=\"11\"><title>Plan of %s</title>",
+                width_px, height_px, width_px, height_px, kReportFontFamily,
+                html_escape(room.name).c_str());
   svg += buf;
   std::string pts;
   for (const auto& p : room.outline) {
     std::snprintf(buf, sizeof buf, "%.1f,%.1f ", sx(p.x), sy(p.y));
     pts += buf;
   }
-  svg += "<polygon points=\"" + pts + "\" fill=\"#f4f4f0\" stroke=\"#222\" stroke-width=\"2.5\"/>";
+  svg += "<polygon class=\"room\" points=\"" + pts +
+         "\" fill=\"#f4f4f0\" stroke=\"#222\" stroke-width=\"2.5\"/>";
 
-  // Obstacles: their footprint, hatched grey, with name and height in the tooltip; drawn before
-  // the grids and luminaires so those stay on top.
+  // Wall numbers outside each edge, as the wall grids' names use them ("room wall 3" is edge 3,
+  // from corner 3 to corner 4 of the outline).
+  const size_t n = room.outline.size();
+  for (size_t k = 0; k < n; ++k) {
+    const Vec2 a = room.outline[k], b = room.outline[(k + 1) % n];
+    const Vec2 d = b - a;
+    const double len = glm::length(d);
+    if (!(len > 0)) continue;
+    const Vec2 out(d.y / len, -d.x / len);  // outward normal of a counter-clockwise outline
+    const Vec2 m = (a + b) * 0.5;
+    std::snprintf(
+        buf, sizeof buf,
+        "<text class=\"wall-number\" x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" fill=\"#555\" "
+        "font-size=\"10\">wall %zu</text>",
+        sx(m.x) + out.x * 14, sy(m.y) - out.y * 14 + 4, k);
+    svg += buf;
+  }
+
+  // Obstacles: their footprint, grey, with name and height in the tooltip; drawn before the grids
+  // and luminaires so those stay on top.
   for (const auto& o : room.obstacles) {
     std::string fp;
     for (const auto& p : o.footprint) {
@@ -65,50 +82,141 @@ std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Lumina
     }
     std::snprintf(buf, sizeof buf, "%.2f to %.2f m", o.z0, o.z1);
     svg += "<polygon class=\"obstacle\" points=\"" + fp +
-           "\" fill=\"#b8b8b8\" stroke=\"#555\" stroke-width=\"1.2\"><title>obstacle " + escape(o.name) +
-           ", " + buf + "</title></polygon>";
+           "\" fill=\"#b8b8b8\" stroke=\"#555\" stroke-width=\"1.2\"><title>obstacle " +
+           html_escape(o.name) + ", " + buf + "</title></polygon>";
   }
 
-  // Grid extents: horizontal grids as dashed rectangles, vertical ones as a line along the wall.
+  // Calculation surfaces: horizontal grids as their real outline (an L-shaped workplane as an L)
+  // dashed green; vertical grids as a green band along their foot; points as crosses; observers
+  // as eyes with their view directions.
   for (const auto& g : surfaces) {
-    if (g.kind != geometry::SurfaceGrid::Kind::grid) continue;
-    const Vec3 a = g.origin, b = g.origin + g.u_dir * g.size_u, cc = b + g.v_dir * g.size_v,
-               d = g.origin + g.v_dir * g.size_v;
-    const double mx = (a.x + cc.x) / 2, my = (a.y + cc.y) / 2;
-    if (mx < x0 - 0.01 || mx > x1 + 0.01 || my < y0 - 0.01 || my > y1 + 0.01) continue;
-    std::snprintf(buf, sizeof buf,
-                  "<polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"none\" stroke=\"#2a7f62\" "
-                  "stroke-width=\"1.2\" stroke-dasharray=\"5 3\"><title>grid %s: %d x %d</title></polygon>",
-                  sx(a.x), sy(a.y), sx(b.x), sy(b.y), sx(cc.x), sy(cc.y), sx(d.x), sy(d.y), escape(g.name).c_str(), g.nu, g.nv);
-    svg += buf;
+    if (g.kind == geometry::SurfaceGrid::Kind::grid) {
+      const Vec3 a = g.origin, b = g.origin + g.u_dir * g.size_u, cc = b + g.v_dir * g.size_v,
+                 d = g.origin + g.v_dir * g.size_v;
+      const double mx = (a.x + cc.x) / 2, my = (a.y + cc.y) / 2;
+      if (!inside_box(mx, my, 0.01)) continue;
+      const Vec3 normal = glm::cross(g.u_dir, g.v_dir);
+      if (std::abs(normal.z) >= kHorizontalNormalZ) {
+        if (normal.z < 0) continue;  // ceilings lie over the floor: the floor's outline shows both
+        std::vector<std::vector<Vec2>> outline = g.region;
+        if (outline.empty()) outline.push_back({Vec2(a), Vec2(b), Vec2(cc), Vec2(d)});
+        for (const auto& poly : outline) {
+          std::string p;
+          for (const auto& q : poly) {
+            std::snprintf(buf, sizeof buf, "%.1f,%.1f ", sx(q.x), sy(q.y));
+            p += buf;
+          }
+          svg += "<polygon class=\"surface\" data-surface=\"" + html_escape(g.name) +
+                 "\" points=\"" + p +
+                 "\" fill=\"none\" stroke=\"#2a7f62\" stroke-width=\"1.2\" stroke-dasharray=\"5 "
+                 "3\"><title>" +
+                 html_escape(g.name) + ": " + std::to_string(g.nu) + " x " + std::to_string(g.nv) +
+                 " points</title></polygon>";
+        }
+      } else {
+        // A vertical grid: its foot from a to b, drawn 4 px inside the room (towards its normal).
+        const Vec2 in = glm::length(Vec2(normal)) > 0 ? glm::normalize(Vec2(normal)) : Vec2(0.0);
+        const Vec3 foot0 = g.v_dir.z >= 0 ? a : d, foot1 = g.v_dir.z >= 0 ? b : cc;
+        std::snprintf(buf, sizeof buf,
+                      "<line class=\"wall-grid\" data-surface=\"%s\" x1=\"%.1f\" y1=\"%.1f\" "
+                      "x2=\"%.1f\" y2=\"%.1f\" "
+                      "stroke=\"#2a7f62\" stroke-width=\"3\" stroke-opacity=\"0.7\"><title>%s: %d "
+                      "x %d points</title></line>",
+                      html_escape(g.name).c_str(), sx(foot0.x) + in.x * 4, sy(foot0.y) - in.y * 4,
+                      sx(foot1.x) + in.x * 4, sy(foot1.y) - in.y * 4, html_escape(g.name).c_str(),
+                      g.nu, g.nv);
+        svg += buf;
+      }
+    } else {
+      const bool eyes = g.kind == geometry::SurfaceGrid::Kind::observers;
+      for (size_t k = 0; k < g.points.size(); ++k) {
+        const Vec3 p = g.points[k];
+        if (!inside_box(p.x, p.y, 0.01)) continue;
+        if (eyes) {
+          const Vec3 dir = k < g.normals.size() ? g.normals[k] : Vec3(0.0);
+          const double h = std::hypot(dir.x, dir.y);
+          std::snprintf(buf, sizeof buf,
+                        "<g class=\"observer\" data-surface=\"%s\"><circle cx=\"%.1f\" cy=\"%.1f\" "
+                        "r=\"3.5\" fill=\"#fff\" "
+                        "stroke=\"#6a3d9a\" stroke-width=\"1.4\"/><line x1=\"%.1f\" y1=\"%.1f\" "
+                        "x2=\"%.1f\" y2=\"%.1f\" "
+                        "stroke=\"#6a3d9a\" stroke-width=\"1.2\"/></g>",
+                        html_escape(g.name).c_str(), sx(p.x), sy(p.y), sx(p.x), sy(p.y),
+                        sx(p.x) + (h > 0 ? dir.x / h * 14 : 0),
+                        sy(p.y) - (h > 0 ? dir.y / h * 14 : 0));
+        } else {
+          std::snprintf(
+              buf, sizeof buf,
+              "<g class=\"probe\" data-surface=\"%s\"><title>%s point %zu at %.2f, %.2f, %.2f "
+              "m</title>"
+              "<path d=\"M%.1f %.1fl8 8m0 -8l-8 8\" stroke=\"#b03a2e\" stroke-width=\"2\"/>"
+              "<text x=\"%.1f\" y=\"%.1f\" font-size=\"9\" fill=\"#b03a2e\">P%zu</text></g>",
+              html_escape(g.name).c_str(), html_escape(g.name).c_str(), k + 1, p.x, p.y, p.z,
+              sx(p.x) - 4, sy(p.y) - 4, sx(p.x) + 6, sy(p.y) + 12, k + 1);
+        }
+        svg += buf;
+      }
+    }
   }
-  // Luminaires: a circle at the position, a line along the projected aiming direction (local -z)
-  // when it is tilted, and a short tick along C0 (local +x).
-  int number = 0;
-  for (const auto& l : luminaires) {
+  // Luminaires: the luminous opening to scale (a small circle for a point source), a bar along
+  // C0 (local +x) through it, a red line along the aiming direction (local -z) when tilted, and
+  // the number the luminaire table uses (its place in the project's list, from 1).
+  for (size_t index = 0; index < luminaires.size(); ++index) {
+    const auto& l = luminaires[index];
+    const int number = static_cast<int>(index) + 1;
     const Vec3 p = l.pose.position;
-    if (p.x < x0 - 0.5 || p.x > x1 + 0.5 || p.y < y0 - 0.5 || p.y > y1 + 0.5) continue;
-    ++number;
+    if (!inside_box(p.x, p.y, 0.5)) continue;
     const Vec3 aim = l.pose.rotation * Vec3(0, 0, -1);
     const Vec3 c0 = l.pose.rotation * Vec3(1, 0, 0);
-    const double r = 7.0;
     std::snprintf(buf, sizeof buf,
-                  "<g class=\"luminaire\"><title>%s (%s) at %.2f, %.2f, %.2f m</title>"
-                  "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" fill=\"#ffd34d\" stroke=\"#222\" stroke-width=\"1.2\"/>"
-                  "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#222\" stroke-width=\"1\"/>",
-                  escape(l.label).c_str(), escape(l.photometry).c_str(), p.x, p.y, p.z, sx(p.x), sy(p.y), r,
-                  sx(p.x) - c0.x * r * 1.6, sy(p.y) + c0.y * r * 1.6, sx(p.x) + c0.x * r * 1.6, sy(p.y) - c0.y * r * 1.6);
+                  "<g class=\"luminaire\" data-number=\"%d\"><title>%d: %s (%s) at %.2f, %.2f, "
+                  "%.2f m</title>",
+                  number, number, html_escape(l.label).c_str(), html_escape(l.photometry).c_str(),
+                  p.x, p.y, p.z);
     svg += buf;
+    const auto outline = luminous_outline(l);
+    double half_c0_px = 7.0;  // the C0 bar reaches past the opening by half its length
+    if (outline.size() >= 3) {
+      std::string o;
+      for (const Vec3& q : outline) {
+        std::snprintf(buf, sizeof buf, "%.1f,%.1f ", sx(q.x), sy(q.y));
+        o += buf;
+      }
+      svg += "<polygon class=\"opening\" points=\"" + o +
+             "\" fill=\"#ffd34d\" stroke=\"#222\" stroke-width=\"1\"/>";
+      half_c0_px = std::max(half_c0_px, l.opening.length / 2 * scale);
+    } else {
+      std::snprintf(buf, sizeof buf,
+                    "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"5\" fill=\"#ffd34d\" stroke=\"#222\" "
+                    "stroke-width=\"1\"/>",
+                    sx(p.x), sy(p.y));
+      svg += buf;
+    }
+    const double hc = std::hypot(c0.x, c0.y);
+    if (hc > 0.02) {
+      const double bar = half_c0_px + 6.0;
+      std::snprintf(buf, sizeof buf,
+                    "<line class=\"c0\" x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" "
+                    "stroke=\"#1f3f8f\" stroke-width=\"1.4\"/>",
+                    sx(p.x), sy(p.y), sx(p.x) + c0.x / hc * bar, sy(p.y) - c0.y / hc * bar);
+      svg += buf;
+    }
     const double tilt = std::hypot(aim.x, aim.y);
     if (tilt > 0.02) {  // tilted more than ~1 degree: show where it points
       const double len = 18.0 + 30.0 * tilt;
       std::snprintf(buf, sizeof buf,
-                    "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#c0392b\" stroke-width=\"2\"/>",
+                    "<line class=\"aim\" x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" "
+                    "stroke=\"#c0392b\" stroke-width=\"2\"/>",
                     sx(p.x), sy(p.y), sx(p.x) + aim.x / tilt * len, sy(p.y) - aim.y / tilt * len);
       svg += buf;
     }
-    std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"9\">%d</text></g>", sx(p.x) + r + 2,
-                  sy(p.y) - r, number);
+    // The number just above the opening's top edge.
+    double top_px = sy(p.y) - 5;
+    for (const Vec3& q : outline) top_px = std::min(top_px, sy(q.y));
+    std::snprintf(buf, sizeof buf,
+                  "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10\" font-weight=\"bold\" "
+                  "text-anchor=\"middle\">%d</text></g>",
+                  sx(p.x), top_px - 3, number);
     svg += buf;
   }
   // North arrow (top right) and a scale bar of a round length (bottom left).

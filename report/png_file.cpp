@@ -2,6 +2,7 @@
 
 #include <csetjmp>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,24 @@ void write_png(const Raster& raster, const std::filesystem::path& path) {
   std::string error = encode(f, raster.width(), raster.height(), rows.data());
   if (std::fclose(f) != 0 && error.empty()) error = "cannot close the file";
   if (!error.empty()) throw CalculationError(path.string() + ": cannot write the image: " + error);
+}
+
+std::string encode_png(const Raster& raster) {
+  std::vector<png_bytep> rows(static_cast<std::size_t>(raster.height()));
+  auto* base = const_cast<png_bytep>(raster.pixels().data());
+  for (int y = 0; y < raster.height(); ++y)
+    rows[y] = base + static_cast<std::size_t>(y) * raster.width() * 3;
+  // The same encoder as write_png, into a POSIX memory stream.
+  char* buffer = nullptr;
+  std::size_t size = 0;
+  std::FILE* f = open_memstream(&buffer, &size);
+  if (!f) throw CalculationError("cannot encode an image: out of memory");
+  const std::string error = encode(f, raster.width(), raster.height(), rows.data());
+  std::fclose(f);
+  std::string bytes(buffer ? buffer : "", buffer ? size : 0);
+  std::free(buffer);
+  if (!error.empty()) throw CalculationError("cannot encode an image: " + error);
+  return bytes;
 }
 
 }  // namespace luxgrid::report

@@ -1,6 +1,7 @@
 #pragma once
 // Writes a Raster as an 8-bit RGB PNG with libpng.
 #include <filesystem>
+#include <string>
 
 #include "report/raster.h"
 
@@ -8,5 +9,8 @@ namespace luxgrid::report {
 
 // Throws CalculationError naming `path` when the file cannot be written.
 void write_png(const Raster& raster, const std::filesystem::path& path);
+
+// The same PNG as bytes in memory (for images embedded in report.html).
+std::string encode_png(const Raster& raster);
 
 }  // namespace luxgrid::report

@@ -58,8 +58,31 @@ char32_t next_code_point(std::string_view s, std::size_t& i) {
 
 }  // namespace
 
-bool draw_text(Raster& raster, int x, int y, std::string_view text, int size_px, const char* font_file, Rgb colour) {
-  thread_local Fonts fonts;
+namespace {
+thread_local Fonts fonts;
+}  // namespace
+
+int text_width(std::string_view text, int size_px, const char* font_file) {
+  FT_Face face = fonts.face(font_file);
+  if (!face || FT_Set_Pixel_Sizes(face, 0, static_cast<FT_UInt>(size_px)) != 0)
+    return static_cast<int>(text.size()) * size_px * 6 / 10;
+  long pen_x = 0;
+  FT_UInt previous = 0;
+  for (std::size_t i = 0; i < text.size();) {
+    const FT_UInt glyph = FT_Get_Char_Index(face, next_code_point(text, i));
+    if (FT_HAS_KERNING(face) && previous && glyph) {
+      FT_Vector delta;
+      if (FT_Get_Kerning(face, previous, glyph, FT_KERNING_DEFAULT, &delta) == 0) pen_x += delta.x;
+    }
+    previous = glyph;
+    if (FT_Load_Glyph(face, glyph, FT_LOAD_DEFAULT) != 0) continue;
+    pen_x += face->glyph->advance.x;
+  }
+  return static_cast<int>((pen_x + 63) >> 6);
+}
+
+bool draw_text(Raster& raster, int x, int y, std::string_view text, int size_px,
+               const char* font_file, Rgb colour) {
   FT_Face face = fonts.face(font_file);
   if (!face || FT_Set_Pixel_Sizes(face, 0, static_cast<FT_UInt>(size_px)) != 0) return false;
   const bool kerning = FT_HAS_KERNING(face);

@@ -14,4 +14,8 @@ inline constexpr const char* kPlotFont = "/usr/share/fonts/truetype/dejavu/DejaV
 // Returns false (drawing nothing) when the font file cannot be opened.
 bool draw_text(Raster& raster, int x, int y, std::string_view text, int size_px, const char* font_file, Rgb colour);
 
+// The advance width of `text` in pixels as draw_text sets it; an estimate of 0.6 em per character
+// when the font cannot be opened (so label layout does not depend on the font being there).
+int text_width(std::string_view text, int size_px, const char* font_file);
+
 }  // namespace luxgrid::report

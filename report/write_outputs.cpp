@@ -57,9 +57,15 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<std::string> warnings;
   PlotOverlay overlay;
-  if (options.scene) {
-    for (const auto& l : options.scene->luminaires) overlay.luminaires.push_back(l.pose.position);
-  }
+  overlay.scene = options.scene;
+  // Each surface's stated illuminance requirements (Em, Emin) get an isolux line of their own.
+  auto overlay_for = [&](const calc::SurfaceResult& s) {
+    PlotOverlay o = overlay;
+    for (const auto& c : options.checks)
+      if (c.surface == s.grid.name && (c.quantity == "Em" || c.quantity == "Emin"))
+        o.required_lx.push_back(c.required);
+    return o;
+  };
   ReportInput report;
   report.results = &results;
   report.scene = options.scene;
@@ -101,8 +107,9 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
       case Job::What::csv: return write_text_file(folder.file(names.csv), surface_csv(s));
       case Job::What::npy: return write_text_file(folder.file(names.npy), surface_npy(s));
       case Job::What::plot: {
-        const ColourScale scale = options.scale ? *options.scale : auto_scale(s.stats.Emax);
-        job.warning = write_false_colour_png(s, scale, folder.file(names.png), overlay);
+        const ColourScale scale =
+            options.scale ? *options.scale : fit_scale(s.stats.Emin, s.stats.Emax);
+        job.warning = write_false_colour_png(s, scale, folder.file(names.png), overlay_for(s));
         return;
       }
       case Job::What::direct_plot:
@@ -115,7 +122,8 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
         part.E_direct = s.E_direct;
         part.E_indirect = s.E_indirect;
         part.stats = calc::compute_statistics(part.E, s.grid.active);
-        const ColourScale part_scale = options.scale ? *options.scale : auto_scale(part.stats.Emax);
+        const ColourScale part_scale =
+            options.scale ? *options.scale : fit_scale(part.stats.Emin, part.stats.Emax);
         job.warning = write_false_colour_png(part, part_scale,
                                              folder.file(direct ? names.direct_png : names.indirect_png), overlay);
         return;

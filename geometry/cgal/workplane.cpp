@@ -66,6 +66,7 @@ SurfaceGrid make_region_grid(const std::string& name, const std::vector<Polygon2
                                         Vec3(0, 1, 0), su, sv, spacing_m)
                       : make_plane_grid(name, Vec3(b.lo.x, b.hi.y, z), Vec3(1, 0, 0),
                                         Vec3(0, -1, 0), su, sv, spacing_m);
+  g.region = region;
   std::vector<const Obstacle*> cutting;
   for (const auto& o : obstacles) {
     if (o.z0 <= z && z <= o.z1) cutting.push_back(&o);

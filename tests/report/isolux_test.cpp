@@ -3,11 +3,12 @@
 
 #include <cmath>
 
+#include "photometry/builtin.h"
 #include "report/colour_scale.h"
 #include "report/html_report.h"
 #include "report/isolux.h"
 #include "report/polar_diagram.h"
-#include "photometry/builtin.h"
+#include "report/raster_text.h"
 #include "util/error.h"
 
 namespace luxgrid::report {
@@ -108,12 +109,41 @@ TEST(Html, ReportIsSelfContainedAndPrintsTheStatistics) {
   EXPECT_NE(h.find("<td>400</td><td>600</td>"), std::string::npos);  // the value table
 }
 
-TEST(Polar, LambertianReachesTheOuterRingAtNadir) {
+TEST(Polar, OneRendererWithTheReportsColoursAndRingValues) {
+  // A Lambertian 800 cd luminaire: I = 800 cos(gamma) in both planes, so the C0 curve (blue,
+  // solid) and the C90 curve (red, dashed, drawn over it) both reach 0.8 of the outer ring
+  // (1000 cd) straight down and nothing upwards.
+  EXPECT_DOUBLE_EQ(polar_outer_ring_cd(800.0), 1000.0);
+  EXPECT_DOUBLE_EQ(polar_outer_ring_cd(1000.0), 1000.0);
   const photometry::LambertianDistribution d(800.0);
-  const std::string svg = polar_diagram_svg(d, 220);
-  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
-  EXPECT_NE(svg.find(">1000</text>"), std::string::npos);  // outer ring: nice_ceil(800)
-  EXPECT_NE(svg.find("C90-C270"), std::string::npos);
+  bool font_ok = false;
+  const Raster img = polar_diagram(d, "test", 640, &font_ok);
+  ASSERT_EQ(img.width(), 640);
+  ASSERT_EQ(img.height(), 640);
+  auto is = [](Rgb c, Rgb want) {
+    return std::abs(c.r - want.r) < 0.02f && std::abs(c.g - want.g) < 0.02f &&
+           std::abs(c.b - want.b) < 0.02f;
+  };
+  const Rgb blue{0.12f, 0.25f, 0.56f}, red{0.75f, 0.22f, 0.17f};
+  int blue_px = 0, red_px = 0, lowest_blue = 0, highest_curve = 640;
+  for (int y = 0; y < 640; ++y)
+    for (int x = 0; x < 640; ++x) {
+      const Rgb c = img.at(x, y);
+      const bool b = is(c, blue), r = is(c, red);
+      blue_px += b, red_px += r;
+      if (b && x > 200 && x < 440) lowest_blue = std::max(lowest_blue, y);
+      if ((b || r) && x > 200 && x < 440 && y > 60 && y < 600)
+        highest_curve = std::min(highest_curve, y);
+    }
+  EXPECT_GT(blue_px, 500) << "the C0-C180 curve in the report's blue";
+  EXPECT_GT(red_px, 300) << "the C90-C270 curve in the report's red";
+  // Nadir is at the bottom: the curve lies below the centre, nothing of it above (the legend's
+  // blue sample sits in the bottom band, outside 200 < x < 440 where it could matter).
+  EXPECT_GT(lowest_blue, 360);
+  EXPECT_GT(highest_curve, 300) << "a downlight's curves stay in the lower half";
+  if (std::filesystem::exists(kPlotFont)) {
+    EXPECT_TRUE(font_ok);
+  }
 }
 
 }  // namespace

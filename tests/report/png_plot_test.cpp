@@ -13,7 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "calc/statistics.h"
 #include "geometry/surface_grid.h"
+#include "geometry/workplane.h"
 #include "report/colour_scale.h"
 #include "report/false_colour.h"
 #include "report/npy.h"
@@ -131,49 +133,235 @@ TEST(Viridis, EndsMatchMatplotlibAndLightnessRises) {
   }
 }
 
-TEST(FalseColour, EachCellHasItsPointsColourAndLeftOutPointsAreGrey) {
+// Rec. 709 luma of a decoded pixel, 0..255: viridis rises monotonically in it.
+double luma(const Decoded& d, int x, int y) {
+  return 0.2126 * d.at(x, y, 0) + 0.7152 * d.at(x, y, 1) + 0.0722 * d.at(x, y, 2);
+}
+
+// A surface whose illuminance rises linearly towards one world corner (the bright corner), with
+// the statistics the plot prints.
+calc::SurfaceResult rising_towards(const geometry::SurfaceGrid& g, const Vec3& bright_corner) {
   calc::SurfaceResult s;
-  s.grid = geometry::make_plane_grid("wp", {0, 0, 0.8}, {1, 0, 0}, {0, 1, 0}, 4.0, 2.0, 1.0);
-  ASSERT_EQ(s.grid.nu, 4);
-  ASSERT_EQ(s.grid.nv, 2);
-  s.E = {0, 100, 200, 300, 400, 500, 600, 700};
+  s.grid = g;
+  double far = 0.0;
+  for (const Vec3& p : g.points) far = std::max(far, glm::length(p - bright_corner));
+  for (const Vec3& p : g.points)
+    s.E.push_back(100.0 + 400.0 * (1.0 - glm::length(p - bright_corner) / far));
   s.E_direct = s.E;
-  s.E_indirect.assign(8, 0.0);
-  s.grid.active[5] = false;
-  s.stats.Emin = 0, s.stats.Emax = 700, s.stats.Eavg = 350;
-  const ColourScale scale = fixed_scale(0, 700);
-  PlotOverlay overlay;
-  overlay.isolux = false;  // no lines across the cells' centres
-  const fs::path dir = scratch();
-  const std::string warning = write_false_colour_png(s, scale, dir / "wp.png", overlay);
-  const Decoded d = decode(dir / "wp.png");
-  // Layout of report/false_colour.cpp: 480 px for the longer side, so 120 px cells; margin 16,
-  // title band 56, legend 150 wide; v up, so grid row 0 is the lower row of cells.
-  constexpr int kCell = 120, kMargin = 16, kTitle = 56;
-  ASSERT_EQ(d.width, kMargin + 4 * kCell + kMargin + 150);
-  ASSERT_EQ(d.height, kTitle + 2 * kCell + kMargin);
-  for (int j = 0; j < 2; ++j) {
-    for (int i = 0; i < 4; ++i) {
-      const int k = j * 4 + i;
-      const int x = kMargin + i * kCell + kCell / 2, y = kTitle + (1 - j) * kCell + kCell / 2;
-      const Rgb want = k == 5 ? Rgb{0.5f, 0.5f, 0.5f} : viridis(s.E[k] / 700.0);
-      EXPECT_EQ(d.at(x, y, 0), byte(want.r)) << "cell " << k;
-      EXPECT_EQ(d.at(x, y, 1), byte(want.g)) << "cell " << k;
-      EXPECT_EQ(d.at(x, y, 2), byte(want.b)) << "cell " << k;
+  s.E_indirect.assign(s.E.size(), 0.0);
+  s.stats = calc::compute_statistics(s.E, s.grid.active);
+  return s;
+}
+
+// Which quarter of the map is brightest: the mean luma over each quarter's inner part.
+std::string brightest_quarter(const Decoded& d, const MapPixels& m) {
+  double best = -1.0;
+  std::string name;
+  for (int qy = 0; qy < 2; ++qy) {
+    for (int qx = 0; qx < 2; ++qx) {
+      double sum = 0.0;
+      int n = 0;
+      for (int y = m.y0 + qy * m.height / 2 + m.height / 8;
+           y < m.y0 + (qy + 1) * m.height / 2 - m.height / 8; ++y)
+        for (int x = m.x0 + qx * m.width / 2 + m.width / 8;
+             x < m.x0 + (qx + 1) * m.width / 2 - m.width / 8; ++x)
+          sum += luma(d, x, y), ++n;
+      if (n && sum / n > best)
+        best = sum / n, name = std::string(qy ? "bottom" : "top") + (qx ? " right" : " left");
     }
   }
-  EXPECT_EQ(d.at(2, 2, 0), 255);  // white frame
-  // The title is drawn when the font is there (and a warning names the file otherwise).
-  if (fs::exists(kPlotFont)) {
-    EXPECT_EQ(warning, "");
-    int dark = 0;
-    for (int y = 0; y < 28; ++y)
-      for (int x = kMargin; x < kMargin + 30; ++x) dark += d.at(x, y, 0) < 128;
-    EXPECT_GT(dark, 10) << "the name 'wp' in 18 px type has more than 10 dark pixels";
-  } else {
-    EXPECT_NE(warning.find("wp.png"), std::string::npos);
+  return name;
+}
+
+calc::Scene office_scene() {
+  calc::Scene scene;
+  calc::Room room;
+  room.name = "r";
+  room.outline = {{0, 0}, {6, 0}, {6, 4}, {0, 4}};
+  room.height = 3.0;
+  scene.rooms.push_back(room);
+  return scene;
+}
+
+TEST(FalseColour, FloorCeilingAndWallAreOrientedAsDocumented) {
+  // The same world corner made bright on the floor, the ceiling and a wall. Floor and ceiling
+  // are drawn as the plan (the ceiling as a reflected ceiling plan), so the bright corner
+  // (6, 4) is top right on both, although the ceiling grid runs v = -y. Wall 0 (y = 0, from
+  // (0,0) to (6,0)) is seen from inside the room: looking towards -y, +x is on the left, so its
+  // bright corner (0, 0, 3) is top right.
+  const calc::Scene scene = office_scene();
+  geometry::RoomShape shape;
+  shape.outline = scene.rooms[0].outline;
+  shape.height = 3.0;
+  const auto grids = geometry::make_room_surface_grids("r", shape, 0.5, {});
+  ASSERT_EQ(grids[1].name, "r ceiling");
+  ASSERT_LT(grids[1].v_dir.y, 0.0) << "the ceiling grid runs v = -y: the case this test is for";
+  const struct {
+    const geometry::SurfaceGrid& grid;
+    Vec3 bright;
+  } cases[] = {{grids[0], {6, 4, 0}}, {grids[1], {6, 4, 3}}, {grids[2], {0, 0, 3}}};
+  const fs::path dir = scratch();
+  for (const auto& c : cases) {
+    const calc::SurfaceResult s = rising_towards(c.grid, c.bright);
+    PlotOverlay overlay;
+    overlay.scene = &scene;
+    overlay.isolux = false;
+    MapPixels m;
+    write_false_colour_png(s, fit_scale(s.stats.Emin, s.stats.Emax), dir / "map.png", overlay, &m);
+    const Decoded d = decode(dir / "map.png");
+    EXPECT_EQ(brightest_quarter(d, m), "top right") << c.grid.name;
+    // Drawn to scale: 6 m across, 4 m (floor, ceiling) or 3 m (wall) high, to the pixel.
+    EXPECT_NEAR(m.width, 6.0 * m.px_per_m, 1.0) << c.grid.name;
+    EXPECT_NEAR(m.height, (c.grid.name == "r wall 0" ? 3.0 : 4.0) * m.px_per_m, 1.0) << c.grid.name;
   }
   fs::remove_all(dir);
+}
+
+TEST(FalseColour, SmoothBetweenGridPointsNotBlocks) {
+  // A 2 x 1 grid, 0 lx and 400 lx: bilinear interpolation makes the colour change across the
+  // middle of the map in many steps; blocks would give exactly two colours.
+  calc::SurfaceResult s;
+  s.grid = geometry::make_plane_grid("wp", {0, 0, 0.8}, {1, 0, 0}, {0, 1, 0}, 4.0, 2.0, 2.0);
+  ASSERT_EQ(s.grid.nu, 2);
+  s.E = {0.0, 400.0};
+  s.E_direct = s.E;
+  s.E_indirect = {0, 0};
+  s.stats = calc::compute_statistics(s.E, s.grid.active);
+  PlotOverlay overlay;
+  overlay.isolux = false;
+  MapPixels m;
+  const fs::path dir = scratch();
+  write_false_colour_png(s, fixed_scale(0, 400), dir / "wp.png", overlay, &m);
+  const Decoded d = decode(dir / "wp.png");
+  const int y = m.y0 + m.height / 2;
+  int distinct = 0;
+  double previous = -1.0;
+  for (int x = m.x0 + 1; x < m.x0 + m.width - 1; ++x) {
+    const double l = luma(d, x, y);
+    EXPECT_GE(l, previous - 1.0) << "rises monotonically left to right (1 of 255 for rounding), x "
+                                 << x;
+    distinct += std::abs(l - previous) > 0.0;
+    previous = l;
+  }
+  EXPECT_GT(distinct, 50) << "a gradient, not two blocks";
+  // Between the point centres (x = 1 m and 3 m) the value is linear: at 2 m it is 200 lx.
+  const int xm = m.x0 + static_cast<int>(2.0 * m.px_per_m);
+  const Rgb want = viridis(0.5);
+  EXPECT_NEAR(d.at(xm, y, 0), byte(want.r), 3);  // 3 of 255: half a pixel of a 100 lx/m gradient
+  EXPECT_NEAR(d.at(xm, y, 1), byte(want.g), 3);
+  EXPECT_NEAR(d.at(xm, y, 2), byte(want.b), 3);
+  fs::remove_all(dir);
+}
+
+TEST(FalseColour, LShapedWorkplaneKeepsItsShapeInsideTheRoomOutline) {
+  // An L-shaped room and a workplane inset 0.5 m: the missing quarter stays white (outside the
+  // room), the strip between workplane and walls light grey, the room's edge black.
+  calc::Scene scene;
+  calc::Room room;
+  room.name = "L";
+  room.outline = {{0, 0}, {8, 0}, {8, 4}, {4, 4}, {4, 8}, {0, 8}};
+  room.height = 3.0;
+  scene.rooms.push_back(room);
+  const auto region = geometry::inset_outline(room.outline, 0.5);
+  calc::SurfaceResult s;
+  s.grid = geometry::make_region_grid("wp", region, 0.8, 0.25, {});
+  ASSERT_FALSE(s.grid.region.empty());
+  s.E.assign(s.grid.points.size(), 300.0);
+  for (size_t k = 0; k < s.E.size(); ++k) s.E[k] += 10.0 * s.grid.points[k].x;
+  s.E_direct = s.E;
+  s.E_indirect.assign(s.E.size(), 0.0);
+  s.stats = calc::compute_statistics(s.E, s.grid.active);
+  PlotOverlay overlay;
+  overlay.scene = &scene;
+  MapPixels m;
+  const fs::path dir = scratch();
+  write_false_colour_png(s, fit_scale(s.stats.Emin, s.stats.Emax), dir / "wp.png", overlay, &m);
+  const Decoded d = decode(dir / "wp.png");
+  auto px = [&](double x, double y, int& ix, int& iy) {
+    ix = m.x0 + static_cast<int>(x * m.px_per_m),
+    iy = m.y0 + m.height - 1 - static_cast<int>(y * m.px_per_m);
+  };
+  int x, y;
+  px(6.0, 6.0, x, y);  // the missing quarter
+  EXPECT_EQ(d.at(x, y, 0), 255);
+  EXPECT_EQ(d.at(x, y, 1), 255);
+  EXPECT_EQ(d.at(x, y, 2), 255);
+  px(0.25, 4.0, x, y);  // between the west wall and the workplane
+  EXPECT_EQ(d.at(x, y, 0), d.at(x, y, 2)) << "grey";
+  EXPECT_GT(d.at(x, y, 0), 200);
+  EXPECT_LT(d.at(x, y, 0), 255);
+  px(1.5, 2.0, x,
+     y);  // on the workplane, off the isolux lines (300, 320, ... lx at x = 0, 2, ... m): viridis
+  EXPECT_NE(d.at(x, y, 0), d.at(x, y, 2));
+  px(2.0, 0.0, x, y);  // the south wall
+  int dark = 0;
+  for (int dy = -2; dy <= 2; ++dy) dark += d.at(x, y + dy, 0) < 40 && d.at(x, y + dy, 1) < 40;
+  EXPECT_GE(dark, 2) << "the room outline is drawn 3 px wide in black";
+  px(6.0, 4.0, x, y);  // the inner edge of the L
+  dark = 0;
+  for (int dy = -2; dy <= 2; ++dy) dark += d.at(x, y + dy, 0) < 40 && d.at(x, y + dy, 1) < 40;
+  EXPECT_GE(dark, 2) << "the L's inner edge";
+  fs::remove_all(dir);
+}
+
+TEST(FalseColour, TheRequiredValueGetsItsIsoluxLine) {
+  // E rises from 400 to 600 lx across x; on a 0..1000 scale no tick lies strictly inside the
+  // data, so the only line is the requirement's: 500 lx at the middle of the map, white (the dark
+  // half of the scale). Without the requirement that column has no white.
+  calc::SurfaceResult s;
+  s.grid = geometry::make_plane_grid("wp", {0, 0, 0.8}, {1, 0, 0}, {0, 1, 0}, 4.0, 4.0, 0.5);
+  for (const Vec3& p : s.grid.points) s.E.push_back(400.0 + 200.0 * (p.x - 0.25) / 3.5);
+  s.E_direct = s.E;
+  s.E_indirect.assign(s.E.size(), 0.0);
+  s.stats = calc::compute_statistics(s.E, s.grid.active);
+  const fs::path dir = scratch();
+  auto white_rows_near_middle = [&](const std::vector<double>& required) {
+    PlotOverlay overlay;
+    overlay.required_lx = required;
+    MapPixels m;
+    write_false_colour_png(s, fixed_scale(0, 1000), dir / "wp.png", overlay, &m);
+    const Decoded d = decode(dir / "wp.png");
+    const int xc = m.x0 + m.width / 2;
+    int rows = 0;
+    for (int y = m.y0 + 2; y < m.y0 + m.height - 2; ++y) {
+      bool white = false;
+      for (int x = xc - 3; x <= xc + 3; ++x)
+        white = white || (d.at(x, y, 0) == 255 && d.at(x, y, 1) == 255 && d.at(x, y, 2) == 255);
+      rows += white;
+    }
+    return std::pair<int, int>(rows, m.height - 4);
+  };
+  const auto [with, total] = white_rows_near_middle({500.0});
+  EXPECT_GT(with, total * 9 / 10) << "the 500 lx line runs the full height (a label may sit on it)";
+  EXPECT_EQ(white_rows_near_middle({}).first, 0);
+  fs::remove_all(dir);
+}
+
+TEST(ColourScale, FittedToTheDataWithRoundLimits) {
+  // The example from the office's ceiling: 534-622 lx gets 525-625, not 0-1000.
+  const ColourScale s = fit_scale(534.0, 622.0);
+  EXPECT_DOUBLE_EQ(s.min, 525.0);
+  EXPECT_DOUBLE_EQ(s.max, 625.0);
+  ASSERT_FALSE(s.ticks.empty());
+  EXPECT_DOUBLE_EQ(s.ticks.front(), 525.0);
+  EXPECT_DOUBLE_EQ(s.ticks.back(), 625.0);
+  // Properties over many ranges: the data inside, 3 to 8 round steps, at most twice the data's
+  // range plus one step (so the colours use most of the scale).
+  for (double lo : {0.0, 0.3, 12.0, 95.0, 480.0, 1234.0}) {
+    for (double width : {0.5, 7.0, 60.0, 333.0, 2500.0}) {
+      const ColourScale f = fit_scale(lo, lo + width);
+      EXPECT_LE(f.min, lo);
+      EXPECT_GE(f.max, lo + width);
+      ASSERT_GE(f.ticks.size(), 4u) << lo << " " << width;
+      const double step = f.ticks[1] - f.ticks[0];
+      EXPECT_NEAR(nice_ceil(step), step, 1e-9 * step) << "a round step";
+      EXPECT_LE(f.max - f.min, 2.0 * width + step + 1e-9) << lo << " " << width;
+    }
+  }
+  EXPECT_DOUBLE_EQ(fit_scale(0.0, 0.0).max, 1.0);  // all dark
+  const ColourScale flat = fit_scale(500.0, 500.0);
+  EXPECT_LT(flat.min, 500.0);
+  EXPECT_GT(flat.max, 500.0);
 }
 
 TEST(Text, MissingFontDrawsNothingAndSaysSo) {
