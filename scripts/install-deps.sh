@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(cmake make g++ pkg-config
           libcgal-dev libglm-dev libpng-dev libfreetype-dev nlohmann-json3-dev libtbb-dev libcli11-dev
-          libgtest-dev libbenchmark-dev fonts-dejavu-core python3 chromium ${LUXGRID_EXTRA_PACKAGES:-})
+          libgtest-dev libbenchmark-dev fonts-dejavu-core python3 chromium poppler-utils clang-format ${LUXGRID_EXTRA_PACKAGES:-})
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
