@@ -1,5 +1,6 @@
 #pragma once
-// What a project's surfaces must meet, EN 12464-1 style [EN12464-1], as read from the project. A calculation surface (a task area) may carry
+// What a project's surfaces must meet, EN 12464-1 style [EN12464-1], as read from the project.
+// A calculation surface (a task area) may carry
 //   "requirements": { "preset": "office-writing", "Em": 500, "U0": 0.6, "Emin": 300, "Emax": 1000,
 //                     "UGR_L": 19, "Ra": 80, "Ez": 150, "Esc": 50, "modelling": [0.3, 0.6],
 //                     "glare_observers": "eyes", "cylindrical": "faces", "horizontal": "faces h" }

@@ -1,13 +1,8 @@
 #pragma once
-// Requirement checks, EN 12464-1 style [EN12464-1]: the results against what the project's
-// surfaces must meet (read by project/requirements.h). A calculation surface (a task area) may carry
-//   "requirements": { "preset": "office-writing", "Em": 500, "U0": 0.6, "Emin": 300, "Emax": 1000,
-//                     "UGR_L": 19, "Ra": 80, "Ez": 150, "Esc": 50, "modelling": [0.3, 0.6],
-//                     "glare_observers": "eyes", "cylindrical": "faces", "horizontal": "faces h" }
-// and a room_surfaces entry { "preset": "walls-and-ceilings", "walls": {"Em": 50, "U0": 0.1},
-// "ceiling": {...}, "floor": {...} }. Em (maintained average illuminance, lx), U0 (Emin / Eavg),
-// Emin, Ez, Esc and Ra are lower limits; Emax and UGR_L upper limits; modelling a range. A value
-// exactly at the limit meets it. docs/compliance.md is the user's reference.
+// Requirement checks, EN 12464-1 style [EN12464-1]: the results against the Requirements read
+// with the project (project/requirements.h describes the keys). Em, U0, Emin, Ez, Esc and Ra are
+// lower limits; Emax and UGR_L upper limits; modelling a range. A value exactly at the limit
+// meets it. docs/compliance.md is the user's reference.
 #include <map>
 #include <optional>
 #include <string>

@@ -13,6 +13,11 @@ namespace luxgrid::report {
 namespace {
 
 using nlohmann::json;
+// The task presets are read with the project (project/task_presets.h).
+using project::find_task_preset;
+using project::task_preset_keys;
+using project::task_presets;
+using project::TaskPreset;
 
 // A surface of two points with the given E; stats computed from them.
 calc::SurfaceResult surface(const std::string& name, std::vector<double> E,
