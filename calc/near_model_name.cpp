@@ -28,7 +28,6 @@ std::optional<nearfield::Model> near_model_named(const std::string& name) {
   if (name == "reference") return Model::reference();
   if (int k = suffix_number(name, "subdivided-"); k >= 0 && k <= 6) return Model::subdivided(k);
   if (int k = suffix_number(name, "lambert-"); k >= 0 && k <= 6) return Model::lambert_subdivided(k);
-  if (int n = suffix_number(name, "monte-carlo-"); n >= 1 && n <= 1000000) return Model::monte_carlo(n);
   return std::nullopt;
 }
 
