@@ -113,6 +113,10 @@ Results run_scene(const Scene& scene, const Progress& progress) {
 
   const auto t_indirect = std::chrono::steady_clock::now();
   run_indirect(scene, results);
+  if (scene.settings.scene == LightingScene::emergency) {
+    // Not the project's "indirect" setting: the emergency scene switches reflections off [EN1838].
+    results.plan.indirect = "off: the emergency scene counts direct light only (EN 1838)";
+  }
   results.timing_s.emplace_back("indirect", seconds_since(t_indirect));
 
   // Glare at observers, from the initial values (UGR, like CIE 190's tables, carries no
