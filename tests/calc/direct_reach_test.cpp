@@ -11,13 +11,13 @@
 #include "calc/direct.h"
 #include "calc/direct_reach.h"
 #include "calc/plan.h"
-#include "calc/project_file.h"
+#include "project/project_file.h"
 
 namespace luxgrid::calc {
 namespace {
 
 Scene three_rooms() {
-  return parse_project(nlohmann::json::parse(R"({
+  return project::parse_project(nlohmann::json::parse(R"({
     "format": "luxgrid-project/1",
     "settings": { "quality": "standard", "indirect": "off", "near_field": "auto" },
     "photometry": { "panel": { "builtin": "lambertian", "intensity_cd": 1000 } },
@@ -44,7 +44,8 @@ Scene three_rooms() {
       { "at": [8.1, 2, 1.5], "normal": [-1, 0, 0] },
       { "at": [8.1, 2, 3.5], "normal": [0, 0, -1] } ] } ]
   })"),
-                       "three_rooms.json", ".");
+                                "three_rooms.json", ".")
+      .scene;
 }
 
 std::vector<uint32_t> luminaires_of(const DirectReach& reach, uint32_t zone) {
