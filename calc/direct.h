@@ -24,11 +24,15 @@ std::vector<nearfield::Emitter> make_emitters(const Scene& scene);
 // (when it has one): per quadrature node for the near-field models (soft shadows), from the
 // opening's centre for the far field; inactive points get 0. The grid's quantity picks the
 // receiver (nearfield/receiver_kernel.h): a plane on each point's normal, a cylinder, or a half
-// cylinder facing the point's normal; every quantity takes the same near/far decision. `progress` may be
-// empty; it is called from worker threads. `counts`, when given, is increased by the pairs each
-// model served.
-std::vector<double> direct_illuminance(const Plan& plan, const std::vector<nearfield::Emitter>& emitters,
+// cylinder facing the point's normal; every quantity takes the same near/far decision. `progress`
+// may be empty; it is called from worker threads. `counts`, when given, is increased by the pairs
+// each model served, and `estimated_error_lx` receives per point the plan's estimate of the direct
+// light's error (lx, sum over pairs of E_pair x nearfield::estimated_pair_error).
+std::vector<double> direct_illuminance(const Plan& plan,
+                                       const std::vector<nearfield::Emitter>& emitters,
                                        const geometry::SurfaceGrid& grid,
-                                       const Progress& progress = {}, DirectCounts* counts = nullptr);
+                                       const Progress& progress = {},
+                                       DirectCounts* counts = nullptr,
+                                       std::vector<double>* estimated_error_lx = nullptr);
 
 }  // namespace luxgrid::calc

@@ -1,5 +1,6 @@
 #include "calc/pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include "calc/far_field_bounds.h"
 #include "calc/glare/ugr.h"
 #include "calc/indirect/indirect.h"
+#include "calc/plan_estimates.h"
 #include "util/error.h"
 
 namespace luxgrid::calc {
@@ -17,8 +19,10 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Direct light on every surface; progress runs from 0 to 1 over all points.
-void run_direct(const Scene& scene, Results& results, const Progress& progress) {
+// Direct light on every surface; progress runs from 0 to 1 over all points. Returns the plan's
+// estimate of the direct light's error at each point (lx, initial values).
+DirectEstimateInputs run_direct(const Scene& scene, Results& results, const Progress& progress) {
+  DirectEstimateInputs estimates;
   size_t total_points = 0;
   for (const auto& s : scene.surfaces) total_points += s.points.size();
   auto emitters = make_emitters(scene);
@@ -34,19 +38,29 @@ void run_direct(const Scene& scene, Results& results, const Progress& progress) 
       const double offset = static_cast<double>(points_before) / total_points;
       surface_progress = [=](double f) { progress(offset + share * f); };
     }
-    r.E_direct = direct_illuminance(results.plan, emitters, grid, surface_progress, &counts);
+    estimates.error_lx.emplace_back();
+    r.E_direct = direct_illuminance(results.plan, emitters, grid, surface_progress, &counts,
+                                    &estimates.error_lx.back());
     r.E_indirect.assign(r.E_direct.size(), 0.0);
     points_before += grid.points.size();
     results.surfaces.push_back(std::move(r));
   }
   results.plan.direct = describe_direct(results.plan, counts);
+  // The far field at every distance (near_field "never") has no map: its error is not estimated.
+  const bool area =
+      std::any_of(emitters.begin(), emitters.end(), [](const auto& e) { return !e.is_point(); });
+  estimates.estimated = !(results.plan.near_switch == nearfield::NearFieldSwitch::never && area);
+  return estimates;
 }
 
-// Reflected light, when the plan's decision says the scene needs it.
-void run_indirect(const Scene& scene, Results& results) {
+// Reflected light, when the plan's decision says the scene needs it. Returns what the plan's
+// estimate needs: the same rooms meshed at twice the patch size, gathered at a few probe points
+// per surface (plan_estimates.h); not measured at draft, which promises nothing.
+IndirectEstimateInputs run_indirect(const Scene& scene, Results& results) {
+  IndirectEstimateInputs est;
   const indirect::IndirectDecision decision = indirect::decide_indirect(scene);
   results.plan.indirect = decision.reason;
-  if (!decision.run) return;
+  if (!decision.run) return est;
   indirect::IndirectOptions options = indirect::indirect_options(scene.settings);
   options.luminous_flux_lm = decision.luminous_flux_lm;
   options.visibility = results.plan.visibility_test;
@@ -56,6 +70,21 @@ void run_indirect(const Scene& scene, Results& results) {
   }
   results.plan.indirect = r.summary;
   for (const auto& n : r.notes) results.plan.notes.push_back(n);
+  est.ran = true;
+  est.residual = r.residual;
+  est.patch_size_m = r.patch_size_m;
+  if (scene.settings.quality == Quality::draft) return est;
+  std::vector<geometry::SurfaceGrid> probes;
+  for (const auto& grid : scene.surfaces) {
+    est.probe_index.push_back(probe_points(grid));
+    probes.push_back(probe_grid(grid, est.probe_index.back()));
+  }
+  indirect::IndirectOptions coarse = options;
+  coarse.patch_size_m = 2.0 * r.patch_size_m;
+  const indirect::IndirectResult c = indirect::compute_indirect(scene, probes, coarse);
+  est.coarse_patch_size_m = c.patch_size_m;
+  est.coarse_lx = c.E_indirect_per_surface;
+  return est;
 }
 // "1.8e+308" / "inf" / "nan", for the messages below.
 std::string number(double v) {
@@ -93,11 +122,11 @@ Results run_scene(const Scene& scene, const Progress& progress) {
   results.plan = make_plan(scene);
 
   const auto t_direct = std::chrono::steady_clock::now();
-  run_direct(scene, results, progress);
+  DirectEstimateInputs direct_estimate = run_direct(scene, results, progress);
   results.timing_s.emplace_back("direct", seconds_since(t_direct));
 
   const auto t_indirect = std::chrono::steady_clock::now();
-  run_indirect(scene, results);
+  IndirectEstimateInputs indirect_estimate = run_indirect(scene, results);
   results.timing_s.emplace_back("indirect", seconds_since(t_indirect));
 
   // Glare at observers, from the initial values (UGR, like CIE 190's tables, carries no
@@ -127,6 +156,10 @@ Results run_scene(const Scene& scene, const Progress& progress) {
     r.stats = compute_statistics(r.E, r.grid.active);
     check_finite(r);
   }
+  for (auto* part : {&indirect_estimate.coarse_lx, &direct_estimate.error_lx})
+    for (auto& surface : *part)
+      for (double& e : surface) e *= mf;
+  estimate_errors(results, direct_estimate, indirect_estimate);
   return results;
 }
 
