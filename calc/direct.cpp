@@ -43,12 +43,13 @@ std::vector<nearfield::Emitter> make_emitters(const Scene& scene) {
 std::vector<double> direct_illuminance(const Plan& plan,
                                        const std::vector<nearfield::Emitter>& emitters,
                                        const geometry::SurfaceGrid& grid, const Progress& progress,
-                                       DirectCounts* counts, const GridReach* reach) {
+                                       DirectCounts* counts, const GridReach* reach,
+                                       std::vector<double>* estimated_error_lx) {
   std::vector<double> E(grid.points.size(), 0.0);
+  if (estimated_error_lx) estimated_error_lx->assign(grid.points.size(), 0.0);
   std::atomic<size_t> done{0};
   std::mutex count_mutex;
   const size_t total = grid.points.size();
-  const bool automatic = plan.near_switch == nearfield::NearFieldSwitch::automatic;
   // Per zone its luminaires and its visibility test (nullptr when nothing can occlude: the
   // near-field models then skip every test). Without `reach` one zone: every luminaire, the
   // plan's test.
@@ -74,7 +75,7 @@ std::vector<double> direct_illuminance(const Plan& plan,
     DirectCounts local;
     for (size_t i = range.begin(); i != range.end(); ++i) {
       if (!grid.active.empty() && !grid.active[i]) continue;
-      double sum = 0.0;
+      double sum = 0.0, error_lx = 0.0;
       const nearfield::Receiver receiver = receiver_of(grid.quantity, grid.normals[i]);
       const Zone& zone = zones[reach ? reach->zone_of_point[i] : 0];
       const geometry::Visibility* visibility = zone.visibility;
@@ -82,24 +83,22 @@ std::vector<double> direct_illuminance(const Plan& plan,
         const nearfield::Emitter& emitter = emitters[k];
         // Soft shadows: the near-field models test visibility per node, the far field from
         // the opening's centre.
-        sum += nearfield::hybrid_illuminance(emitter, grid.points[i], receiver, plan.near_model,
-                                             plan.near_switch, visibility);
+        nearfield::SwitchWeights w;
+        const double pair = nearfield::hybrid_illuminance(
+            emitter, grid.points[i], receiver, plan.near_model, plan.near_switch, visibility, &w);
+        sum += pair;
+        if (estimated_error_lx) error_lx += pair * nearfield::estimated_pair_error(emitter, w);
         if (!counts) continue;
         if (emitter.is_point()) {
           ++local.point_sources;
-        } else if (plan.near_switch == nearfield::NearFieldSwitch::never) {
-          ++local.far;
-        } else if (!automatic) {
-          ++local.near;
         } else {
-          nearfield::SwitchWeights w = nearfield::switch_weights(emitter, grid.points[i]);
-          if (receiver.kind != nearfield::ReceiverKind::planar) w.fixed = 0.0;  // as hybrid_illuminance
           (w.far >= 1.0 ? local.far : w.far <= 0.0 ? local.near : local.blended) += 1;
           if (w.far < 1.0 && w.fixed >= 1.0) ++local.fixed_rule;
           if (w.far < 1.0 && w.fixed > 0.0 && w.fixed < 1.0) ++local.fixed_blended;
         }
       }
       E[i] = sum;
+      if (estimated_error_lx) (*estimated_error_lx)[i] = error_lx;
     }
     if (counts) {
       std::lock_guard lock(count_mutex);

@@ -31,11 +31,14 @@ std::vector<nearfield::Emitter> make_emitters(const Scene& scene);
 // each model served. `reach`, when given, limits each point to the luminaires of its zone, tested
 // through the zone's visibility tree (calc/direct_reach.h); the luminaires left out cannot
 // reach the point, so the sums are the same, added in the same order.
+// each model served, and `estimated_error_lx` receives per point the plan's estimate of the direct
+// light's error (lx, sum over pairs of E_pair x nearfield::estimated_pair_error).
 std::vector<double> direct_illuminance(const Plan& plan,
                                        const std::vector<nearfield::Emitter>& emitters,
                                        const geometry::SurfaceGrid& grid,
                                        const Progress& progress = {},
                                        DirectCounts* counts = nullptr,
-                                       const GridReach* reach = nullptr);
+                                       const GridReach* reach = nullptr,
+                                       std::vector<double>* estimated_error_lx = nullptr);
 
 }  // namespace luxgrid::calc

@@ -1,5 +1,6 @@
 #include "calc/pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include "calc/far_field_bounds.h"
 #include "calc/glare/ugr.h"
 #include "calc/indirect/indirect.h"
+#include "calc/plan_estimates.h"
 #include "util/error.h"
 #include "util/format.h"
 
@@ -20,8 +22,10 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 // Direct light on every surface; progress runs from 0 to 1 over all points. Each point tests
-// only the luminaires that can reach it (calc/direct_reach.h).
-void run_direct(const Scene& scene, Results& results, const Progress& progress) {
+// only the luminaires that can reach it (calc/direct_reach.h). Returns the plan's estimate of the
+// direct light's error at each point (lx, initial values).
+DirectEstimateInputs run_direct(const Scene& scene, Results& results, const Progress& progress) {
+  DirectEstimateInputs estimates;
   size_t total_points = 0;
   for (const auto& s : scene.surfaces) total_points += s.points.size();
   auto emitters = make_emitters(scene);
@@ -40,8 +44,9 @@ void run_direct(const Scene& scene, Results& results, const Progress& progress) 
       surface_progress = [=](double f) { progress(offset + share * f); };
     }
     const GridReach grid_reach{reach, reach.zones_of(grid)};
-    r.E_direct =
-        direct_illuminance(results.plan, emitters, grid, surface_progress, &counts, &grid_reach);
+    estimates.error_lx.emplace_back();
+    r.E_direct = direct_illuminance(results.plan, emitters, grid, surface_progress, &counts,
+                                    &grid_reach, &estimates.error_lx.back());
     for (size_t i = 0; i < grid.points.size(); ++i) {
       if (grid.active.empty() || grid.active[i])
         pairs_unreachable +=
@@ -58,12 +63,20 @@ void run_direct(const Scene& scene, Results& results, const Progress& progress) 
         " luminaire-point pairs not computed: the luminaire's opening lies in none of the "
         "point's rooms, and light does not pass through a room's walls, floor or ceiling";
   }
+  // The far field at every distance (near_field "never") has no map: its error is not estimated.
+  const bool area =
+      std::any_of(emitters.begin(), emitters.end(), [](const auto& e) { return !e.is_point(); });
+  estimates.estimated = !(results.plan.near_switch == nearfield::NearFieldSwitch::never && area);
+  return estimates;
 }
 
-// Reflected light, when the plan's decision says the scene needs it.
-void run_indirect(const Scene& scene, Results& results) {
+// Reflected light, when the plan's decision says the scene needs it. Returns what the plan's
+// estimate needs: the same rooms meshed at twice the patch size, gathered at a few probe points
+// per surface (plan_estimates.h); not measured at draft, which promises nothing.
+IndirectEstimateInputs run_indirect(const Scene& scene, Results& results) {
+  IndirectEstimateInputs est;
   const indirect::IndirectDecision& decision = results.plan.indirect_decision;
-  if (!decision.run) return;
+  if (!decision.run) return est;
   indirect::IndirectOptions options = indirect::indirect_options(scene.settings);
   options.luminous_flux_lm = decision.luminous_flux_lm;
   options.visibility = results.plan.visibility_test;
@@ -73,6 +86,21 @@ void run_indirect(const Scene& scene, Results& results) {
   }
   results.plan.indirect = r.summary;
   for (const auto& n : r.notes) results.plan.notes.push_back(n);
+  est.ran = true;
+  est.residual = r.residual;
+  est.patch_size_m = r.patch_size_m;
+  if (scene.settings.quality == Quality::draft) return est;
+  std::vector<geometry::SurfaceGrid> probes;
+  for (const auto& grid : scene.surfaces) {
+    est.probe_index.push_back(probe_points(grid));
+    probes.push_back(probe_grid(grid, est.probe_index.back()));
+  }
+  indirect::IndirectOptions coarse = options;
+  coarse.patch_size_m = 2.0 * r.patch_size_m;
+  const indirect::IndirectResult c = indirect::compute_indirect(scene, probes, coarse);
+  est.coarse_patch_size_m = c.patch_size_m;
+  est.coarse_lx = c.E_indirect_per_surface;
+  return est;
 }
 // "1.8e+308" / "inf" / "nan", for the messages below.
 std::string number(double v) { return format_double("%.4g", v); }
@@ -108,11 +136,11 @@ Results run_scene(const Scene& scene, const Progress& progress) {
   for (const auto& n : scene.notes) results.plan.notes.push_back(n);
 
   const auto t_direct = std::chrono::steady_clock::now();
-  run_direct(scene, results, progress);
+  DirectEstimateInputs direct_estimate = run_direct(scene, results, progress);
   results.timing_s.emplace_back("direct", seconds_since(t_direct));
 
   const auto t_indirect = std::chrono::steady_clock::now();
-  run_indirect(scene, results);
+  IndirectEstimateInputs indirect_estimate = run_indirect(scene, results);
   if (scene.settings.scene == LightingScene::emergency) {
     // Not the project's "indirect" setting: the emergency scene switches reflections off [EN1838].
     results.plan.indirect = "off: the emergency scene counts direct light only (EN 1838)";
@@ -146,6 +174,10 @@ Results run_scene(const Scene& scene, const Progress& progress) {
     r.stats = compute_statistics(r.E, r.grid.active);
     check_finite(r);
   }
+  for (auto* part : {&indirect_estimate.coarse_lx, &direct_estimate.error_lx})
+    for (auto& surface : *part)
+      for (double& e : surface) e *= mf;
+  estimate_errors(results, direct_estimate, indirect_estimate);
   return results;
 }
 

@@ -2,6 +2,7 @@
 // The plan: which effects this scene needs, which model computes each, and why. Every decision is
 // recorded in words, so results say what was simulated ("indirect: skipped, all reflectances are
 // 0"). Later capabilities add their decisions here.
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,6 +15,21 @@
 #include "calc/visibility.h"
 
 namespace luxgrid::calc {
+
+// The plan's estimate of its own error at one surface (calc/plan_estimates.h): each remaining
+// approximation's share, relative to max(E, 1 % of the surface's maximum) at each point as
+// `luxgrid cost` measures, the largest over the surface's points. The indirect shares are negative
+// when reflected light was not computed (nothing to estimate).
+struct SurfaceEstimate {
+  std::string surface;
+  double direct = 0.0;       // far field and fixed rule where pairs use them: the map's measurement
+  double patch_size = -1.0;  // interreflection mesh: |E_ind(h) - E_ind(2h)| / E on probe points
+  double bounces = -1.0;     // bounces not followed: the radiosity residual x E_ind / E
+  size_t probe_points = 0;   // points the patch-size estimate was measured at
+  double total() const {
+    return std::max(direct, 0.0) + std::max(patch_size, 0.0) + std::max(bounces, 0.0);
+  }
+};
 
 struct Plan {
   // Direct light: the near-field rung for area emitters and how the near/far switch is made.
@@ -31,6 +47,13 @@ struct Plan {
   std::string indirect;    // e.g. "skipped: all reflectances are 0"
   std::string visibility;  // e.g. "off: ..."
   std::vector<std::string> notes;
+  // What the quality promises and the plan's own error estimate per surface
+  // (calc/plan_estimates.h), filled by the pipeline once the illuminance is known.
+  std::string promise;                     // e.g. "within 1 % of reference at every point ..."
+  std::vector<SurfaceEstimate> estimates;  // one per surface, in the surfaces' order
+  // A surface whose estimate exceeds the promise, in words: the CLI prints these on stderr and
+  // results.json lists them with its other warnings.
+  std::vector<std::string> warnings;
 };
 
 // The near-field rung for a quality, or for settings.near_field_model when it is set. Throws

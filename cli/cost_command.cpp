@@ -1,6 +1,7 @@
 // `luxgrid cost PROJECT`: what accuracy costs on the user's own project. Runs the project at
 // draft, standard, high and reference and prints, per surface, wall time, Eavg, Emin, U0 and the
-// largest and mean point difference to the reference run, then what each level simulated.
+// largest and mean point difference to the reference run beside the plan's own estimate of it,
+// then what each level promises and simulated.
 #include <cstdio>
 #include <memory>
 
@@ -22,6 +23,10 @@ void add_cost_command(CLI::App& app, Runner& run) {
       const project::Project loaded = project::load_project(opt->project);
       for (const auto& w : loaded.scene.warnings) std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
       const auto table = run_cost(loaded.scene, true);
+      // Each level's surfaces whose estimated error exceeds its promise (the table marks them "!").
+      for (const auto& level : table.levels)
+        for (const auto& w : level.warnings)
+          std::fprintf(stderr, "luxgrid: warning: %s: %s\n", level.quality.c_str(), w.c_str());
       std::fputs(report::format_cost_table(table).c_str(), stdout);
       return 0;
     };

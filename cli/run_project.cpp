@@ -4,6 +4,7 @@
 
 #include "calc/emergency_scene.h"
 #include "calc/pipeline.h"
+#include "calc/plan_estimates.h"
 #include "project/project_file.h"
 #include "cli/progress.h"
 #include "report/colour_rendering.h"
@@ -89,6 +90,8 @@ RunOutcome run_project(const std::filesystem::path& project_file, const std::fil
   // Scene warnings (legal but suspicious input, naming the object) first, then the outputs'.
   outcome.warnings = scene.warnings;
   outcome.scene_warnings = scene.warnings.size();
+  // The plan's (an error estimate above the quality's promise): printed with the outputs'.
+  for (const auto& w : outcome.results.plan.warnings) outcome.warnings.push_back(w);
   for (auto& w : report::write_outputs(outcome.results, folder, out)) outcome.warnings.push_back(std::move(w));
   // --no-report does not ask to delete the report of an earlier run into the same folder.
   if (!options.report) folder.keep_from_previous({kReportFile});
@@ -113,14 +116,19 @@ report::CostTable run_cost(const calc::Scene& base, bool show_progress) {
     level.direct = runs.back().plan.direct;
     level.indirect = runs.back().plan.indirect;
     level.visibility = runs.back().plan.visibility;
+    level.promise = runs.back().plan.promise;
+    level.promised_error = calc::promised_error(q);
+    level.warnings = runs.back().plan.warnings;
     table.levels.push_back(std::move(level));
   }
   const calc::Results& ref = runs.back();
   for (size_t k = 0; k < runs.size(); ++k) {
     for (size_t s = 0; s < runs[k].surfaces.size(); ++s) {
       const auto& sr = runs[k].surfaces[s];
-      table.levels[k].surfaces.push_back(
-          {sr.grid.name, sr.stats, report::point_difference(sr.E, ref.surfaces[s].E)});
+      const auto& estimates = runs[k].plan.estimates;
+      table.levels[k].surfaces.push_back({sr.grid.name, sr.stats,
+                                          report::point_difference(sr.E, ref.surfaces[s].E),
+                                          s < estimates.size() ? estimates[s].total() : 0.0});
     }
   }
   return table;

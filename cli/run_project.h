@@ -31,7 +31,7 @@ struct RunOptions {
 
 struct RunOutcome {
   calc::Results results;
-  std::vector<std::string> warnings;  // the scene's first, then the outputs'
+  std::vector<std::string> warnings;  // the scene's first, then the plan's, then the outputs'
   size_t scene_warnings = 0;          // how many of them are the scene's
   std::vector<report::RequirementCheck> checks;  // empty when the project states none
   std::optional<report::CostTable> cost;         // with_cost only

@@ -181,19 +181,33 @@ std::string format_cost_table(const CostTable& t) {
   char line[512];
   if (t.levels.empty()) return out;
   for (size_t si = 0; si < t.levels.front().surfaces.size(); ++si) {
-    std::snprintf(line, sizeof line, "%s\n  %-10s %9s %10s %10s %7s %10s %10s\n",
-                  t.levels.front().surfaces[si].name.c_str(), "quality", "time s", "Eavg lx", "Emin lx", "U0",
-                  "max diff", "mean diff");
+    std::snprintf(line, sizeof line, "%s\n  %-10s %9s %10s %10s %7s %10s %10s %10s %9s\n",
+                  t.levels.front().surfaces[si].name.c_str(), "quality", "time s", "Eavg lx",
+                  "Emin lx", "U0", "max diff", "estimate", "mean diff", "promise");
     out += line;
     for (const auto& l : t.levels) {
       if (si >= l.surfaces.size()) continue;
       const auto& s = l.surfaces[si];
-      std::snprintf(line, sizeof line, "  %-10s %9.3f %10.2f %10.2f %7.3f %9.3f%% %9.3f%%\n", l.quality.c_str(),
-                    l.time_s, s.stats.Eavg, s.stats.Emin, s.stats.U0, 100.0 * s.to_reference.max_rel,
-                    100.0 * s.to_reference.mean_rel);
+      char promise[32] = "-";
+      if (l.promised_error > 0.0)
+        std::snprintf(promise, sizeof promise, "%.3g%%", 100.0 * l.promised_error);
+      // The measured difference and the plan's estimate side by side; "!" marks an estimate above
+      // the promise (the run warned about it).
+      const bool over = l.promised_error > 0.0 && s.estimate > l.promised_error;
+      std::snprintf(line, sizeof line,
+                    "  %-10s %9.3f %10.2f %10.2f %7.3f %9.3f%% %9.3f%%%s%9.3f%% %9s\n",
+                    l.quality.c_str(), l.time_s, s.stats.Eavg, s.stats.Emin, s.stats.U0,
+                    100.0 * s.to_reference.max_rel, 100.0 * s.estimate, over ? "!" : " ",
+                    100.0 * s.to_reference.mean_rel, promise);
       out += line;
     }
   }
+  out +=
+      "max diff: the largest difference to reference relative to max(E, 1 % of the surface's "
+      "maximum); "
+      "estimate: the plan's own estimate of it (\"!\": above the promise)\n";
+  out += "what each level promises\n";
+  for (const auto& l : t.levels) out += "  " + l.quality + ": " + l.promise + "\n";
   out += "what each level simulated\n";
   for (const auto& l : t.levels) {
     out += "  " + l.quality + ": direct: " + l.direct + "; indirect: " + l.indirect + "; visibility: " +

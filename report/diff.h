@@ -54,19 +54,23 @@ struct CostSurface {
   std::string name;
   calc::Statistics stats;
   PointDifference to_reference;
+  double estimate = 0.0;  // the plan's own estimate of its error (calc::SurfaceEstimate::total)
 };
 struct CostLevel {
   std::string quality;
   double time_s = 0.0;       // wall time of the calculation (plan, direct, indirect)
   std::string direct, indirect, visibility;  // what this level simulated (the plan in words)
+  std::string promise;                       // what the level promises (calc::describe_promise)
+  double promised_error = 0.0;               // as a number; 0: no number promised
+  std::vector<std::string> warnings;         // the plan's: estimates above the promise
   std::vector<CostSurface> surfaces;
 };
 struct CostTable {
   std::vector<CostLevel> levels;  // draft, standard, high, reference; the last is the reference
 };
 
-// One block per surface: quality, time, Eavg, Emin, U0, max and mean difference to reference;
-// then the plan of each level.
+// One block per surface: quality, time, Eavg, Emin, U0, max and mean difference to reference,
+// the plan's own estimate beside them and the promise; then the plan of each level.
 std::string format_cost_table(const CostTable& t);
 
 // The table `luxgrid diff` prints: one line per surface, the statistics side by side.

@@ -524,20 +524,35 @@ std::string html_report(const ReportInput& in) {
   h += method_section(r, scene);
   // --- cost of accuracy ---------------------------------------------------------------------
   if (in.cost && !in.cost->levels.empty()) {
-    h += "<h2>What accuracy costs on this project</h2>\n<p>The same project at each quality; differences are "
-         "per point, relative to the <em>reference</em> run (floor: 1 % of the surface maximum).</p>\n";
+    h += "<h2>What accuracy costs on this project</h2>\n<p>The same project at each quality; "
+         "differences are "
+         "per point, relative to the <em>reference</em> run (floor: 1 % of the surface maximum); "
+         "the estimate is "
+         "the plan's own estimate of that difference.</p>\n";
     for (size_t si = 0; si < in.cost->levels.front().surfaces.size(); ++si) {
-      h += "<h3>" + html_escape(in.cost->levels.front().surfaces[si].name) + "</h3><table><tr><th>Quality</th>"
-           "<th class=\"num\">Time</th><th class=\"num\">Eavg</th><th class=\"num\">Emin</th><th class=\"num\">U0</th>"
-           "<th class=\"num\">Max diff</th><th class=\"num\">Mean diff</th></tr>";
+      h += "<h3>" + html_escape(in.cost->levels.front().surfaces[si].name) +
+           "</h3><table><tr><th>Quality</th>"
+           "<th class=\"num\">Time</th><th class=\"num\">Eavg</th><th class=\"num\">Emin</th><th "
+           "class=\"num\">U0</th>"
+           "<th class=\"num\">Max diff</th><th class=\"num\">Estimate</th><th class=\"num\">Mean "
+           "diff</th>"
+           "<th class=\"num\">Promise</th></tr>";
       for (const auto& l : in.cost->levels) {
         if (si >= l.surfaces.size()) continue;
         const auto& c = l.surfaces[si];
-        h += "<tr><td>" + l.quality + "</td><td class=\"num\">" + fmt("%.3f", l.time_s) + " s</td><td class=\"num\">" +
-             format_lux_value(c.stats.Eavg) + "</td><td class=\"num\">" + format_lux_value(c.stats.Emin) +
-             "</td><td class=\"num\">" + format_ratio_value(c.stats.U0) + "</td><td class=\"num\">" +
-             fmt("%.3f", 100.0 * c.to_reference.max_rel) + " %</td><td class=\"num\">" +
-             fmt("%.3f", 100.0 * c.to_reference.mean_rel) + " %</td></tr>";
+        h += "<tr><td>" + l.quality + "</td><td class=\"num\">" + fmt("%.3f", l.time_s) +
+             " s</td><td class=\"num\">" + format_lux_value(c.stats.Eavg) +
+             "</td><td class=\"num\">" + format_lux_value(c.stats.Emin) +
+             "</td><td class=\"num\">" + format_ratio_value(c.stats.U0) +
+             "</td><td class=\"num\">" + fmt("%.3f", 100.0 * c.to_reference.max_rel) +
+             " %</td><td class=\"num\">" + fmt("%.3f", 100.0 * c.estimate) + " %" +
+             (l.promised_error > 0.0 && c.estimate > l.promised_error ? " (above the promise)"
+                                                                      : "") +
+             "</td><td class=\"num\">" + fmt("%.3f", 100.0 * c.to_reference.mean_rel) +
+             " %</td><td class=\"num\">" +
+             (l.promised_error > 0.0 ? fmt("%.3g", 100.0 * l.promised_error) + " %"
+                                     : std::string("-")) +
+             "</td></tr>";
       }
       h += "</table>\n";
     }

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <thread>
-#include <tuple>
 #include <utility>
 
 #include "calc/nearfield/fixed_rule.h"
@@ -84,10 +83,18 @@ struct Probe {
   // a bump between rungs is what the dilation and the safety factor are for). A verdict stops
   // at its first failing normal, and the near-field values (the expensive part) are kept per
   // rung and normal, so the two searches share them.
-  std::pair<float, float> distances_over_D(const Vec3& u) const {
+  // What one direction measured: both distances, and the relative error each model showed
+  // there at its chosen rung (the worst of the five normals; 0 where a direction failed
+  // everywhere, as the model is then not used along it).
+  struct Measured {
+    float far_over_D, fixed_over_D;
+    float far_error, fixed_error;
+  };
+  Measured distances_over_D(const Vec3& u) const {
     std::array<std::array<double, 5>, kLadderRungs> near;
     for (auto& row : near) row.fill(-1.0);
     std::array<signed char, kLadderRungs> far_seen, fixed_seen;  // -1 unknown, 0 fails, 1 passes
+    std::array<float, kLadderRungs> far_err{}, fixed_err{};      // worst error of a passing rung
     far_seen.fill(-1);
     fixed_seen.fill(-1);
     auto verdict = [&](int k, bool fixed) {
@@ -95,12 +102,16 @@ struct Probe {
       if (seen >= 0) return seen == 1;
       const Rung r = rung(u, k);
       seen = 1;
+      double worst = 0.0;
       for (int i = 0; i < 5 && seen; ++i) {
         if (near[k][i] < 0.0) near[k][i] = illuminance(e, r.point, r.normals[i], model);
         const double model_lx = fixed ? fixed_rule_illuminance(e, r.point, Receiver::planar(r.normals[i]))
                                       : far_field_illuminance(e, r.point, r.normals[i]);
-        if (std::abs(near[k][i] - model_lx) > tolerance * std::max(near[k][i], r.floor_lx)) seen = 0;
+        const double error = std::abs(near[k][i] - model_lx) / std::max(near[k][i], r.floor_lx);
+        if (!(error <= tolerance)) seen = 0;
+        worst = std::max(worst, error);
       }
+      (fixed ? fixed_err : far_err)[k] = static_cast<float>(worst);
       return seen == 1;
     };
     // Returns the first passing rung within [0, last], or -1 when `last` fails too. Galloping
@@ -125,10 +136,12 @@ struct Probe {
     };
     const auto over_D = [](int k) { return k < 0 ? kNearEverywhere : static_cast<float>(rung_over_D(k)); };
     const int far = search(false, kLadderRungs - 1);
+    const float far_error = far < 0 ? 0.0f : far_err[far];
     // The fixed rule is used only nearer than d_far, so only the rungs below it matter.
-    if (far == 0) return {over_D(0), over_D(0)};
+    if (far == 0) return {over_D(0), over_D(0), far_error, 0.0f};
     const int fixed = search(true, far < 0 ? kLadderRungs - 1 : far);
-    return {over_D(far), fixed < 0 ? over_D(far) : over_D(fixed)};
+    return {over_D(far), fixed < 0 ? over_D(far) : over_D(fixed), far_error,
+            fixed < 0 ? 0.0f : fixed_err[fixed]};
   }
 };
 
@@ -249,10 +262,21 @@ double FarFieldBound::far_weight(const Vec3& u, double distance_m) const {
 }
 
 FarFieldBound::Weights FarFieldBound::weights(const Vec3& u, double distance_m) const {
-  const GridSpot s = spot_of(u);
   Weights w;
-  w.far = ramp(distance_m, interpolate_over_D(d_far_over_D, s) * largest_dimension_m);
-  if (w.far < 1.0) w.fixed = ramp(distance_m, interpolate_over_D(d_fixed_over_D, s) * largest_dimension_m);
+  // Most pairs of a large room: beyond every direction's band (interpolate_over_D never exceeds
+  // the largest sample, so this is the answer the lookup below would give).
+  if (distance_m >= far_everywhere_over_D * largest_dimension_m) {
+    w.far = 1.0;
+    w.far_start_m = far_everywhere_over_D / kBlendWidth * largest_dimension_m;
+    return w;
+  }
+  const GridSpot s = spot_of(u);
+  w.far_start_m = interpolate_over_D(d_far_over_D, s) * largest_dimension_m;
+  w.far = ramp(distance_m, w.far_start_m);
+  if (w.far < 1.0) {
+    w.fixed_start_m = interpolate_over_D(d_fixed_over_D, s) * largest_dimension_m;
+    w.fixed = ramp(distance_m, w.fixed_start_m);
+  }
   return w;
 }
 
@@ -267,21 +291,32 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, con
     bound->d_far_over_D = bound->d_fixed_over_D = raw;
     bound->min_over_D = bound->max_over_D = bound->median_over_D = kLadderStart;
     bound->fixed_median_over_D = bound->fixed_max_over_D = kLadderStart;
+    bound->far_everywhere_over_D = kBlendWidth * kLadderStart;
     return bound;
   }
   double peak = 0.0;
   for (int i = 0; i < n; ++i) peak = std::max(peak, e.distribution->intensity(direction_of_sample(i / kCSamples, i % kCSamples)));
   const Probe probe{e, near_model, tolerance / kBoundSafetyFactor, peak};
+  std::vector<Probe::Measured> measured(n);
   // Directions in parallel (the nearfield library has no TBB; the samples are independent).
   const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
   std::vector<std::thread> pool;
   for (unsigned t = 0; t < threads; ++t) {
     pool.emplace_back([&, t] {
-      for (int i = static_cast<int>(t); i < n; i += static_cast<int>(threads))
-        std::tie(raw[i], raw_fixed[i]) = probe.distances_over_D(direction_of_sample(i / kCSamples, i % kCSamples));
+      for (int i = static_cast<int>(t); i < n; i += static_cast<int>(threads)) {
+        measured[i] = probe.distances_over_D(direction_of_sample(i / kCSamples, i % kCSamples));
+        raw[i] = measured[i].far_over_D;
+        raw_fixed[i] = measured[i].fixed_over_D;
+      }
     });
   }
   for (auto& th : pool) th.join();
+  for (const Probe::Measured& m : measured) {
+    bound->far_error_measured =
+        std::max(bound->far_error_measured, static_cast<double>(m.far_error));
+    bound->fixed_error_measured =
+        std::max(bound->fixed_error_measured, static_cast<double>(m.fixed_error));
+  }
   merge_poles(raw);
   merge_poles(raw_fixed);
   // Dilation. The point model fails around a kink within about the opening's angular
@@ -295,6 +330,8 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, con
   bound->d_far_over_D = dilate(raw, delta0);
   bound->d_fixed_over_D = dilate(raw_fixed, delta0);
   for (int i = 0; i < n; ++i) bound->d_fixed_over_D[i] = std::min(bound->d_fixed_over_D[i], bound->d_far_over_D[i]);
+  bound->far_everywhere_over_D =
+      kBlendWidth * *std::max_element(bound->d_far_over_D.begin(), bound->d_far_over_D.end());
   {
     std::vector<float> sorted = raw_fixed;
     std::sort(sorted.begin(), sorted.end());
@@ -316,32 +353,42 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, con
 }
 
 std::string describe(const FarFieldBound& b) {
-  char buf[320];
-  char fixed[200];
+  char buf[448];
+  char fixed[256];
   // Up to 8 D the opening's geometry alone (slanted receivers) explains the distance (a
   // Lambertian square measures 7.2 D); beyond, the table does.
   const char* why = b.max_over_D <= 8.0              ? "smooth distribution (geometry of the opening)"
                     : b.worst_gradient_per_deg > 0.05 ? "sharp beam"
                                                       : "kinks or curvature between measured angles";
   if (b.near_everywhere_somewhere) {
-    std::snprintf(buf, sizeof buf,
-                  "%s: near field at every distance at C %.1f gamma %.0f deg, from %.1f D elsewhere "
-                  "(median %.1f D, D = %.2f m); far field within %.2g %% beyond",
-                  why, b.worst_c_deg, b.worst_gamma_deg, b.min_over_D, b.median_over_D, b.largest_dimension_m,
-                  100 * b.tolerance);
+    std::snprintf(
+        buf, sizeof buf,
+        "%s: near field at every distance at C %.1f gamma %.0f deg, from %.1f D elsewhere "
+        "(median %.1f D, D = %.2f m); far field within %.2g %% beyond (measured at most %.2g %%)",
+        why, b.worst_c_deg, b.worst_gamma_deg, b.min_over_D, b.median_over_D, b.largest_dimension_m,
+        100 * b.tolerance, 100 * b.far_error_measured);
   } else {
-    std::snprintf(buf, sizeof buf,
-                  "%s: near field out to %.1f D (at C %.1f gamma %.0f deg, intensity changing %.1f %%/deg), "
-                  "%.1f D at least, median %.1f D (D = %.2f m); far field within %.2g %% beyond",
-                  why, b.max_over_D, b.worst_c_deg, b.worst_gamma_deg, 100 * b.worst_gradient_per_deg,
-                  b.min_over_D, b.median_over_D, b.largest_dimension_m, 100 * b.tolerance);
+    std::snprintf(
+        buf, sizeof buf,
+        "%s: near field out to %.1f D (at C %.1f gamma %.0f deg, intensity changing %.1f %%/deg), "
+        "%.1f D at least, median %.1f D (D = %.2f m); far field within %.2g %% beyond (measured at "
+        "most %.2g %%)",
+        why, b.max_over_D, b.worst_c_deg, b.worst_gamma_deg, 100 * b.worst_gradient_per_deg,
+        b.min_over_D, b.median_over_D, b.largest_dimension_m, 100 * b.tolerance,
+        100 * b.far_error_measured);
   }
   if (b.fixed_max_over_D >= kNearEverywhere)
-    std::snprintf(fixed, sizeof fixed, "; the fixed rule within %.2g %% beyond %.1f D (median), not at every direction",
-                  100 * b.tolerance, b.fixed_median_over_D);
+    std::snprintf(fixed, sizeof fixed,
+                  "; the fixed rule within %.2g %% beyond %.1f D (median), not at every direction "
+                  "(measured at "
+                  "most %.2g %%)",
+                  100 * b.tolerance, b.fixed_median_over_D, 100 * b.fixed_error_measured);
   else
-    std::snprintf(fixed, sizeof fixed, "; the fixed rule within %.2g %% beyond %.1f D (median), %.1f D at most",
-                  100 * b.tolerance, b.fixed_median_over_D, b.fixed_max_over_D);
+    std::snprintf(fixed, sizeof fixed,
+                  "; the fixed rule within %.2g %% beyond %.1f D (median), %.1f D at most "
+                  "(measured at most %.2g %%)",
+                  100 * b.tolerance, b.fixed_median_over_D, b.fixed_max_over_D,
+                  100 * b.fixed_error_measured);
   return std::string(buf) + fixed;
 }
 

@@ -73,6 +73,17 @@ struct FarFieldBound {
   double min_over_D = 0.0, max_over_D = 0.0, median_over_D = 0.0;
   double worst_c_deg = 0.0, worst_gamma_deg = 0.0;
   double worst_gradient_per_deg = 0.0;  // |grad I| / I there, relative per degree (the "why")
+  // The plan's error estimate for the pairs these models serve: the largest relative error the
+  // far field (the fixed rule) showed against the near rung at the distance chosen for each
+  // sampled direction, over the five receiver normals (dimmer than the floor: relative to it).
+  // At most tolerance / kBoundSafetyFactor by construction; the measured value is what the plan
+  // quotes.
+  double far_error_measured = 0.0;
+  double fixed_error_measured = 0.0;
+  // Beyond this distance (x D) every direction is past its blend band: the far field alone, and
+  // weights() answers without locating the direction in the map. kNearEverywhere when some
+  // direction keeps the near field at every distance.
+  double far_everywhere_over_D = 0.0;
 
   // d_far(w) / D for a unit direction in the luminaire frame, bilinear between samples (so the
   // far weight is continuous across directions too).
@@ -86,6 +97,9 @@ struct FarFieldBound {
   struct Weights {
     double far = 0.0;
     double fixed = 0.0;
+    // Where the two bands start along this direction (m); beyond far_everywhere_over_D the
+    // largest d_far of any direction stands in for the far one (an upper bound of it).
+    double far_start_m = 0.0, fixed_start_m = 0.0;
   };
   Weights weights(const Vec3& local_dir, double distance_m) const;
 };

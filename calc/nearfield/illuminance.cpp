@@ -109,7 +109,7 @@ SwitchWeights switch_weights(const Emitter& e, const Vec3& point) {
   if (e.far_bound) {
     if (!(d > 0.0)) return {};
     const FarFieldBound::Weights w = e.far_bound->weights(e.world_to_local * (r / d), d);
-    return {w.far, e.rule_nodes.empty() ? 0.0 : w.fixed};
+    return {w.far, e.rule_nodes.empty() ? 0.0 : w.fixed, w.far_start_m, w.fixed_start_m, d};
   }
   const double t = (d / size - kBlendStart) / (kBlendEnd - kBlendStart);
   if (t <= 0.0) return {};
@@ -119,6 +119,16 @@ SwitchWeights switch_weights(const Emitter& e, const Vec3& point) {
 
 double far_field_weight(const Emitter& e, const Vec3& point) { return switch_weights(e, point).far; }
 
+double estimated_pair_error(const Emitter& e, const SwitchWeights& w) {
+  if (!e.far_bound || !(w.distance_m > 0.0)) return 0.0;
+  const auto decay = [&](double start_m) { return std::min(1.0, start_m / w.distance_m); };
+  double error = 0.0;
+  if (w.far > 0.0) error += w.far * e.far_bound->far_error_measured * decay(w.far_start_m);
+  if (w.far < 1.0 && w.fixed > 0.0)
+    error += (1.0 - w.far) * w.fixed * e.far_bound->fixed_error_measured * decay(w.fixed_start_m);
+  return error;
+}
+
 double hybrid_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                           const Model& near_model, NearFieldSwitch mode,
                           const geometry::Visibility* occ) {
@@ -127,14 +137,17 @@ double hybrid_illuminance(const Emitter& e, const Vec3& point, const Vec3& norma
 
 double hybrid_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
                           const Model& near_model, NearFieldSwitch mode,
-                          const geometry::Visibility* occ) {
+                          const geometry::Visibility* occ, SwitchWeights* used) {
   const Model far = Model::far_field();
-  if (mode == NearFieldSwitch::never) return illuminance(e, point, receiver, far, occ);
-  if (mode == NearFieldSwitch::always) return illuminance(e, point, receiver, near_model, occ);
-  SwitchWeights w = switch_weights(e, point);
-  // The map measures the fixed rule on planar receivers only; a cylinder's weight sin(eps)
-  // vanishes along the axis, where a few nodes are far off (3 % under a panel): near rung there.
-  if (receiver.kind != ReceiverKind::planar) w.fixed = 0.0;
+  SwitchWeights w;
+  if (mode == NearFieldSwitch::never) w.far = 1.0;
+  if (mode == NearFieldSwitch::automatic) {
+    w = switch_weights(e, point);
+    // The map measures the fixed rule on planar receivers only; a cylinder's weight sin(eps)
+    // vanishes along the axis, where a few nodes are far off (3 % under a panel): near rung there.
+    if (receiver.kind != ReceiverKind::planar) w.fixed = 0.0;
+  }
+  if (used) *used = w;
   if (w.far >= 1.0) return illuminance(e, point, receiver, far, occ);
   double near = 0.0;
   if (w.fixed >= 1.0) {

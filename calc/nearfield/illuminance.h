@@ -77,11 +77,21 @@ double far_field_weight(const Emitter& emitter, const Vec3& point);
 // share of the fixed rule (fixed_rule.h) in the near part: 0 nearer than the direction's
 // d_fixed, 1 beyond kBlendWidth x d_fixed (far_field_bound.h). Without a bound (or without
 // rule nodes) `fixed` is 0: the near model alone.
+// With a bound, the distances the two bands start at along the pair's direction and the pair's
+// distance (for estimated_pair_error); 0 otherwise.
 struct SwitchWeights {
   double far = 0.0;
   double fixed = 0.0;
+  double far_start_m = 0.0, fixed_start_m = 0.0, distance_m = 0.0;
 };
 SwitchWeights switch_weights(const Emitter& emitter, const Vec3& point);
+
+// The plan's estimate of a pair's relative error from the models `w` mixes (calc/plan_estimates.h):
+// the far field's measured error at d_far (FarFieldBound::far_error_measured) falling as
+// d_far / d beyond it (a kink's error falls as 1 / d, the opening's geometry as 1 / d^2:
+// far_field_bound.h), times its weight; the same for the fixed rule's share of the near part.
+// 0 without a bound (the near rung is what the map measures against).
+double estimated_pair_error(const Emitter& emitter, const SwitchWeights& w);
 
 // settings.near_field: auto (blend by far_field_weight), always (near model everywhere),
 // never (far field everywhere).
@@ -97,10 +107,13 @@ double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Vec3&
                           NearFieldSwitch mode = NearFieldSwitch::automatic,
                           const geometry::Visibility* occluder = nullptr);
 // The same for any receiver: cylindrical and semi-cylindrical illuminance take the same
-// near/far decision as planar.
+// near/far decision as planar. `used`, when given, receives the weights the pair was computed
+// with (far 1 for never, 0 for always; fixed 0 off planar receivers), so a caller counting pairs
+// per model does not take the decision twice.
 double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Receiver& receiver,
                           const Model& near_model,
                           NearFieldSwitch mode = NearFieldSwitch::automatic,
-                          const geometry::Visibility* occluder = nullptr);
+                          const geometry::Visibility* occluder = nullptr,
+                          SwitchWeights* used = nullptr);
 
 }  // namespace luxgrid::nearfield

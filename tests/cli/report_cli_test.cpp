@@ -203,19 +203,21 @@ TEST(ReportCli, DiffOfDifferentSurfacesIsBadInput) {
   EXPECT_NE(r.output.find("surface \"floor\""), std::string::npos) << r.output;
 }
 
-// `luxgrid cost` prints per surface "  <quality> <time> <Eavg> <Emin> <U0> <max>% <mean>%".
+// `luxgrid cost` prints per surface "  <quality> <time> <Eavg> <Emin> <U0> <max>% <estimate>%[!]
+// <mean>% <promise>".
 struct CostRow {
   double time_s, eavg, max_diff, mean_diff;
 };
 std::map<std::string, std::vector<CostRow>> parse_cost(const std::string& out) {
   std::map<std::string, std::vector<CostRow>> rows;
-  const std::regex row(R"(^  (draft|standard|high|reference) +(\S+) +(\S+) +(\S+) +(\S+) +(\S+)% +(\S+)%$)");
+  const std::regex row(
+      R"(^  (draft|standard|high|reference) +(\S+) +(\S+) +(\S+) +(\S+) +(\S+)% +(\S+)%!? +(\S+)% +(\S+)$)");
   std::istringstream in(out);
   std::string line;
   while (std::getline(in, line)) {
     std::smatch m;
     if (std::regex_match(line, m, row)) {
-      rows[m[1]].push_back({std::stod(m[2]), std::stod(m[3]), std::stod(m[6]), std::stod(m[7])});
+      rows[m[1]].push_back({std::stod(m[2]), std::stod(m[3]), std::stod(m[6]), std::stod(m[8])});
     }
   }
   return rows;

@@ -72,6 +72,48 @@ TEST(FarFieldBound, BlendLeavesNoSeam) {
   EXPECT_LT(worst_step, 0.005);
 }
 
+TEST(FarFieldBound, FixedRuleBlendLeavesNoSeam) {
+  // The same bar for the fixed rule's band (d_fixed to 1.25 d_fixed, inside the near field):
+  // along rays through it the hybrid adds at most 0.5 % to the change between receivers 0.1 D
+  // apart, and stays within the promise of the near rung everywhere on the way. The Mirel has
+  // 3 x 3 rule nodes and a fixed distance well below its far-field one in most directions.
+  const auto ph = load("ldt/zumtobel_mirel_isym4.ldt");
+  Emitter e = make_emitter(ph.opening, Vec3(0, 0, 3), glm::dmat3(1.0), ph.distribution);
+  ASSERT_FALSE(e.rule_nodes.empty());
+  e.far_bound = build_far_field_bound(e, Model::standard(), kStandardPromise);
+  const double D = e.largest_dimension_m;
+  double worst_step = 0.0;
+  int rays = 0;
+  for (double gamma_deg : {10.0, 27.5, 50.0, 70.0}) {
+    for (double c_deg : {0.0, 20.0, 45.0, 100.0, 200.0}) {
+      const Vec3 u = photometry::direction_of(c_deg * kDegToRad, gamma_deg * kDegToRad);
+      const double start = e.far_bound->fixed_distance_over_D(u);
+      // Only rays whose fixed band lies wholly before the far-field band: there the blend is
+      // between the fixed rule and the near rung alone.
+      if (kBlendWidth * start >= e.far_bound->distance_over_D(u)) continue;
+      ++rays;
+      double prev_auto = 0.0, prev_near = 0.0;
+      for (double s = 0.95 * start; s <= 1.3 * start; s += 0.1) {
+        const Vec3 p = e.centroid + s * D * u;
+        const double a =
+            hybrid_illuminance(e, p, -u, Model::standard(), NearFieldSwitch::automatic);
+        const double n = hybrid_illuminance(e, p, -u, Model::standard(), NearFieldSwitch::always);
+        EXPECT_LE(std::abs(a - n), kStandardPromise * n)
+            << "gamma " << gamma_deg << " C " << c_deg << " at " << s;
+        if (prev_near > 0.0)
+          worst_step = std::max(worst_step, std::abs((a - prev_auto) - (n - prev_near)) / n);
+        prev_auto = a;
+        prev_near = n;
+      }
+    }
+  }
+  std::printf(
+      "fixed-rule blend: %d rays, adds at most %.3f %% per 0.1 D to the change between receivers\n",
+      rays, 100 * worst_step);
+  EXPECT_GE(rays, 5);  // the test looks at the band, not past it
+  EXPECT_LT(worst_step, 0.005);
+}
+
 TEST(FarFieldBound, ContinuousAcrossDirections) {
   // d_far is bilinear in 1 / d_far between samples: neighbouring directions 0.05 degrees apart
   // never differ by more than a sample cell's worth, i.e. no step in the weight across directions.

@@ -1,0 +1,161 @@
+#include "calc/plan_estimates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "calc/nearfield/far_field_bound.h"
+
+namespace luxgrid::calc {
+namespace {
+
+// The promise covers points brighter than this fraction of their surface's maximum
+// (docs/accuracy.md): dimmer ones are held to the absolute error this fraction of the maximum
+// allows, as report/diff.h's kRelativeFloor measures them.
+constexpr double kPromiseFloor = 0.01;
+
+std::string percent(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2g %%", 100.0 * v);
+  return buf;
+}
+
+}  // namespace
+
+double promised_error(Quality q) {
+  switch (q) {
+    case Quality::standard: return nearfield::kStandardPromise;
+    case Quality::high: return nearfield::kHighPromise;
+    case Quality::draft:
+    case Quality::reference: return 0.0;
+  }
+  return 0.0;
+}
+
+std::string describe_promise(Quality q) {
+  switch (q) {
+    case Quality::draft:
+      return "draft promises no accuracy (far field at every distance, one bounce)";
+    case Quality::reference:
+      return "reference is the yardstick the other qualities are measured against";
+    case Quality::standard:
+    case Quality::high: break;
+  }
+  return std::string(to_string(q)) + " promises within " + percent(promised_error(q)) +
+         " of reference at every point brighter than 1 % of its surface's maximum";
+}
+
+std::vector<size_t> probe_points(const geometry::SurfaceGrid& grid) {
+  std::vector<size_t> active;
+  for (size_t i = 0; i < grid.points.size(); ++i)
+    if (grid.active.empty() || grid.active[i]) active.push_back(i);
+  if (active.size() <= kProbePointsPerSurface) return active;
+  std::vector<size_t> picked;
+  // Centres of kProbePointsPerSurface equal runs of the index order: spread over the rows.
+  for (size_t k = 0; k < kProbePointsPerSurface; ++k)
+    picked.push_back(active[(2 * k + 1) * active.size() / (2 * kProbePointsPerSurface)]);
+  return picked;
+}
+
+geometry::SurfaceGrid probe_grid(const geometry::SurfaceGrid& grid,
+                                 const std::vector<size_t>& picked) {
+  geometry::SurfaceGrid g;
+  g.name = grid.name;
+  g.kind = geometry::SurfaceGrid::Kind::points;
+  g.nu = static_cast<int>(picked.size());
+  g.nv = 1;
+  g.quantity = grid.quantity;
+  for (size_t i : picked) {
+    g.points.push_back(grid.points[i]);
+    g.normals.push_back(grid.normals[i]);
+  }
+  g.active.assign(picked.size(), true);
+  return g;
+}
+
+void estimate_errors(Results& results, const DirectEstimateInputs& direct,
+                     const IndirectEstimateInputs& indirect) {
+  Plan& plan = results.plan;
+  const double promise = promised_error(results.quality);
+  plan.promise = describe_promise(results.quality);
+  plan.estimates.clear();
+  double worst_patch = 0.0, worst_bounces = 0.0;
+  for (size_t s = 0; s < results.surfaces.size(); ++s) {
+    const SurfaceResult& r = results.surfaces[s];
+    SurfaceEstimate est;
+    est.surface = r.grid.name;
+    const auto active = [&](size_t i) { return r.grid.active.empty() || r.grid.active[i]; };
+    double e_max = 0.0;
+    for (size_t i = 0; i < r.E.size(); ++i)
+      if (active(i)) e_max = std::max(e_max, r.E[i]);
+    // As `luxgrid cost` measures (report/diff.h): relative to the point, but no less than 1 % of
+    // the surface's maximum, so a point in near darkness counts by its absolute error.
+    const double floor_lx = kPromiseFloor * e_max;
+    const auto counted = [&](size_t i) { return active(i) && std::max(r.E[i], floor_lx) > 0.0; };
+    const auto denom = [&](size_t i) { return std::max(r.E[i], floor_lx); };
+    est.direct = direct.estimated ? 0.0 : -1.0;
+    if (direct.estimated && s < direct.error_lx.size())
+      for (size_t i = 0; i < r.E.size(); ++i)
+        if (counted(i)) est.direct = std::max(est.direct, direct.error_lx[s][i] / denom(i));
+    if (indirect.ran) {
+      est.bounces = 0.0;
+      for (size_t i = 0; i < r.E.size(); ++i)
+        if (counted(i))
+          est.bounces = std::max(est.bounces, indirect.residual * r.E_indirect[i] / denom(i));
+      est.patch_size = 0.0;
+      if (s < indirect.probe_index.size()) {
+        const auto& idx = indirect.probe_index[s];
+        for (size_t k = 0; k < idx.size(); ++k) {
+          const size_t i = idx[k];
+          if (!counted(i)) continue;
+          ++est.probe_points;
+          est.patch_size = std::max(
+              est.patch_size, std::abs(r.E_indirect[i] - indirect.coarse_lx[s][k]) / denom(i));
+        }
+      }
+      worst_patch = std::max(worst_patch, est.patch_size);
+      worst_bounces = std::max(worst_bounces, est.bounces);
+    }
+    std::string line =
+        "estimated error at surface '" + est.surface + "': " + percent(est.total()) + " (direct " +
+        (est.direct < 0.0 ? "not estimated: far field at every distance" : percent(est.direct));
+    if (indirect.ran) {
+      line += ", patch size " + percent(est.patch_size) + " on " +
+              std::to_string(est.probe_points) + " probe points, bounces " + percent(est.bounces);
+    }
+    line += ")";
+    if (promise > 0.0) line += " against the promise of " + percent(promise);
+    plan.notes.push_back(line);
+    if (promise > 0.0 && est.direct < 0.0)
+      plan.warnings.push_back("surface '" + est.surface +
+                              "': the far field at every distance (near_field never) "
+                              "has no error estimate; " +
+                              std::string(to_string(results.quality)) + "'s promise of " +
+                              percent(promise) + " is not checked");
+    if (promise > 0.0 && est.total() > promise) {
+      const char* largest = est.direct >= std::max(est.patch_size, est.bounces)
+                                ? "the far-field decision"
+                            : est.patch_size >= est.bounces ? "the interreflection patch size"
+                                                            : "the bounces not followed";
+      plan.warnings.push_back("surface '" + est.surface + "': the plan's estimated error " +
+                              percent(est.total()) + " exceeds " +
+                              std::string(to_string(results.quality)) + "'s promise of " +
+                              percent(promise) + " (largest part: " + largest + ")");
+    }
+    plan.estimates.push_back(std::move(est));
+  }
+  plan.notes.push_back(
+      "textures: none (one reflectance per face, no texture maps), so no texture-resolution error");
+  if (indirect.ran) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf,
+                  "; estimated error: patch size %.3g m up to %s of E (against %.3g m at up to %zu "
+                  "probe points per "
+                  "surface), bounces not followed up to %s of E",
+                  indirect.patch_size_m, percent(worst_patch).c_str(), indirect.coarse_patch_size_m,
+                  kProbePointsPerSurface, percent(worst_bounces).c_str());
+    plan.indirect += buf;
+  }
+}
+
+}  // namespace luxgrid::calc

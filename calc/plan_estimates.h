@@ -1,0 +1,64 @@
+#pragma once
+// The plan's estimate of its own error (docs/accuracy.md, "The plan's own estimate"): what each
+// quality promises, and per surface what each remaining approximation is estimated to cost,
+// from measurements the run makes, not from constants:
+//   - far field and fixed rule for a luminaire-point pair: the error the near/far map measured
+//     at the distance it chose (nearfield/far_field_bound.h), falling as d_far / d beyond it,
+//     weighted by each pair's share of the point's illuminance (nearfield::estimated_pair_error);
+//   - the interreflection mesh's patch size h: the indirect illuminance at h against the same
+//     room meshed at 2h, on a few probe points per surface. Patch-constant radiosity converges
+//     at least linearly in h, so E(h) - E(0) ~ E(2h) - E(h): |E_ind(h) - E_ind(2h)| bounds the
+//     error at h where the convergence is first order and overstates it where it is faster;
+//   - bounces not followed: the radiosity residual (the geometric tail's estimated error, or
+//     for a fixed N the tail rho^N / (1 - rho) the solve did not follow, radiosity.h) times
+//     the point's indirect share E_ind / E;
+//   - textures: luxgrid has none (one reflectance per face, no texture maps), so none is
+//     estimated; the plan says so.
+// A surface whose total exceeds the promise gets a warning.
+#include <string>
+#include <vector>
+
+#include "calc/results.h"
+#include "geometry/surface_grid.h"
+
+namespace luxgrid::calc {
+
+// The relative error a quality promises against `reference` at every point brighter than 1 % of
+// its surface's maximum; 0 when it promises no number (draft: none; reference: the yardstick).
+double promised_error(Quality q);
+// The same in words, for the plan and `luxgrid cost`.
+std::string describe_promise(Quality q);
+
+// Probe points per surface for the patch-size estimate: the coarse run gathers at these only,
+// so it costs the coarse mesh (a quarter of the patches, 1/16 of the form factors) and little more.
+inline constexpr size_t kProbePointsPerSurface = 48;
+
+// Up to kProbePointsPerSurface active points of `grid`, evenly spread over its index order
+// (rows of a grid), and the grid reduced to them.
+std::vector<size_t> probe_points(const geometry::SurfaceGrid& grid);
+geometry::SurfaceGrid probe_grid(const geometry::SurfaceGrid& grid,
+                                 const std::vector<size_t>& picked);
+
+// What the direct calculation estimated (calc/direct.h): per surface and point, the error in lx
+// (maintained); `estimated` false when the far field ran at every distance without a map.
+struct DirectEstimateInputs {
+  bool estimated = true;
+  std::vector<std::vector<double>> error_lx;
+};
+
+// What the indirect calculation measured for the estimate.
+struct IndirectEstimateInputs {
+  bool ran = false;
+  double residual = 0.0;  // relative to the reflected flux (largest over rooms)
+  double patch_size_m = 0.0, coarse_patch_size_m = 0.0;
+  std::vector<std::vector<size_t>> probe_index;  // per surface: the probe points
+  std::vector<std::vector<double>> coarse_lx;    // per surface: E_ind at 2h there, maintained lx
+};
+
+// Fills results.plan.promise, .estimates, a note per surface, the estimates' sentence after
+// plan.indirect, and a warning per surface whose estimate exceeds the promise. Needs E,
+// E_direct and E_indirect of every surface (maintained).
+void estimate_errors(Results& results, const DirectEstimateInputs& direct,
+                     const IndirectEstimateInputs& indirect);
+
+}  // namespace luxgrid::calc

@@ -1,0 +1,132 @@
+// The plan's own error estimate (calc/plan_estimates.h, docs/accuracy.md "The plan's own
+// estimate"): each approximation's estimate is checked against what it estimates.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "calc/indirect/indirect.h"
+#include "calc/nearfield/far_field_bound.h"
+#include "calc/pipeline.h"
+#include "calc/plan_estimates.h"
+#include "project/project_file.h"
+
+namespace luxgrid::calc {
+namespace {
+
+Scene office() {
+  Scene scene =
+      project::load_project(std::string(LUXGRID_SOURCE_DIR) + "/examples/office/project.json").scene;
+  // The glare surface is not what these tests look at.
+  std::erase_if(scene.surfaces,
+                [](const auto& g) { return g.kind == geometry::SurfaceGrid::Kind::observers; });
+  return scene;
+}
+
+TEST(PlanEstimates, PatchSizeEstimateIsNotBelowTheMeshErrorSeenAtHalfTheSize) {
+  // The estimate at patch size h is |E_ind(h) - E_ind(2h)| (first-order convergence in h). The
+  // mesh's true error at h is at least |E_ind(h) - E_ind(h / 2)| when the indirect light
+  // converges monotonically in h (it is then half of it for first order, 3/4 for second), so an
+  // estimate below that would miss error the mesh demonstrably has. Checked at the probe points
+  // of the office at standard (0.5 m patches; h / 2 = 0.25 m, 1700 patches: about a second).
+  const Scene scene = office();
+  const Results standard = run_scene(scene);
+  ASSERT_EQ(standard.plan.estimates.size(), standard.surfaces.size());
+  indirect::IndirectOptions finer = indirect::indirect_options(scene.settings);
+  finer.visibility = standard.plan.visibility_test;
+  double patch = 0.0;
+  for (const auto& e : standard.plan.estimates) patch = std::max(patch, e.patch_size);
+  ASSERT_GT(patch, 0.0);
+  // The patch size standard used, from its plan sentence's estimate clause.
+  const std::string& sentence = standard.plan.indirect;
+  const size_t at = sentence.find("estimated error: patch size ");
+  ASSERT_NE(at, std::string::npos) << sentence;
+  const double h =
+      std::stod(sentence.substr(at + std::string("estimated error: patch size ").size()));
+  finer.patch_size_m = 0.5 * h;
+  std::vector<geometry::SurfaceGrid> probes;
+  std::vector<std::vector<size_t>> picked;
+  for (const auto& g : scene.surfaces) {
+    picked.push_back(probe_points(g));
+    probes.push_back(probe_grid(g, picked.back()));
+  }
+  const auto fine = indirect::compute_indirect(scene, probes, finer);
+  const double mf = scene.settings.maintenance_factor;
+  for (size_t s = 0; s < standard.surfaces.size(); ++s) {
+    const auto& r = standard.surfaces[s];
+    const double e_max = *std::max_element(r.E.begin(), r.E.end());
+    double seen = 0.0;
+    for (size_t k = 0; k < picked[s].size(); ++k) {
+      const size_t i = picked[s][k];
+      seen = std::max(seen, std::abs(r.E_indirect[i] - mf * fine.E_indirect_per_surface[s][k]) /
+                                std::max(r.E[i], 0.01 * e_max));
+    }
+    const double estimate = standard.plan.estimates[s].patch_size;
+    std::printf("office %s: patch-size estimate %.3f %%, |E(h) - E(h/2)| %.3f %% (h = %.3g m)\n",
+                r.grid.name.c_str(), 100 * estimate, 100 * seen, h);
+    // Below a tenth of the promise the convergence is not monotone at every point (the desk
+    // probes: 0.008 % against 0.02 %); there the estimate must only stay below the promise, so
+    // that it raises no warning the mesh does not deserve (activity plane: 0.23 %).
+    if (seen > 0.1 * nearfield::kStandardPromise)
+      EXPECT_GE(estimate, seen) << r.grid.name;
+    else
+      EXPECT_LT(estimate, nearfield::kStandardPromise) << r.grid.name;
+  }
+}
+
+TEST(PlanEstimates, BounceEstimateFollowsTheResidual) {
+  // One bounce leaves out rho / (1 - rho) of the first bounce's flux (radiosity.h): the estimate
+  // must see a large share, and the converged run a small one (its residual is below the
+  // standard tolerance of 1e-3, times E_ind / E <= 1).
+  Scene scene = office();
+  const Results converged = run_scene(scene);
+  scene.settings.bounces = 1;
+  const Results one = run_scene(scene);
+  for (size_t s = 0; s < one.surfaces.size(); ++s) {
+    std::printf("office %s: bounce estimate converged %.4f %%, one bounce %.2f %%\n",
+                one.surfaces[s].grid.name.c_str(), 100 * converged.plan.estimates[s].bounces,
+                100 * one.plan.estimates[s].bounces);
+    EXPECT_LE(converged.plan.estimates[s].bounces, 1e-3);
+    // The true share one bounce misses: the converged E_ind less the one-bounce E_ind, the
+    // largest over the surface. The estimate charges each point the residual times its own
+    // first-bounce light, but the later bounces spread more evenly than the first: where the
+    // first bounce is weak (desk probes, the activity plane) it reads up to 5 times low
+    // (measured 1.6 % against 8.6 %). What it must do is see that one bounce breaks the promise
+    // everywhere here, so the run warns, and not claim more than is missing.
+    const auto& c = converged.surfaces[s];
+    const auto& o = one.surfaces[s];
+    double missing = 0.0;
+    const double e_max = *std::max_element(c.E.begin(), c.E.end());
+    for (size_t i = 0; i < c.E.size(); ++i)
+      missing =
+          std::max(missing, (c.E_indirect[i] - o.E_indirect[i]) / std::max(c.E[i], 0.01 * e_max));
+    std::printf("  missing share measured %.2f %%\n", 100 * missing);
+    EXPECT_GT(one.plan.estimates[s].bounces, nearfield::kStandardPromise);
+    // At most 1.25 x the measured share: the flux-weighted mean reflectance of the first bounce
+    // is above the room's effective one where the pale ceiling is lit most (ceiling: 62 % vs 53 %).
+    EXPECT_LT(one.plan.estimates[s].bounces, 1.25 * missing);
+  }
+}
+
+TEST(PlanEstimates, EstimateAbovePromiseIsAWarning) {
+  // The office at standard with one bounce: the bounces not followed are tens of percent of the
+  // indirect light, far above the 1 % promise; the plan says so per surface and warns.
+  Scene scene = office();
+  scene.settings.bounces = 1;
+  const Results r = run_scene(scene);
+  EXPECT_NE(r.plan.promise.find("within 1 %"), std::string::npos) << r.plan.promise;
+  ASSERT_FALSE(r.plan.warnings.empty());
+  EXPECT_NE(r.plan.warnings.front().find("exceeds standard's promise of 1 %"), std::string::npos)
+      << r.plan.warnings.front();
+  EXPECT_NE(r.plan.warnings.front().find("the bounces not followed"), std::string::npos)
+      << r.plan.warnings.front();
+  bool noted = false;
+  for (const auto& n : r.plan.notes)
+    noted = noted || n.find("estimated error at surface") != std::string::npos;
+  EXPECT_TRUE(noted);
+}
+
+}  // namespace
+}  // namespace luxgrid::calc
