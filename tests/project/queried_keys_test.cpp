@@ -28,10 +28,10 @@ TEST(QueriedKeys, AKeyNoReaderTakesIsNamedWithTheKeysItsObjectWasReadFor) {
   auto doc = office();
   doc["luminaires"][0]["rotaton"] = {0, 0, 90};
   // The luminaire reader took photometry and position and asked for the optional name, emitter,
-  // rotation and array: those are the keys offered, in alphabetical order.
+  // rotation, array and emergency: those are the keys offered, in alphabetical order.
   EXPECT_EQ(error_of(doc),
-            "p.json /luminaires/0/rotaton: unknown key \"rotaton\" (expected one of: array, emitter, "
-            "name, photometry, position, rotation)");
+            "p.json /luminaires/0/rotaton: unknown key \"rotaton\" (expected one of: array, "
+            "emergency, emitter, name, photometry, position, rotation)");
 }
 
 TEST(QueriedKeys, TheKeysOfferedAreThoseTheBranchTakenAskedFor) {
