@@ -34,8 +34,8 @@ Scene bench_room() {
       l.distribution = std::make_shared<photometry::LambertianDistribution>(1000.0);
       s.luminaires.push_back(l);
     }
-  s.surfaces = {geometry::make_plane_grid("workplane", {0.5, 0.5, 0.75}, {1, 0, 0}, {0, 1, 0},
-                                          11.0, 7.0, 0.25)};
+  s.surfaces = {geometry::make_plane_grid("workplane", {0.5, 0.5, 0.75}, {1, 0, 0}, {0, 1, 0}, 11.0,
+                                          7.0, 0.25)};
   return s;
 }
 

@@ -21,8 +21,9 @@ using namespace luxgrid;
 using namespace luxgrid::nearfield;
 
 Emitter mirel() {
-  const auto ph = photometry::load_photometry_file(std::string(LUXGRID_BENCH_SOURCE_DIR) +
-                                                   "/tests/data/photometry/ldt/zumtobel_mirel_isym4.ldt");
+  const auto ph =
+      photometry::load_photometry_file(std::string(LUXGRID_BENCH_SOURCE_DIR) +
+                                       "/tests/data/photometry/ldt/zumtobel_mirel_isym4.ldt");
   return make_emitter(ph.opening, Vec3(0, 0, 3), glm::dmat3(1.0), ph.distribution);
 }
 
@@ -57,7 +58,8 @@ BENCHMARK(DecisionFiveTimesRule);
 
 void BuildMapMirel(benchmark::State& state) {
   const Emitter e = mirel();
-  for (auto _ : state) benchmark::DoNotOptimize(build_far_field_bound(e, Model::standard(), kStandardPromise));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(build_far_field_bound(e, Model::standard(), kStandardPromise));
 }
 BENCHMARK(BuildMapMirel)->Unit(benchmark::kMillisecond)->Iterations(3);
 
@@ -79,7 +81,8 @@ void pair(benchmark::State& state, bool fixed) {
   std::size_t i = 0;
   double sink = 0.0;
   for (auto _ : state) {
-    sink += fixed ? fixed_rule_illuminance(e, pts[i], up) : illuminance(e, pts[i], up, Model::standard());
+    sink += fixed ? fixed_rule_illuminance(e, pts[i], up)
+                  : illuminance(e, pts[i], up, Model::standard());
     if (++i == pts.size()) i = 0;
   }
   benchmark::DoNotOptimize(sink);

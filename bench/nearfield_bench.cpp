@@ -33,9 +33,10 @@ photometry::DistributionPtr table_distribution() {
   for (int g = 0; g < kG; ++g) grid.gamma_rad.push_back(g * kPi / (kG - 1));
   for (double cc : grid.c_rad)
     for (double gamma : grid.gamma_rad)
-      grid.cd.push_back(gamma < kPi / 2 ? 1000.0 * std::cos(gamma) * (1 + 2 * std::pow(std::sin(gamma), 2)) *
-                                              (1.0 + 0.2 * std::cos(2 * cc))
-                                        : 0.0);
+      grid.cd.push_back(gamma < kPi / 2
+                            ? 1000.0 * std::cos(gamma) * (1 + 2 * std::pow(std::sin(gamma), 2)) *
+                                  (1.0 + 0.2 * std::cos(2 * cc))
+                            : 0.0);
   return std::make_shared<photometry::TabularDistribution>(std::move(grid));
 }
 
@@ -49,14 +50,16 @@ const std::vector<Emitter>& emitters(bool table) {
   std::vector<Emitter>& out = table ? tabulated : analytic;
   if (out.empty()) {
     photometry::DistributionPtr d =
-        table ? table_distribution() : photometry::DistributionPtr(std::make_shared<BatwingDistribution>(1000.0));
+        table ? table_distribution()
+              : photometry::DistributionPtr(std::make_shared<BatwingDistribution>(1000.0));
     photometry::LuminousOpening o;
     o.shape = photometry::LuminousOpening::Shape::rectangle;
     o.length = o.width = 1.0;
     for (double h : {0.1, 1.0, 2.5})
       for (double theta : {kPi / 2, 5 * kPi / 8, 3 * kPi / 4, 7 * kPi / 8, kPi})
-        out.push_back(make_emitter(o, Vec3(0, 0, h),
-                                   glm::dmat3(glm::rotate(glm::dmat4(1.0), kPi - theta, Vec3(0, 1, 0))), d));
+        out.push_back(
+            make_emitter(o, Vec3(0, 0, h),
+                         glm::dmat3(glm::rotate(glm::dmat4(1.0), kPi - theta, Vec3(0, 1, 0))), d));
   }
   return out;
 }
@@ -65,7 +68,8 @@ std::vector<Point> protocol_points(bool table) {
   std::vector<Point> pts;
   for (const Emitter& e : emitters(table))
     for (int i = 0; i < 21; ++i)
-      for (int j = 0; j < 21; ++j) pts.push_back({&e, Vec3(-2.5 + 0.25 * i + 0.01, -2.5 + 0.25 * j + 0.01, 0.0)});
+      for (int j = 0; j < 21; ++j)
+        pts.push_back({&e, Vec3(-2.5 + 0.25 * i + 0.01, -2.5 + 0.25 * j + 0.01, 0.0)});
   return pts;
 }
 
@@ -83,10 +87,10 @@ void run(benchmark::State& state, const luxgrid::study::AccuracyModel& model, bo
   state.SetItemsProcessed(state.iterations());
 }
 
-#define LUXGRID_MODEL_BENCH(name, model)                                            \
-  void name##_analytic(benchmark::State& s) { run(s, model, false); }              \
-  void name##_table(benchmark::State& s) { run(s, model, true); }                  \
-  BENCHMARK(name##_analytic);                                                       \
+#define LUXGRID_MODEL_BENCH(name, model)                              \
+  void name##_analytic(benchmark::State& s) { run(s, model, false); } \
+  void name##_table(benchmark::State& s) { run(s, model, true); }     \
+  BENCHMARK(name##_analytic);                                         \
   BENCHMARK(name##_table);
 
 LUXGRID_MODEL_BENCH(FarField, luxgrid::study::AccuracyModel::rung(Model::far_field()))

@@ -19,9 +19,10 @@ namespace {
 using namespace luxgrid;
 using namespace luxgrid::photometry;
 
-const char* const kFiles[] = {"tests/data/photometry/ldt/sample18_mc360_large.ldt",     // 360 x 181
-                              "tests/data/photometry/ies/rab_roadway_199x38_lm02.ies",    // irregular
-                              "tests/data/photometry/ies/bega_6339_lm95_mult089.ies"};    // rotational
+const char* const kFiles[] = {
+    "tests/data/photometry/ldt/sample18_mc360_large.ldt",     // 360 x 181
+    "tests/data/photometry/ies/rab_roadway_199x38_lm02.ies",  // irregular
+    "tests/data/photometry/ies/bega_6339_lm95_mult089.ies"};  // rotational
 
 std::vector<Vec3> directions() {
   std::mt19937 rng(42);
@@ -36,7 +37,8 @@ std::vector<Vec3> directions() {
 std::string source_path(int k) {
   const char* env = std::getenv("LUXGRID_SOURCE_DIR");
   const std::filesystem::path root =
-      env ? std::filesystem::path(env) : std::filesystem::path(__FILE__).parent_path().parent_path();
+      env ? std::filesystem::path(env)
+          : std::filesystem::path(__FILE__).parent_path().parent_path();
   return (root / kFiles[k]).string();
 }
 
@@ -54,8 +56,10 @@ void run(benchmark::State& state, const IntensityDistribution& d) {
 
 void LookupTable(benchmark::State& state) {
   const Photometry p = load_photometry_file(source_path(static_cast<int>(state.range(0))));
-  const auto t = p.table->with_interpolation(state.range(1) ? Interpolation::bicubic : Interpolation::bilinear);
-  state.SetLabel(std::string(state.range(1) ? "bicubic" : "bilinear") + " raw " + kFiles[state.range(0)]);
+  const auto t = p.table->with_interpolation(state.range(1) ? Interpolation::bicubic
+                                                            : Interpolation::bilinear);
+  state.SetLabel(std::string(state.range(1) ? "bicubic" : "bilinear") + " raw " +
+                 kFiles[state.range(0)]);
   run(state, *t);
 }
 
@@ -63,12 +67,14 @@ void LookupTexture(benchmark::State& state) {
   const Photometry p = load_photometry_file(source_path(static_cast<int>(state.range(0))));
   const Interpolation mode = state.range(1) ? Interpolation::bicubic : Interpolation::bilinear;
   const DistributionTexture tex(*p.table, 1440, 720, mode);
-  state.SetLabel(std::string(state.range(1) ? "bicubic" : "bilinear") + " texture 1440x720 " + kFiles[state.range(0)]);
+  state.SetLabel(std::string(state.range(1) ? "bicubic" : "bilinear") + " texture 1440x720 " +
+                 kFiles[state.range(0)]);
   run(state, tex);
 }
 
 void LoadFile(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(load_photometry_file(source_path(static_cast<int>(state.range(0)))));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(load_photometry_file(source_path(static_cast<int>(state.range(0)))));
   state.SetLabel(kFiles[state.range(0)]);
 }
 

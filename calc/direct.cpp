@@ -35,7 +35,8 @@ std::vector<nearfield::Emitter> make_emitters(const Scene& scene) {
   std::vector<nearfield::Emitter> out;
   out.reserve(scene.luminaires.size());
   for (const auto& l : scene.luminaires) {
-    out.push_back(nearfield::make_emitter(l.opening, l.pose.position, l.pose.rotation, l.distribution));
+    out.push_back(
+        nearfield::make_emitter(l.opening, l.pose.position, l.pose.rotation, l.distribution));
   }
   return out;
 }

@@ -25,8 +25,9 @@ namespace luxgrid::calc {
 
 // Points that share the same rooms share the same luminaires and the same occlusion tree.
 struct ReachZone {
-  std::vector<uint32_t> luminaires;              // indices into Scene::luminaires, ascending
-  std::shared_ptr<const geometry::Visibility> visibility;  // null when the plan has no visibility test
+  std::vector<uint32_t> luminaires;  // indices into Scene::luminaires, ascending
+  std::shared_ptr<const geometry::Visibility>
+      visibility;  // null when the plan has no visibility test
 };
 
 class DirectReach {

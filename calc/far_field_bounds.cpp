@@ -43,20 +43,24 @@ std::vector<std::string> attach_far_field_bounds(const Scene& scene, const Plan&
     if (e.is_point()) continue;
     std::vector<Vec3> outline = local_outline(e);
     auto it = std::find_if(distinct.begin(), distinct.end(), [&](const Distinct& d) {
-      return d.distribution == e.distribution.get() && same_outline(d.outline, outline, e.largest_dimension_m);
+      return d.distribution == e.distribution.get() &&
+             same_outline(d.outline, outline, e.largest_dimension_m);
     });
     if (it == distinct.end()) {
-      distinct.push_back({e.distribution.get(), std::move(outline),
+      distinct.push_back({e.distribution.get(),
+                          std::move(outline),
                           nearfield::build_far_field_bound(e, plan.near_model, tolerance),
-                          scene.luminaires[i].photometry, {}});
+                          scene.luminaires[i].photometry,
+                          {}});
       it = distinct.end() - 1;
     }
     it->members.push_back(i);
     e.far_bound = it->bound;
   }
   for (const Distinct& d : distinct) {
-    const std::string who = d.members.size() == 1 ? scene.luminaires[d.members[0]].label
-                                                  : std::to_string(d.members.size()) + " luminaires";
+    const std::string who = d.members.size() == 1
+                                ? scene.luminaires[d.members[0]].label
+                                : std::to_string(d.members.size()) + " luminaires";
     lines.push_back("\"" + d.photometry + "\" (" + who + "): " + nearfield::describe(*d.bound));
   }
   return lines;

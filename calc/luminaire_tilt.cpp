@@ -20,8 +20,10 @@ void apply_tilt_factors(Scene& scene) {
     const auto it = scene.photometry.find(lum.photometry);
     if (it == scene.photometry.end() || !it->second.tilt) continue;
     const auto& table = *it->second.tilt;
-    const double factor = table.factor_at(lamp_tilt_deg(lum.pose.rotation, table.lamp_to_luminaire_geometry));
-    if (factor != 1.0) lum.distribution = std::make_shared<ScaledDistribution>(lum.distribution, factor);
+    const double factor =
+        table.factor_at(lamp_tilt_deg(lum.pose.rotation, table.lamp_to_luminaire_geometry));
+    if (factor != 1.0)
+      lum.distribution = std::make_shared<ScaledDistribution>(lum.distribution, factor);
   }
 }
 

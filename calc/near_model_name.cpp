@@ -27,7 +27,8 @@ std::optional<nearfield::Model> near_model_named(const std::string& name) {
   if (name == "adaptive") return Model::adaptive(1e-3);
   if (name == "reference") return Model::reference();
   if (int k = suffix_number(name, "subdivided-"); k >= 0 && k <= 6) return Model::subdivided(k);
-  if (int k = suffix_number(name, "lambert-"); k >= 0 && k <= 6) return Model::lambert_subdivided(k);
+  if (int k = suffix_number(name, "lambert-"); k >= 0 && k <= 6)
+    return Model::lambert_subdivided(k);
   return std::nullopt;
 }
 

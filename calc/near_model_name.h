@@ -14,7 +14,8 @@ namespace luxgrid::calc {
 std::optional<nearfield::Model> near_model_named(const std::string& name);
 // The names near_model_named knows, for messages.
 inline constexpr const char* kNearFieldModelNames =
-    "paper, far-field, standard, high, adaptive, reference, subdivided-K or lambert-K with K from 0 "
+    "paper, far-field, standard, high, adaptive, reference, subdivided-K or lambert-K with K from "
+    "0 "
     "to 6";
 
 }  // namespace luxgrid::calc

@@ -112,19 +112,25 @@ std::string number(double v) { return format_double("%.4g", v); }
 void check_finite(const SurfaceResult& r) {
   const std::string surface = "surface '" + r.grid.name + "': ";
   for (size_t i = 0; i < r.E.size(); ++i) {
-    if (std::isfinite(r.E_direct[i]) && std::isfinite(r.E_indirect[i]) && std::isfinite(r.E[i])) continue;
+    if (std::isfinite(r.E_direct[i]) && std::isfinite(r.E_indirect[i]) && std::isfinite(r.E[i]))
+      continue;
     const Vec3 p = i < r.grid.points.size() ? r.grid.points[i] : Vec3(0.0);
-    throw CalculationError(surface + "the illuminance at point " + std::to_string(i) + " (" + number(p.x) +
-                           ", " + number(p.y) + ", " + number(p.z) + ") m is not a finite number (E_direct " +
-                           number(r.E_direct[i]) + " lx, E_indirect " + number(r.E_indirect[i]) + " lx, E " +
+    throw CalculationError(surface + "the illuminance at point " + std::to_string(i) + " (" +
+                           number(p.x) + ", " + number(p.y) + ", " + number(p.z) +
+                           ") m is not a finite number (E_direct " + number(r.E_direct[i]) +
+                           " lx, E_indirect " + number(r.E_indirect[i]) + " lx, E " +
                            number(r.E[i]) + " lx); the results are not written");
   }
-  const std::pair<const char*, double> stats[] = {
-      {"Emin", r.stats.Emin}, {"Eavg", r.stats.Eavg}, {"Emax", r.stats.Emax}, {"U0", r.stats.U0}, {"Ud", r.stats.Ud}};
+  const std::pair<const char*, double> stats[] = {{"Emin", r.stats.Emin},
+                                                  {"Eavg", r.stats.Eavg},
+                                                  {"Emax", r.stats.Emax},
+                                                  {"U0", r.stats.U0},
+                                                  {"Ud", r.stats.Ud}};
   for (const auto& [name, value] : stats)
     if (!std::isfinite(value))
-      throw CalculationError(surface + name + " is " + number(value) +
-                             " (the point values are finite but too large to sum); the results are not written");
+      throw CalculationError(
+          surface + name + " is " + number(value) +
+          " (the point values are finite but too large to sum); the results are not written");
 }
 }  // namespace
 
@@ -153,8 +159,10 @@ Results run_scene(const Scene& scene, const Progress& progress) {
     if (r.grid.kind != geometry::SurfaceGrid::Kind::observers) continue;
     // The loader refuses "indirect": "off" with observers; a scene built in code may still skip it.
     if (scene.settings.indirect == IndirectMode::off) {
-      throw CalculationError("surface '" + r.grid.name + "': UGR needs reflected light for the background "
-                             "luminance, but the indirect calculation did not run (" + results.plan.indirect + ")");
+      throw CalculationError("surface '" + r.grid.name +
+                             "': UGR needs reflected light for the background "
+                             "luminance, but the indirect calculation did not run (" +
+                             results.plan.indirect + ")");
     }
     r.observers = glare::evaluate_observers(scene, results.plan, r.grid, r.E_indirect);
     r.UGR_max = glare::max_ugr(r.observers);

@@ -44,8 +44,9 @@ Plan make_plan(const Scene& scene) {
   plan.visibility_test = make_visibility(scene, reason);
   plan.visibility = reason;
   if (plan.visibility_test) {
-    plan.visibility += "; near-field pairs test visibility per quadrature node (soft shadows of "
-                       "area luminaires), far-field pairs from the centre of the opening";
+    plan.visibility +=
+        "; near-field pairs test visibility per quadrature node (soft shadows of "
+        "area luminaires), far-field pairs from the centre of the opening";
   }
   return plan;
 }
@@ -55,26 +56,33 @@ std::string describe_direct(const Plan& plan, const DirectCounts& c) {
   std::string out;
   switch (plan.near_switch) {
     case nearfield::NearFieldSwitch::never: out = "far-field point model everywhere"; break;
-    case nearfield::NearFieldSwitch::always: out = "near-field model " + model + " at every distance"; break;
+    case nearfield::NearFieldSwitch::always:
+      out = "near-field model " + model + " at every distance";
+      break;
     case nearfield::NearFieldSwitch::automatic:
       if (!plan.near_far_per_emitter.empty()) {
-        out = "hybrid by an error bound (near-field " + model + " wherever the far-field point model is "
-              "not within the quality's promise, measured per emitter and direction; the fixed rule of a "
-              "few nodes across the opening where it is within the promise and the far field is not; each "
+        out = "hybrid by an error bound (near-field " + model +
+              " wherever the far-field point model is "
+              "not within the quality's promise, measured per emitter and direction; the fixed "
+              "rule of a "
+              "few nodes across the opening where it is within the promise and the far field is "
+              "not; each "
               "blended over 1.25 x its distance)";
       } else {
         out = "hybrid by the five-times rule (near-field " + model + " closer than " +
-              std::to_string(static_cast<int>(nearfield::kBlendStart)) + " x the emitter size, far-field beyond " +
+              std::to_string(static_cast<int>(nearfield::kBlendStart)) +
+              " x the emitter size, far-field beyond " +
               std::to_string(static_cast<int>(nearfield::kBlendEnd)) + " x, blended between)";
       }
       break;
   }
-  out += ": " + std::to_string(c.near) + " luminaire-point pairs near-field, " + std::to_string(c.blended) +
-         " blended, " + std::to_string(c.far) + " far-field, " + std::to_string(c.point_sources) +
-         " from point sources (exact point model)";
+  out += ": " + std::to_string(c.near) + " luminaire-point pairs near-field, " +
+         std::to_string(c.blended) + " blended, " + std::to_string(c.far) + " far-field, " +
+         std::to_string(c.point_sources) + " from point sources (exact point model)";
   if (c.fixed_rule + c.fixed_blended > 0)
-    out += "; of the near-field and blended pairs " + std::to_string(c.fixed_rule) + " by the fixed rule, " +
-           std::to_string(c.fixed_blended) + " blending it into the near-field model";
+    out += "; of the near-field and blended pairs " + std::to_string(c.fixed_rule) +
+           " by the fixed rule, " + std::to_string(c.fixed_blended) +
+           " blending it into the near-field model";
   for (const auto& line : plan.near_far_per_emitter) out += "; " + line;
   return out;
 }

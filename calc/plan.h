@@ -37,7 +37,7 @@ struct Plan {
   nearfield::NearFieldSwitch near_switch = nearfield::NearFieldSwitch::automatic;
   // Occlusion test, or null when nothing in the scene can block light (calc/visibility.h).
   std::shared_ptr<const geometry::Visibility> visibility_test;
-  std::string direct;      // e.g. "hybrid by an error bound ...: 1200 pairs near-field, ..."
+  std::string direct;  // e.g. "hybrid by an error bound ...: 1200 pairs near-field, ..."
   // Per distinct emitter, the near-field distances the error bound chose and why
   // (calc/far_field_bounds.h); filled by the pipeline, quoted in `direct`.
   std::vector<std::string> near_far_per_emitter;

@@ -22,7 +22,8 @@ struct SurfaceResult {
   std::vector<double> E_indirect;  // lx, maintained
   std::vector<double> E;           // lx, maintained: E_direct + E_indirect
   Statistics stats;                // of E, over the active points
-  std::optional<double> UGR_max;  // observers surfaces: the largest UGR over all observers and views
+  std::optional<double>
+      UGR_max;  // observers surfaces: the largest UGR over all observers and views
   // observers surfaces: per observer, each view's UGR, background luminance and terms
   // (calc/glare/ugr.h); E is then the illuminance at the eye facing each view.
   std::vector<glare::ObserverResult> observers;
@@ -30,8 +31,8 @@ struct SurfaceResult {
 
 struct Results {
   std::string project;
-  Quality quality = Quality::standard;  // the quality the calculation ran at
-  double maintenance_factor = 1.0;      // applied to every E above
+  Quality quality = Quality::standard;          // the quality the calculation ran at
+  double maintenance_factor = 1.0;              // applied to every E above
   LightingScene scene = LightingScene::normal;  // normal lighting, or EN 1838's emergency scene
   Plan plan;
   std::vector<SurfaceResult> surfaces;

@@ -41,8 +41,9 @@ struct Settings {
   Quality quality = Quality::standard;
   NearFieldMode near_field = NearFieldMode::automatic;
   IndirectMode indirect = IndirectMode::automatic;
-  std::string near_field_model;  // empty: the quality's rung; else a rung by name (docs/nearfield.md)
-  int bounces = 0;  // 0 means "auto" (iterate until converged)
+  std::string
+      near_field_model;  // empty: the quality's rung; else a rung by name (docs/nearfield.md)
+  int bounces = 0;       // 0 means "auto" (iterate until converged)
   double maintenance_factor = 1.0;  // MF: every E is (E_direct + E_indirect) x MF
   // Set when the project gives the parts (settings.maintenance as an object); maintenance_factor
   // is then their product.
@@ -99,7 +100,8 @@ struct Luminaire {
 struct Scene {
   std::string name;
   std::filesystem::path project_file;
-  std::string project_sha256;  // of the project file's bytes as read (util/sha256.h); empty in memory
+  std::string
+      project_sha256;  // of the project file's bytes as read (util/sha256.h); empty in memory
   Settings settings;
   std::map<std::string, photometry::Photometry> photometry;
   std::vector<Room> rooms;

@@ -9,8 +9,12 @@ std::string plural(size_t n, const std::string& one, const std::string& many) {
 }  // namespace
 
 geometry::RoomShape room_shape(const Room& room) {
-  return geometry::RoomShape{room.name,          room.outline,          room.floor_z,
-                             room.height,        room.reflectance.floor, room.reflectance.walls,
+  return geometry::RoomShape{room.name,
+                             room.outline,
+                             room.floor_z,
+                             room.height,
+                             room.reflectance.floor,
+                             room.reflectance.walls,
                              room.reflectance.ceiling};
 }
 
@@ -62,18 +66,23 @@ std::unique_ptr<geometry::OcclusionTree> make_visibility(const Scene& scene, std
     // (the corners of its bounding rectangle, in the luminaire's local z = 0 plane).
     size_t reaching = 0;
     for (const auto& l : scene.luminaires) {
-      if (l.opening.shape == photometry::LuminousOpening::Shape::point || !in_some_room(l.pose.position)) continue;
+      if (l.opening.shape == photometry::LuminousOpening::Shape::point ||
+          !in_some_room(l.pose.position))
+        continue;
       bool out = false;
       for (const double sx : {-0.5, 0.5}) {
         for (const double sy : {-0.5, 0.5}) {
-          const Vec3 corner = l.pose.position + l.pose.rotation * Vec3(sx * l.opening.length, sy * l.opening.width, 0.0);
+          const Vec3 corner = l.pose.position + l.pose.rotation * Vec3(sx * l.opening.length,
+                                                                       sy * l.opening.width, 0.0);
           out = out || !in_some_room(corner);
         }
       }
       if (out && reaching++ == 0) first = l.label;
     }
     if (reaching == 1) why.push_back("the opening of " + first + " reaches outside its room");
-    if (reaching > 1) why.push_back("the openings of " + std::to_string(reaching) + " luminaires reach outside their rooms");
+    if (reaching > 1)
+      why.push_back("the openings of " + std::to_string(reaching) +
+                    " luminaires reach outside their rooms");
     size_t points_outside = 0;
     for (const auto& s : scene.surfaces) {
       for (size_t i = 0; i < s.points.size(); ++i) {
@@ -81,7 +90,8 @@ std::unique_ptr<geometry::OcclusionTree> make_visibility(const Scene& scene, std
       }
     }
     if (points_outside > 0) {
-      why.push_back(plural(points_outside, "surface point", "surface points") + " outside every room");
+      why.push_back(plural(points_outside, "surface point", "surface points") +
+                    " outside every room");
     }
   }
   if (why.empty()) {

@@ -16,9 +16,11 @@ void add_calc_command(CLI::App& app, Runner& run) {
     bool no_report = false, check = false, with_cost = false;
   };
   auto opt = std::make_shared<Options>();
-  CLI::App* cmd = app.add_subcommand("calc", "Calculate a project: results.json, CSV and PNG per surface, report.html");
+  CLI::App* cmd = app.add_subcommand(
+      "calc", "Calculate a project: results.json, CSV and PNG per surface, report.html");
   cmd->add_option("PROJECT", opt->project, "Project file (JSON)")->required();
-  cmd->add_option("-o,--output", opt->out, "Output folder (default: <project>.out beside the project)");
+  cmd->add_option("-o,--output", opt->out,
+                  "Output folder (default: <project>.out beside the project)");
   cmd->add_option("--quality", opt->quality, "Override settings.quality")
       ->check(CLI::IsMember({"draft", "standard", "high", "reference"}));
   cmd->add_option("--scene", opt->scene,
@@ -27,11 +29,14 @@ void add_calc_command(CLI::App& app, Runner& run) {
                   "emergency output, escape-route and open-area checks)")
       ->check(CLI::IsMember({"normal", "emergency"}));
   cmd->add_flag("--no-report", opt->no_report, "Do not write report.html");
-  cmd->add_option("--scale", opt->scale, "Fix the colour scale of every plot to MIN:MAX lux (e.g. 0:1000)");
-  cmd->add_option("--arrays", opt->arrays,
-                  "Also write each surface's points and results as a NumPy array: npy (<surface>.npy)")
+  cmd->add_option("--scale", opt->scale,
+                  "Fix the colour scale of every plot to MIN:MAX lux (e.g. 0:1000)");
+  cmd->add_option(
+         "--arrays", opt->arrays,
+         "Also write each surface's points and results as a NumPy array: npy (<surface>.npy)")
       ->check(CLI::IsMember({"npy"}));
-  cmd->add_flag("--check", opt->check, "Exit with code 3 when a requirement is not met or cannot be calculated");
+  cmd->add_flag("--check", opt->check,
+                "Exit with code 3 when a requirement is not met or cannot be calculated");
   cmd->add_flag("--with-cost", opt->with_cost,
                 "Also run draft/standard/high/reference and put the cost table into the report");
   cmd->callback([opt, &run] {
@@ -49,11 +54,14 @@ void add_calc_command(CLI::App& app, Runner& run) {
       options.show_progress = true;
       const std::filesystem::path out =
           opt->out.empty() ? default_output_dir(opt->project) : std::filesystem::path(opt->out);
-      auto warn = [](const std::string& w) { std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str()); };
+      auto warn = [](const std::string& w) {
+        std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
+      };
       options.on_load_warning = warn;
       const auto outcome = run_project(opt->project, out, options);
       // The scene's warnings were printed on loading; the outputs' (after them in the list) now.
-      for (size_t k = outcome.scene_warnings; k < outcome.warnings.size(); ++k) warn(outcome.warnings[k]);
+      for (size_t k = outcome.scene_warnings; k < outcome.warnings.size(); ++k)
+        warn(outcome.warnings[k]);
       for (const auto& s : outcome.results.surfaces) {
         std::printf("%-24s Emin %9.2f  Eavg %9.2f  Emax %9.2f lx  U0 %.3f\n", s.grid.name.c_str(),
                     s.stats.Emin, s.stats.Eavg, s.stats.Emax, s.stats.U0);
@@ -61,10 +69,12 @@ void add_calc_command(CLI::App& app, Runner& run) {
       if (!outcome.checks.empty()) {
         std::printf("requirements:\n%s", report::format_checks(outcome.checks).c_str());
       }
-      if (outcome.cost) std::printf("cost of accuracy:\n%s", report::format_cost_table(*outcome.cost).c_str());
+      if (outcome.cost)
+        std::printf("cost of accuracy:\n%s", report::format_cost_table(*outcome.cost).c_str());
       std::printf("results written to %s\n", out.string().c_str());
       for (const auto& k : outcome.kept)
-        std::printf("%s kept from the previous run (this run did not write it: --no-report)\n", k.c_str());
+        std::printf("%s kept from the previous run (this run did not write it: --no-report)\n",
+                    k.c_str());
       if (opt->check && !report::all_met(outcome.checks)) {
         std::fprintf(stderr, "luxgrid: requirements not met (--check)\n");
         return 3;

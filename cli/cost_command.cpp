@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "cli/commands.h"
-#include "project/project_file.h"
 #include "cli/run_project.h"
+#include "project/project_file.h"
 
 namespace luxgrid::cli {
 
@@ -16,12 +16,14 @@ void add_cost_command(CLI::App& app, Runner& run) {
     std::string project;
   };
   auto opt = std::make_shared<Options>();
-  CLI::App* cmd = app.add_subcommand("cost", "Run a project at every quality and show time against accuracy");
+  CLI::App* cmd =
+      app.add_subcommand("cost", "Run a project at every quality and show time against accuracy");
   cmd->add_option("PROJECT", opt->project, "Project file (JSON)")->required();
   cmd->callback([opt, &run] {
     run = [opt] {
       const project::Project loaded = project::load_project(opt->project);
-      for (const auto& w : loaded.scene.warnings) std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
+      for (const auto& w : loaded.scene.warnings)
+        std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
       const auto table = run_cost(loaded.scene, true);
       // Each level's surfaces whose estimated error exceeds its promise (the table marks them "!").
       for (const auto& level : table.levels)

@@ -16,11 +16,13 @@ void add_diff_command(CLI::App& app, Runner& run) {
     double tol = -1.0;
   };
   auto opt = std::make_shared<Options>();
-  CLI::App* cmd = app.add_subcommand("diff", "Compare two results.json files (or output folders) point by point");
+  CLI::App* cmd = app.add_subcommand(
+      "diff", "Compare two results.json files (or output folders) point by point");
   cmd->add_option("A", opt->a, "results.json or output folder to check")->required();
   cmd->add_option("B", opt->b, "results.json or output folder of the reference")->required();
-  cmd->add_option("--tol", opt->tol,
-                  "Largest allowed relative point difference (0.01 = 1 %); above it the exit code is 1")
+  cmd->add_option(
+         "--tol", opt->tol,
+         "Largest allowed relative point difference (0.01 = 1 %); above it the exit code is 1")
       ->check(CLI::NonNegativeNumber);
   cmd->callback([opt, &run] {
     run = [opt] {

@@ -1,7 +1,7 @@
-// `luxgrid info FILE [--json] [--at C,gamma ...] [--plot out.png] [--interpolation bicubic] [--ugr]`:
-// what a photometric file says and what luxgrid derives from it, as text or JSON, and a polar
-// (goniometric) diagram of the C0-C180 and C90-C270 planes drawn the way data sheets draw them:
-// nadir at the bottom, C0 to the right and C180 to the left (solid), C90 right / C270 left
+// `luxgrid info FILE [--json] [--at C,gamma ...] [--plot out.png] [--interpolation bicubic]
+// [--ugr]`: what a photometric file says and what luxgrid derives from it, as text or JSON, and a
+// polar (goniometric) diagram of the C0-C180 and C90-C270 planes drawn the way data sheets draw
+// them: nadir at the bottom, C0 to the right and C180 to the left (solid), C90 right / C270 left
 // (dashed), intensity rings at round values.
 //
 // --at angles: for type C files the file's own C numbering (C0 = +x, counter-clockwise from
@@ -41,10 +41,12 @@ struct At {
 At parse_at(const std::string& s) {
   const auto comma = s.find(',');
   double c = 0, g = 0;
-  if (comma == std::string::npos || !try_parse_number(trim(std::string_view(s).substr(0, comma)), c) ||
+  if (comma == std::string::npos ||
+      !try_parse_number(trim(std::string_view(s).substr(0, comma)), c) ||
       !try_parse_number(trim(std::string_view(s).substr(comma + 1)), g))
     throw InputError("--at '" + s + "': expected C,gamma in degrees, e.g. --at 0,30");
-  if (g < 0 || g > 180) throw InputError("--at '" + s + "': expected gamma between 0 and 180 degrees");
+  if (g < 0 || g > 180)
+    throw InputError("--at '" + s + "': expected gamma between 0 and 180 degrees");
   return {c, g};
 }
 
@@ -66,7 +68,8 @@ void write_polar_png(const Photometry& p, const std::string& title,
   // Without the font the diagram is still drawn, just unlabelled.
   const report::Raster img = report::polar_diagram(*p.distribution, title, 640);
   // Written beside the target and renamed, so no partial image is ever left behind.
-  const std::filesystem::path tmp = path.parent_path() / (path.stem().string() + ".partial" + path.extension().string());
+  const std::filesystem::path tmp =
+      path.parent_path() / (path.stem().string() + ".partial" + path.extension().string());
   try {
     report::write_png(img, tmp);
   } catch (const CalculationError& e) {
@@ -76,7 +79,8 @@ void write_polar_png(const Photometry& p, const std::string& title,
   }
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
-  if (ec) throw InputError(SourceLocation{path.string()}, "cannot write the image: " + ec.message());
+  if (ec)
+    throw InputError(SourceLocation{path.string()}, "cannot write the image: " + ec.message());
 }
 
 int run_info(const std::string& file, bool json, const std::vector<std::string>& at_args,
@@ -96,14 +100,16 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
   if (ugr) {
     // The reader's place in front of the table's message (a file without luminous area).
     try {
-      ugr_table = calc::glare::ugr_table(p.distribution, p.opening, calc::glare::table_lamp_flux_lm(p, *p.distribution));
+      ugr_table = calc::glare::ugr_table(p.distribution, p.opening,
+                                         calc::glare::table_lamp_flux_lm(p, *p.distribution));
     } catch (const InputError& e) {
       throw InputError(SourceLocation{file}, e.what());
     }
   }
   std::vector<double> intensities;
   for (const At& x : at)
-    intensities.push_back(p.distribution->intensity(direction_of(x.c_deg * kDegToRad, x.gamma_deg * kDegToRad)));
+    intensities.push_back(
+        p.distribution->intensity(direction_of(x.c_deg * kDegToRad, x.gamma_deg * kDegToRad)));
 
   if (json) {
     nlohmann::json j;
@@ -125,15 +131,22 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
     j["candela_multiplier"] = p.candela_multiplier;
     j["max_cd"] = d.max_cd;
     j["max_direction"] = {{"c_deg", d.max_c_deg}, {"gamma_deg", d.max_gamma_deg}};
-    j["beam"] = {{"c0_c180", {{"beam_deg", d.c0_c180.beam_deg}, {"field_deg", d.c0_c180.field_deg}}},
-                 {"c90_c270", {{"beam_deg", d.c90_c270.beam_deg}, {"field_deg", d.c90_c270.field_deg}}}};
-    j["opening"] = {{"shape", shape_name(p.opening.shape)}, {"description", p.opening.description},
-                    {"length_m", p.opening.length}, {"width_m", p.opening.width},
+    j["beam"] = {
+        {"c0_c180", {{"beam_deg", d.c0_c180.beam_deg}, {"field_deg", d.c0_c180.field_deg}}},
+        {"c90_c270", {{"beam_deg", d.c90_c270.beam_deg}, {"field_deg", d.c90_c270.field_deg}}}};
+    j["opening"] = {{"shape", shape_name(p.opening.shape)},
+                    {"description", p.opening.description},
+                    {"length_m", p.opening.length},
+                    {"width_m", p.opening.width},
                     {"height_m", p.opening.height}};
     nlohmann::json lamps = nlohmann::json::array();
     for (const auto& l : p.lamp_sets)
-      lamps.push_back({{"count", l.count}, {"type", l.type}, {"flux_lm", l.flux_lm},
-                       {"colour", l.colour}, {"cri", l.cri}, {"power_w", l.power_w}});
+      lamps.push_back({{"count", l.count},
+                       {"type", l.type},
+                       {"flux_lm", l.flux_lm},
+                       {"colour", l.colour},
+                       {"cri", l.cri},
+                       {"power_w", l.power_w}});
     j["lamps"] = lamps;
     j["keywords"] = p.keywords;
     j["warnings"] = p.warnings;
@@ -141,13 +154,18 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
     for (const At& x : at) j["at"].push_back({x.c_deg, x.gamma_deg});
     j["intensity_cd"] = intensities;
     if (ugr_table) j["ugr_table"] = ugr_table_json(*ugr_table);
-    if (p.tilt) j["tilt"] = {{"geometry", p.tilt->lamp_to_luminaire_geometry}, {"angles_deg", p.tilt->angle_deg}, {"factors", p.tilt->factor}};
+    if (p.tilt)
+      j["tilt"] = {{"geometry", p.tilt->lamp_to_luminaire_geometry},
+                   {"angles_deg", p.tilt->angle_deg},
+                   {"factors", p.tilt->factor}};
     std::printf("%s\n", j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
   } else {
     std::printf("%s\n", p.source.c_str());
     std::printf("  format        %s (type %s, symmetry %s, %d x %d angles)\n", p.format.c_str(),
-                to_string(p.photometric_type), to_string(p.symmetry), p.counts_vertical, p.counts_horizontal);
-    for (const char* k : {"MANUFAC", "LUMCAT", "LUMINAIRE", "LAMP", "TEST", "COMPANY", "REPORT", "DATE"})
+                to_string(p.photometric_type), to_string(p.symmetry), p.counts_vertical,
+                p.counts_horizontal);
+    for (const char* k :
+         {"MANUFAC", "LUMCAT", "LUMINAIRE", "LAMP", "TEST", "COMPANY", "REPORT", "DATE"})
       if (auto it = p.keywords.find(k); it != p.keywords.end()) {
         std::string v = it->second;
         for (char& ch : v)
@@ -155,20 +173,25 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
         std::printf("  %-13s %s\n", k, v.c_str());
       }
     for (const auto& l : p.lamp_sets)
-      std::printf("  lamps         %d x %s, %.1f lm, %.1f W%s\n", l.count, l.type.empty() ? "-" : l.type.c_str(),
-                  l.flux_lm, l.power_w, l.count < 0 ? " (absolute photometry)" : "");
-    if (p.lamp_flux_lm) std::printf("  lamp flux     %.1f lm (stated)\n", *p.lamp_flux_lm);
-    else std::printf("  lamp flux     - (absolute photometry)\n");
+      std::printf("  lamps         %d x %s, %.1f lm, %.1f W%s\n", l.count,
+                  l.type.empty() ? "-" : l.type.c_str(), l.flux_lm, l.power_w,
+                  l.count < 0 ? " (absolute photometry)" : "");
+    if (p.lamp_flux_lm)
+      std::printf("  lamp flux     %.1f lm (stated)\n", *p.lamp_flux_lm);
+    else
+      std::printf("  lamp flux     - (absolute photometry)\n");
     if (!p.flux_convention.empty()) std::printf("  photometry    %s\n", p.flux_convention.c_str());
     std::printf("  flux          %.1f lm (integrated, %s)\n", d.flux_lm,
                 p.table ? to_string(p.table->interpolation()) : "-");
-    if (d.lor) std::printf("  LOR           %.4f%s\n", *d.lor,
-                           p.stated_lor ? (" (stated " + format_number(*p.stated_lor) + ")").c_str() : "");
+    if (d.lor)
+      std::printf("  LOR           %.4f%s\n", *d.lor,
+                  p.stated_lor ? (" (stated " + format_number(*p.stated_lor) + ")").c_str() : "");
     std::printf("  DFF           %.4f%s\n", d.dff,
                 p.stated_dff ? (" (stated " + format_number(*p.stated_dff) + ")").c_str() : "");
-    std::printf("  max           %.1f cd at C %.1f, gamma %.1f deg\n", d.max_cd, d.max_c_deg, d.max_gamma_deg);
-    std::printf("  beam / field  C0-C180 %.1f / %.1f deg, C90-C270 %.1f / %.1f deg\n", d.c0_c180.beam_deg,
-                d.c0_c180.field_deg, d.c90_c270.beam_deg, d.c90_c270.field_deg);
+    std::printf("  max           %.1f cd at C %.1f, gamma %.1f deg\n", d.max_cd, d.max_c_deg,
+                d.max_gamma_deg);
+    std::printf("  beam / field  C0-C180 %.1f / %.1f deg, C90-C270 %.1f / %.1f deg\n",
+                d.c0_c180.beam_deg, d.c0_c180.field_deg, d.c90_c270.beam_deg, d.c90_c270.field_deg);
     std::printf("  opening       %s, %.4g x %.4g m (length along C0 x width), height %.4g m\n",
                 p.opening.description.c_str(), p.opening.length, p.opening.width, p.opening.height);
     for (std::size_t k = 0; k < at.size(); ++k)
@@ -184,8 +207,9 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
 }  // namespace
 
 void add_info_command(CLI::App& app, Runner& run) {
-  auto* cmd = app.add_subcommand("info", "Summarise an IES or EULUMDAT file: flux, LOR, DFF, beam angles, "
-                                          "intensities, polar diagram");
+  auto* cmd = app.add_subcommand("info",
+                                 "Summarise an IES or EULUMDAT file: flux, LOR, DFF, beam angles, "
+                                 "intensities, polar diagram");
   auto file = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
   auto at = std::make_shared<std::vector<std::string>>();
@@ -199,8 +223,9 @@ void add_info_command(CLI::App& app, Runner& run) {
   cmd->add_option("-o,--plot", *plot, "write a polar diagram PNG (C0-C180 and C90-C270 planes)");
   cmd->add_option("--interpolation", *interpolation, "bilinear (default) or bicubic")
       ->check(CLI::IsMember({"bilinear", "bicubic"}));
-  cmd->add_flag("--ugr", *ugr, "add the CIE 190 UGR table (rooms 2H to 12H, five reflectance combinations, "
-                               "viewed crosswise and endwise)");
+  cmd->add_flag("--ugr", *ugr,
+                "add the CIE 190 UGR table (rooms 2H to 12H, five reflectance combinations, "
+                "viewed crosswise and endwise)");
   cmd->callback([&run, file, json, at, plot, interpolation, ugr] {
     run = [file, json, at, plot, interpolation, ugr] {
       return run_info(*file, *json, *at, *plot, *interpolation, *ugr);

@@ -1,10 +1,10 @@
 #include "cli/progress.h"
 
+#include <unistd.h>
 #include <chrono>
 #include <cstdio>
 #include <memory>
 #include <mutex>
-#include <unistd.h>
 
 namespace luxgrid::cli {
 

@@ -5,8 +5,8 @@
 #include "calc/emergency_scene.h"
 #include "calc/pipeline.h"
 #include "calc/plan_estimates.h"
-#include "project/project_file.h"
 #include "cli/progress.h"
+#include "project/project_file.h"
 #include "report/colour_rendering.h"
 #include "report/output_folder.h"
 #include "report/requirements_en1838.h"
@@ -53,14 +53,15 @@ std::vector<std::filesystem::path> input_files(const calc::Scene& scene) {
   return out;
 }
 
-RunOutcome run_project(const std::filesystem::path& project_file, const std::filesystem::path& out_dir,
-                       const RunOptions& options) {
+RunOutcome run_project(const std::filesystem::path& project_file,
+                       const std::filesystem::path& out_dir, const RunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   project::Project loaded = project::load_project(project_file);
   apply_lighting_scene(loaded, options.scene);
   calc::Scene& scene = loaded.scene;
   if (options.quality) scene.settings.quality = *options.quality;
-  const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double load_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (options.on_load_warning)
     for (const auto& w : scene.warnings) options.on_load_warning(w);
 
@@ -68,7 +69,8 @@ RunOutcome run_project(const std::filesystem::path& project_file, const std::fil
   report::OutputFolder folder(out_dir, input_files(scene));
   RunOutcome outcome;
   try {
-    outcome.results = calc::run_scene(scene, options.show_progress ? make_progress("calculating") : calc::Progress{});
+    outcome.results = calc::run_scene(
+        scene, options.show_progress ? make_progress("calculating") : calc::Progress{});
   } catch (const InputError& e) {
     // Found only while calculating (a room whose faces exceed the patch budget): name the file.
     end_progress();
@@ -92,7 +94,8 @@ RunOutcome run_project(const std::filesystem::path& project_file, const std::fil
   outcome.scene_warnings = scene.warnings.size();
   // The plan's (an error estimate above the quality's promise): printed with the outputs'.
   for (const auto& w : outcome.results.plan.warnings) outcome.warnings.push_back(w);
-  for (auto& w : report::write_outputs(outcome.results, folder, out)) outcome.warnings.push_back(std::move(w));
+  for (auto& w : report::write_outputs(outcome.results, folder, out))
+    outcome.warnings.push_back(std::move(w));
   // --no-report does not ask to delete the report of an earlier run into the same folder.
   if (!options.report) folder.keep_from_previous({kReportFile});
   folder.commit();
@@ -103,12 +106,14 @@ RunOutcome run_project(const std::filesystem::path& project_file, const std::fil
 report::CostTable run_cost(const calc::Scene& base, bool show_progress) {
   report::CostTable table;
   std::vector<calc::Results> runs;
-  for (calc::Quality q : {calc::Quality::draft, calc::Quality::standard, calc::Quality::high, calc::Quality::reference}) {
+  for (calc::Quality q : {calc::Quality::draft, calc::Quality::standard, calc::Quality::high,
+                          calc::Quality::reference}) {
     calc::Scene scene = base;
     scene.settings.quality = q;
     const auto t0 = std::chrono::steady_clock::now();
     runs.push_back(calc::run_scene(
-        scene, show_progress ? make_progress(std::string("cost: ") + calc::to_string(q)) : calc::Progress{}));
+        scene, show_progress ? make_progress(std::string("cost: ") + calc::to_string(q))
+                             : calc::Progress{}));
     end_progress();
     report::CostLevel level;
     level.quality = calc::to_string(q);

@@ -16,13 +16,13 @@
 namespace luxgrid::cli {
 
 struct RunOptions {
-  std::optional<calc::Quality> quality;  // overrides the project's setting
+  std::optional<calc::Quality> quality;      // overrides the project's setting
   std::optional<calc::LightingScene> scene;  // --scene: overrides settings.scene
   bool show_progress = false;
-  bool report = true;                          // report.html (--no-report switches it off)
-  std::optional<report::ColourScale> scale;    // --scale MIN:MAX
-  bool with_cost = false;                      // --with-cost: the cost table into the report
-  bool arrays_npy = false;                     // --arrays npy: <surface>.npy per surface
+  bool report = true;                        // report.html (--no-report switches it off)
+  std::optional<report::ColourScale> scale;  // --scale MIN:MAX
+  bool with_cost = false;                    // --with-cost: the cost table into the report
+  bool arrays_npy = false;                   // --arrays npy: <surface>.npy per surface
   // Called with each of the scene's warnings as soon as the project is loaded (before a long
   // calculation, so a project in the wrong units says so at once); RunOutcome::warnings lists
   // them too.
@@ -35,7 +35,8 @@ struct RunOutcome {
   size_t scene_warnings = 0;          // how many of them are the scene's
   std::vector<report::RequirementCheck> checks;  // empty when the project states none
   std::optional<report::CostTable> cost;         // with_cost only
-  std::vector<std::string> kept;  // files of the previous output carried over (report.html under --no-report)
+  std::vector<std::string>
+      kept;  // files of the previous output carried over (report.html under --no-report)
 };
 
 // The emergency scene (settings.scene, or `scene` when given) replaces the loaded scene by its

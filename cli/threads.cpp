@@ -14,8 +14,8 @@ std::optional<int> requested_threads(std::optional<int> option) {
   char* end = nullptr;
   const long v = std::strtol(env, &end, 10);
   if (end == env || *end != '\0' || v < 1 || v > kMaxThreads) {
-    throw InputError("LUXGRID_THREADS: expected a whole number from 1 to " + std::to_string(kMaxThreads) +
-                     ", got '" + env + "'");
+    throw InputError("LUXGRID_THREADS: expected a whole number from 1 to " +
+                     std::to_string(kMaxThreads) + ", got '" + env + "'");
   }
   return static_cast<int>(v);
 }

@@ -25,10 +25,12 @@ nlohmann::json values(const std::array<std::optional<double>, 5>& row, double ad
 std::string ugr_table_text(const calc::glare::UgrTable& t) {
   std::string out;
   char line[256];
-  std::snprintf(line, sizeof line,
-                "UGR table (CIE 190 tabular method, CIE 117 formula; S = %.2fH, observer at eye level mid-wall)\n"
-                "  values for the lamp flux F = %.1f lm: the 1000 lm table %+.1f (8 log10(F / 1000))\n",
-                calc::glare::kTableSpacingOverH, t.lamp_flux_lm, t.correction);
+  std::snprintf(
+      line, sizeof line,
+      "UGR table (CIE 190 tabular method, CIE 117 formula; S = %.2fH, observer at eye level "
+      "mid-wall)\n"
+      "  values for the lamp flux F = %.1f lm: the 1000 lm table %+.1f (8 log10(F / 1000))\n",
+      calc::glare::kTableSpacingOverH, t.lamp_flux_lm, t.correction);
   out += line;
   const char* names[3] = {"ceiling", "walls  ", "floor  "};
   for (int k = 0; k < 3; ++k) {
@@ -62,7 +64,8 @@ nlohmann::json ugr_table_json(const calc::glare::UgrTable& t) {
   j["lamp_flux_lm"] = t.lamp_flux_lm;
   j["correction"] = t.correction;
   j["reflectances"] = nlohmann::json::array();
-  for (const auto& r : kTableReflectances) j["reflectances"].push_back({r.ceiling, r.walls, r.floor});
+  for (const auto& r : kTableReflectances)
+    j["reflectances"].push_back({r.ceiling, r.walls, r.floor});
   j["rooms"] = nlohmann::json::array();
   for (size_t i = 0; i < kTableRooms.size(); ++i) {
     j["rooms"].push_back({{"x_H", kTableRooms[i].x_H},

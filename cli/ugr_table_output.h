@@ -14,7 +14,8 @@ namespace luxgrid::cli {
 std::string ugr_table_text(const calc::glare::UgrTable& t);
 
 // {"method", "spacing_H", "lamp_flux_lm", "correction", "reflectances": [[c, w, f] x 5],
-//  "rooms": [{"x_H", "y_H", "crosswise": [5], "endwise": [5], "crosswise_1000lm", "endwise_1000lm"}]}
+//  "rooms": [{"x_H", "y_H", "crosswise": [5], "endwise": [5], "crosswise_1000lm",
+//  "endwise_1000lm"}]}
 // (null where no luminaire lies in the field).
 nlohmann::json ugr_table_json(const calc::glare::UgrTable& t);
 

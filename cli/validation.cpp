@@ -6,10 +6,10 @@
 #include <fstream>
 #include <optional>
 
-#include "project/json_reader.h"
-#include "project/safe_json.h"
 #include "calc/statistics.h"
 #include "cli/run_project.h"
+#include "project/json_reader.h"
+#include "project/safe_json.h"
 #include "util/error.h"
 
 namespace luxgrid::cli {
@@ -27,7 +27,8 @@ const calc::SurfaceResult& find_surface(const project::JsonValue& where, const c
 }
 
 // The values of `quantity` ("E", "E_direct" or "E_indirect") over the surface's points.
-const std::vector<double>& quantity_values(const project::JsonValue& where, const calc::SurfaceResult& s,
+const std::vector<double>& quantity_values(const project::JsonValue& where,
+                                           const calc::SurfaceResult& s,
                                            const std::string& quantity) {
   if (quantity == "E") return s.E;
   if (quantity == "E_direct") return s.E_direct;
@@ -66,18 +67,21 @@ bool is_glare_quantity(const std::string& q) {
 double glare_value(const project::JsonValue& where, const calc::SurfaceResult& s, size_t view,
                    const std::optional<project::JsonValue>& term, const std::string& q) {
   if (s.grid.kind != geometry::SurfaceGrid::Kind::observers) {
-    where.fail("quantity \"" + q + "\" needs an observers surface; \"" + s.grid.name + "\" is not one");
+    where.fail("quantity \"" + q + "\" needs an observers surface; \"" + s.grid.name +
+               "\" is not one");
   }
   size_t k = 0;
   for (const auto& o : s.observers)
     for (const auto& v : o.views) {
       if (k++ != view) continue;
       if (q == "UGR") {
-        if (!v.UGR) where.fail("view " + std::to_string(view) + " has no luminaire in its field: no UGR");
+        if (!v.UGR)
+          where.fail("view " + std::to_string(view) + " has no luminaire in its field: no UGR");
         return *v.UGR;
       }
       if (q == "Lb") return v.Lb_cd_m2;
-      if (!term) where.fail("quantity \"" + q + "\" needs \"term\": the index of a counted luminaire");
+      if (!term)
+        where.fail("quantity \"" + q + "\" needs \"term\": the index of a counted luminaire");
       const int t = term->as_int();
       if (t < 0 || static_cast<size_t>(t) >= v.terms.size()) {
         term->fail("term " + std::to_string(t) + " is out of range: the view counts " +
@@ -86,18 +90,20 @@ double glare_value(const project::JsonValue& where, const calc::SurfaceResult& s
       const auto& g = v.terms[static_cast<size_t>(t)].term;
       return q == "L" ? g.L_cd_m2 : q == "omega" ? g.omega_sr : g.p;
     }
-  where.fail("view " + std::to_string(view) + " is out of range: surface \"" + s.grid.name + "\" has " +
-             std::to_string(k) + " views");
+  where.fail("view " + std::to_string(view) + " is out of range: surface \"" + s.grid.name +
+             "\" has " + std::to_string(k) + " views");
 }
 
 void check_case(const fs::path& dir, const fs::path& out_dir, ValidationReport& report) {
   const std::string name = dir.filename().string();
   const fs::path expected_file = dir / "expected.json";
-  const nlohmann::json doc = project::read_json_file(expected_file, project::kMaxProjectFileBytes, "expected-values file");
+  const nlohmann::json doc =
+      project::read_json_file(expected_file, project::kMaxProjectFileBytes, "expected-values file");
   RunOptions options;
   const auto outcome = run_project(dir / "project.json", out_dir / name, options);
   // On stderr, as every command prints its warnings; the table on stdout stays the table.
-  for (const auto& w : outcome.warnings) std::fprintf(stderr, "luxgrid: warning: case %s: %s\n", name.c_str(), w.c_str());
+  for (const auto& w : outcome.warnings)
+    std::fprintf(stderr, "luxgrid: warning: case %s: %s\n", name.c_str(), w.c_str());
   const project::JsonDocument document(doc, name + "/expected.json");
   const project::JsonValue root = document.root();
   root.expect_object();
@@ -141,11 +147,15 @@ void check_case(const fs::path& dir, const fs::path& out_dir, ValidationReport& 
     if (!c.has("rel_tol") && !c.has("abs_tol")) c.fail("expected \"rel_tol\" and/or \"abs_tol\"");
     row.tolerance = std::max(rel * std::abs(row.expected), abs);
     char tol[64];
-    if (c.has("rel_tol") && c.has("abs_tol")) std::snprintf(tol, sizeof tol, "%g %% or %g", rel * 100, abs);
-    else if (c.has("rel_tol")) std::snprintf(tol, sizeof tol, "%g %%", rel * 100);
-    else std::snprintf(tol, sizeof tol, "%g abs", abs);
+    if (c.has("rel_tol") && c.has("abs_tol"))
+      std::snprintf(tol, sizeof tol, "%g %% or %g", rel * 100, abs);
+    else if (c.has("rel_tol"))
+      std::snprintf(tol, sizeof tol, "%g %%", rel * 100);
+    else
+      std::snprintf(tol, sizeof tol, "%g abs", abs);
     row.tolerance_text = tol;
-    row.error = row.expected != 0.0 ? (row.got - row.expected) / std::abs(row.expected) : row.got - row.expected;
+    row.error = row.expected != 0.0 ? (row.got - row.expected) / std::abs(row.expected)
+                                    : row.got - row.expected;
     row.pass = std::isfinite(row.got) && std::abs(row.got - row.expected) <= row.tolerance;
     c.report_unqueried();
     report.rows.push_back(row);
@@ -161,8 +171,9 @@ bool ValidationReport::all_passed() const {
 }
 
 std::string ValidationReport::markdown() const {
-  std::string md = "| case | quantity | expected | got | error | tolerance | result | source |\n"
-                   "|---|---|---|---|---|---|---|---|\n";
+  std::string md =
+      "| case | quantity | expected | got | error | tolerance | result | source |\n"
+      "|---|---|---|---|---|---|---|---|\n";
   char line[1024];
   for (const auto& r : rows) {
     std::snprintf(line, sizeof line, "| %s | %s | %.6g | %.6g | %+.3g %% | %s | %s | %s |\n",
@@ -180,9 +191,15 @@ nlohmann::json ValidationReport::json() const {
   j["passed"] = all_passed();
   j["checks"] = nlohmann::json::array();
   for (const auto& r : rows) {
-    j["checks"].push_back({{"case", r.case_name}, {"quantity", r.quantity}, {"expected", r.expected},
-                           {"got", r.got}, {"error", r.error}, {"tolerance", r.tolerance},
-                           {"tolerance_text", r.tolerance_text}, {"pass", r.pass}, {"source", r.source}});
+    j["checks"].push_back({{"case", r.case_name},
+                           {"quantity", r.quantity},
+                           {"expected", r.expected},
+                           {"got", r.got},
+                           {"error", r.error},
+                           {"tolerance", r.tolerance},
+                           {"tolerance_text", r.tolerance_text},
+                           {"pass", r.pass},
+                           {"source", r.source}});
   }
   j["case_errors"] = case_errors;
   j["pending"] = pending;
@@ -190,7 +207,8 @@ nlohmann::json ValidationReport::json() const {
 }
 
 ValidationReport run_validation(const fs::path& cases_dir, const fs::path& out_dir) {
-  if (!fs::is_directory(cases_dir)) throw InputError(SourceLocation{cases_dir.string()}, "not a folder of cases");
+  if (!fs::is_directory(cases_dir))
+    throw InputError(SourceLocation{cases_dir.string()}, "not a folder of cases");
   std::vector<fs::path> dirs;
   for (const auto& entry : fs::directory_iterator(cases_dir)) {
     if (entry.is_directory() && fs::exists(entry.path() / "expected.json") &&
@@ -210,7 +228,9 @@ ValidationReport run_validation(const fs::path& cases_dir, const fs::path& out_d
     }
     std::sort(report.pending.begin(), report.pending.end());
   }
-  if (dirs.empty()) throw InputError(SourceLocation{cases_dir.string()}, "no case folders (project.json + expected.json)");
+  if (dirs.empty())
+    throw InputError(SourceLocation{cases_dir.string()},
+                     "no case folders (project.json + expected.json)");
   for (const auto& d : dirs) {
     try {
       check_case(d, out_dir, report);

@@ -25,7 +25,8 @@ const std::filesystem::path& empty_folder() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
-    const auto scene = luxgrid::project::parse_project_text(text, "fuzz.json", empty_folder()).scene;
+    const auto scene =
+        luxgrid::project::parse_project_text(text, "fuzz.json", empty_folder()).scene;
     for (const auto& l : scene.luminaires) {
       const auto& p = l.pose.position;
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) std::abort();

@@ -91,8 +91,12 @@ std::vector<std::array<int, 3>> triangulate(const Polygon2& ccw) {
       size_t best = 0;
       double best_abs = INFINITY;
       for (size_t k = 0; k < n; ++k) {
-        const double c = std::abs(cross(ccw[idx[(k + n - 1) % n]], ccw[idx[k]], ccw[idx[(k + 1) % n]]));
-        if (c < best_abs) { best_abs = c; best = k; }
+        const double c =
+            std::abs(cross(ccw[idx[(k + n - 1) % n]], ccw[idx[k]], ccw[idx[(k + 1) % n]]));
+        if (c < best_abs) {
+          best_abs = c;
+          best = k;
+        }
       }
       idx.erase(idx.begin() + static_cast<std::ptrdiff_t>(best));
     }

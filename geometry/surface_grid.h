@@ -29,14 +29,14 @@ struct SurfaceGrid {
   enum class Kind { grid, points, observers };
   std::string name;
   Kind kind = Kind::grid;
-  int nu = 0, nv = 0;         // grid size; for points: nu = count, nv = 1
-  double spacing_u = 0.0;     // m, actual cell size along u (0 for points)
+  int nu = 0, nv = 0;      // grid size; for points: nu = count, nv = 1
+  double spacing_u = 0.0;  // m, actual cell size along u (0 for points)
   double spacing_v = 0.0;
   Vec3 origin{0.0}, u_dir{1, 0, 0}, v_dir{0, 1, 0};  // grid frame (unit u, v), for plots
   double size_u = 0.0, size_v = 0.0;                 // extent of the gridded rectangle, m
   std::vector<Vec3> points;
   std::vector<Vec3> normals;
-  std::vector<bool> active;   // false for points left out (inside obstacles); same size as points
+  std::vector<bool> active;  // false for points left out (inside obstacles); same size as points
   // Points left out (active = false), by reason; the grid keeps them so it stays nu x nv.
   size_t points_outside = 0;       // outside the (inset) polygon of a workplane/floor/ceiling
   size_t points_in_obstacles = 0;  // inside the footprint of an obstacle spanning the grid

@@ -31,8 +31,8 @@ Bounds2 bounds(const std::vector<Polygon2>& region);
 // polygon of the region and not strictly inside the footprint of an obstacle that spans z
 // (z0 <= z <= z1: a 0.7 m table does not remove points of a 0.8 m workplane; a 1.8 m cabinet
 // does). `normal_up` = false gives a ceiling grid (normal -z, u = +x, v = -y).
-SurfaceGrid make_region_grid(const std::string& name, const std::vector<Polygon2>& region,
-                             double z, double spacing_m, const std::vector<Obstacle>& obstacles,
+SurfaceGrid make_region_grid(const std::string& name, const std::vector<Polygon2>& region, double z,
+                             double spacing_m, const std::vector<Obstacle>& obstacles,
                              bool normal_up = true);
 
 // Automatic grids on every face of a room: "<prefix> floor", "<prefix> ceiling",

@@ -41,7 +41,8 @@ FluxResult integrate_flux(const TabularDistribution& t) {
   const SphericalGrid& g = t.grid();
   const bool framed = t.has_frame();
   std::vector<std::pair<double, double>> gp, cp;
-  pieces(g.gamma_rad, framed ? std::vector<double>{} : std::vector<double>{kPi / 2}, kMaxGammaPieceRad, gp);
+  pieces(g.gamma_rad, framed ? std::vector<double>{} : std::vector<double>{kPi / 2},
+         kMaxGammaPieceRad, gp);
   if (g.c_rad.size() == 1) {
     cp = {{0.0, kTwoPi}};
   } else {
@@ -49,7 +50,8 @@ FluxResult integrate_flux(const TabularDistribution& t) {
     cn.push_back(g.c_rad.front() + kTwoPi);
     std::vector<double> cuts;
     if (framed)
-      for (double c : {kPi / 2, 3 * kPi / 2, kPi / 2 + kTwoPi, 3 * kPi / 2 + kTwoPi}) cuts.push_back(c);
+      for (double c : {kPi / 2, 3 * kPi / 2, kPi / 2 + kTwoPi, 3 * kPi / 2 + kTwoPi})
+        cuts.push_back(c);
     pieces(cn, cuts, kMaxCPieceRad, cp);
   }
   const glm::dmat3 to_lum = glm::transpose(t.table_from_luminaire());

@@ -24,8 +24,10 @@ void DistributionTexture::diamond_angles(const Vec3& d, double& u, double& v) {
   const double sxy = ax + ay;
   if (sxy > 0.0) {
     const double t = d.y / sxy;  // in [-1, 1]
-    if (d.x >= 0.0) u = t >= 0.0 ? t : 4.0 + t;  // quadrants 1 and 4
-    else u = 2.0 - t;                            // quadrants 2 and 3
+    if (d.x >= 0.0)
+      u = t >= 0.0 ? t : 4.0 + t;  // quadrants 1 and 4
+    else
+      u = 2.0 - t;  // quadrants 2 and 3
     if (u >= 4.0) u = 0.0;
   } else {
     u = 0.0;  // a pole: every column holds the same value there
@@ -49,8 +51,10 @@ Vec3 DistributionTexture::direction_of_diamond(double u, double v) {
   }
   const double r = std::hypot(x, y);
   double h, a;  // horizontal and downward components before normalising
-  if (v <= 1.0) h = v, a = 1.0 - v;
-  else h = 2.0 - v, a = -(v - 1.0);
+  if (v <= 1.0)
+    h = v, a = 1.0 - v;
+  else
+    h = 2.0 - v, a = -(v - 1.0);
   const double len = std::hypot(h, a);
   h /= len, a /= len;
   return {h * x / r, h * y / r, -a};
@@ -71,8 +75,8 @@ DistributionTexture::DistributionTexture(const IntensityDistribution& source, in
         value = source.intensity({0.0, 0.0, j == 0 ? -1.0 : 1.0});
       else
         value = source.intensity(direction_of_diamond(u, v));
-      data_[static_cast<std::size_t>(j) * static_cast<std::size_t>(nu_) + static_cast<std::size_t>(i)] =
-          static_cast<float>(value);
+      data_[static_cast<std::size_t>(j) * static_cast<std::size_t>(nu_) +
+            static_cast<std::size_t>(i)] = static_cast<float>(value);
     }
   }
 }

@@ -34,7 +34,10 @@ class DistributionTexture final : public IntensityDistribution {
   static Vec3 direction_of_diamond(double u, double v);
 
  private:
-  double texel(int i, int j) const { return data_[static_cast<std::size_t>(j) * static_cast<std::size_t>(nu_) + static_cast<std::size_t>(i)]; }
+  double texel(int i, int j) const {
+    return data_[static_cast<std::size_t>(j) * static_cast<std::size_t>(nu_) +
+                 static_cast<std::size_t>(i)];
+  }
   int nu_, nv_;
   Interpolation mode_;
   std::vector<float> data_;  // row-major by v; float halves the memory, error ~1e-7 relative

@@ -102,7 +102,8 @@ class LdtValues {
       const std::string_view line = trim(src.line(tokens_[k].line));
       if (k + 1 < tokens_.size() && tokens_[k + 1].line == tokens_[k].line &&
           std::count(line.begin(), line.end(), ',') == 1 &&
-          line.find_first_of(" \t") == std::string_view::npos && line.find('.') == std::string_view::npos) {
+          line.find_first_of(" \t") == std::string_view::npos &&
+          line.find('.') == std::string_view::npos) {
         owned_.push_back(std::string(tokens_[k].text) + "." + std::string(tokens_[k + 1].text));
         merged.push_back({{}, tokens_[k].line});
         merged.back().text = owned_.back();
@@ -141,8 +142,8 @@ std::vector<double> read_angles(const SourceText& src, LdtValues& in, long n, co
     if (!a.empty() && !(v > a.back()))
       src.fail(in.line(), std::string(what) + " angles must increase: " + format_number(v) +
                               " follows " + format_number(a.back()));
-    const bool above = inclusive ? v > hi_exclusive_or_inclusive + 1e-9
-                                 : v >= hi_exclusive_or_inclusive - 1e-9;
+    const bool above =
+        inclusive ? v > hi_exclusive_or_inclusive + 1e-9 : v >= hi_exclusive_or_inclusive - 1e-9;
     if (v < lo - 1e-9 || above)
       src.fail(in.line(), "expected " + std::string(what) + " angles from " + format_number(lo) +
                               (inclusive ? " to " : " to below ") +
@@ -204,8 +205,8 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
   for (long s = 0; s < nsets; ++s) {
     const int base = 27 + static_cast<int>(s) * 6;
     LampSet set;
-    set.count = static_cast<int>(L.count(base, "the number of lamps of set " + std::to_string(s + 1),
-                                         -1000000, 1000000));
+    set.count = static_cast<int>(
+        L.count(base, "the number of lamps of set " + std::to_string(s + 1), -1000000, 1000000));
     set.type = L.text(base + 1);
     set.flux_lm = L.number(base + 2, "the total lamp flux of set " + std::to_string(s + 1));
     check_lamp_flux(src, base + 2, "the total lamp flux of set " + std::to_string(s + 1),
@@ -221,8 +222,9 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
 
   std::string sym_note;
   if (mc * ng > kMaxValues)
-    src.fail(6, "expected at most " + std::to_string(kMaxValues) + " intensities, the header claims " +
-                    std::to_string(mc) + " x " + std::to_string(ng));
+    src.fail(6, "expected at most " + std::to_string(kMaxValues) +
+                    " intensities, the header claims " + std::to_string(mc) + " x " +
+                    std::to_string(ng));
   if ((isym == 2 || isym == 3) && mc % 2 != 0)
     src.fail(4, "expected an even number of C planes for Isym " + std::to_string(isym) +
                     ", found Mc = " + std::to_string(mc));
@@ -238,14 +240,13 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
 
   Symmetry sym = Symmetry::none;
   std::size_t first = 0, stored = static_cast<std::size_t>(mc);
-  auto range = [&](double a, double b) {
-    return format_number(a) + ".." + format_number(b);
-  };
+  auto range = [&](double a, double b) { return format_number(a) + ".." + format_number(b); };
   switch (isym) {
     case 0:
       if (mc == 1) {
         sym = Symmetry::rotational;
-        p.warnings.push_back(src.where(3) + ": Isym 0 with a single C plane; read as rotationally symmetric");
+        p.warnings.push_back(src.where(3) +
+                             ": Isym 0 with a single C plane; read as rotationally symmetric");
       }
       stored = static_cast<std::size_t>(mc);
       break;
@@ -262,7 +263,8 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
       stored = static_cast<std::size_t>(mc / 2 + 1);
       auto it = std::find_if(c_all.begin(), c_all.end(), [](double c) { return same(c, 90.0); });
       if (it == c_all.end())
-        src.fail(c_line, "expected a C90 plane among the C angles for Isym 3 (data stored C90..C270)");
+        src.fail(c_line,
+                 "expected a C90 plane among the C angles for Isym 3 (data stored C90..C270)");
       first = static_cast<std::size_t>(it - c_all.begin());
       break;
     }
@@ -281,13 +283,16 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
     planes.h_deg.assign(c_all.begin() + static_cast<std::ptrdiff_t>(first),
                         c_all.begin() + static_cast<std::ptrdiff_t>(first + stored));
     const double a = planes.h_deg.front(), b = planes.h_deg.back();
-    const char* expect = isym == 2 ? "0..180" : isym == 3 ? "90..270" : isym == 4 ? "0..90" : nullptr;
+    const char* expect = isym == 2   ? "0..180"
+                         : isym == 3 ? "90..270"
+                         : isym == 4 ? "0..90"
+                                     : nullptr;
     const bool ok = isym == 0 || (isym == 2 && same(a, 0) && same(b, 180)) ||
                     (isym == 3 && same(a, 90) && same(b, 270)) ||
                     (isym == 4 && same(a, 0) && same(b, 90));
     if (!ok)
-      src.fail(c_line, "expected the stored C planes to span " + std::string(expect) + " for Isym " +
-                           std::to_string(isym) + ", found " + range(a, b));
+      src.fail(c_line, "expected the stored C planes to span " + std::string(expect) +
+                           " for Isym " + std::to_string(isym) + ", found " + range(a, b));
   }
   (void)g_line;
 
@@ -350,8 +355,8 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
   p.keywords["_ISYM"] = std::to_string(isym);
   p.keywords["_DC"] = format_number(dc);
   p.keywords["_DG"] = format_number(dg);
-  p.keywords["_LUMINAIRE_SIZE_MM"] =
-      format_number(lum_length) + " x " + format_number(lum_width) + " x " + format_number(lum_height);
+  p.keywords["_LUMINAIRE_SIZE_MM"] = format_number(lum_length) + " x " + format_number(lum_width) +
+                                     " x " + format_number(lum_height);
   if (tilt != 0) p.keywords["_TILT_DURING_MEASUREMENT"] = format_number(tilt);
   return p;
 }

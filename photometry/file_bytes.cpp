@@ -18,14 +18,16 @@ void check_size(std::size_t size, const std::string& name, std::size_t max_bytes
                 const char* kind) {
   if (size > max_bytes)
     throw InputError(SourceLocation{name}, "file is " + std::to_string(size) + " bytes; " + kind +
-                     " files are expected below " + std::to_string(max_bytes) + " bytes");
+                                               " files are expected below " +
+                                               std::to_string(max_bytes) + " bytes");
 }
 
 std::string read_bounded_file(const std::filesystem::path& file, const std::string& name,
                               std::size_t max_bytes, const char* kind) {
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) throw InputError(SourceLocation{name}, "file not found");
-  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(SourceLocation{name}, "not a regular file");
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw InputError(SourceLocation{name}, "not a regular file");
   const auto size = std::filesystem::file_size(file, ec);
   if (ec) throw InputError(SourceLocation{name}, "cannot read the file size: " + ec.message());
   check_size(static_cast<std::size_t>(size), name, max_bytes, kind);
@@ -52,7 +54,8 @@ void check_is_text(std::string_view bytes, const std::string& name, const char* 
     if (c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f') ++control;
   }
   if (nul || control * 10 > head.size() * kMaxControlBytesPerTen)
-    throw InputError(SourceLocation{name}, std::string("expected a text file (") + expected + "), found binary data");
+    throw InputError(SourceLocation{name},
+                     std::string("expected a text file (") + expected + "), found binary data");
 }
 
 }  // namespace luxgrid::photometry

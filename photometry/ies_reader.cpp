@@ -101,15 +101,12 @@ class Numbers {
   bool done() const { return next_ >= tokens_.size(); }
   std::size_t left() const { return tokens_.size() - next_; }
   const Token& peek() const { return tokens_[next_]; }
-  int last_line() const {
-    return next_ > 0 ? tokens_[next_ - 1].line : after_line_;
-  }
+  int last_line() const { return next_ > 0 ? tokens_[next_ - 1].line : after_line_; }
   int end_line() const {
     return tokens_.empty() ? std::max(after_line_, src_.line_count()) : tokens_.back().line;
   }
   const Token& take(const std::string& what) {
-    if (done())
-      src_.fail(end_line(), "expected " + what + ", found the end of the file");
+    if (done()) src_.fail(end_line(), "expected " + what + ", found the end of the file");
     return tokens_[next_++];
   }
   double number(const std::string& what) { return parse_number(src_, take(what), what); }
@@ -224,7 +221,8 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
   if (tilt_upper == "INCLUDE") {
     p.tilt = std::make_shared<TiltTable>(read_tilt_items(src, in, "INCLUDE"));
   } else if (tilt_upper != "NONE") {
-    if (tilt_value.empty()) src.fail(tilt_line, "expected NONE, INCLUDE or a file name after TILT=");
+    if (tilt_value.empty())
+      src.fail(tilt_line, "expected NONE, INCLUDE or a file name after TILT=");
     std::filesystem::path tilt_path;
     const std::string tilt_bytes =
         read_tilt_file(src, tilt_line, tilt_value, tilt_dir, options.allowed_root, tilt_path);
@@ -250,7 +248,8 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
   const Token& mult_tok = in.take("candela multiplier");
   const double multiplier = parse_number(src, mult_tok, "candela multiplier");
   if (!(multiplier > 0))
-    src.fail(mult_tok.line, "expected a candela multiplier > 0, found " + format_number(multiplier));
+    src.fail(mult_tok.line,
+             "expected a candela multiplier > 0, found " + format_number(multiplier));
   const long nv = in.count("the number of vertical angles", 1, kMaxAngles);
   const int nv_line = in.last_line();
   const long nh = in.count("the number of horizontal angles", 1, kMaxAngles);
@@ -273,8 +272,8 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
   const double ballast = parse_number(src, bf_tok, "ballast factor");
   if (!(ballast > 0))
     src.fail(bf_tok.line, "expected a ballast factor > 0, found " + format_number(ballast));
-  const Token& f2_tok = in.take(ver.year >= 2019 ? "file generation type"
-                                                 : "ballast-lamp photometric factor");
+  const Token& f2_tok =
+      in.take(ver.year >= 2019 ? "file generation type" : "ballast-lamp photometric factor");
   const double f2 = parse_number(src, f2_tok, "line 11 second value");
   const double watts = in.number("input watts");
 
@@ -295,7 +294,8 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
   double factor = multiplier * ballast;
   if (ver.year <= 1995) {
     if (!(f2 > 0))
-      src.fail(f2_tok.line, "expected a ballast-lamp photometric factor > 0, found " + format_number(f2));
+      src.fail(f2_tok.line,
+               "expected a ballast-lamp photometric factor > 0, found " + format_number(f2));
     factor *= f2;
   } else if (ver.year == 2002 && f2 != 1.0) {
     p.warnings.push_back(src.where(f2_tok.line) + ": line 11 second value " + format_number(f2) +
@@ -314,7 +314,9 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
   p.candela_multiplier = factor;
 
   // Angles and values.
-  const auto ptype = type == 1 ? PhotometricType::C : type == 2 ? PhotometricType::B : PhotometricType::A;
+  const auto ptype = type == 1   ? PhotometricType::C
+                     : type == 2 ? PhotometricType::B
+                                 : PhotometricType::A;
   p.photometric_type = ptype;
   StoredPlanes planes;
   const bool c = ptype == PhotometricType::C;
@@ -336,8 +338,10 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
   for (long i = 0; i < nh; ++i)
     for (long j = 0; j < nv; ++j) {
       const Token& t = in.take("candela value");
-      const std::string at = "the candela value at horizontal " + format_number(planes.h_deg[static_cast<std::size_t>(i)]) +
-                             ", vertical " + format_number(planes.v_deg[static_cast<std::size_t>(j)]);
+      const std::string at = "the candela value at horizontal " +
+                             format_number(planes.h_deg[static_cast<std::size_t>(i)]) +
+                             ", vertical " +
+                             format_number(planes.v_deg[static_cast<std::size_t>(j)]);
       const double v = parse_number(src, t, at);
       if (v < 0) src.fail(t.line, "expected " + at + " to be >= 0, found " + format_number(v));
       check_intensity(src, t.line, at, v, factor * std::max(max_tilt, 1.0));
@@ -372,7 +376,8 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
   const double tilt0 = p.tilt ? p.tilt->factor_at(0.0) : 1.0;
   if (tilt0 != 1.0)
     for (double& v : grid.cd) v *= tilt0;
-  auto table = std::make_shared<TabularDistribution>(std::move(grid), Interpolation::bilinear, frame);
+  auto table =
+      std::make_shared<TabularDistribution>(std::move(grid), Interpolation::bilinear, frame);
   p.table = table;
   p.distribution = table;
   p.counts_vertical = static_cast<int>(nv);

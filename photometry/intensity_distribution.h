@@ -1,7 +1,7 @@
 #pragma once
 // The one interface every emitter model uses: luminous intensity in candela for a direction in
-// the luminaire's own frame. Frame (docs/photometry.md): gamma = 0 points to nadir (-z), C = 0 along
-// +x (the luminaire's length axis), C = 90 along +y.
+// the luminaire's own frame. Frame (docs/photometry.md): gamma = 0 points to nadir (-z), C = 0
+// along +x (the luminaire's length axis), C = 90 along +y.
 #include <memory>
 #include <string>
 

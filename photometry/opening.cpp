@@ -26,13 +26,14 @@ LuminousOpening ies_opening(double w, double l, double h, std::string& warning) 
   const bool same_wl = std::abs(std::abs(w) - std::abs(l)) <= 1e-9 * std::max(std::abs(w), 1.0);
   if (w == 0 && l == 0 && h == 0) return make(Shape::point, 0, 0, 0, "point");
   if (w > 0 && l > 0 && h == 0) return make(Shape::rectangle, l, w, 0, "rectangle");
-  if (w > 0 && l > 0 && h > 0) return make(Shape::rectangle, l, w, h, "rectangle with luminous sides");
+  if (w > 0 && l > 0 && h > 0)
+    return make(Shape::rectangle, l, w, h, "rectangle with luminous sides");
   if (w < 0 && l == 0 && h == 0)  // LM-63-1986..1995: round, diameter |width|
     return make(Shape::disk, -w, -w, 0, "round");
-  if (w < 0 && l < 0 && h == 0)
-    return make(Shape::disk, -l, -w, 0, same_wl ? "circle" : "ellipse");
+  if (w < 0 && l < 0 && h == 0) return make(Shape::disk, -l, -w, 0, same_wl ? "circle" : "ellipse");
   if (w < 0 && l < 0 && h > 0)
-    return make(Shape::disk, -l, -w, h, same_wl ? "vertical cylinder" : "vertical elliptical cylinder");
+    return make(Shape::disk, -l, -w, h,
+                same_wl ? "vertical cylinder" : "vertical elliptical cylinder");
   if (w < 0 && l < 0 && h < 0) {
     const bool sphere = same_wl && std::abs(std::abs(h) - std::abs(w)) <= 1e-9 * std::abs(w);
     return make(Shape::disk, -l, -w, -h, sphere ? "sphere" : "ellipsoidal spheroid");
@@ -42,8 +43,8 @@ LuminousOpening ies_opening(double w, double l, double h, std::string& warning) 
   if (w > 0 && l < 0 && h < 0)
     return make(Shape::rectangle, -l, w, -h, "horizontal cylinder along C90-C270");
   // Not defined by any LM-63 table: keep the sizes, choose the plainest reading, and say so.
-  const std::string given = "(" + format_number(w) + ", " + format_number(l) + ", " +
-                            format_number(h) + ")";
+  const std::string given =
+      "(" + format_number(w) + ", " + format_number(l) + ", " + format_number(h) + ")";
   LuminousOpening o;
   if (w == 0 && l < 0 && h == 0) {
     o = make(Shape::disk, -l, -l, 0, "round (assumed)");
@@ -51,9 +52,10 @@ LuminousOpening ies_opening(double w, double l, double h, std::string& warning) 
               format_number(-l) + " m";
   } else if (w > 0 && l == 0 && h < 0) {
     o = make(Shape::rectangle, -h, w, -h, "horizontal cylinder along C90-C270 (assumed)");
-    warning = "luminous opening " + given + " m is not defined by LM-63; read as a horizontal "
-              "cylinder along C90-C270, length " + format_number(w) + " m, diameter " +
-              format_number(-h) + " m";
+    warning = "luminous opening " + given +
+              " m is not defined by LM-63; read as a horizontal "
+              "cylinder along C90-C270, length " +
+              format_number(w) + " m, diameter " + format_number(-h) + " m";
   } else if (w != 0 && l != 0) {
     o = make(Shape::rectangle, std::abs(l), std::abs(w), std::abs(h), "rectangle (assumed)");
     warning = "luminous opening " + given + " m is not defined by LM-63; read as a rectangle";
@@ -80,8 +82,7 @@ std::vector<Vec3> opening_polygon(const LuminousOpening& o, int disk_segments) {
   std::vector<Vec3> p;
   const double a = 0.5 * o.length, b = 0.5 * o.width;
   switch (o.shape) {
-    case Shape::point:
-      break;
+    case Shape::point: break;
     case Shape::rectangle:
       if (a > 0 && b > 0) p = {{a, b, 0}, {a, -b, 0}, {-a, -b, 0}, {-a, b, 0}};
       break;

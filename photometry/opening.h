@@ -17,8 +17,7 @@ namespace luxgrid::photometry {
 //   w > 0, l < 0, h < 0 horizontal cylinder along C90
 // and the rule of LM-63-1986..1995: a negative width with length 0 is round, diameter |width|.
 // Any other sign combination is not defined by LM-63: `warning` then says what was assumed.
-LuminousOpening ies_opening(double width_m, double length_m, double height_m,
-                            std::string& warning);
+LuminousOpening ies_opening(double width_m, double length_m, double height_m, std::string& warning);
 
 // EULUMDAT luminous area (lines 16-21), in metres: length along C0, width along C90 (0 means
 // circular with diameter = length), height = the largest of the four C-plane heights.

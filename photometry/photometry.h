@@ -33,11 +33,11 @@ struct LuminousOpening {
 
 // One EULUMDAT lamp set (IES files give one set: lamps x lumens per lamp).
 struct LampSet {
-  int count = 0;           // number of lamps; negative in EULUMDAT means absolute photometry
+  int count = 0;  // number of lamps; negative in EULUMDAT means absolute photometry
   std::string type;
-  double flux_lm = 0.0;    // total flux of the set
-  std::string colour;      // colour temperature / appearance as written
-  std::string cri;         // colour rendering group / index as written
+  double flux_lm = 0.0;  // total flux of the set
+  std::string colour;    // colour temperature / appearance as written
+  std::string cri;       // colour rendering group / index as written
   double power_w = 0.0;
 };
 
@@ -47,14 +47,14 @@ const char* to_string(PhotometricType t);
 const char* to_string(Symmetry s);
 
 struct Photometry {
-  std::string source;        // file path as given, or "builtin:<name>"
-  std::string format;        // e.g. "IES LM-63-2002", "EULUMDAT", "builtin"
+  std::string source;  // file path as given, or "builtin:<name>"
+  std::string format;  // e.g. "IES LM-63-2002", "EULUMDAT", "builtin"
   DistributionPtr distribution;
   LuminousOpening opening;
   std::map<std::string, std::string> keywords;  // manufacturer keywords ([MANUFAC], ...)
 
   // --- added by the complete readers (empty/defaults for builtins) ---
-  std::string version;       // "LM-63-1986", "LM-63-1991", ..., "LM-63-2019", "EULUMDAT"
+  std::string version;  // "LM-63-1986", "LM-63-1991", ..., "LM-63-2019", "EULUMDAT"
   PhotometricType photometric_type = PhotometricType::C;
   Symmetry symmetry = Symmetry::none;  // the symmetry the file stores (before expansion)
   // The same object as `distribution` when it came from a file, typed: gives angle-based lookup,
@@ -64,12 +64,12 @@ struct Photometry {
   // Stated lamp flux (all lamps of the first set, lm) for relative photometry; nullopt for
   // absolute photometry (IES lumens = -1 or 0, EULUMDAT lamp count < 0).
   std::optional<double> lamp_flux_lm;
-  double candela_multiplier = 1.0;  // every factor applied to the stored numbers, combined
-  std::optional<double> stated_lor;  // EULUMDAT line 23, as a fraction (0..1+)
-  std::optional<double> stated_dff;  // EULUMDAT line 22, as a fraction
+  double candela_multiplier = 1.0;        // every factor applied to the stored numbers, combined
+  std::optional<double> stated_lor;       // EULUMDAT line 23, as a fraction (0..1+)
+  std::optional<double> stated_dff;       // EULUMDAT line 22, as a fraction
   std::shared_ptr<const TiltTable> tilt;  // IES TILT=INCLUDE / TILT=<file>; null for NONE
-  int counts_vertical = 0;    // IES: vertical angles; EULUMDAT: Ng
-  int counts_horizontal = 0;  // IES: horizontal angles; EULUMDAT: stored C planes
+  int counts_vertical = 0;                // IES: vertical angles; EULUMDAT: Ng
+  int counts_horizontal = 0;              // IES: horizontal angles; EULUMDAT: stored C planes
   // How the file states its flux, in words: "relative: 2 lamps x 1000 lm ..." or "absolute:
   // IES lumens per lamp = -1" (validation.h; `luxgrid info` prints it).
   std::string flux_convention;

@@ -64,7 +64,8 @@ bool try_parse_number(std::string_view s, double& out) {
   if (s.empty()) return false;
   // from_chars would accept "inf"/"nan": only digits, sign, point and exponent are numbers here.
   for (char ch : s)
-    if (!((ch >= '0' && ch <= '9') || ch == '-' || ch == '.' || ch == 'e' || ch == 'E' || ch == '+'))
+    if (!((ch >= '0' && ch <= '9') || ch == '-' || ch == '.' || ch == 'e' || ch == 'E' ||
+          ch == '+'))
       return false;
   double v = 0.0;
   auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
@@ -106,8 +107,7 @@ double parse_number(const SourceText& src, const Token& t, const std::string& wh
   return v;
 }
 
-long parse_count(const SourceText& src, const Token& t, const std::string& what, long lo,
-                 long hi) {
+long parse_count(const SourceText& src, const Token& t, const std::string& what, long lo, long hi) {
   const double v = parse_number(src, t, what);
   if (v != std::floor(v))
     src.fail(t.line, "expected a whole number for " + what + ", found " + quote_word(t.text));

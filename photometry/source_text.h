@@ -1,7 +1,8 @@
 #pragma once
 // The text of a photometric file as the readers see it: split into lines (LF, CRLF or CR), a
 // UTF-8 byte-order mark dropped, every error naming "file:line". Both readers count lines here so
-// that messages look alike (docs/reliability.md: `panel.ies:14: expected 37 vertical angles, found 36`).
+// that messages look alike (docs/reliability.md: `panel.ies:14: expected 37 vertical angles, found
+// 36`).
 #include <cstddef>
 #include <string>
 #include <string_view>

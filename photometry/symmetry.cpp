@@ -34,11 +34,16 @@ bool type_c_symmetry(const std::vector<double>& h, Symmetry& out) {
     out = Symmetry::rotational;
     return true;
   }
-  if (same(first, 0.0) && same(last, 90.0)) out = Symmetry::quadrant;
-  else if (same(first, 0.0) && same(last, 180.0)) out = Symmetry::bilateral_c0_c180;
-  else if (same(first, 90.0) && same(last, 270.0)) out = Symmetry::bilateral_c90_c270;
-  else if (same(first, 0.0) && last > 180.0 && last <= 360.0 + kSameAngleDeg) out = Symmetry::none;
-  else return false;
+  if (same(first, 0.0) && same(last, 90.0))
+    out = Symmetry::quadrant;
+  else if (same(first, 0.0) && same(last, 180.0))
+    out = Symmetry::bilateral_c0_c180;
+  else if (same(first, 90.0) && same(last, 270.0))
+    out = Symmetry::bilateral_c90_c270;
+  else if (same(first, 0.0) && last > 180.0 && last <= 360.0 + kSameAngleDeg)
+    out = Symmetry::none;
+  else
+    return false;
   return true;
 }
 
@@ -69,12 +74,8 @@ SphericalGrid expand_type_c(const StoredPlanes& p, Symmetry symmetry,
       case Symmetry::quadrant:
         add(c, c), add(180.0 - c, c), add(180.0 + c, c), add(360.0 - c, c);
         break;
-      case Symmetry::bilateral_c0_c180:
-        add(c, c), add(360.0 - c, c);
-        break;
-      case Symmetry::bilateral_c90_c270:
-        add(c, c), add(180.0 - c, c);
-        break;
+      case Symmetry::bilateral_c0_c180: add(c, c), add(360.0 - c, c); break;
+      case Symmetry::bilateral_c90_c270: add(c, c), add(180.0 - c, c); break;
       default:
         if (!same(c, 360.0)) add(c, c);
         break;
@@ -184,7 +185,8 @@ SphericalGrid expand_type_ab(const StoredPlanes& p, PhotometricType type,
     // poles with the zero planes would darken measured directions. Keep the measured values.
     g.average_poles = false;
   }
-  std::sort(planes.begin(), planes.end(), [](const Plane& a, const Plane& b2) { return a.c < b2.c; });
+  std::sort(planes.begin(), planes.end(),
+            [](const Plane& a, const Plane& b2) { return a.c < b2.c; });
   for (auto& pl : planes) {
     g.c_rad.push_back(pl.c * kDegToRad);
     g.cd.insert(g.cd.end(), pl.v.begin(), pl.v.end());

@@ -113,8 +113,9 @@ bool TabularDistribution::gamma_cell(double g, std::size_t& j, double& tg) const
     j = std::min(static_cast<std::size_t>(g * inv_dg_), ng_ - 2);
   } else {
     auto it = std::upper_bound(grid_.gamma_rad.begin(), grid_.gamma_rad.end(), g);
-    j = std::min(static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - grid_.gamma_rad.begin() - 1, 0)),
-                 ng_ - 2);
+    j = std::min(
+        static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - grid_.gamma_rad.begin() - 1, 0)),
+        ng_ - 2);
   }
   const double g0 = grid_.gamma_rad[j], g1 = grid_.gamma_rad[j + 1];
   tg = std::clamp((g - g0) / (g1 - g0), 0.0, 1.0);

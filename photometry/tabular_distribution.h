@@ -38,8 +38,7 @@ class TabularDistribution final : public IntensityDistribution {
  public:
   // `table_from_luminaire` is an orthogonal matrix (possibly a reflection) taking luminaire-frame
   // directions into the grid's frame; identity for type C.
-  explicit TabularDistribution(SphericalGrid grid,
-                               Interpolation mode = Interpolation::bilinear,
+  explicit TabularDistribution(SphericalGrid grid, Interpolation mode = Interpolation::bilinear,
                                const glm::dmat3& table_from_luminaire = glm::dmat3(1.0));
 
   double intensity(const Vec3& direction) const override;

@@ -8,7 +8,6 @@
 
 namespace luxgrid::photometry {
 
-
 std::string read_tilt_file(const SourceText& ies, int tilt_line, std::string_view value,
                            const std::filesystem::path& ies_dir,
                            const std::filesystem::path& allowed_root,

@@ -12,9 +12,12 @@ namespace luxgrid::project {
 std::string json_pointer_escape(const std::string& key) {
   std::string out;
   for (char c : key) {
-    if (c == '~') out += "~0";
-    else if (c == '/') out += "~1";
-    else out += c;
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
   }
   return out;
 }
@@ -137,7 +140,8 @@ void JsonValue::report_unqueried() const {
     const std::string pointer = pointer_ + "/" + json_pointer_escape(key);
     throw InputError(SourceLocation{doc_->file(), 0, 0, pointer},
                      "unknown key \"" + key + "\"" +
-                         (list.empty() ? std::string(" (nothing is read here)") : " (expected one of: " + list + ")"));
+                         (list.empty() ? std::string(" (nothing is read here)")
+                                       : " (expected one of: " + list + ")"));
   }
   for (const auto& [key, v] : value_->items()) member(key).report_unqueried();
 }
@@ -179,7 +183,8 @@ double JsonValue::as_number() const {
 
 int JsonValue::as_int() const {
   const double x = as_number();
-  if (x != std::floor(x) || std::abs(x) > 1e9) fail("expected a whole number, got " + value_->dump());
+  if (x != std::floor(x) || std::abs(x) > 1e9)
+    fail("expected a whole number, got " + value_->dump());
   return static_cast<int>(x);
 }
 
@@ -191,7 +196,8 @@ bool JsonValue::as_bool() const {
 double JsonValue::as_number_in(double lo, double hi) const {
   const double x = as_number();
   if (x < lo || x > hi) {
-    fail("expected a number in [" + number_text(lo) + ", " + number_text(hi) + "], got " + value_->dump());
+    fail("expected a number in [" + number_text(lo) + ", " + number_text(hi) + "], got " +
+         value_->dump());
   }
   return x;
 }

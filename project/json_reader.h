@@ -26,7 +26,8 @@ class JsonValue;
 class JsonDocument {
  public:
   // `root` must outlive the document, and the document every value taken from it.
-  JsonDocument(const nlohmann::json& root, std::string file) : root_(&root), file_(std::move(file)) {}
+  JsonDocument(const nlohmann::json& root, std::string file)
+      : root_(&root), file_(std::move(file)) {}
   JsonDocument(const JsonDocument&) = delete;
   JsonDocument& operator=(const JsonDocument&) = delete;
 
@@ -87,7 +88,7 @@ class JsonValue {
   int as_int() const;
   bool as_bool() const;
   double as_number_in(double lo, double hi) const;
-  double as_positive() const;     // > 0
+  double as_positive() const;      // > 0
   double as_non_negative() const;  // >= 0
   Vec3 as_vec3() const;
   Vec2 as_vec2() const;

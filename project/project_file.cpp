@@ -7,18 +7,18 @@
 #include <set>
 
 #include "calc/emergency_surfaces.h"
-#include "project/json_reader.h"
 #include "calc/luminaire_tilt.h"
 #include "calc/near_model_name.h"
-#include "project/project_limits.h"
-#include "project/requirements.h"
-#include "project/safe_json.h"
-#include "project/sanity_checks.h"
 #include "calc/scaled_distribution.h"
 #include "calc/visibility.h"
 #include "geometry/workplane.h"
 #include "photometry/builtin.h"
 #include "photometry/tabular_distribution.h"
+#include "project/json_reader.h"
+#include "project/project_limits.h"
+#include "project/requirements.h"
+#include "project/safe_json.h"
+#include "project/sanity_checks.h"
 #include "util/error.h"
 #include "util/output_names.h"
 #include "util/paths.h"
@@ -54,7 +54,8 @@ double coordinate(const JsonValue& v) {
 // An array or object of at most `limit` entries, checked before any entry is read.
 void check_count(const JsonValue& v, std::size_t limit, const char* what) {
   if ((v.is_array() || v.is_object()) && v.raw().size() > limit) {
-    v.fail(std::to_string(v.raw().size()) + " " + what + ", more than the limit of " + std::to_string(limit));
+    v.fail(std::to_string(v.raw().size()) + " " + what + ", more than the limit of " +
+           std::to_string(limit));
   }
 }
 
@@ -82,7 +83,8 @@ void parse_maintenance(const JsonValue& m, Settings& out) {
   }
   if (!m.is_object()) {
     m.fail("expected a maintenance factor in [" + number_text(kMinMaintenanceFactor) +
-           ", 1] or its parts {\"LLMF\", \"LSF\", \"LMF\", \"RSMF\"}, got " + json_type_name(m.raw()));
+           ", 1] or its parts {\"LLMF\", \"LSF\", \"LMF\", \"RSMF\"}, got " +
+           json_type_name(m.raw()));
   }
   // CIE 97's table form (factors looked up by lamp type, luminaire category, environment and
   // cleaning interval) needs the standard's tables, which luxgrid does not ship: refuse its keys
@@ -100,7 +102,8 @@ void parse_maintenance(const JsonValue& m, Settings& out) {
   }
   m.expect_object();
   MaintenanceFactors f;
-  const std::pair<const char*, double*> parts[] = {{"LLMF", &f.LLMF}, {"LSF", &f.LSF}, {"LMF", &f.LMF}, {"RSMF", &f.RSMF}};
+  const std::pair<const char*, double*> parts[] = {
+      {"LLMF", &f.LLMF}, {"LSF", &f.LSF}, {"LMF", &f.LMF}, {"RSMF", &f.RSMF}};
   for (const auto& [key, value] : parts) {
     const auto v = m.at(key);  // all four: a forgotten factor would silently count as 1
     *value = v.as_number_in(0.0, 1.0);
@@ -108,8 +111,8 @@ void parse_maintenance(const JsonValue& m, Settings& out) {
   }
   const double mf = f.product();
   if (mf < kMinMaintenanceFactor) {
-    m.fail("the maintenance factor LLMF x LSF x LMF x RSMF = " + number_text(mf) + " is below the limit of " +
-           number_text(kMinMaintenanceFactor));
+    m.fail("the maintenance factor LLMF x LSF x LMF x RSMF = " + number_text(mf) +
+           " is below the limit of " + number_text(kMinMaintenanceFactor));
   }
   out.maintenance_factor = mf;
   out.maintenance_parts = f;
@@ -120,29 +123,39 @@ Settings parse_settings(const JsonValue& s) {
   Settings out;
   if (auto q = s.find("quality")) {
     const auto parsed = quality_from_string(q->as_string());
-    if (!parsed) q->fail("expected \"draft\", \"standard\", \"high\" or \"reference\", got \"" +
-                         q->as_string() + "\"");
+    if (!parsed)
+      q->fail("expected \"draft\", \"standard\", \"high\" or \"reference\", got \"" +
+              q->as_string() + "\"");
     out.quality = *parsed;
   }
   if (auto n = s.find("near_field")) {
     const std::string v = n->as_string();
-    if (v == "auto") out.near_field = NearFieldMode::automatic;
-    else if (v == "always") out.near_field = NearFieldMode::always;
-    else if (v == "never") out.near_field = NearFieldMode::never;
-    else n->fail("expected \"auto\", \"always\" or \"never\", got \"" + v + "\"");
+    if (v == "auto")
+      out.near_field = NearFieldMode::automatic;
+    else if (v == "always")
+      out.near_field = NearFieldMode::always;
+    else if (v == "never")
+      out.near_field = NearFieldMode::never;
+    else
+      n->fail("expected \"auto\", \"always\" or \"never\", got \"" + v + "\"");
   }
   if (auto m = s.find("near_field_model")) {
     out.near_field_model = m->as_string();
     if (!near_model_named(out.near_field_model)) {
-      m->fail("unknown model \"" + out.near_field_model + "\" (expected " + kNearFieldModelNames + ")");
+      m->fail("unknown model \"" + out.near_field_model + "\" (expected " + kNearFieldModelNames +
+              ")");
     }
   }
   if (auto i = s.find("indirect")) {
     const std::string v = i->as_string();
-    if (v == "auto") out.indirect = IndirectMode::automatic;
-    else if (v == "off") out.indirect = IndirectMode::off;
-    else if (v == "on") out.indirect = IndirectMode::on;
-    else i->fail("expected \"auto\", \"off\" or \"on\", got \"" + v + "\"");
+    if (v == "auto")
+      out.indirect = IndirectMode::automatic;
+    else if (v == "off")
+      out.indirect = IndirectMode::off;
+    else if (v == "on")
+      out.indirect = IndirectMode::on;
+    else
+      i->fail("expected \"auto\", \"off\" or \"on\", got \"" + v + "\"");
   }
   if (auto b = s.find("bounces")) {
     const std::string expected =
@@ -166,7 +179,8 @@ Settings parse_settings(const JsonValue& s) {
     }
     parse_maintenance(*m, out);
   }
-  if (auto a = s.find("allow_files_outside_project")) out.allow_files_outside_project = a->as_bool();
+  if (auto a = s.find("allow_files_outside_project"))
+    out.allow_files_outside_project = a->as_bool();
   if (auto sc = s.find("scene")) {
     const std::string v = sc->as_string();
     if (v == "normal")
@@ -185,8 +199,8 @@ photometry::Photometry parse_builtin(const JsonValue& e) {
   const auto i0_v = e.at("intensity_cd");
   const double i0 = i0_v.as_non_negative();
   if (i0 > kMaxIntensity_cd) {
-    i0_v.fail("expected at most " + number_text(kMaxIntensity_cd) + " cd (the intensity limit), got " +
-              number_text(i0));
+    i0_v.fail("expected at most " + number_text(kMaxIntensity_cd) +
+              " cd (the intensity limit), got " + number_text(i0));
   }
   photometry::Photometry p;
   p.format = "builtin";
@@ -255,7 +269,8 @@ double peak_intensity_cd(const photometry::Photometry& p) {
   double peak = 0.0;
   for (int g = 0; g <= 180; ++g) {
     for (int c = 0; c < 360; ++c) {
-      peak = std::max(peak, p.distribution->intensity(photometry::direction_of(c * kDegToRad, g * kDegToRad)));
+      peak = std::max(
+          peak, p.distribution->intensity(photometry::direction_of(c * kDegToRad, g * kDegToRad)));
     }
   }
   return peak;
@@ -401,11 +416,11 @@ geometry::Obstacle parse_obstacle(const JsonValue& o, size_t index, const Room& 
     for (const auto& c : outline_v.items()) outline.push_back(point2(c));
     const double z0 = coordinate(p.at("z0")), z1 = coordinate(p.at("z1"));
     bool reversed = false;
-    out = at_place(outline_v, [&] {
-      return geometry::make_prism(name, outline, z0, z1, rho, &reversed);
-    });
+    out = at_place(outline_v,
+                   [&] { return geometry::make_prism(name, outline, z0, z1, rho, &reversed); });
     if (reversed) {
-      warnings.push_back("obstacle \"" + name + "\": the outline is clockwise; reversed to counter-clockwise");
+      warnings.push_back("obstacle \"" + name +
+                         "\": the outline is clockwise; reversed to counter-clockwise");
     }
   }
   const double top = room.floor_z + room.height;
@@ -430,7 +445,8 @@ Room parse_room(const JsonValue& r, std::vector<std::string>& warnings) {
     return geometry::normalize_outline(room.outline, "room \"" + room.name + "\"");
   });
   if (reversed) {
-    warnings.push_back("room \"" + room.name + "\": the outline is clockwise; reversed to counter-clockwise");
+    warnings.push_back("room \"" + room.name +
+                       "\": the outline is clockwise; reversed to counter-clockwise");
   }
   if (auto z = r.find("floor_z")) room.floor_z = coordinate(*z);
   const auto height_v = r.at("height");
@@ -472,8 +488,8 @@ glm::dmat3 parse_rotation(const JsonValue& rot) {
 // The project's luminaires, arrays expanded, would number `total`.
 void check_luminaire_count(const JsonValue& where, size_t total) {
   if (total > kMaxLuminaires) {
-    where.fail("the project would have " + std::to_string(total) + " luminaires, more than the limit of " +
-               std::to_string(kMaxLuminaires));
+    where.fail("the project would have " + std::to_string(total) +
+               " luminaires, more than the limit of " + std::to_string(kMaxLuminaires));
   }
 }
 
@@ -576,9 +592,10 @@ class GridBudget {
     used_ += points;
     const double pairs = luminaires_ * used_;
     if (pairs > kMaxLuminairePointPairs) {
-      where.fail(number_text(luminaires_) + " luminaires x " + count_text(used_) + " points = " +
-                 number_text(pairs) + " luminaire-point pairs, more than the limit of " +
-                 number_text(kMaxLuminairePointPairs) + "; use fewer luminaires or larger spacings");
+      where.fail(
+          number_text(luminaires_) + " luminaires x " + count_text(used_) +
+          " points = " + number_text(pairs) + " luminaire-point pairs, more than the limit of " +
+          number_text(kMaxLuminairePointPairs) + "; use fewer luminaires or larger spacings");
     }
   }
   // Views of observers surfaces: each lists a glare term per luminaire (kMaxViewLuminairePairs).
@@ -588,7 +605,8 @@ class GridBudget {
     if (pairs > kMaxViewLuminairePairs) {
       where.fail(number_text(luminaires_) + " luminaires x " + count_text(views_) + " views = " +
                  number_text(pairs) + " view-luminaire pairs, more than the limit of " +
-                 number_text(kMaxViewLuminairePairs) + " for observers surfaces; use fewer views or observers");
+                 number_text(kMaxViewLuminairePairs) +
+                 " for observers surfaces; use fewer views or observers");
     }
   }
   void spend_cells(const JsonValue& where, double size_u, double size_v, double spacing) {
@@ -624,17 +642,25 @@ void apply_quantity(const JsonValue& s, std::vector<geometry::SurfaceGrid>& grid
   geometry::Quantity quantity = geometry::Quantity::planar;
   if (q) {
     const std::string v = q->as_string();
-    if (v == "planar") quantity = geometry::Quantity::planar;
-    else if (v == "horizontal") quantity = geometry::Quantity::horizontal;
-    else if (v == "vertical") quantity = geometry::Quantity::vertical;
-    else if (v == "cylindrical") quantity = geometry::Quantity::cylindrical;
-    else if (v == "semi-cylindrical") quantity = geometry::Quantity::semi_cylindrical;
+    if (v == "planar")
+      quantity = geometry::Quantity::planar;
+    else if (v == "horizontal")
+      quantity = geometry::Quantity::horizontal;
+    else if (v == "vertical")
+      quantity = geometry::Quantity::vertical;
+    else if (v == "cylindrical")
+      quantity = geometry::Quantity::cylindrical;
+    else if (v == "semi-cylindrical")
+      quantity = geometry::Quantity::semi_cylindrical;
     else
-      q->fail("expected \"planar\", \"horizontal\", \"vertical\", \"cylindrical\" or \"semi-cylindrical\", got \"" +
-              v + "\"");
+      q->fail(
+          "expected \"planar\", \"horizontal\", \"vertical\", \"cylindrical\" or "
+          "\"semi-cylindrical\", got \"" +
+          v + "\"");
   }
   // Both turn the receiver towards a horizontal direction: a vertical plane, a half cylinder.
-  const bool faces = quantity == geometry::Quantity::vertical || quantity == geometry::Quantity::semi_cylindrical;
+  const bool faces =
+      quantity == geometry::Quantity::vertical || quantity == geometry::Quantity::semi_cylindrical;
   if (facing && !faces) {
     facing->fail("\"facing\" only goes with \"quantity\": \"vertical\" or \"semi-cylindrical\"");
   }
@@ -657,7 +683,9 @@ void apply_quantity(const JsonValue& s, std::vector<geometry::SurfaceGrid>& grid
         } else {
           const Vec3 h(n.x, n.y, 0.0);
           if (!(glm::length(h) > kMinHorizontalPart)) {
-            q->fail("a " + std::string(quantity == geometry::Quantity::vertical ? "vertical" : "semi-cylindrical") +
+            q->fail("a " +
+                    std::string(quantity == geometry::Quantity::vertical ? "vertical"
+                                                                         : "semi-cylindrical") +
                     " quantity on a horizontal surface needs \"facing\": [x, y]");
           }
           n = glm::normalize(h);
@@ -673,8 +701,9 @@ Vec3 view_direction(const JsonValue& v) {
   if (glm::length(d) == 0.0) v.fail("expected a non-zero direction");
   const Vec3 n = glm::normalize(d);
   if (!(std::hypot(n.x, n.y) >= kMinViewHorizontalPart)) {
-    v.fail("a view direction must not be vertical (the position index measures heights above the "
-           "line of sight in the vertical plane through it)");
+    v.fail(
+        "a view direction must not be vertical (the position index measures heights above the "
+        "line of sight in the vertical plane through it)");
   }
   return n;
 }
@@ -682,8 +711,8 @@ Vec3 view_direction(const JsonValue& v) {
 // "observers": [{"at": [x, y, z], "directions": [[dx, dy, dz], ...] or N}]: one point per
 // (observer, view), its normal the view direction (geometry::SurfaceGrid::Kind::observers).
 // "directions": N gives N horizontal directions from +x, counter-clockwise, evenly spaced.
-geometry::SurfaceGrid parse_observers(const JsonValue& s, const JsonValue& obs, const std::string& name,
-                                      GridBudget& budget) {
+geometry::SurfaceGrid parse_observers(const JsonValue& s, const JsonValue& obs,
+                                      const std::string& name, GridBudget& budget) {
   for (const char* key : {"spacing", "quantity", "facing"}) {
     if (s.has(key)) s.at(key).fail(std::string("an observers surface has no \"") + key + "\"");
   }
@@ -713,7 +742,8 @@ geometry::SurfaceGrid parse_observers(const JsonValue& s, const JsonValue& obs, 
         views.emplace_back(snap(std::cos(a)), snap(std::sin(a)), 0.0);
       }
     } else {
-      if (!dirs.is_array()) dirs.fail("expected a number of directions or an array of [dx, dy, dz]");
+      if (!dirs.is_array())
+        dirs.fail("expected a number of directions or an array of [dx, dy, dz]");
       check_count(dirs, kMaxViewsPerObserver, "directions");
       if (dirs.raw().empty()) dirs.fail("expected at least one direction");
       for (const auto& d : dirs.items()) views.push_back(view_direction(d));
@@ -818,7 +848,8 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
     const auto height_v = w->at("height");
     const double height = height_v.as_non_negative();
     if (height > room.height) height_v.fail("the workplane is above the ceiling of the room");
-    const double border = w->has("border") ? (w->at("border").as_non_negative(), coordinate(w->at("border"))) : 0.0;
+    const double border =
+        w->has("border") ? (w->at("border").as_non_negative(), coordinate(w->at("border"))) : 0.0;
     // The outline inset by the border (straight skeleton: L-shapes and notches inset right).
     const auto region = geometry::inset_outline(room.outline, border);
     if (region.empty()) w->at("border").fail("the border leaves no workplane inside the room");
@@ -826,9 +857,11 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
     const double su = box.hi.x - box.lo.x, sv = box.hi.y - box.lo.y;
     const double spacing = parse_spacing(s, s.find("spacing"), std::max(su, sv));
     budget.spend_cells(s, su, sv, spacing);
-    auto g = geometry::make_region_grid(name, region, room.floor_z + height, spacing, room.obstacles);
+    auto g =
+        geometry::make_region_grid(name, region, room.floor_z + height, spacing, room.obstacles);
     if (active_points(g) == 0) {
-      s.fail("no grid point lies inside the workplane and outside obstacles; use a smaller spacing");
+      s.fail(
+          "no grid point lies inside the workplane and outside obstacles; use a smaller spacing");
     }
     return {std::move(g)};
   }
@@ -840,7 +873,8 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
     if (!spacing_v) s.fail("missing required key \"spacing\" (metres or \"auto\")");
     double spacing = 0.0;  // 0: auto per face
     if (spacing_v->is_string()) {
-      if (spacing_v->as_string() != "auto") spacing_v->fail("expected a number of metres or \"auto\"");
+      if (spacing_v->as_string() != "auto")
+        spacing_v->fail("expected a number of metres or \"auto\"");
     } else {
       spacing = spacing_v->as_positive();
     }
@@ -857,7 +891,8 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
                                               geometry::auto_spacing(room.height));
     const double points =
         2.0 * std::ceil((box.hi.x - box.lo.x) / p) * std::ceil((box.hi.y - box.lo.y) / p) +
-        std::ceil(wall_length / p + static_cast<double>(room.outline.size())) * std::ceil(room.height / p);
+        std::ceil(wall_length / p + static_cast<double>(room.outline.size())) *
+            std::ceil(room.height / p);
     budget.spend(s, points, "grids");
     return geometry::make_room_surface_grids(name, shape, spacing, room.obstacles);
   }
@@ -904,7 +939,8 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
 // One surface entry gives one grid, or several for room_surfaces ("<name> floor", ...).
 // A surface's name becomes its output file names; kMaxSurfaceNameLength keeps them short enough.
 void check_name_length(const JsonValue& where, const std::string& name) {
-  if (name.empty()) where.fail("expected a surface name, got an empty one (it names the surface's output files)");
+  if (name.empty())
+    where.fail("expected a surface name, got an empty one (it names the surface's output files)");
   if (name.size() > kMaxSurfaceNameLength) {
     where.fail("the surface name is " + std::to_string(name.size()) +
                " characters long, more than the limit of " + std::to_string(kMaxSurfaceNameLength) +
@@ -935,7 +971,8 @@ class OutputNames {
       const auto [it, fresh] = owner_.emplace(key, surface);
       if (!fresh) {
         where.fail("surface \"" + surface + "\" would write " + *file + ", which surface \"" +
-                   it->second + "\" also writes (output file names ignore case and turn characters " +
+                   it->second +
+                   "\" also writes (output file names ignore case and turn characters " +
                    "other than letters, digits, '-', '_' and '.' into '_'); rename one of them");
       }
     }
@@ -992,15 +1029,17 @@ void record_emergency_surfaces(const JsonValue& s, const std::vector<geometry::S
 void check_observers_inputs(const JsonValue& s, const Scene& scene) {
   if (!s.has("observers")) return;
   if (scene.settings.indirect == IndirectMode::off) {
-    s.fail("an observers surface needs reflected light: UGR's background luminance is the indirect "
-           "illuminance at the eye over pi (CIE 117), and \"settings\": {\"indirect\": \"off\"} "
-           "leaves it 0; set \"indirect\" to \"auto\" or \"on\"");
+    s.fail(
+        "an observers surface needs reflected light: UGR's background luminance is the indirect "
+        "illuminance at the eye over pi (CIE 117), and \"settings\": {\"indirect\": \"off\"} "
+        "leaves it 0; set \"indirect\" to \"auto\" or \"on\"");
   }
   for (const auto& l : scene.luminaires) {
     if (l.opening.shape == photometry::LuminousOpening::Shape::point) {
-      s.fail("an observers surface needs every luminaire's luminous area (UGR's luminance is the "
-             "intensity over the projected area); " + l.label +
-             " has a point emitter: give it an \"emitter\" with its luminous opening");
+      s.fail(
+          "an observers surface needs every luminaire's luminous area (UGR's luminance is the "
+          "intensity over the projected area); " +
+          l.label + " has a point emitter: give it an \"emitter\" with its luminous opening");
     }
   }
 }
@@ -1036,7 +1075,8 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
   root.expect_object();
   const auto format = root.at("format");
   if (format.as_string() != kProjectFormat) {
-    format.fail(std::string("expected \"") + kProjectFormat + "\", got \"" + format.as_string() + "\"");
+    format.fail(std::string("expected \"") + kProjectFormat + "\", got \"" + format.as_string() +
+                "\"");
   }
   Project project;
   Scene& scene = project.scene;
@@ -1048,7 +1088,8 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
 
   const FilePolicy files{base_dir, scene.settings.allow_files_outside_project};
   const auto ph = root.at("photometry");
-  if (!ph.is_object()) ph.fail("expected an object of named entries, got " + json_type_name(ph.raw()));
+  if (!ph.is_object())
+    ph.fail("expected an object of named entries, got " + json_type_name(ph.raw()));
   check_count(ph, kMaxPhotometryEntries, "photometry entries");
   for (const auto& [key, _] : ph.raw().items()) {
     const auto entry = ph.at(key.c_str());
@@ -1073,7 +1114,8 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
     Room room = parse_room(r, scene.warnings);
     r.report_unqueried();
     for (const auto& other : scene.rooms) {
-      if (other.name == room.name) r.at("name").fail("a room named \"" + room.name + "\" already exists");
+      if (other.name == room.name)
+        r.at("name").fail("a room named \"" + room.name + "\" already exists");
     }
     scene.rooms.push_back(std::move(room));
   }
@@ -1096,7 +1138,8 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
     s.report_unqueried();
     for (auto& grid : grids) {
       const auto name_v = s.at("name");
-      if (!names.insert(grid.name).second) name_v.fail("a surface named \"" + grid.name + "\" already exists");
+      if (!names.insert(grid.name).second)
+        name_v.fail("a surface named \"" + grid.name + "\" already exists");
       if (names.size() > kMaxSurfaceGrids) {
         name_v.fail("the surfaces would give " + std::to_string(names.size()) +
                     " grids, more than the limit of " + std::to_string(kMaxSurfaceGrids));
@@ -1117,7 +1160,7 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
 }
 
 Project parse_project_text(std::string_view text, const std::string& label,
-                         const std::filesystem::path& base_dir) {
+                           const std::filesystem::path& base_dir) {
   return parse_project(parse_json_text(text, label), label, base_dir);
 }
 
@@ -1125,7 +1168,8 @@ Project load_project(const std::filesystem::path& file) {
   // JSON-level messages name the file as given; the scene's name only its file name. The bytes
   // are read once: the hash in results.json is of exactly what was parsed.
   const std::string text = read_bounded_file(file);
-  Project project = parse_project(parse_json_text(text, file.string()), file.filename().string(), file.parent_path());
+  Project project = parse_project(parse_json_text(text, file.string()), file.filename().string(),
+                                  file.parent_path());
   project.scene.project_file = file;
   project.scene.project_sha256 = sha256_hex(text);
   return project;

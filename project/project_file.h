@@ -28,12 +28,12 @@ Project load_project(const std::filesystem::path& file);
 // The same from project text in memory (the fuzzer's entry point): `label` names it in every
 // message, relative photometry paths are resolved against `base_dir`.
 Project parse_project_text(std::string_view text, const std::string& label,
-                         const std::filesystem::path& base_dir);
+                           const std::filesystem::path& base_dir);
 
 // Parses an already-read document (read it with read_json_file or parse_json_text, which
 // bound its size and depth). `label` names it in messages; relative photometry paths are
 // resolved against `base_dir`.
 Project parse_project(const nlohmann::json& doc, const std::string& label,
-                    const std::filesystem::path& base_dir);
+                      const std::filesystem::path& base_dir);
 
 }  // namespace luxgrid::project

@@ -22,13 +22,13 @@ namespace luxgrid::project {
 
 // What one grid must meet.
 struct SurfaceRequirements {
-  std::string role = "task area";  // "task area", "wall", "ceiling", "floor"
+  std::string role = "task area";        // "task area", "wall", "ceiling", "floor"
   std::map<std::string, double> limits;  // "Em", "U0", "Emin", "Emax", "Ez", "Esc", "UGR_L", "Ra"
   // The quantities a preset filled (an explicit key overrides the preset and is not listed), with
   // the row's citation: "office-writing: EN 12464-1:2021 Table 5.26 Offices, ref. 5.26.2".
   std::map<std::string, std::string> from_preset;
   std::optional<std::pair<double, double>> modelling;  // Ez / Eh at every point within [lo, hi]
-  std::string preset;                        // the preset key, or empty
+  std::string preset;                                  // the preset key, or empty
   std::vector<std::string> glare_observers;  // observers surfaces for UGR_L; empty: every one
   std::string cylindrical;  // the cylindrical surface giving Ez (and modelling's numerator)
   std::string horizontal;   // on a cylindrical surface: the horizontal one giving modelling's Eh

@@ -72,7 +72,9 @@ class CheckedDomBuilder {
   bool null() { return next_value() && dom_.null(); }
   bool boolean(bool v) { return next_value() && dom_.boolean(v); }
   bool number_integer(json::number_integer_t v) { return next_value() && dom_.number_integer(v); }
-  bool number_unsigned(json::number_unsigned_t v) { return next_value() && dom_.number_unsigned(v); }
+  bool number_unsigned(json::number_unsigned_t v) {
+    return next_value() && dom_.number_unsigned(v);
+  }
   bool number_float(json::number_float_t v, const std::string& s) {
     return next_value() && dom_.number_float(v, s);
   }
@@ -89,7 +91,8 @@ class CheckedDomBuilder {
     const auto [it, fresh] = f.keys.emplace(k, consumed());
     if (!fresh) {
       fail(consumed(), pointer(),
-           "duplicate key \"" + k + "\" (first given on line " + std::to_string(line_column(text_, it->second).first) + ")");
+           "duplicate key \"" + k + "\" (first given on line " +
+               std::to_string(line_column(text_, it->second).first) + ")");
     }
     return dom_.key(k);
   }
@@ -130,12 +133,13 @@ class CheckedDomBuilder {
   struct Frame {
     bool is_array = false;
     std::size_t next_index = 0;
-    std::string child;  // escaped key or index of the value being read
+    std::string child;                        // escaped key or index of the value being read
     std::map<std::string, std::size_t> keys;  // object keys so far -> characters read at each
   };
 
   std::size_t consumed() const { return static_cast<std::size_t>(*read_ - text_.data()); }
-  [[noreturn]] void fail(std::size_t at, const std::string& pointer, const std::string& message) const {
+  [[noreturn]] void fail(std::size_t at, const std::string& pointer,
+                         const std::string& message) const {
     const auto [line, column] = line_column(text_, at);
     throw InputError(SourceLocation{label_, line, column, pointer}, message);
   }
@@ -151,8 +155,9 @@ class CheckedDomBuilder {
   void open(bool is_array) {
     next_value();
     if (frames_.size() >= static_cast<std::size_t>(kMaxJsonDepth)) {
-      fail(consumed(), "", "objects and arrays nested deeper than the limit of " +
-                               std::to_string(kMaxJsonDepth) + " levels");
+      fail(consumed(), "",
+           "objects and arrays nested deeper than the limit of " + std::to_string(kMaxJsonDepth) +
+               " levels");
     }
     frames_.push_back(Frame{is_array, 0, {}, {}});
   }
@@ -211,9 +216,10 @@ std::string read_bounded_file(const std::filesystem::path& file, std::uintmax_t 
   const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
   if (ec) throw InputError(SourceLocation{file.string()}, "cannot open the " + kind);
   if (bytes > max_bytes) {
-    throw InputError(SourceLocation{file.string()}, "the file is " + std::to_string(bytes) +
-                     " bytes, more than the limit of " + std::to_string(max_bytes) + " bytes (" +
-                     std::to_string(max_bytes >> 20) + " MiB) for a " + kind);
+    throw InputError(SourceLocation{file.string()},
+                     "the file is " + std::to_string(bytes) + " bytes, more than the limit of " +
+                         std::to_string(max_bytes) + " bytes (" + std::to_string(max_bytes >> 20) +
+                         " MiB) for a " + kind);
   }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(SourceLocation{file.string()}, "cannot open the " + kind);

@@ -32,9 +32,10 @@ void check_millimetres(const Scene& scene, const JsonValue& root, std::vector<st
       const auto box = geometry::bounds({r.outline});
       const double dx = box.hi.x - box.lo.x, dy = box.hi.y - box.lo.y;
       if (std::max(dx, dy) > kMillimetreSuspect_m) {
-        out.push_back(object(items[i], r.name) + ": the room is " + metres(dx) + " x " + metres(dy) +
-                      " in plan, which looks like millimetres; luxgrid reads every length in metres "
-                      "and calculated the room as given (divide the lengths by 1000)");
+        out.push_back(
+            object(items[i], r.name) + ": the room is " + metres(dx) + " x " + metres(dy) +
+            " in plan, which looks like millimetres; luxgrid reads every length in metres "
+            "and calculated the room as given (divide the lengths by 1000)");
       }
     }
   }
@@ -44,8 +45,9 @@ void check_millimetres(const Scene& scene, const JsonValue& root, std::vector<st
       if (!plane) continue;
       const auto size = plane->at("size").as_vec2();
       if (std::max(size.x, size.y) > kMillimetreSuspect_m) {
-        out.push_back(object(s, s.at("name").as_string()) + ": the plane is " + metres(size.x) + " x " +
-                      metres(size.y) + ", which looks like millimetres; luxgrid reads every length in "
+        out.push_back(object(s, s.at("name").as_string()) + ": the plane is " + metres(size.x) +
+                      " x " + metres(size.y) +
+                      ", which looks like millimetres; luxgrid reads every length in "
                       "metres and calculated the plane as given (divide the lengths by 1000)");
       }
     }
@@ -79,7 +81,8 @@ std::vector<SurfaceEntry> surface_entries(const Scene& scene, const JsonValue& r
 }
 
 // A spacing larger than the surface, and grids too coarse for statistics.
-void check_grids(const std::vector<SurfaceEntry>& entries, const Scene& scene, std::vector<std::string>& out) {
+void check_grids(const std::vector<SurfaceEntry>& entries, const Scene& scene,
+                 std::vector<std::string>& out) {
   for (const auto& e : entries) {
     const std::string name = e.value.at("name").as_string();
     const auto spacing = e.value.find("spacing");
@@ -92,7 +95,8 @@ void check_grids(const std::vector<SurfaceEntry>& entries, const Scene& scene, s
           if (r.name != room) continue;
           const auto box = geometry::bounds({r.outline});
           longer = std::max({box.hi.x - box.lo.x, box.hi.y - box.lo.y, r.height});
-          extent = metres(box.hi.x - box.lo.x) + " x " + metres(box.hi.y - box.lo.y) + " x " + metres(r.height);
+          extent = metres(box.hi.x - box.lo.x) + " x " + metres(box.hi.y - box.lo.y) + " x " +
+                   metres(r.height);
         }
       } else {
         const auto& g = *e.grids.front();
@@ -110,12 +114,14 @@ void check_grids(const std::vector<SurfaceEntry>& entries, const Scene& scene, s
     for (const auto* g : e.grids) {
       if (g->kind != geometry::SurfaceGrid::Kind::grid) continue;
       if (g->nu >= kMinGridPointsPerSide && g->nv >= kMinGridPointsPerSide) continue;
-      coarse += (coarse.empty() ? "" : ", ") + (e.grids.size() > 1 ? g->name + " " : std::string()) +
-                std::to_string(g->nu) + " x " + std::to_string(g->nv) + " points";
+      coarse += (coarse.empty() ? "" : ", ") +
+                (e.grids.size() > 1 ? g->name + " " : std::string()) + std::to_string(g->nu) +
+                " x " + std::to_string(g->nv) + " points";
     }
     if (!coarse.empty()) {
-      out.push_back(object(e.value, name) + ": a grid of fewer than " + std::to_string(kMinGridPointsPerSide) +
-                    " x " + std::to_string(kMinGridPointsPerSide) + " points (" + coarse +
+      out.push_back(object(e.value, name) + ": a grid of fewer than " +
+                    std::to_string(kMinGridPointsPerSide) + " x " +
+                    std::to_string(kMinGridPointsPerSide) + " points (" + coarse +
                     "); luxgrid calculated it as given, but its Emin, U0 and map say little (use a "
                     "smaller spacing)");
     }
@@ -124,10 +130,12 @@ void check_grids(const std::vector<SurfaceEntry>& entries, const Scene& scene, s
 
 // A grid whose points all face away from every room: its receivers look at the outside of the
 // room's boundary (a wall plane with u and v swapped), where no luminaire of the room shines.
-void check_facing(const std::vector<SurfaceEntry>& entries, const Scene& scene, std::vector<std::string>& out) {
+void check_facing(const std::vector<SurfaceEntry>& entries, const Scene& scene,
+                  std::vector<std::string>& out) {
   if (scene.rooms.empty()) return;
   auto in_some_room = [&](const Vec3& p) {
-    return std::any_of(scene.rooms.begin(), scene.rooms.end(), [&](const Room& r) { return inside_room(r, p); });
+    return std::any_of(scene.rooms.begin(), scene.rooms.end(),
+                       [&](const Room& r) { return inside_room(r, p); });
   };
   for (const auto& e : entries) {
     for (const auto* g : e.grids) {
@@ -160,17 +168,18 @@ void check_flux(const Scene& scene, const JsonValue& root, std::vector<std::stri
     const double target = flux->as_number();
     const double file_lm = luminous_flux(*it->second.table);
     if (target < kKilolumenSuspect_lm && file_lm >= kKilolumenRatio * target) {
-      out.push_back(flux->pointer() + ": flux_lm " + number_text(target) + " lm for photometry \"" + key +
-                    "\", whose file gives " + number_text(std::round(file_lm)) +
-                    " lm, looks like kilolumens; luxgrid scaled the luminaire to " + number_text(target) +
-                    " lm (for " + number_text(target * 1000.0) + " lm write " + number_text(target * 1000.0) + ")");
+      out.push_back(flux->pointer() + ": flux_lm " + number_text(target) + " lm for photometry \"" +
+                    key + "\", whose file gives " + number_text(std::round(file_lm)) +
+                    " lm, looks like kilolumens; luxgrid scaled the luminaire to " +
+                    number_text(target) + " lm (for " + number_text(target * 1000.0) +
+                    " lm write " + number_text(target * 1000.0) + ")");
     }
   }
 }
 
 // Per entry of "luminaires": the luminaires it became, in the scene's order.
-std::vector<std::pair<JsonValue, std::vector<const Luminaire*>>> luminaire_entries(const Scene& scene,
-                                                                                 const JsonValue& root) {
+std::vector<std::pair<JsonValue, std::vector<const Luminaire*>>> luminaire_entries(
+    const Scene& scene, const JsonValue& root) {
   std::vector<std::pair<JsonValue, std::vector<const Luminaire*>>> out;
   const auto list = root.find("luminaires");
   if (!list) return out;
@@ -182,7 +191,8 @@ std::vector<std::pair<JsonValue, std::vector<const Luminaire*>>> luminaire_entri
       n = static_cast<size_t>(c[0]) * static_cast<size_t>(c[1]);
     }
     std::vector<const Luminaire*> members;
-    for (size_t k = 0; k < n && next < scene.luminaires.size(); ++k) members.push_back(&scene.luminaires[next++]);
+    for (size_t k = 0; k < n && next < scene.luminaires.size(); ++k)
+      members.push_back(&scene.luminaires[next++]);
     out.emplace_back(l, std::move(members));
   }
   return out;
@@ -201,10 +211,14 @@ void check_rotation(const JsonValue& l, std::vector<std::string>& out) {
   }
   if (!(within_turn && any_nonzero && any_fraction)) return;
   std::string degrees;
-  for (double a : v) degrees += (degrees.empty() ? "" : ", ") + number_text(std::round(a * kRadToDeg * 100.0) / 100.0);
-  out.push_back(rot->pointer() + ": the rotation [" + number_text(v[0]) + ", " + number_text(v[1]) + ", " +
-                number_text(v[2]) + "] looks like radians; luxgrid reads degrees and turned the luminaire by "
-                "that many degrees (in degrees, these radians are [" + degrees + "])");
+  for (double a : v)
+    degrees +=
+        (degrees.empty() ? "" : ", ") + number_text(std::round(a * kRadToDeg * 100.0) / 100.0);
+  out.push_back(rot->pointer() + ": the rotation [" + number_text(v[0]) + ", " + number_text(v[1]) +
+                ", " + number_text(v[2]) +
+                "] looks like radians; luxgrid reads degrees and turned the luminaire by "
+                "that many degrees (in degrees, these radians are [" +
+                degrees + "])");
 }
 
 // The nearest wall of `room` that the ray from `p` along unit `d` meets, m; infinity if none.
@@ -249,18 +263,20 @@ void check_aim(const JsonValue& l, const std::vector<const Luminaire*>& members,
       if (!first) {
         first = lum;
         what = "its main beam (direction " + number_text(std::round(d.x * 100) / 100) + ", " +
-               number_text(std::round(d.y * 100) / 100) + ", " + number_text(std::round(d.z * 100) / 100) +
-               ") meets room \"" + r.name + "\" wall " + std::to_string(wall) + " " +
-               metres(std::round(t * 100) / 100) + " away";
+               number_text(std::round(d.y * 100) / 100) + ", " +
+               number_text(std::round(d.z * 100) / 100) + ") meets room \"" + r.name + "\" wall " +
+               std::to_string(wall) + " " + metres(std::round(t * 100) / 100) + " away";
       }
       ++hits;
       break;
     }
   }
   if (!first) return;
-  out.push_back(l.pointer() + " \"" + first->label + "\"" +
-                (hits > 1 ? " and " + std::to_string(hits - 1) + " more of this entry" : std::string()) + ": " +
-                what + "; luxgrid calculated it as placed and turned (check its position and rotation)");
+  out.push_back(
+      l.pointer() + " \"" + first->label + "\"" +
+      (hits > 1 ? " and " + std::to_string(hits - 1) + " more of this entry" : std::string()) +
+      ": " + what +
+      "; luxgrid calculated it as placed and turned (check its position and rotation)");
 }
 
 }  // namespace

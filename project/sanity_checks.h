@@ -4,8 +4,8 @@
 // luminaire aimed into a wall close by, a grid that faces out of every room. Each becomes a
 // warning in Scene::warnings (the CLI prints it on stderr, results.json lists it) that names the
 // object by its JSON pointer and says what luxgrid assumed; the calculation runs as written.
-#include "project/json_reader.h"
 #include "calc/scene.h"
+#include "project/json_reader.h"
 
 namespace luxgrid::project {
 

@@ -10,16 +10,16 @@
 namespace luxgrid::project {
 
 struct TaskPreset {
-  const char* key;        // what a project writes: "office-writing"
-  const char* area;       // the standard's wording of the task or activity
-  const char* edition;    // "EN 12464-1:2021"
-  const char* table;      // "Table 5.26 Offices"
-  const char* reference;  // the standard's reference number, "5.26.2"
-  double Em_lx;           // maintained illuminance on the task area (the "required" column)
-  double U0;              // Emin / Em on the task area
-  double UGR_L;           // the limit of the unified glare rating
-  double Ra;              // the minimum colour rendering index
-  std::optional<double> Ez_lx;          // maintained cylindrical illuminance of the activity area
+  const char* key;              // what a project writes: "office-writing"
+  const char* area;             // the standard's wording of the task or activity
+  const char* edition;          // "EN 12464-1:2021"
+  const char* table;            // "Table 5.26 Offices"
+  const char* reference;        // the standard's reference number, "5.26.2"
+  double Em_lx;                 // maintained illuminance on the task area (the "required" column)
+  double U0;                    // Emin / Em on the task area
+  double UGR_L;                 // the limit of the unified glare rating
+  double Ra;                    // the minimum colour rendering index
+  std::optional<double> Ez_lx;  // maintained cylindrical illuminance of the activity area
   std::optional<double> Em_wall_lx;     // maintained illuminance on the walls (U0 >= 0.10)
   std::optional<double> Em_ceiling_lx;  // maintained illuminance on the ceiling (U0 >= 0.10)
 };

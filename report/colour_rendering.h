@@ -12,15 +12,17 @@
 
 namespace luxgrid::report {
 
-// The Ra a text states, or none: "80" -> 80, "Ra 82" -> 82, ">=80" -> 80, "1B" -> 80, "Unknown" -> none.
+// The Ra a text states, or none: "80" -> 80, "Ra 82" -> 82, ">=80" -> 80, "1B" -> 80, "Unknown" ->
+// none.
 std::optional<double> parse_colour_rendering(const std::string& text);
 
 // The lowest Ra over the file's lamp sets and keywords; none when no field states one.
 std::optional<double> photometry_colour_rendering(const photometry::Photometry& p);
 
 struct SceneColourRendering {
-  std::optional<double> Ra;  // the lowest over every photometry entry the luminaires use; none if any is unknown
-  std::string source;        // "photometry \"mirel\": Ra 80", or why it is unknown
+  std::optional<double>
+      Ra;  // the lowest over every photometry entry the luminaires use; none if any is unknown
+  std::string source;  // "photometry \"mirel\": Ra 80", or why it is unknown
 };
 
 // What the luminaires of `scene` give; a scene without luminaires gives none.

@@ -84,7 +84,8 @@ ColourScale parse_scale(const std::string& text) {
   auto number = [&](const std::string& s) {
     char* end = nullptr;
     const double v = std::strtod(s.c_str(), &end);
-    if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v)) throw bad("\"" + s + "\" is not a number");
+    if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v))
+      throw bad("\"" + s + "\" is not a number");
     return v;
   };
   const double lo = number(a), hi = number(b);

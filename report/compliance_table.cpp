@@ -60,7 +60,8 @@ std::string compliance_table_html(const std::vector<RequirementCheck>& checks) {
   }
   std::string verdict = ok ? "All requirements are met." : "Some requirements are NOT met";
   if (!ok) {
-    verdict += " (" + std::to_string(failed) + " not met, " + std::to_string(missing) + " not calculated).";
+    verdict += " (" + std::to_string(failed) + " not met, " + std::to_string(missing) +
+               " not calculated).";
   }
   // The emergency scene's checks are EN 1838's, on escape routes and open areas.
   const bool emergency = std::any_of(checks.begin(), checks.end(),
@@ -80,21 +81,26 @@ std::string compliance_table_html(const std::vector<RequirementCheck>& checks) {
   }
   h += "<p class=\"" + std::string(ok ? "met" : "notmet") + "\" data-requirements=\"" +
        (ok ? "met" : "not met") + "\">" + verdict + "</p>\n";
-  h += "<table class=\"compliance\"><tr><th>Surface</th><th>Quantity</th><th class=\"num\">Required</th>"
-       "<th class=\"num\">Achieved</th><th>Result</th><th class=\"num\">Margin</th><th>Source</th></tr>";
+  h += "<table class=\"compliance\"><tr><th>Surface</th><th>Quantity</th><th "
+       "class=\"num\">Required</th>"
+       "<th class=\"num\">Achieved</th><th>Result</th><th "
+       "class=\"num\">Margin</th><th>Source</th></tr>";
   std::set<std::string> citations;
   std::string previous;
   for (const auto& c : checks) {
     const std::string unit = requirement_unit(c.quantity);
     const char* f = format_of(c.quantity);
     const std::string required =
-        c.required_max ? fmt(f, c.required) + " &ndash; " + fmt(f, *c.required_max)
-                       : std::string(c.upper_limit ? "&le; " : "&ge; ") + fmt("%g", c.required) + unit;
+        c.required_max
+            ? fmt(f, c.required) + " &ndash; " + fmt(f, *c.required_max)
+            : std::string(c.upper_limit ? "&le; " : "&ge; ") + fmt("%g", c.required) + unit;
     std::string achieved = "&ndash;", margin = "&ndash;";
     if (c.calculated) {
-      achieved = c.achieved_max ? fmt(f, c.achieved) + " &ndash; " + fmt(f, *c.achieved_max) : fmt(f, c.achieved) + unit;
+      achieved = c.achieved_max ? fmt(f, c.achieved) + " &ndash; " + fmt(f, *c.achieved_max)
+                                : fmt(f, c.achieved) + unit;
       const std::string mf = std::string("%+") + (f + 1);
-      margin = fmt(mf.c_str(), c.margin) + unit + "<br><span class=\"muted\">" + fmt("%+.1f", 100.0 * c.margin_rel) + " %</span>";
+      margin = fmt(mf.c_str(), c.margin) + unit + "<br><span class=\"muted\">" +
+               fmt("%+.1f", 100.0 * c.margin_rel) + " %</span>";
     }
     const char* result = check_result(c);
     const char* css = !c.calculated ? "notcalc" : c.met ? "met" : "notmet";
@@ -104,12 +110,16 @@ std::string compliance_table_html(const std::vector<RequirementCheck>& checks) {
                              : "preset " + html_escape(c.source.substr(0, c.source.find(':')));
     if (!c.source.empty() && !c.fixed_by_standard) citations.insert(c.source);
     if (!c.note.empty()) source += "<br><span class=\"muted\">" + html_escape(c.note) + "</span>";
-    const std::string surface = c.surface == previous ? "" : html_escape(c.surface) + " <span class=\"muted\">(" + c.role + ")</span>";
+    const std::string surface =
+        c.surface == previous
+            ? ""
+            : html_escape(c.surface) + " <span class=\"muted\">(" + c.role + ")</span>";
     previous = c.surface;
-    h += "<tr data-check=\"" + html_escape(c.surface + "|" + c.quantity) + "\" data-result=\"" + result + "\"><td>" +
-         surface + "</td><td>" + quantity_label(c.quantity) + "</td><td class=\"num\">" + required +
-         "</td><td class=\"num\">" + achieved + "</td><td class=\"" + css + "\">" + result + "</td><td class=\"num\">" +
-         margin + "</td><td>" + source + "</td></tr>";
+    h += "<tr data-check=\"" + html_escape(c.surface + "|" + c.quantity) + "\" data-result=\"" +
+         result + "\"><td>" + surface + "</td><td>" + quantity_label(c.quantity) +
+         "</td><td class=\"num\">" + required + "</td><td class=\"num\">" + achieved +
+         "</td><td class=\"" + css + "\">" + result + "</td><td class=\"num\">" + margin +
+         "</td><td>" + source + "</td></tr>";
   }
   h += "</table>\n";
   if (!citations.empty()) {

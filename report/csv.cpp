@@ -16,9 +16,9 @@ std::string observers_csv(const calc::SurfaceResult& r) {
       char ugr[32] = "";
       if (v.UGR) std::snprintf(ugr, sizeof ugr, "%.6g", *v.UGR);
       const auto& p = r.observers[o].at;
-      std::snprintf(line, sizeof line, "%zu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%s,%.6g,%.6g,%.6g\n", o, p.x, p.y, p.z,
-                    v.direction.x, v.direction.y, v.direction.z, ugr, v.Lb_cd_m2, k < r.E.size() ? r.E[k] : 0.0,
-                    v.E_indirect_lx);
+      std::snprintf(line, sizeof line, "%zu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%s,%.6g,%.6g,%.6g\n", o,
+                    p.x, p.y, p.z, v.direction.x, v.direction.y, v.direction.z, ugr, v.Lb_cd_m2,
+                    k < r.E.size() ? r.E[k] : 0.0, v.E_indirect_lx);
       out += line;
       ++k;
     }
@@ -44,11 +44,12 @@ std::string surface_csv(const calc::SurfaceResult& r) {
     const auto& p = g.points[k];
     const auto& n = g.normals[k];
     const bool active = g.active.empty() || g.active[k];
-    std::snprintf(line, sizeof line, "%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,", static_cast<int>(k % nu),
-                  static_cast<int>(k / nu), p.x, p.y, p.z, n.x, n.y, n.z);
+    std::snprintf(line, sizeof line, "%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,",
+                  static_cast<int>(k % nu), static_cast<int>(k / nu), p.x, p.y, p.z, n.x, n.y, n.z);
     out += line;
     if (active) {
-      std::snprintf(line, sizeof line, "true,%.6g,%.6g,%.6g,%s\n", r.E[k], r.E_direct[k], r.E_indirect[k], quantity);
+      std::snprintf(line, sizeof line, "true,%.6g,%.6g,%.6g,%s\n", r.E[k], r.E_direct[k],
+                    r.E_indirect[k], quantity);
     } else {
       std::snprintf(line, sizeof line, "false,,,,%s\n", quantity);
     }

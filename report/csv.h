@@ -9,7 +9,8 @@ namespace luxgrid::report {
 
 // The header row: the E columns say in their names that they are maintained values.
 inline constexpr const char* kSurfaceCsvHeader =
-    "i,j,x,y,z,nx,ny,nz,active,E_maintained_lx,E_direct_maintained_lx,E_indirect_maintained_lx,quantity";
+    "i,j,x,y,z,nx,ny,nz,active,E_maintained_lx,E_direct_maintained_lx,E_indirect_maintained_lx,"
+    "quantity";
 
 std::string surface_csv(const calc::SurfaceResult& r);
 

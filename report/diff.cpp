@@ -39,10 +39,12 @@ PointDifference point_difference(const std::vector<double>& a, const std::vector
 namespace {
 
 // The array of numbers s[key], s being /surfaces/<index> of the file `label`.
-std::vector<double> numbers_at(const nlohmann::json& s, const char* key, const std::string& label, size_t index) {
+std::vector<double> numbers_at(const nlohmann::json& s, const char* key, const std::string& label,
+                               size_t index) {
   const std::string where = "/surfaces/" + std::to_string(index) + "/" + key;
   const auto it = s.find(key);
-  if (it == s.end() || !it->is_array()) throw InputError(SourceLocation{label, 0, 0, where}, "expected an array of numbers");
+  if (it == s.end() || !it->is_array())
+    throw InputError(SourceLocation{label, 0, 0, where}, "expected an array of numbers");
   std::vector<double> out;
   out.reserve(it->size());
   for (size_t i = 0; i < it->size(); ++i) {
@@ -84,7 +86,9 @@ calc::Statistics stats_of(const nlohmann::json& s) {
   calc::Statistics st;
   const auto it = s.find("stats");
   if (it == s.end() || !it->is_object()) return st;
-  auto get = [&](const char* k) { return it->contains(k) && (*it)[k].is_number() ? (*it)[k].get<double>() : 0.0; };
+  auto get = [&](const char* k) {
+    return it->contains(k) && (*it)[k].is_number() ? (*it)[k].get<double>() : 0.0;
+  };
   st.Emin = get("Emin");
   st.Eavg = get("Eavg");
   st.Emax = get("Emax");
@@ -97,13 +101,15 @@ const nlohmann::json& surfaces_of(const nlohmann::json& doc, const std::string& 
   if (!doc.is_object() || !doc.contains("format") ||
       (doc["format"] != kResultsFormat && doc["format"] != kResultsFormatV1)) {
     throw InputError(SourceLocation{label}, "not a luxgrid results file (expected \"format\": \"" +
-                     std::string(kResultsFormat) + "\")");
+                                                std::string(kResultsFormat) + "\")");
   }
   const auto it = doc.find("surfaces");
-  if (it == doc.end() || !it->is_array()) throw InputError(SourceLocation{label, 0, 0, "/surfaces"}, "expected an array");
+  if (it == doc.end() || !it->is_array())
+    throw InputError(SourceLocation{label, 0, 0, "/surfaces"}, "expected an array");
   for (size_t i = 0; i < it->size(); ++i) {
     if (!(*it)[i].is_object() || !(*it)[i].contains("name") || !(*it)[i]["name"].is_string()) {
-      throw InputError(SourceLocation{label, 0, 0, "/surfaces/" + std::to_string(i) + "/name"}, "expected a string");
+      throw InputError(SourceLocation{label, 0, 0, "/surfaces/" + std::to_string(i) + "/name"},
+                       "expected a string");
     }
   }
   return *it;
@@ -124,11 +130,15 @@ ResultsDiff diff_results(const nlohmann::json& a, const std::string& label_a,
   // Every surface must be in both: a missing one is named, from whichever side lacks it.
   for (const auto& s : sa) {
     const std::string name = s["name"];
-    if (!find(sb, name)) throw InputError(SourceLocation{label_b}, "surface \"" + name + "\" of " + label_a + " is missing");
+    if (!find(sb, name))
+      throw InputError(SourceLocation{label_b},
+                       "surface \"" + name + "\" of " + label_a + " is missing");
   }
   for (const auto& s : sb) {
     const std::string name = s["name"];
-    if (!find(sa, name)) throw InputError(SourceLocation{label_a}, "surface \"" + name + "\" of " + label_b + " is missing");
+    if (!find(sa, name))
+      throw InputError(SourceLocation{label_a},
+                       "surface \"" + name + "\" of " + label_b + " is missing");
   }
   ResultsDiff out{label_a, label_b, {}, 0.0};
   for (size_t i = 0; i < sa.size(); ++i) {
@@ -139,8 +149,9 @@ ResultsDiff diff_results(const nlohmann::json& a, const std::string& label_a,
     auto ea = numbers_at(sa[i], "E", label_a, i);
     auto eb = numbers_at(other, "E", label_b, j);
     if (ea.size() != eb.size()) {
-      throw InputError("surface \"" + name + "\": " + label_a + " has " + std::to_string(ea.size()) +
-                       " points, " + label_b + " has " + std::to_string(eb.size()));
+      throw InputError("surface \"" + name + "\": " + label_a + " has " +
+                       std::to_string(ea.size()) + " points, " + label_b + " has " +
+                       std::to_string(eb.size()));
     }
     keep_active(sa[i], other, ea, eb);
     SurfaceDiff d{name, ea.size(), point_difference(ea, eb), stats_of(sa[i]), stats_of(other)};
@@ -159,16 +170,19 @@ nlohmann::json read_results_file(const fs::path& path) {
 std::string format_diff(const ResultsDiff& d) {
   std::string out;
   char line[512];
-  std::snprintf(line, sizeof line, "A = %s\nB = %s (reference)\n", d.label_a.c_str(), d.label_b.c_str());
+  std::snprintf(line, sizeof line, "A = %s\nB = %s (reference)\n", d.label_a.c_str(),
+                d.label_b.c_str());
   out += line;
-  std::snprintf(line, sizeof line, "%-20s %6s %9s %9s  %19s  %19s  %19s  %13s\n", "surface", "points",
-                "max diff", "mean diff", "Emin A / B lx", "Eavg A / B lx", "Emax A / B lx", "U0 A / B");
+  std::snprintf(line, sizeof line, "%-20s %6s %9s %9s  %19s  %19s  %19s  %13s\n", "surface",
+                "points", "max diff", "mean diff", "Emin A / B lx", "Eavg A / B lx",
+                "Emax A / B lx", "U0 A / B");
   out += line;
   for (const auto& s : d.surfaces) {
-    std::snprintf(line, sizeof line,
-                  "%-20s %6zu %8.3f%% %8.3f%%  %9.2f %9.2f  %9.2f %9.2f  %9.2f %9.2f  %6.3f %6.3f\n",
-                  s.name.c_str(), s.points, 100.0 * s.diff.max_rel, 100.0 * s.diff.mean_rel, s.a.Emin,
-                  s.b.Emin, s.a.Eavg, s.b.Eavg, s.a.Emax, s.b.Emax, s.a.U0, s.b.U0);
+    std::snprintf(
+        line, sizeof line,
+        "%-20s %6zu %8.3f%% %8.3f%%  %9.2f %9.2f  %9.2f %9.2f  %9.2f %9.2f  %6.3f %6.3f\n",
+        s.name.c_str(), s.points, 100.0 * s.diff.max_rel, 100.0 * s.diff.mean_rel, s.a.Emin,
+        s.b.Emin, s.a.Eavg, s.b.Eavg, s.a.Emax, s.b.Emax, s.a.U0, s.b.U0);
     out += line;
   }
   std::snprintf(line, sizeof line, "largest relative difference: %.3f %%\n", 100.0 * d.max_rel);
@@ -210,8 +224,8 @@ std::string format_cost_table(const CostTable& t) {
   for (const auto& l : t.levels) out += "  " + l.quality + ": " + l.promise + "\n";
   out += "what each level simulated\n";
   for (const auto& l : t.levels) {
-    out += "  " + l.quality + ": direct: " + l.direct + "; indirect: " + l.indirect + "; visibility: " +
-           l.visibility + "\n";
+    out += "  " + l.quality + ": direct: " + l.direct + "; indirect: " + l.indirect +
+           "; visibility: " + l.visibility + "\n";
   }
   return out;
 }

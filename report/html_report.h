@@ -16,12 +16,12 @@ namespace luxgrid::report {
 
 struct ReportInput {
   const calc::Results* results = nullptr;
-  const calc::Scene* scene = nullptr;          // null: no plan view, no luminaire schedule
-  std::map<std::string, std::string> png;      // surface name -> PNG file bytes (the maps)
+  const calc::Scene* scene = nullptr;      // null: no plan view, no luminaire schedule
+  std::map<std::string, std::string> png;  // surface name -> PNG file bytes (the maps)
   std::vector<RequirementCheck> checks;
-  const CostTable* cost = nullptr;             // --with-cost
-  std::string version;                         // "0.1.0"
-  std::string date;                            // "2024-05-01 14:03 UTC"
+  const CostTable* cost = nullptr;  // --with-cost
+  std::string version;              // "0.1.0"
+  std::string date;                 // "2024-05-01 14:03 UTC"
 };
 
 std::string html_report(const ReportInput& in);
@@ -30,7 +30,7 @@ std::string html_report(const ReportInput& in);
 std::string base64(const std::string& bytes);
 
 // The numbers as the report prints them (tests compare the page with results.json through these).
-std::string format_lux_value(double lx);     // "%.1f"
+std::string format_lux_value(double lx);       // "%.1f"
 std::string format_ratio_value(double ratio);  // "%.3f"
 
 }  // namespace luxgrid::report

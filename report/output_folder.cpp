@@ -1,16 +1,16 @@
 #include "report/output_folder.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <fcntl.h>
 #include <fstream>
 #include <set>
-#include <sys/file.h>
-#include <unistd.h>
 
 #include "util/error.h"
 #include "util/paths.h"
@@ -65,8 +65,9 @@ void check_replaceable(const fs::path& target, const std::vector<fs::path>& inpu
   std::error_code ec;
   for (const auto& input : inputs) {
     if (lies_within(input, target)) {
-      throw InputError(SourceLocation{target.string()}, "the output folder would replace " + input.string() +
-                       ", an input of this run; choose another output folder (-o)");
+      throw InputError(SourceLocation{target.string()},
+                       "the output folder would replace " + input.string() +
+                           ", an input of this run; choose another output folder (-o)");
     }
   }
   const auto status = fs::symlink_status(target, ec);
@@ -78,25 +79,31 @@ void check_replaceable(const fs::path& target, const std::vector<fs::path>& inpu
   }
   const fs::path marker = target / kOutputMarker;
   const bool has_marker = fs::is_regular_file(fs::symlink_status(marker, ec));
-  const std::set<std::string> listed = has_marker ? marker_entries(marker) : std::set<std::string>{};
+  const std::set<std::string> listed =
+      has_marker ? marker_entries(marker) : std::set<std::string>{};
   for (const auto& e : fs::directory_iterator(target, ec)) {
     const std::string name = e.path().filename().string();
     if (name == kOutputMarker) continue;
     if (!has_marker) {
-      throw InputError(SourceLocation{target.string()}, std::string("is a folder that luxgrid did not write (it has no ") +
-                       kOutputMarker + " file) and it is not empty; choose a new or empty folder (-o)");
+      throw InputError(SourceLocation{target.string()},
+                       std::string("is a folder that luxgrid did not write (it has no ") +
+                           kOutputMarker +
+                           " file) and it is not empty; choose a new or empty folder (-o)");
     }
     if (!listed.count(name)) {
-      throw InputError(SourceLocation{target.string()}, "holds \"" + name +
-                       "\", which luxgrid did not write; it is left as it is (move it away or "
-                       "choose another -o)");
+      throw InputError(SourceLocation{target.string()},
+                       "holds \"" + name +
+                           "\", which luxgrid did not write; it is left as it is (move it away or "
+                           "choose another -o)");
     }
   }
-  if (ec) throw InputError(SourceLocation{target.string()}, "cannot read the folder: " + ec.message());
+  if (ec)
+    throw InputError(SourceLocation{target.string()}, "cannot read the folder: " + ec.message());
 }
 
-// Staging folders `.NAME.tmp-PID-SEQ` (and `.old` ones) of processes that no longer run: a run killed
-// before it could clean up. Only folders with luxgrid's marker inside, or empty ones, are removed.
+// Staging folders `.NAME.tmp-PID-SEQ` (and `.old` ones) of processes that no longer run: a run
+// killed before it could clean up. Only folders with luxgrid's marker inside, or empty ones, are
+// removed.
 void remove_stale_staging(const fs::path& parent, const std::string& name) {
   const std::string prefix = "." + name + ".tmp-";
   std::error_code ec;
@@ -105,9 +112,11 @@ void remove_stale_staging(const fs::path& parent, const std::string& name) {
     if (n.rfind(prefix, 0) != 0) continue;
     // PID-SEQ, then ".old" for a folder moved aside during a replace.
     std::string rest = n.substr(prefix.size());
-    if (rest.size() > 4 && rest.compare(rest.size() - 4, 4, ".old") == 0) rest.resize(rest.size() - 4);
+    if (rest.size() > 4 && rest.compare(rest.size() - 4, 4, ".old") == 0)
+      rest.resize(rest.size() - 4);
     const size_t dash = rest.find('-');
-    const std::string pid_text = rest.substr(0, dash), seq = dash == std::string::npos ? "" : rest.substr(dash + 1);
+    const std::string pid_text = rest.substr(0, dash),
+                      seq = dash == std::string::npos ? "" : rest.substr(dash + 1);
     auto all_digits = [](const std::string& t) {
       return !t.empty() && t.size() <= 9 &&
              std::all_of(t.begin(), t.end(), [](unsigned char c) { return std::isdigit(c); });
@@ -168,26 +177,32 @@ OutputFolder::OutputFolder(fs::path target, std::vector<fs::path> inputs)
   if (fs::is_symlink(link)) {
     // Followed, never replaced: the folder it points to is the target.
     if (!fs::exists(fs::status(target_, ec))) {
-      throw InputError(SourceLocation{target_.string()}, "is a symbolic link to nothing; give a folder (-o)");
+      throw InputError(SourceLocation{target_.string()},
+                       "is a symbolic link to nothing; give a folder (-o)");
     }
     target_ = fs::canonical(target_, ec);
-    if (ec) throw InputError(SourceLocation{target_.string()}, "cannot resolve the symbolic link: " + ec.message());
+    if (ec)
+      throw InputError(SourceLocation{target_.string()},
+                       "cannot resolve the symbolic link: " + ec.message());
   }
   if (target_.filename().empty() || target_ == target_.root_path()) {
-    throw InputError(SourceLocation{target_.string()}, "cannot be an output folder (choose a new folder, -o)");
+    throw InputError(SourceLocation{target_.string()},
+                     "cannot be an output folder (choose a new folder, -o)");
   }
   check_replaceable(target_, inputs_);
   const fs::path parent = target_.parent_path();
   fs::create_directories(parent, ec);
-  if (ec) throw InputError(SourceLocation{parent.string()}, "cannot create the folder: " + ec.message());
+  if (ec)
+    throw InputError(SourceLocation{parent.string()}, "cannot create the folder: " + ec.message());
   remove_stale_staging(parent, target_.filename().string());
   // PID-SEQ: unique per process and per folder object, so two in one process do not collide.
   static std::atomic<unsigned> sequence{0};
-  staging_ = parent / ("." + target_.filename().string() + ".tmp-" + std::to_string(getpid()) + "-" +
-                       std::to_string(sequence++));
+  staging_ = parent / ("." + target_.filename().string() + ".tmp-" + std::to_string(getpid()) +
+                       "-" + std::to_string(sequence++));
   fs::remove_all(staging_, ec);
   if (!fs::create_directory(staging_, ec)) {
-    throw CalculationError(staging_.string() + ": cannot create the output folder: " + ec.message());
+    throw CalculationError(staging_.string() +
+                           ": cannot create the output folder: " + ec.message());
   }
   write_marker(staging_, kStagingHeader);
 }
@@ -210,10 +225,14 @@ void OutputFolder::commit() {
     const std::set<std::string> listed = marker_entries(target_ / kOutputMarker);
     for (const auto& name : keep_) {
       const fs::path from = target_ / name, to = staging_ / name;
-      if (name.find('/') != std::string::npos || !listed.count(name) || fs::exists(fs::symlink_status(to, ec))) continue;
+      if (name.find('/') != std::string::npos || !listed.count(name) ||
+          fs::exists(fs::symlink_status(to, ec)))
+        continue;
       if (!fs::is_regular_file(fs::symlink_status(from, ec))) continue;
       fs::copy_file(from, to, ec);
-      if (ec) throw CalculationError(from.string() + ": cannot keep the file of the previous run: " + ec.message());
+      if (ec)
+        throw CalculationError(from.string() +
+                               ": cannot keep the file of the previous run: " + ec.message());
       kept_.push_back(name);
     }
     write_marker(staging_, kMarkerHeader);
@@ -224,16 +243,22 @@ void OutputFolder::commit() {
         // No atomic exchange here: move the old folder aside, the new one in, then drop the old.
         const fs::path old = staging_.string() + ".old";
         fs::rename(target_, old, ec);
-        if (ec) throw CalculationError(target_.string() + ": cannot replace the output folder: " + ec.message());
+        if (ec)
+          throw CalculationError(target_.string() +
+                                 ": cannot replace the output folder: " + ec.message());
         fs::rename(staging_, target_, ec);
-        if (ec) throw CalculationError(target_.string() + ": cannot create the output folder: " + ec.message());
+        if (ec)
+          throw CalculationError(target_.string() +
+                                 ": cannot create the output folder: " + ec.message());
         committed_ = true;
         fs::remove_all(old, ec);
         return;
       }
     } else {
       fs::rename(staging_, target_, ec);
-      if (ec) throw CalculationError(target_.string() + ": cannot create the output folder: " + ec.message());
+      if (ec)
+        throw CalculationError(target_.string() +
+                               ": cannot create the output folder: " + ec.message());
       committed_ = true;
       return;
     }

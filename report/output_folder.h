@@ -30,7 +30,8 @@ class OutputFolder {
  public:
   // `inputs`: files the run reads (the project, photometry, TILT files). None may lie inside
   // what gets replaced. Throws InputError when the target may not be written.
-  explicit OutputFolder(std::filesystem::path target, std::vector<std::filesystem::path> inputs = {});
+  explicit OutputFolder(std::filesystem::path target,
+                        std::vector<std::filesystem::path> inputs = {});
   ~OutputFolder();
   OutputFolder(const OutputFolder&) = delete;
   OutputFolder& operator=(const OutputFolder&) = delete;

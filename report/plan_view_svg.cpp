@@ -22,10 +22,15 @@ std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Lumina
                           const std::vector<geometry::SurfaceGrid>& surfaces, int width_px) {
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
   for (const auto& p : room.outline) {
-    x0 = std::min(x0, p.x); y0 = std::min(y0, p.y);
-    x1 = std::max(x1, p.x); y1 = std::max(y1, p.y);
+    x0 = std::min(x0, p.x);
+    y0 = std::min(y0, p.y);
+    x1 = std::max(x1, p.x);
+    y1 = std::max(y1, p.y);
   }
-  if (room.outline.empty()) { x0 = y0 = 0.0; x1 = y1 = 1.0; }
+  if (room.outline.empty()) {
+    x0 = y0 = 0.0;
+    x1 = y1 = 1.0;
+  }
   const double w_m = std::max(x1 - x0, 1e-3), h_m = std::max(y1 - y0, 1e-3);
   // px around the room for wall numbers, the north arrow and the scale bar
   constexpr double kPad = 40.0;
@@ -221,16 +226,18 @@ std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Lumina
   }
   // North arrow (top right) and a scale bar of a round length (bottom left).
   const double nx = width_px - 20.0, ny = 10.0;
-  std::snprintf(buf, sizeof buf,
-                "<g class=\"north\"><polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"#222\"/>"
-                "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-weight=\"bold\">N</text></g>",
-                nx, ny, nx - 6, ny + 18, nx + 6, ny + 18, nx, ny + 30);
+  std::snprintf(
+      buf, sizeof buf,
+      "<g class=\"north\"><polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"#222\"/>"
+      "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-weight=\"bold\">N</text></g>",
+      nx, ny, nx - 6, ny + 18, nx + 6, ny + 18, nx, ny + 30);
   svg += buf;
   double bar_m = nice_ceil(w_m / 5.0);
   if (bar_m * scale > width_px / 2.0) bar_m /= 2.0;
   const double bx = kPad, by = height_px - 14.0;
   std::snprintf(buf, sizeof buf,
-                "<g class=\"scalebar\"><rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"5\" fill=\"#222\"/>"
+                "<g class=\"scalebar\"><rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"5\" "
+                "fill=\"#222\"/>"
                 "<text x=\"%.1f\" y=\"%.1f\">%g m</text></g></svg>",
                 bx, by, bar_m * scale, bx + bar_m * scale + 6, by + 6, bar_m);
   svg += buf;

@@ -20,7 +20,8 @@ namespace {
 std::string encode(std::FILE* file, int width, int height, png_bytep* rows) {
   static thread_local std::string message;
   message.clear();
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr,
+  png_structp png = png_create_write_struct(
+      PNG_LIBPNG_VER_STRING, nullptr,
       [](png_structp p, png_const_charp m) {
         message = m;
         png_longjmp(p, 1);
@@ -43,8 +44,9 @@ std::string encode(std::FILE* file, int width, int height, png_bytep* rows) {
   // a faster zlib level makes the files 30 % larger, and report.html embeds them again).
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
   png_set_compression_level(png, Z_DEFAULT_COMPRESSION);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8, PNG_COLOR_TYPE_RGB,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
+               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
   png_write_image(png, rows);
   png_write_end(png, nullptr);
@@ -57,7 +59,8 @@ std::string encode(std::FILE* file, int width, int height, png_bytep* rows) {
 void write_png(const Raster& raster, const std::filesystem::path& path) {
   std::vector<png_bytep> rows(static_cast<std::size_t>(raster.height()));
   auto* base = const_cast<png_bytep>(raster.pixels().data());  // libpng only reads the rows
-  for (int y = 0; y < raster.height(); ++y) rows[y] = base + static_cast<std::size_t>(y) * raster.width() * 3;
+  for (int y = 0; y < raster.height(); ++y)
+    rows[y] = base + static_cast<std::size_t>(y) * raster.width() * 3;
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (!f) throw CalculationError(path.string() + ": cannot write the image: cannot open the file");
   std::string error = encode(f, raster.width(), raster.height(), rows.data());

@@ -10,14 +10,17 @@ namespace luxgrid::report {
 
 namespace {
 
-std::uint8_t to_byte(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.f, 1.f) * 255.f)); }
+std::uint8_t to_byte(float v) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.f, 1.f) * 255.f));
+}
 
 }  // namespace
 
 Raster::Raster(int width, int height, Rgb background) : width_(width), height_(height) {
   if (width <= 0 || height <= 0) throw CalculationError("cannot make an empty picture");
   rgb_.resize(static_cast<std::size_t>(width) * height * 3);
-  const std::uint8_t r = to_byte(background.r), g = to_byte(background.g), b = to_byte(background.b);
+  const std::uint8_t r = to_byte(background.r), g = to_byte(background.g),
+                     b = to_byte(background.b);
   for (std::size_t k = 0; k < rgb_.size(); k += 3) rgb_[k] = r, rgb_[k + 1] = g, rgb_[k + 2] = b;
 }
 
@@ -37,7 +40,9 @@ void Raster::blend(int x, int y, Rgb c, float alpha) {
   if (x < 0 || y < 0 || x >= width_ || y >= height_ || !(alpha > 0.f)) return;
   alpha = std::min(alpha, 1.f);
   const Rgb old = at(x, y);
-  set(x, y, {old.r + (c.r - old.r) * alpha, old.g + (c.g - old.g) * alpha, old.b + (c.b - old.b) * alpha});
+  set(x, y,
+      {old.r + (c.r - old.r) * alpha, old.g + (c.g - old.g) * alpha,
+       old.b + (c.b - old.b) * alpha});
 }
 
 void Raster::fill(int x0, int x1, int y0, int y1, Rgb c) {

@@ -102,7 +102,9 @@ bool draw_text(Raster& raster, int x, int y, std::string_view text, int size_px,
     for (unsigned r = 0; r < bm.rows; ++r) {
       const unsigned char* row = bm.buffer + static_cast<long>(r) * bm.pitch;
       for (unsigned c = 0; c < bm.width; ++c)
-        if (row[c]) raster.blend(left + static_cast<int>(c), top + static_cast<int>(r), colour, row[c] / 255.f);
+        if (row[c])
+          raster.blend(left + static_cast<int>(c), top + static_cast<int>(r), colour,
+                       row[c] / 255.f);
     }
     pen_x += g->advance.x;
   }

@@ -12,7 +12,8 @@ inline constexpr const char* kPlotFont = "/usr/share/fonts/truetype/dejavu/DejaV
 
 // Draws UTF-8 `text` with its left edge at x and its baseline at y, `size_px` pixels per em.
 // Returns false (drawing nothing) when the font file cannot be opened.
-bool draw_text(Raster& raster, int x, int y, std::string_view text, int size_px, const char* font_file, Rgb colour);
+bool draw_text(Raster& raster, int x, int y, std::string_view text, int size_px,
+               const char* font_file, Rgb colour);
 
 // The advance width of `text` in pixels as draw_text sets it; an estimate of 0.6 em per character
 // when the font cannot be opened (so label layout does not depend on the font being there).

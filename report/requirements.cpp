@@ -12,7 +12,8 @@ namespace luxgrid::report {
 namespace {
 
 // In the order checks are listed.
-constexpr const char* kQuantities[] = {"Em", "U0", "Emin", "Emax", "Ez", "Esc", "modelling", "UGR_L", "Ra"};
+constexpr const char* kQuantities[] = {"Em",  "U0",        "Emin",  "Emax", "Ez",
+                                       "Esc", "modelling", "UGR_L", "Ra"};
 
 bool is_one_of(const std::string& key, std::initializer_list<const char*> keys) {
   for (const char* k : keys) {
@@ -40,8 +41,9 @@ Achieved modelling_ratio(const calc::SurfaceResult& cyl, const calc::SurfaceResu
   const auto& a = cyl.grid;
   const auto& b = hor.grid;
   if (a.points.size() != b.points.size()) {
-    throw InputError("requirements: modelling pairs \"" + a.name + "\" (" + std::to_string(a.points.size()) +
-                     " points) with \"" + b.name + "\" (" + std::to_string(b.points.size()) +
+    throw InputError("requirements: modelling pairs \"" + a.name + "\" (" +
+                     std::to_string(a.points.size()) + " points) with \"" + b.name + "\" (" +
+                     std::to_string(b.points.size()) +
                      " points); they must be the same grid, once cylindrical and once horizontal");
   }
   Achieved out;
@@ -50,8 +52,10 @@ Achieved modelling_ratio(const calc::SurfaceResult& cyl, const calc::SurfaceResu
   size_t used = 0, dark = 0;
   for (size_t i = 0; i < a.points.size(); ++i) {
     if (glm::length(a.points[i] - b.points[i]) > kModellingPairTolerance_m) {
-      throw InputError("requirements: modelling pairs \"" + a.name + "\" with \"" + b.name + "\", but their point " +
-                       std::to_string(i) + " differs; they must be the same grid, once cylindrical and once horizontal");
+      throw InputError(
+          "requirements: modelling pairs \"" + a.name + "\" with \"" + b.name +
+          "\", but their point " + std::to_string(i) +
+          " differs; they must be the same grid, once cylindrical and once horizontal");
     }
     const bool on = (i >= a.active.size() || a.active[i]) && (i >= b.active.size() || b.active[i]);
     if (!on) continue;
@@ -67,13 +71,15 @@ Achieved modelling_ratio(const calc::SurfaceResult& cyl, const calc::SurfaceResu
   if (used == 0) {
     return {false, 0.0, std::nullopt, "no point of \"" + b.name + "\" receives horizontal light"};
   }
-  out.note = "Ez / Eh over " + std::to_string(used) + " points of \"" + a.name + "\" / \"" + b.name + "\"";
+  out.note =
+      "Ez / Eh over " + std::to_string(used) + " points of \"" + a.name + "\" / \"" + b.name + "\"";
   if (dark) out.note += " (" + std::to_string(dark) + " without horizontal light left out)";
   return out;
 }
 
-Achieved achieved_value(const calc::Results& results, const calc::SurfaceResult& s, const SurfaceRequirements& r,
-                        const std::string& q, const ComplianceInputs& inputs) {
+Achieved achieved_value(const calc::Results& results, const calc::SurfaceResult& s,
+                        const SurfaceRequirements& r, const std::string& q,
+                        const ComplianceInputs& inputs) {
   const auto& st = s.stats;
   if (q == "Em") return {true, st.Eavg, std::nullopt, ""};
   if (q == "U0") return {true, st.U0, std::nullopt, ""};
@@ -81,14 +87,18 @@ Achieved achieved_value(const calc::Results& results, const calc::SurfaceResult&
   if (q == "Emax") return {true, st.Emax, std::nullopt, ""};
   if (q == "Esc") return {true, st.Eavg, std::nullopt, ""};
   if (q == "Ez") {
-    if (s.grid.quantity == geometry::Quantity::cylindrical) return {true, st.Eavg, std::nullopt, ""};
+    if (s.grid.quantity == geometry::Quantity::cylindrical)
+      return {true, st.Eavg, std::nullopt, ""};
     if (r.cylindrical.empty()) {
-      return {false, 0.0, std::nullopt, "no cylindrical surface named (\"cylindrical\": \"<surface>\")"};
+      return {false, 0.0, std::nullopt,
+              "no cylindrical surface named (\"cylindrical\": \"<surface>\")"};
     }
-    return {true, surface_named(results, r.cylindrical).stats.Eavg, std::nullopt, "Eavg of \"" + r.cylindrical + "\""};
+    return {true, surface_named(results, r.cylindrical).stats.Eavg, std::nullopt,
+            "Eavg of \"" + r.cylindrical + "\""};
   }
   if (q == "modelling") {
-    if (s.grid.quantity == geometry::Quantity::cylindrical) return modelling_ratio(s, surface_named(results, r.horizontal));
+    if (s.grid.quantity == geometry::Quantity::cylindrical)
+      return modelling_ratio(s, surface_named(results, r.horizontal));
     return modelling_ratio(surface_named(results, r.cylindrical), s);
   }
   if (q == "UGR_L") {
@@ -109,7 +119,9 @@ Achieved achieved_value(const calc::Results& results, const calc::SurfaceResult&
     if (!r.glare_observers.empty()) {
       for (const auto& name : r.glare_observers) {
         const auto& o = surface_named(results, name);
-        if (!is_observers(o)) return {false, 0.0, std::nullopt, "surface \"" + name + "\" gives no UGR (not an observers surface)"};
+        if (!is_observers(o))
+          return {false, 0.0, std::nullopt,
+                  "surface \"" + name + "\" gives no UGR (not an observers surface)"};
         take(o);
       }
     } else {
@@ -121,12 +133,14 @@ Achieved achieved_value(const calc::Results& results, const calc::SurfaceResult&
     return {true, *worst, std::nullopt, "largest UGR of \"" + from + "\""};
   }
   // Ra
-  if (!inputs.Ra) return {false, 0.0, std::nullopt, inputs.Ra_source.empty() ? "unknown" : inputs.Ra_source};
+  if (!inputs.Ra)
+    return {false, 0.0, std::nullopt, inputs.Ra_source.empty() ? "unknown" : inputs.Ra_source};
   return {true, *inputs.Ra, std::nullopt, inputs.Ra_source};
 }
 
-void check_surface(const calc::Results& results, const calc::SurfaceResult& s, const SurfaceRequirements& r,
-                   const ComplianceInputs& inputs, std::vector<RequirementCheck>& checks) {
+void check_surface(const calc::Results& results, const calc::SurfaceResult& s,
+                   const SurfaceRequirements& r, const ComplianceInputs& inputs,
+                   std::vector<RequirementCheck>& checks) {
   for (const char* q : kQuantities) {
     const bool is_modelling = std::string(q) == "modelling";
     const auto lim = r.limits.find(q);
@@ -170,14 +184,17 @@ std::string requirement_unit(const std::string& q) {
   return is_one_of(q, {"Em", "Emin", "Emax", "Ez", "Esc"}) ? " lx" : "";
 }
 
-std::vector<RequirementCheck> check_requirements(const calc::Results& results, const Requirements& req,
+std::vector<RequirementCheck> check_requirements(const calc::Results& results,
+                                                 const Requirements& req,
                                                  const ComplianceInputs& inputs) {
   std::vector<RequirementCheck> checks;
   for (const auto& [name, _] : req.surfaces) surface_named(results, name);
   for (const auto& [entry, _] : req.walls) {
     bool found = false;
-    for (const auto& s : results.surfaces) found = found || s.grid.name.rfind(entry + " wall ", 0) == 0;
-    if (!found) throw InputError("requirements: room_surfaces \"" + entry + "\" gave no wall grids");
+    for (const auto& s : results.surfaces)
+      found = found || s.grid.name.rfind(entry + " wall ", 0) == 0;
+    if (!found)
+      throw InputError("requirements: room_surfaces \"" + entry + "\" gave no wall grids");
   }
   for (const auto& s : results.surfaces) {
     const auto it = req.surfaces.find(s.grid.name);
@@ -205,7 +222,9 @@ bool all_met(const std::vector<RequirementCheck>& checks) {
 nlohmann::json check_to_json(const RequirementCheck& c) {
   nlohmann::json j = {{"quantity", c.quantity},
                       {"role", c.role},
-                      {"limit", c.required_max ? "range" : c.upper_limit ? "max" : "min"},
+                      {"limit", c.required_max  ? "range"
+                                : c.upper_limit ? "max"
+                                                : "min"},
                       {"required", c.required},
                       {"calculated", c.calculated},
                       {"met", c.met}};
@@ -232,12 +251,14 @@ std::string format_checks(const std::vector<RequirementCheck>& checks) {
         c.required_max ? fmt("%g", c.required) + " to " + fmt("%g", *c.required_max)
                        : std::string(c.upper_limit ? "<= " : ">= ") + fmt("%g", c.required) + unit;
     if (!c.calculated) {
-      std::snprintf(line, sizeof line, "%-20s %-9s required %s  NOT CALCULATED (%s)\n", c.surface.c_str(),
-                    c.quantity.c_str(), required.c_str(), c.note.c_str());
+      std::snprintf(line, sizeof line, "%-20s %-9s required %s  NOT CALCULATED (%s)\n",
+                    c.surface.c_str(), c.quantity.c_str(), required.c_str(), c.note.c_str());
     } else {
-      const std::string achieved = c.achieved_max ? fmt("%.3g", c.achieved) + " to " + fmt("%.3g", *c.achieved_max)
-                                                  : fmt("%.4g", c.achieved) + unit;
-      std::snprintf(line, sizeof line, "%-20s %-9s required %s  achieved %s  %s (%+.4g%s, %+.1f %%)\n",
+      const std::string achieved =
+          c.achieved_max ? fmt("%.3g", c.achieved) + " to " + fmt("%.3g", *c.achieved_max)
+                         : fmt("%.4g", c.achieved) + unit;
+      std::snprintf(line, sizeof line,
+                    "%-20s %-9s required %s  achieved %s  %s (%+.4g%s, %+.1f %%)\n",
                     c.surface.c_str(), c.quantity.c_str(), required.c_str(), achieved.c_str(),
                     c.met ? "met" : "NOT MET", c.margin, unit.c_str(), 100.0 * c.margin_rel);
     }

@@ -21,7 +21,8 @@ using project::parse_requirements;
 using project::Requirements;
 using project::SurfaceRequirements;
 
-// What the results alone do not hold: the lamps' colour rendering index (report/colour_rendering.h).
+// What the results alone do not hold: the lamps' colour rendering index
+// (report/colour_rendering.h).
 struct ComplianceInputs {
   std::optional<double> Ra;
   std::string Ra_source;  // where Ra came from, or why it is unknown
@@ -35,9 +36,9 @@ struct RequirementCheck {
   std::optional<double> required_max;  // modelling: the upper end of the range
   double achieved = 0.0;               // modelling: the smallest ratio over the points
   std::optional<double> achieved_max;  // modelling: the largest ratio
-  bool upper_limit = false;  // Emax, UGR_L: achieved must not exceed required
-  bool calculated = true;    // false: nothing gives the value (no observers surface, Ra unknown)
-  bool met = false;          // never true when not calculated
+  bool upper_limit = false;            // Emax, UGR_L: achieved must not exceed required
+  bool calculated = true;  // false: nothing gives the value (no observers surface, Ra unknown)
+  bool met = false;        // never true when not calculated
   // How far inside (positive) or outside (negative) the limit, in the quantity's unit and as a
   // fraction of the limit: Em 520 against 500 gives +20 lx, +0.04. Modelling: the smaller of
   // (min ratio - lo) and (hi - max ratio).
@@ -48,7 +49,7 @@ struct RequirementCheck {
   // The limit is the standard's own, not a project's choice (EN 1838's checks of the emergency
   // scene, report/requirements_en1838.h): `source` cites the clause.
   bool fixed_by_standard = false;
-  std::string note;    // where the achieved value comes from, or why it was not calculated
+  std::string note;  // where the achieved value comes from, or why it was not calculated
 };
 
 // Round-off guard: an average of values that sum exactly to the limit can come out one ulp
@@ -64,7 +65,8 @@ inline constexpr double kModellingPairTolerance_m = 1e-3;
 // Checks in surface order, then Em, U0, Emin, Emax, Ez, Esc, modelling, UGR_L, Ra. Throws
 // InputError if a requirement names a surface the results do not have, or modelling pairs
 // surfaces whose points differ.
-std::vector<RequirementCheck> check_requirements(const calc::Results& results, const Requirements& req,
+std::vector<RequirementCheck> check_requirements(const calc::Results& results,
+                                                 const Requirements& req,
                                                  const ComplianceInputs& inputs = {});
 
 // True when every check was calculated and met.

@@ -42,7 +42,9 @@ nlohmann::json observers_json(const std::vector<calc::glare::ObserverResult>& ob
     for (const auto& v : o.views) {
       json terms = json::array();
       for (const auto& t : v.terms) {
-        terms.push_back({{"luminaire", t.luminaire}, {"L", t.term.L_cd_m2}, {"omega", t.term.omega_sr},
+        terms.push_back({{"luminaire", t.luminaire},
+                         {"L", t.term.L_cd_m2},
+                         {"omega", t.term.omega_sr},
                          {"p", t.term.p}});
       }
       views.push_back({{"direction", vec3(v.direction)},
@@ -95,8 +97,11 @@ nlohmann::json surface_json(const calc::SurfaceResult& r, size_t index, bool arr
           "\x01points " + std::to_string(index) + " " + std::to_string(static_cast<int>(array));
     }
   }
-  s["stats"] = {{"Emin", r.stats.Emin}, {"Eavg", r.stats.Eavg}, {"Emax", r.stats.Emax},
-                {"U0", r.stats.U0}, {"Ud", r.stats.Ud}};
+  s["stats"] = {{"Emin", r.stats.Emin},
+                {"Eavg", r.stats.Eavg},
+                {"Emax", r.stats.Emax},
+                {"U0", r.stats.U0},
+                {"Ud", r.stats.Ud}};
   if (g.kind == geometry::SurfaceGrid::Kind::observers) {
     s["UGR_max"] = r.UGR_max ? json(*r.UGR_max) : json(nullptr);
     s["observers"] = observers_json(r.observers);

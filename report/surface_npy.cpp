@@ -12,7 +12,8 @@ std::string surface_npy(const calc::SurfaceResult& r) {
   auto at = [](const std::vector<double>& v, std::size_t k) { return k < v.size() ? v[k] : 0.0; };
   for (std::size_t k = 0; k < n; ++k) {
     const auto& p = g.points[k];
-    for (double v : {p.x, p.y, p.z, at(r.E, k), at(r.E_direct, k), at(r.E_indirect, k)}) append_float64_le(out, v);
+    for (double v : {p.x, p.y, p.z, at(r.E, k), at(r.E_direct, k), at(r.E_indirect, k)})
+      append_float64_le(out, v);
   }
   return out;
 }

@@ -124,14 +124,15 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
         part.stats = calc::compute_statistics(part.E, s.grid.active);
         const ColourScale part_scale =
             options.scale ? *options.scale : fit_scale(part.stats.Emin, part.stats.Emax);
-        job.warning = write_false_colour_png(part, part_scale,
-                                             folder.file(direct ? names.direct_png : names.indirect_png), overlay);
+        job.warning = write_false_colour_png(
+            part, part_scale, folder.file(direct ? names.direct_png : names.indirect_png), overlay);
         return;
       }
     }
   });
   for (const Job& job : jobs) {
-    if (!job.warning.empty() && std::find(warnings.begin(), warnings.end(), job.warning) == warnings.end())
+    if (!job.warning.empty() &&
+        std::find(warnings.begin(), warnings.end(), job.warning) == warnings.end())
       warnings.push_back(job.warning);
     if (job.what == Job::What::plot && options.report) {
       const calc::SurfaceResult& s = results.surfaces[job.surface];
@@ -142,7 +143,8 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   results.timing_s.emplace_back(
       "report", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   // The scene's warnings (legal but suspicious input) and the outputs', as the terminal shows them.
-  std::vector<std::string> all_warnings = options.scene ? options.scene->warnings : std::vector<std::string>{};
+  std::vector<std::string> all_warnings =
+      options.scene ? options.scene->warnings : std::vector<std::string>{};
   all_warnings.insert(all_warnings.end(), warnings.begin(), warnings.end());
   ResultsOrigin origin;
   origin.version = options.version;

@@ -15,13 +15,13 @@
 namespace luxgrid::report {
 
 struct OutputOptions {
-  bool report = true;                 // report.html
-  bool arrays_npy = false;            // <surface>.npy per surface (report/surface_npy.h)
-  std::optional<ColourScale> scale;   // one fixed scale for every surface; default: per surface
-  const calc::Scene* scene = nullptr; // luminaire marks, plan view and schedule; null: left out
+  bool report = true;                    // report.html
+  bool arrays_npy = false;               // <surface>.npy per surface (report/surface_npy.h)
+  std::optional<ColourScale> scale;      // one fixed scale for every surface; default: per surface
+  const calc::Scene* scene = nullptr;    // luminaire marks, plan view and schedule; null: left out
   std::vector<RequirementCheck> checks;  // also written into results.json per surface
-  const CostTable* cost = nullptr;    // the `luxgrid cost` table, into the report
-  std::string version;                // luxgrid version for the report
+  const CostTable* cost = nullptr;       // the `luxgrid cost` table, into the report
+  std::string version;                   // luxgrid version for the report
 };
 
 // Writes into folder.staging(); adds the "report" phase to results.timing_s. Returns warnings.

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs the whole test suite: every GoogleTest suite and the
-# validation cases (ctest), then the sanitized job (fuzz/run.sh: the readers' and the loader's
-# tests under ASan + UBSan, and each fuzzer for a short fixed time) when clang is there.
+# Installs what is missing, builds, and runs the whole test suite: the format check
+# (scripts/check-format.sh), every GoogleTest suite and the validation cases (ctest), then the
+# sanitized job (fuzz/run.sh: the readers' and the loader's tests under ASan + UBSan, and each
+# fuzzer for a short fixed time) when clang is there.
 # Every part runs even when an earlier one failed; the exit status is non-zero if any failed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 LUXGRID_EXTRA_PACKAGES="clang ${LUXGRID_EXTRA_PACKAGES:-}" bash scripts/install-deps.sh
 bash scripts/build.sh
 status=0
+bash scripts/check-format.sh || status=1
 ctest --test-dir build --output-on-failure -j"$(nproc)" || status=1
 bash fuzz/run.sh || status=1
 if [ "$status" -ne 0 ]; then echo "run-tests.sh: some tests failed (see above)" >&2; fi

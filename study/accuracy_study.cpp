@@ -1,9 +1,9 @@
 #include "study/accuracy_study.h"
 
 #include <algorithm>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <numbers>
 #include <sstream>
 
@@ -24,7 +24,7 @@ namespace luxgrid::study {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kEmitterSide = 1.0;  // the protocol's 1 x 1 emitter (units = metres here)
+constexpr double kEmitterSide = 1.0;     // the protocol's 1 x 1 emitter (units = metres here)
 constexpr double kIntensityCd = 1000.0;  // of the analytic data sets (NRMS is scale-free)
 // Smallest NRMS the plot shows: the reference row is ~1e-6 and would squash the axis.
 constexpr double kPlotNrmsFloor = 1e-6;
@@ -47,7 +47,8 @@ nearfield::Emitter protocol_emitter(const photometry::DistributionPtr& d, double
   photometry::LuminousOpening square;
   square.shape = photometry::LuminousOpening::Shape::rectangle;
   square.length = square.width = kEmitterSide;
-  return nearfield::make_emitter(square, Vec3(0.0, 0.0, h), calc::rotation_xyz(kPi - angle, 0.0, 0.0), d);
+  return nearfield::make_emitter(square, Vec3(0.0, 0.0, h),
+                                 calc::rotation_xyz(kPi - angle, 0.0, 0.0), d);
 }
 
 struct Configuration {
@@ -102,9 +103,12 @@ AccuracyModel AccuracyModel::monte_carlo(int samples) {
 double evaluate(const AccuracyModel& model, const nearfield::Emitter& emitter, const Vec3& point,
                 const Vec3& normal, std::uint64_t seed) {
   switch (model.kind) {
-    case AccuracyModel::Kind::ladder: return nearfield::illuminance(emitter, point, normal, model.ladder);
-    case AccuracyModel::Kind::structured_sampling: return structured_sampling_illuminance(emitter, point, normal);
-    case AccuracyModel::Kind::most_representative_point: return mrp_illuminance(emitter, point, normal);
+    case AccuracyModel::Kind::ladder:
+      return nearfield::illuminance(emitter, point, normal, model.ladder);
+    case AccuracyModel::Kind::structured_sampling:
+      return structured_sampling_illuminance(emitter, point, normal);
+    case AccuracyModel::Kind::most_representative_point:
+      return mrp_illuminance(emitter, point, normal);
     case AccuracyModel::Kind::monte_carlo:
       return monte_carlo_illuminance(emitter, point, normal, model.samples, seed);
   }
@@ -113,24 +117,26 @@ double evaluate(const AccuracyModel& model, const nearfield::Emitter& emitter, c
 
 std::vector<AccuracyModel> accuracy_models(bool quick) {
   using nearfield::Model;
-  std::vector<AccuracyModel> out = {AccuracyModel::rung(Model::far_field()), AccuracyModel::structured_sampling(),
-                                    AccuracyModel::most_representative_point(),
-                                    AccuracyModel::rung(Model::paper_cubature())};
+  std::vector<AccuracyModel> out = {
+      AccuracyModel::rung(Model::far_field()), AccuracyModel::structured_sampling(),
+      AccuracyModel::most_representative_point(), AccuracyModel::rung(Model::paper_cubature())};
   for (int k = 1; k <= 3; ++k) out.push_back(AccuracyModel::rung(Model::subdivided(k)));
   for (int k = 1; k <= 3; ++k) out.push_back(AccuracyModel::rung(Model::lambert_subdivided(k)));
   out.push_back(AccuracyModel::rung(Model::adaptive(1e-3)));
   out.push_back(AccuracyModel::rung(Model::standard()));
   out.push_back(AccuracyModel::rung(Model::reference(1e-5)));
-  const std::vector<int> mc = quick ? std::vector<int>{8, 64, 512}
-                                    : std::vector<int>{8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096};
+  const std::vector<int> mc =
+      quick ? std::vector<int>{8, 64, 512}
+            : std::vector<int>{8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096};
   for (int n : mc) out.push_back(AccuracyModel::monte_carlo(n));
   return out;
 }
 
 std::vector<std::filesystem::path> paper_ldt_files(const std::filesystem::path& ldt_dir) {
   // Luksch et al. 2020 Fig. 9 (../shared/photometry/MANIFEST.md lists the files).
-  const char* names[] = {"zumtobel_arcos3_isym1", "zumtobel_intro_isym0", "zumtobel_linetik_isym3",
-                         "zumtobel_mirel_isym4",  "zumtobel_panos_isym3", "zumtobel_perluce_isym4",
+  const char* names[] = {"zumtobel_arcos3_isym1",   "zumtobel_intro_isym0",
+                         "zumtobel_linetik_isym3",  "zumtobel_mirel_isym4",
+                         "zumtobel_panos_isym3",    "zumtobel_perluce_isym4",
                          "zumtobel_slotlight_isym4"};
   std::vector<std::filesystem::path> files;
   for (const char* n : names) files.push_back(ldt_dir / (std::string(n) + ".ldt"));
@@ -142,7 +148,8 @@ std::vector<std::filesystem::path> contrast_files(const std::filesystem::path& l
   // (tests/data/photometry, see its MANIFEST): a narrow spot (steep peak), an asymmetric
   // wall-washer-like flood (isym 0) and a roadway optic (strongly lateral, bilateral).
   const std::filesystem::path root = ldt_dir.parent_path();
-  return {root / "ies" / "erco_qrcbc35_lm86_spot.ies", root / "ldt" / "ledvance_flmax_asym_isym0.ldt",
+  return {root / "ies" / "erco_qrcbc35_lm86_spot.ies",
+          root / "ldt" / "ledvance_flmax_asym_isym0.ldt",
           root / "ies" / "rab_roadway_bilateral_lm02.ies"};
 }
 
@@ -176,7 +183,8 @@ double AccuracyStudy::mean_ns(int m) const {
 const AccuracyCell& AccuracyStudy::cell(const std::string& data_set, double height, int m) const {
   for (const auto& c : cells)
     if (c.data_set == data_set && c.height == height && c.model_index == m) return c;
-  throw CalculationError("accuracy study: no cell for " + data_set + " at h = " + height_label(height));
+  throw CalculationError("accuracy study: no cell for " + data_set +
+                         " at h = " + height_label(height));
 }
 
 int monte_carlo_at_time(const AccuracyStudy& study, const std::string& data_set, double height,
@@ -235,8 +243,9 @@ AccuracyStudy run_accuracy_study(const std::vector<AccuracyDataSet>& data_sets,
         double max_t = 0.0;
         for (double t : truth) max_t = std::max(max_t, t);
         for (size_t i = 0; i < configs.size(); ++i) {
-          const double exact = nearfield::lambert_uniform_illuminance(
-              configs[i].emitter, configs[i].point, up, kIntensityCd / (kEmitterSide * kEmitterSide));
+          const double exact =
+              nearfield::lambert_uniform_illuminance(configs[i].emitter, configs[i].point, up,
+                                                     kIntensityCd / (kEmitterSide * kEmitterSide));
           cosine_max_rel = std::max(cosine_max_rel, std::abs(truth[i] - exact) / max_t);
         }
       }
@@ -254,7 +263,8 @@ AccuracyStudy run_accuracy_study(const std::vector<AccuracyDataSet>& data_sets,
       std::vector<double> values(configs.size());
       for (int m = 0; m < static_cast<int>(models.size()); ++m) {
         const double t1 = thread_seconds();
-        for (size_t i = 0; i < configs.size(); ++i)  // seed: independent Monte Carlo noise per point
+        for (size_t i = 0; i < configs.size();
+             ++i)  // seed: independent Monte Carlo noise per point
           values[i] = evaluate(models[m], configs[i].emitter, configs[i].point, up, i + 1);
         const double secs = thread_seconds() - t1;
         double err_sq = 0.0, max_abs = 0.0, point_rel = 0.0;
@@ -281,7 +291,8 @@ AccuracyStudy run_accuracy_study(const std::vector<AccuracyDataSet>& data_sets,
       }
     }
   }
-  study.reference_ns_per_eval = ref_count ? 1e9 * ref_seconds / static_cast<double>(ref_count) : 0.0;
+  study.reference_ns_per_eval =
+      ref_count ? 1e9 * ref_seconds / static_cast<double>(ref_count) : 0.0;
   study.cosine_vs_lambert_max_rel = cosine_max_rel;
   return study;
 }
@@ -290,8 +301,8 @@ std::string format_accuracy_markdown(const AccuracyStudy& s, const std::string& 
   std::ostringstream o;
   const auto& op = s.options;
   o << "Generated by `" << command << "`: " << s.data_sets.size() << " data sets x "
-    << op.heights.size() << " heights, " << s.points_per_cell << " receivers per cell ("
-    << op.grid << " x " << op.grid << " over " << op.region << " x " << op.region
+    << op.heights.size() << " heights, " << s.points_per_cell << " receivers per cell (" << op.grid
+    << " x " << op.grid << " over " << op.region << " x " << op.region
     << ", 5 orientations stitched). Truth: reference integrator at rel. tolerance "
     << fmt("%.0e", op.reference_tolerance) << " (" << fmt("%.0f", s.reference_ns_per_eval / 1e3)
     << " us per point; largest reported relative error estimate "
@@ -302,8 +313,10 @@ std::string format_accuracy_markdown(const AccuracyStudy& s, const std::string& 
   o << ".\n\n";
 
   o << "### All models (mean over data sets and heights)\n\n"
-    << "| model | ns / evaluation | mean NRMS | worst NRMS | worst error / max E | worst point error (E >= "
-    << fmt("%g", kPointErrorFloor) << " max E) | centre error, cosine h = " << height_label(op.heights.front())
+    << "| model | ns / evaluation | mean NRMS | worst NRMS | worst error / max E | worst point "
+       "error (E >= "
+    << fmt("%g", kPointErrorFloor)
+    << " max E) | centre error, cosine h = " << height_label(op.heights.front())
     << " |\n|---|---:|---:|---:|---:|---:|---:|\n";
   for (int m = 0; m < static_cast<int>(s.models.size()); ++m) {
     double worst = 0.0, worst_max = 0.0, worst_point = 0.0;
@@ -313,8 +326,9 @@ std::string format_accuracy_markdown(const AccuracyStudy& s, const std::string& 
         worst_point = std::max(worst_point, c.point_rel);
     const auto& cc = s.cell(s.data_sets.front(), op.heights.front(), m);
     o << "| " << s.models[m].name << " | " << fmt("%.0f", s.mean_ns(m)) << " | "
-      << fmt("%.2e", s.mean_nrms(m)) << " | " << fmt("%.2e", worst) << " | " << fmt("%.2e", worst_max)
-      << " | " << fmt("%.2e", worst_point) << " | " << fmt("%+.2f %%", 100 * cc.centre_rel) << " |\n";
+      << fmt("%.2e", s.mean_nrms(m)) << " | " << fmt("%.2e", worst) << " | "
+      << fmt("%.2e", worst_max) << " | " << fmt("%.2e", worst_point) << " | "
+      << fmt("%+.2f %%", 100 * cc.centre_rel) << " |\n";
   }
 
   auto index_of = [&](const std::string& name) {
@@ -325,13 +339,15 @@ std::string format_accuracy_markdown(const AccuracyStudy& s, const std::string& 
   using nearfield::Model;
   const int paper = index_of(nearfield::to_string(Model::paper_cubature()));
   std::vector<int> cols;
-  for (const Model& model : {Model::far_field(), Model::paper_cubature(), Model::subdivided(1),
-                             Model::subdivided(2), Model::subdivided(3), Model::lambert_subdivided(1),
-                             Model::lambert_subdivided(2), Model::lambert_subdivided(3), Model::standard()}) {
+  for (const Model& model :
+       {Model::far_field(), Model::paper_cubature(), Model::subdivided(1), Model::subdivided(2),
+        Model::subdivided(3), Model::lambert_subdivided(1), Model::lambert_subdivided(2),
+        Model::lambert_subdivided(3), Model::standard()}) {
     const int m = index_of(nearfield::to_string(model));
     if (m >= 0) cols.push_back(m);
   }
-  o << "\n### NRMS per data set and height: the [Luksch2020] cubature, the subdivided rungs, and Monte "
+  o << "\n### NRMS per data set and height: the [Luksch2020] cubature, the subdivided rungs, and "
+       "Monte "
        "Carlo at the cubature's time\n\n| data set | h |";
   for (int m : cols) o << " " << s.models[m].name << " |";
   if (paper >= 0) o << " MC at paper's time |";
@@ -372,16 +388,21 @@ void write_accuracy_plot(const AccuracyStudy& s, const std::filesystem::path& pn
     pts.push_back({std::log10(ns), std::log10(e), s.models[m].name, s.models[m].is_monte_carlo()});
   }
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-  for (const auto& p : pts) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  for (const auto& p : pts)
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
   x0 = std::floor(x0), x1 = std::ceil(x1 + 0.3), y0 = std::floor(y0), y1 = std::ceil(y1);
   if (x1 <= x0) x1 = x0 + 1;
   if (y1 <= y0) y1 = y0 + 1;
-  auto px = [&](double x) { return kLeft + static_cast<int>(std::lround((x - x0) / (x1 - x0) * (kW - kLeft - kRight))); };
-  auto py = [&](double y) { return kTop + static_cast<int>(std::lround((y1 - y) / (y1 - y0) * (kH - kTop - kBottom))); };
+  auto px = [&](double x) {
+    return kLeft + static_cast<int>(std::lround((x - x0) / (x1 - x0) * (kW - kLeft - kRight)));
+  };
+  auto py = [&](double y) {
+    return kTop + static_cast<int>(std::lround((y1 - y) / (y1 - y0) * (kH - kTop - kBottom)));
+  };
 
   using report::Rgb;
   const Rgb white{1, 1, 1}, black{0, 0, 0}, grey{0.85f, 0.85f, 0.85f}, blue{0.1f, 0.3f, 0.8f},
-            red{0.85f, 0.15f, 0.1f}, green{0.1f, 0.6f, 0.2f};
+      red{0.85f, 0.15f, 0.1f}, green{0.1f, 0.6f, 0.2f};
   report::Raster canvas(kW, kH, white);
   bool text_ok = true;
   auto text = [&](int x, int y, const std::string& t, int size, Rgb colour) {
@@ -396,7 +417,8 @@ void write_accuracy_plot(const AccuracyStudy& s, const std::filesystem::path& pn
     text(20, py(d) + 5, "1e" + std::to_string(d), 14, black);
   }
   canvas.box(px(x0), py(y1), px(x1), py(y0), black, false);
-  text(kLeft, 30, "Near-field models: NRMS error vs time (mean over data sets and heights)", 18, black);
+  text(kLeft, 30, "Near-field models: NRMS error vs time (mean over data sets and heights)", 18,
+       black);
   text(kW / 2 - 120, kH - 18, "time per evaluation (ns, one thread)", 15, black);
   text(8, kTop - 12, "NRMS", 15, black);
 
@@ -422,7 +444,8 @@ void write_accuracy_plot(const AccuracyStudy& s, const std::filesystem::path& pn
   text(kW - kRight - 260, kTop + 22, "blue: quadrature ladder, red: Monte Carlo", 13, black);
   text(kW - kRight - 260, kTop + 40, "green: Pareto front", 13, green);
   if (!text_ok)
-    std::fprintf(stderr, "luxgrid: warning: %s: plot written without labels (font %s unavailable)\n",
+    std::fprintf(stderr,
+                 "luxgrid: warning: %s: plot written without labels (font %s unavailable)\n",
                  png.string().c_str(), report::kPlotFont);
   const std::filesystem::path tmp = png.string() + ".tmp.png";
   report::write_png(canvas, tmp);

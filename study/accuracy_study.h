@@ -10,10 +10,10 @@
 // Error measure: NRMS = sqrt(mean (E_model - E_ref)^2) / sqrt(mean E_ref^2) over the stitched
 // points (the RMS error relative to the RMS illuminance: scale-free, so candela values of the
 // files do not matter). "centre" is the signed relative error at the ground point straight below
-// the emitter facing down (orientation pi), the number that shows the published cubature's bias most plainly (-28 % for a cosine
-// emitter at h = 0.1 with the paper's cubature).
-#include <filesystem>
+// the emitter facing down (orientation pi), the number that shows the published cubature's bias
+// most plainly (-28 % for a cosine emitter at h = 0.1 with the paper's cubature).
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -32,7 +32,8 @@ struct AccuracyDataSet {
 // baselines it is measured against (baselines.h).
 struct AccuracyModel {
   enum class Kind { ladder, structured_sampling, most_representative_point, monte_carlo };
-  std::string name;  // nearfield::to_string(ladder) for a rung; "structured sampling", "MRP", "MC N"
+  std::string
+      name;  // nearfield::to_string(ladder) for a rung; "structured sampling", "MRP", "MC N"
   Kind kind = Kind::ladder;
   nearfield::Model ladder;  // kind == ladder
   int samples = 0;          // kind == monte_carlo
@@ -50,9 +51,9 @@ double evaluate(const AccuracyModel& model, const nearfield::Emitter& emitter, c
 
 struct AccuracyOptions {
   std::vector<double> heights{0.1, 1.0, 2.5};
-  int grid = 24;                     // receivers per side over the 5 x 5 region (cell centres)
-  double region = 5.0;               // side of the receiver region (units)
-  double reference_tolerance = 1e-7; // relative tolerance of the reference integrator
+  int grid = 24;                      // receivers per side over the 5 x 5 region (cell centres)
+  double region = 5.0;                // side of the receiver region (units)
+  double reference_tolerance = 1e-7;  // relative tolerance of the reference integrator
 };
 
 // The paper's orientations: angle between the emitter's normal and the ground normal (rad).
@@ -68,12 +69,12 @@ struct AccuracyCell {
   std::string data_set;
   double height = 0.0;
   std::string model;
-  int model_index = 0;     // index into the study's models
+  int model_index = 0;  // index into the study's models
   double nrms = 0.0;
-  double max_rel = 0.0;    // largest |E - E_ref| / max(E_ref) over the stitched points
-  double point_rel = 0.0;  // largest |E - E_ref| / E_ref over the points with E_ref >=
-                           // kPointErrorFloor x max(E_ref) (the promise's "1 % at every point")
-  double centre_rel = 0.0; // signed relative error below the centre, orientation pi
+  double max_rel = 0.0;     // largest |E - E_ref| / max(E_ref) over the stitched points
+  double point_rel = 0.0;   // largest |E - E_ref| / E_ref over the points with E_ref >=
+                            // kPointErrorFloor x max(E_ref) (the promise's "1 % at every point")
+  double centre_rel = 0.0;  // signed relative error below the centre, orientation pi
   double ns_per_eval = 0.0;
 };
 
@@ -81,9 +82,9 @@ struct AccuracyStudy {
   AccuracyOptions options;
   std::vector<std::string> data_sets;
   std::vector<AccuracyModel> models;
-  std::vector<AccuracyCell> cells;     // data set major, then height, then model
-  int points_per_cell = 0;             // receivers x orientations
-  double reference_ns_per_eval = 0.0;  // the truth's own cost (mean)
+  std::vector<AccuracyCell> cells;            // data set major, then height, then model
+  int points_per_cell = 0;                    // receivers x orientations
+  double reference_ns_per_eval = 0.0;         // the truth's own cost (mean)
   double reference_max_error_estimate = 0.0;  // largest relative error estimate it reported
   double cosine_vs_lambert_max_rel = -1.0;    // reference vs exact Lambert, cosine data set
 

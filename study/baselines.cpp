@@ -21,8 +21,8 @@ using nearfield::horizon_shift_m;
 using nearfield::kMaxPolygonVertices;
 using nearfield::OpeningPolygon;
 using nearfield::ReceiverFan;
-using nearfield::sanitize_illuminance;
 using nearfield::SampleContext;
+using nearfield::sanitize_illuminance;
 
 namespace {
 
@@ -40,7 +40,7 @@ Vec3 closest(const OpeningPolygon& p, const Vec3& q, const Vec3& plane_normal) {
 struct Prepared {
   ReceiverFan fan;
   OpeningPolygon poly;  // clipped polygon relative to the shifted receiver
-  double s = 0.0;     // signed plane distance of the shifted receiver
+  double s = 0.0;       // signed plane distance of the shifted receiver
 };
 
 bool prepare(const Emitter& e, const Vec3& point, const Vec3& normal, Prepared& p) {
@@ -74,7 +74,8 @@ double vertex_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
 // Arvo 1995, "Stratified sampling of spherical triangles": a direction uniformly distributed in
 // the solid angle of the triangle (a, b, c) for (u1, u2) in [0, 1)^2.
 Vec3 sample_spherical_triangle(const Vec3& a, const Vec3& b, const Vec3& c, double u1, double u2) {
-  const double alpha = vertex_angle(a, b, c), beta = vertex_angle(b, c, a), gamma = vertex_angle(c, a, b);
+  const double alpha = vertex_angle(a, b, c), beta = vertex_angle(b, c, a),
+               gamma = vertex_angle(c, a, b);
   const double area = alpha + beta + gamma - kPi;
   const double area_hat = u1 * area;
   const double s = std::sin(area_hat - alpha), t = std::cos(area_hat - alpha);
@@ -127,7 +128,8 @@ double mrp_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal) 
     const double dn = glm::dot(dir, nA);
     if (std::abs(dn) > 1e-12 && -p.s / dn > 0.0) return dir * (-p.s / dn);
     const Vec3 in_plane = dir - dn * nA;
-    return in_plane * (1e6 * e.largest_dimension_m) / std::max(glm::length(in_plane), 1e-300) - p.s * nA;
+    return in_plane * (1e6 * e.largest_dimension_m) / std::max(glm::length(in_plane), 1e-300) -
+           p.s * nA;
   };
   const Vec3 cp = closest(p.poly, -p.s * nA, nA);
   const Vec3 np = closest(p.poly, onto_plane(normal), nA);

@@ -14,7 +14,8 @@ namespace luxgrid {
 //   office.json:12:7: ...   panel.ies:14: ...   office.json /rooms/0/height: ...   panel.ies: ...
 struct SourceLocation {
   SourceLocation() = default;
-  explicit SourceLocation(std::string file_, int line_ = 0, int column_ = 0, std::string pointer_ = "")
+  explicit SourceLocation(std::string file_, int line_ = 0, int column_ = 0,
+                          std::string pointer_ = "")
       : file(std::move(file_)), line(line_), column(column_), pointer(std::move(pointer_)) {}
 
   std::string file;     // as the user gave it; empty: not known
@@ -46,7 +47,9 @@ inline std::string located_message(const SourceLocation& where, const std::strin
 class InputError : public std::runtime_error {
  public:
   InputError(SourceLocation where, const std::string& message)
-      : std::runtime_error(located_message(where, message)), where_(std::move(where)), message_(message) {}
+      : std::runtime_error(located_message(where, message)),
+        where_(std::move(where)),
+        message_(message) {}
   // Input with no place to point at (a command-line value, an object named in the message).
   explicit InputError(const std::string& message) : InputError(SourceLocation{}, message) {}
 

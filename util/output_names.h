@@ -22,12 +22,15 @@ inline std::string safe_file_name(const std::string& name) {
 // for every surface, so whether two surfaces collide does not depend on the settings.
 struct SurfaceOutputFiles {
   std::string csv, png, direct_png, indirect_png, npy;
-  auto all() const { return std::array<const std::string*, 5>{&csv, &png, &direct_png, &indirect_png, &npy}; }
+  auto all() const {
+    return std::array<const std::string*, 5>{&csv, &png, &direct_png, &indirect_png, &npy};
+  }
 };
 
 inline SurfaceOutputFiles surface_output_files(const std::string& surface_name) {
   const std::string base = safe_file_name(surface_name);
-  return {base + ".csv", base + ".png", base + "_direct.png", base + "_indirect.png", base + ".npy"};
+  return {base + ".csv", base + ".png", base + "_direct.png", base + "_indirect.png",
+          base + ".npy"};
 }
 
 // Files of the folder itself, which no surface may overwrite.

@@ -13,9 +13,11 @@ namespace luxgrid {
 inline bool lies_within(const std::filesystem::path& path, const std::filesystem::path& root) {
   if (root.empty()) return true;
   std::error_code ec;
-  const std::filesystem::path p = std::filesystem::weakly_canonical(std::filesystem::absolute(path), ec);
+  const std::filesystem::path p =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(path), ec);
   if (ec) return false;
-  const std::filesystem::path r = std::filesystem::weakly_canonical(std::filesystem::absolute(root), ec);
+  const std::filesystem::path r =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(root), ec);
   if (ec) return false;
   auto pi = p.begin();
   for (auto ri = r.begin(); ri != r.end(); ++ri, ++pi) {

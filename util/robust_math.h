@@ -1,13 +1,13 @@
 #pragma once
-// Robust numeric primitives in one place (numerical robustness: one implementation each). Callers never write a raw
-// acos(dot(a, b)) or atan for a solid angle.
+// Robust numeric primitives in one place (numerical robustness: one implementation each). Callers
+// never write a raw acos(dot(a, b)) or atan for a solid angle.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
-#include <glm/geometric.hpp>
 
 namespace luxgrid {
 

@@ -11,11 +11,13 @@ double parallel_rectangles_form_factor(double a, double b, double c) {
   const double x = a / c, y = b / c;
   const double x1 = std::sqrt(1.0 + x * x), y1 = std::sqrt(1.0 + y * y);
   const double s = 0.5 * std::log((1.0 + x * x) * (1.0 + y * y) / (1.0 + x * x + y * y)) +
-                   x * y1 * std::atan(x / y1) + y * x1 * std::atan(y / x1) - x * std::atan(x) - y * std::atan(y);
+                   x * y1 * std::atan(x / y1) + y * x1 * std::atan(y / x1) - x * std::atan(x) -
+                   y * std::atan(y);
   return 2.0 * s / (kPi * x * y);
 }
 
-ThreeSurfaces indirect_flux(double X, double Y, double H, const ThreeSurfaces& rho, const ThreeSurfaces& direct) {
+ThreeSurfaces indirect_flux(double X, double Y, double H, const ThreeSurfaces& rho,
+                            const ThreeSurfaces& direct) {
   // Surfaces 0 floor, 1 walls, 2 ceiling; F[i][j] from i to j (reciprocity A_i F_ij = A_j F_ji).
   const double A_f = X * Y, A_w = 2.0 * H * (X + Y);
   const double F_fc = parallel_rectangles_form_factor(X, Y, H);

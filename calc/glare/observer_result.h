@@ -23,11 +23,11 @@ struct ViewTerm {
 };
 
 struct ViewResult {
-  Vec3 direction{1, 0, 0};          // unit line of sight
-  std::optional<double> UGR;        // none when no luminaire counts in this view
-  double Lb_cd_m2 = 0.0;            // background luminance, E_indirect / pi
-  double E_indirect_lx = 0.0;       // indirect illuminance at the eye facing the view (initial)
-  std::vector<ViewTerm> terms;      // the luminaires that count, in the scene's order
+  Vec3 direction{1, 0, 0};      // unit line of sight
+  std::optional<double> UGR;    // none when no luminaire counts in this view
+  double Lb_cd_m2 = 0.0;        // background luminance, E_indirect / pi
+  double E_indirect_lx = 0.0;   // indirect illuminance at the eye facing the view (initial)
+  std::vector<ViewTerm> terms;  // the luminaires that count, in the scene's order
 };
 
 struct ObserverResult {

@@ -38,7 +38,9 @@ std::optional<GlareTerm> glare_term(const photometry::IntensityDistribution& dis
   return t;
 }
 
-double unified_glare_rating(double sum, double Lb_cd_m2) { return 8.0 * std::log10(0.25 * sum / Lb_cd_m2); }
+double unified_glare_rating(double sum, double Lb_cd_m2) {
+  return 8.0 * std::log10(0.25 * sum / Lb_cd_m2);
+}
 
 std::vector<ObserverResult> evaluate_observers(const Scene& scene, const Plan& plan,
                                                const geometry::SurfaceGrid& grid,

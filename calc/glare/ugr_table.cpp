@@ -35,7 +35,8 @@ struct Fluxes {
   std::vector<FluxCell> down;
 };
 
-Fluxes flux_cells(const photometry::IntensityDistribution& d, const glm::dmat3& rotation, double H) {
+Fluxes flux_cells(const photometry::IntensityDistribution& d, const glm::dmat3& rotation,
+                  double H) {
   Fluxes f;
   f.down.reserve(static_cast<size_t>(kNadirSteps) * kAzimuthSteps);
   const double dt = kPi / (2 * kNadirSteps), dp = 2.0 * kPi / kAzimuthSteps;
@@ -75,8 +76,9 @@ size_t count_inside(const std::vector<double>& centres, double offset, double lo
   return n;
 }
 
-std::optional<double> room_ugr(const photometry::IntensityDistribution& d, const photometry::LuminousOpening& o,
-                               const TableRoom& room, const TableReflectances& refl, Viewing viewing,
+std::optional<double> room_ugr(const photometry::IntensityDistribution& d,
+                               const photometry::LuminousOpening& o, const TableRoom& room,
+                               const TableReflectances& refl, Viewing viewing,
                                const Fluxes& fluxes) {
   const double H = kTableH_m, S = kTableSpacingOverH * H;
   const double X = room.x_H * H, Y = room.y_H * H;
@@ -109,25 +111,28 @@ std::optional<double> room_ugr(const photometry::IntensityDistribution& d, const
 
 void require_area(const photometry::LuminousOpening& o) {
   if (o.shape == photometry::LuminousOpening::Shape::point) {
-    throw InputError("UGR table: the file gives no luminous area (a point emitter); UGR's luminance is the "
-                     "intensity over the luminous area");
+    throw InputError(
+        "UGR table: the file gives no luminous area (a point emitter); UGR's luminance is the "
+        "intensity over the luminous area");
   }
 }
 
 }  // namespace
 
-std::optional<double> table_ugr(const photometry::IntensityDistribution& d, const photometry::LuminousOpening& o,
-                                const TableRoom& room, const TableReflectances& refl, Viewing viewing) {
+std::optional<double> table_ugr(const photometry::IntensityDistribution& d,
+                                const photometry::LuminousOpening& o, const TableRoom& room,
+                                const TableReflectances& refl, Viewing viewing) {
   require_area(o);
   const Fluxes f = flux_cells(d, table_rotation(viewing), kTableH_m);
   return room_ugr(d, o, room, refl, viewing, f);
 }
 
-UgrTable ugr_table(const photometry::DistributionPtr& distribution, const photometry::LuminousOpening& o,
-                   double lamp_flux_lm) {
+UgrTable ugr_table(const photometry::DistributionPtr& distribution,
+                   const photometry::LuminousOpening& o, double lamp_flux_lm) {
   require_area(o);
   if (!(lamp_flux_lm > 0.0) || !std::isfinite(lamp_flux_lm)) {
-    throw InputError("UGR table: the lamp flux must be positive, got " + std::to_string(lamp_flux_lm) + " lm");
+    throw InputError("UGR table: the lamp flux must be positive, got " +
+                     std::to_string(lamp_flux_lm) + " lm");
   }
   UgrTable t;
   t.lamp_flux_lm = lamp_flux_lm;
@@ -138,14 +143,16 @@ UgrTable ugr_table(const photometry::DistributionPtr& distribution, const photom
     auto& rows = v == Viewing::crosswise ? t.crosswise : t.endwise;
     for (const auto& room : kTableRooms) {
       std::array<std::optional<double>, 5> row;
-      for (size_t r = 0; r < kTableReflectances.size(); ++r) row[r] = room_ugr(d, o, room, kTableReflectances[r], v, f);
+      for (size_t r = 0; r < kTableReflectances.size(); ++r)
+        row[r] = room_ugr(d, o, room, kTableReflectances[r], v, f);
       rows.push_back(row);
     }
   }
   return t;
 }
 
-double table_lamp_flux_lm(const photometry::Photometry& p, const photometry::IntensityDistribution& distribution) {
+double table_lamp_flux_lm(const photometry::Photometry& p,
+                          const photometry::IntensityDistribution& distribution) {
   if (p.lamp_flux_lm && *p.lamp_flux_lm > 0.0) return *p.lamp_flux_lm;
   return luminous_flux(distribution);
 }

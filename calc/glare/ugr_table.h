@@ -21,10 +21,25 @@ namespace luxgrid::calc::glare {
 struct TableRoom {
   double x_H, y_H;
 };
-inline constexpr std::array<TableRoom, 19> kTableRooms = {{{2, 2}, {2, 3}, {2, 4}, {2, 6}, {2, 8}, {2, 12},
-                                                          {4, 2}, {4, 3}, {4, 4}, {4, 6}, {4, 8}, {4, 12},
-                                                          {8, 4}, {8, 6}, {8, 8}, {8, 12},
-                                                          {12, 4}, {12, 6}, {12, 8}}};
+inline constexpr std::array<TableRoom, 19> kTableRooms = {{{2, 2},
+                                                           {2, 3},
+                                                           {2, 4},
+                                                           {2, 6},
+                                                           {2, 8},
+                                                           {2, 12},
+                                                           {4, 2},
+                                                           {4, 3},
+                                                           {4, 4},
+                                                           {4, 6},
+                                                           {4, 8},
+                                                           {4, 12},
+                                                           {8, 4},
+                                                           {8, 6},
+                                                           {8, 8},
+                                                           {8, 12},
+                                                           {12, 4},
+                                                           {12, 6},
+                                                           {12, 8}}};
 // The standard's reflectance combinations.
 struct TableReflectances {
   double ceiling, walls, floor;
@@ -32,9 +47,9 @@ struct TableReflectances {
 inline constexpr std::array<TableReflectances, 5> kTableReflectances = {
     {{0.7, 0.5, 0.2}, {0.7, 0.3, 0.2}, {0.5, 0.5, 0.2}, {0.5, 0.3, 0.2}, {0.3, 0.3, 0.2}}};
 inline constexpr double kTableSpacingOverH = 0.25;  // S / H
-inline constexpr double kTableH_m = 2.0;           // luminaires above the eye (the UGR does not depend on it
-                                                   // for a luminaire small against H; docs/glare.md)
-inline constexpr double kTableFluxLm = 1000.0;     // the table's lamp flux
+inline constexpr double kTableH_m = 2.0;  // luminaires above the eye (the UGR does not depend on it
+                                          // for a luminaire small against H; docs/glare.md)
+inline constexpr double kTableFluxLm = 1000.0;  // the table's lamp flux
 
 enum class Viewing { crosswise, endwise };
 
@@ -53,11 +68,12 @@ struct UgrTable {
 
 // The whole table for `distribution` (absolute cd, lamp flux `lamp_flux_lm`). Throws InputError
 // for an opening without area (UGR needs the luminous area) or a flux that is not positive.
-UgrTable ugr_table(const photometry::DistributionPtr& distribution, const photometry::LuminousOpening& opening,
-                   double lamp_flux_lm);
+UgrTable ugr_table(const photometry::DistributionPtr& distribution,
+                   const photometry::LuminousOpening& opening, double lamp_flux_lm);
 
 // The lamp flux a table is normalised by: the file's stated lamp flux, or the integrated
 // luminaire flux for absolute photometry (LED files: lamp = luminaire).
-double table_lamp_flux_lm(const photometry::Photometry& p, const photometry::IntensityDistribution& distribution);
+double table_lamp_flux_lm(const photometry::Photometry& p,
+                          const photometry::IntensityDistribution& distribution);
 
 }  // namespace luxgrid::calc::glare

@@ -39,14 +39,17 @@ std::vector<Polygon2> convex_pieces(const Room& room) {
 
 // `poly` clipped to the prism `piece` x [z0, z1], each plane moved out by kOpeningOnFace_m.
 Polygon3 clip_to_prism(Polygon3 poly, const Polygon2& piece, double z0, double z1) {
-  poly = geometry::clip_to_half_space(poly, Vec3(0.0, 0.0, z0 - kOpeningOnFace_m), Vec3(0.0, 0.0, 1.0));
-  poly = geometry::clip_to_half_space(poly, Vec3(0.0, 0.0, z1 + kOpeningOnFace_m), Vec3(0.0, 0.0, -1.0));
+  poly = geometry::clip_to_half_space(poly, Vec3(0.0, 0.0, z0 - kOpeningOnFace_m),
+                                      Vec3(0.0, 0.0, 1.0));
+  poly = geometry::clip_to_half_space(poly, Vec3(0.0, 0.0, z1 + kOpeningOnFace_m),
+                                      Vec3(0.0, 0.0, -1.0));
   for (size_t k = 0; k < piece.size() && poly.size() >= 3; ++k) {
     const Vec2 a = piece[k], b = piece[(k + 1) % piece.size()];
     const double len = glm::length(b - a);
     if (!(len > 0.0)) continue;
     const Vec3 inward(-(b.y - a.y) / len, (b.x - a.x) / len, 0.0);  // left of a -> b (ccw)
-    poly = geometry::clip_to_half_space(poly, Vec3(a.x, a.y, 0.0) - inward * kOpeningOnFace_m, inward);
+    poly =
+        geometry::clip_to_half_space(poly, Vec3(a.x, a.y, 0.0) - inward * kOpeningOnFace_m, inward);
   }
   return poly;
 }
@@ -67,7 +70,8 @@ bool flush_emitting_out(const Polygon3& part, const Room& room, const Vec3& emit
   for (size_t k = 0; k < room.outline.size(); ++k) {
     const Vec2 a = room.outline[k], b = room.outline[(k + 1) % room.outline.size()];
     const double len = glm::length(b - a);
-    if (len > 0.0 && in_plane(Vec3(a.x, a.y, 0.0), Vec3(-(b.y - a.y) / len, (b.x - a.x) / len, 0.0)))
+    if (len > 0.0 &&
+        in_plane(Vec3(a.x, a.y, 0.0), Vec3(-(b.y - a.y) / len, (b.x - a.x) / len, 0.0)))
       return true;
   }
   return false;
@@ -75,7 +79,9 @@ bool flush_emitting_out(const Polygon3& part, const Room& room, const Vec3& emit
 
 bool inside_obstacle(const Room& room, const Vec3& p) {
   for (const auto& o : room.obstacles)
-    if (p.z > o.z0 && p.z < o.z1 && geometry::locate(Vec2(p.x, p.y), o.footprint, 0.0) == geometry::Location::inside) return true;
+    if (p.z > o.z0 && p.z < o.z1 &&
+        geometry::locate(Vec2(p.x, p.y), o.footprint, 0.0) == geometry::Location::inside)
+      return true;
   return false;
 }
 
@@ -97,7 +103,8 @@ void add_cells(const Polygon3& poly, double max_cell_m, double inv_area, const R
     const double tri_area = 0.5 * glm::length(glm::cross(b - c, d - c));
     if (!(tri_area > 0.0)) continue;
     const double diameter = std::max({glm::length(b - c), glm::length(d - c), glm::length(d - b)});
-    const int n = std::clamp(static_cast<int>(std::ceil(diameter / max_cell_m)), 1, kMaxCellsPerSide);
+    const int n =
+        std::clamp(static_cast<int>(std::ceil(diameter / max_cell_m)), 1, kMaxCellsPerSide);
     const Vec3 u = (b - c) / double(n), v = (d - c) / double(n);
     const double w = tri_area / (double(n) * n) * inv_area;
     auto add = [&](double i, double j) {
@@ -106,8 +113,8 @@ void add_cells(const Polygon3& poly, double max_cell_m, double inv_area, const R
     };
     for (int j = 0; j < n; ++j)
       for (int i = 0; i + j < n; ++i) {
-        add(i + 1.0 / 3.0, j + 1.0 / 3.0);                         // upright triangle
-        if (i + j + 2 <= n) add(i + 2.0 / 3.0, j + 2.0 / 3.0);     // inverted triangle
+        add(i + 1.0 / 3.0, j + 1.0 / 3.0);                      // upright triangle
+        if (i + j + 2 <= n) add(i + 2.0 / 3.0, j + 2.0 / 3.0);  // inverted triangle
       }
   }
 }
@@ -149,7 +156,8 @@ std::vector<RoomCells> emitter_cells(const Scene& scene, const Luminaire& lum) {
       // before, at its cost).
       if (!inside_obstacle(room, e.centroid)) rc.cells.push_back({e.centroid, 1.0});
     } else {
-      for (const Polygon3& part : parts) add_cells(part, kCellToRoom * extent, inv_area, room, rc.cells);
+      for (const Polygon3& part : parts)
+        add_cells(part, kCellToRoom * extent, inv_area, room, rc.cells);
     }
     for (const auto& c : rc.cells) rc.weight += c.weight;
     if (!rc.cells.empty()) out.push_back(std::move(rc));
@@ -164,13 +172,14 @@ std::string outside_note(const Luminaire& lum, const std::vector<RoomCells>& par
   const double outside = 1.0 - inside;
   if (!(outside > kOutsideNoteFraction) || parts.empty()) return {};
   char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "%s: %.4g %% of its luminous opening (%s %.4g x %.4g m) lies outside its room "
-                "or inside an obstacle; that light does not enter the room: %.6g lm of %.6g lm "
-                "enter",
-                lum.label.c_str(), 100.0 * outside,
-                lum.opening.shape == photometry::LuminousOpening::Shape::disk ? "disk" : "rectangle",
-                lum.opening.length, lum.opening.width, inside * luminous_flux_lm, luminous_flux_lm);
+  std::snprintf(
+      buf, sizeof buf,
+      "%s: %.4g %% of its luminous opening (%s %.4g x %.4g m) lies outside its room "
+      "or inside an obstacle; that light does not enter the room: %.6g lm of %.6g lm "
+      "enter",
+      lum.label.c_str(), 100.0 * outside,
+      lum.opening.shape == photometry::LuminousOpening::Shape::disk ? "disk" : "rectangle",
+      lum.opening.length, lum.opening.width, inside * luminous_flux_lm, luminous_flux_lm);
   std::string note = buf;
   for (size_t k = 0; k < parts.size(); ++k)
     note += (k == 0 ? " room '" : ", '") + scene.rooms[parts[k].room].name + "'";

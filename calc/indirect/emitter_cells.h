@@ -19,8 +19,8 @@
 namespace luxgrid::calc::indirect {
 
 struct EmitterCell {
-  Vec3 position{0.0};  // m, world: the cell's area centroid
-  double weight = 0.0; // cell area / opening area: the cell's intensity is weight x I
+  Vec3 position{0.0};   // m, world: the cell's area centroid
+  double weight = 0.0;  // cell area / opening area: the cell's intensity is weight x I
 };
 
 // The cells of one luminaire in one room.

@@ -113,7 +113,8 @@ FirstBounce first_bounce(
     fb.luminaire_flux_lm += it->second;
     for (const RoomCells& part : parts) {
       fb.emitted_flux_lm += part.weight * it->second;
-      for (const EmitterCell& cell : part.cells) in_room[part.room].push_back({cell.position, &lum, cell.weight});
+      for (const EmitterCell& cell : part.cells)
+        in_room[part.room].push_back({cell.position, &lum, cell.weight});
     }
     if (std::string note = outside_note(lum, parts, scene, it->second); !note.empty())
       fb.notes.push_back(std::move(note));

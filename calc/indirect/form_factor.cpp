@@ -39,8 +39,7 @@ double point_kernel_form_factor(const Vec3& x, const Vec3& n, const Vec3& c, con
 
 double quarter_kernel_form_factor(const Vec3& x, const Vec3& n, const Polygon3& polygon,
                                   const Vec3& centroid, const std::array<Vec3, 4>& quarter,
-                                  const Vec3& m, double area_m2, double diameter_m,
-                                  double min_d2) {
+                                  const Vec3& m, double area_m2, double diameter_m, double min_d2) {
   // Every vertex in front of the receiver: at once when the circumscribed sphere is (a
   // parallelogram's vertices are at most half its diameter from its centroid), else one by one.
   if (!(glm::dot(n, centroid - x) > 0.5 * diameter_m))
@@ -51,7 +50,8 @@ double quarter_kernel_form_factor(const Vec3& x, const Vec3& n, const Polygon3& 
     const Vec3 d = x - c;
     const double d2 = glm::dot(d, d);
     if (!(d2 > min_d2)) return -1.0;
-    sum += point_kernel_pi_per_m2(std::max(0.0, glm::dot(m, d)), std::max(0.0, -glm::dot(n, d)), d2);
+    sum +=
+        point_kernel_pi_per_m2(std::max(0.0, glm::dot(m, d)), std::max(0.0, -glm::dot(n, d)), d2);
   }
   const double f4 = 0.25 * area_m2 * sum / kPi;
   const double f1 = point_kernel_form_factor(x, n, centroid, m, area_m2);

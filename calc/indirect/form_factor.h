@@ -56,7 +56,6 @@ double point_kernel_form_factor(const Vec3& x, const Vec3& n, const Vec3& c, con
 // or when the extrapolation comes out negative.
 double quarter_kernel_form_factor(const Vec3& x, const Vec3& n, const Polygon3& polygon,
                                   const Vec3& centroid, const std::array<Vec3, 4>& quarter,
-                                  const Vec3& m, double area_m2, double diameter_m,
-                                  double min_d2);
+                                  const Vec3& m, double area_m2, double diameter_m, double min_d2);
 
 }  // namespace luxgrid::calc::indirect

@@ -119,8 +119,8 @@ PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, double size,
                              std::vector<std::string>& notes) {
   if (o.max_patches_per_room > kMaxPatchesPerRoom) {
     notes.push_back("indirect: the budget of " + std::to_string(o.max_patches_per_room) +
-                    " patches per room is above the limit of " + std::to_string(kMaxPatchesPerRoom) +
-                    " (a form-factor matrix of " +
+                    " patches per room is above the limit of " +
+                    std::to_string(kMaxPatchesPerRoom) + " (a form-factor matrix of " +
                     std::to_string(kMaxFormFactorMatrixBytes / kBytesPerMegabyte) + " MB); " +
                     std::to_string(kMaxPatchesPerRoom) + " used");
     o.max_patches_per_room = kMaxPatchesPerRoom;
@@ -141,8 +141,9 @@ PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, double size,
     // room's faces alone exceed the budget (thousands of small obstacles).
     if (attempt > 0 && worst > o.max_patches_per_room && worst >= previous_worst) {
       const Room& room = scene.rooms[worst_room];
-      throw InputError("room \"" + room.name + "\": its walls and " + std::to_string(room.obstacles.size()) +
-                       " obstacles have " + std::to_string(worst) +
+      throw InputError("room \"" + room.name + "\": its walls and " +
+                       std::to_string(room.obstacles.size()) + " obstacles have " +
+                       std::to_string(worst) +
                        " faces, each at least one patch, more than the budget of " +
                        std::to_string(o.max_patches_per_room) +
                        " patches per room; use fewer obstacles, or \"indirect\": \"off\"");
@@ -193,7 +194,8 @@ std::vector<Box3> obstacle_boxes(const Scene& scene) {
   std::vector<Box3> boxes;
   for (const auto& room : scene.rooms)
     for (const auto& o : room.obstacles) {
-      Box3 b{Vec3(o.footprint[0].x, o.footprint[0].y, o.z0), Vec3(o.footprint[0].x, o.footprint[0].y, o.z1)};
+      Box3 b{Vec3(o.footprint[0].x, o.footprint[0].y, o.z0),
+             Vec3(o.footprint[0].x, o.footprint[0].y, o.z1)};
       for (const auto& v : o.footprint) {
         b.lo = glm::min(b.lo, Vec3(v.x, v.y, o.z0));
         b.hi = glm::max(b.hi, Vec3(v.x, v.y, o.z1));
@@ -214,7 +216,8 @@ std::vector<Box3> obstacle_boxes(const Scene& scene) {
 constexpr double kFacingOutCosine = 1e-9;
 bool faces_out_of_room(const Room& room, const Vec3& x, const Vec3& n) {
   if (std::abs(x.z - room.floor_z) < kReceiverInset_m && n.z < -kFacingOutCosine) return true;
-  if (std::abs(x.z - room.floor_z - room.height) < kReceiverInset_m && n.z > kFacingOutCosine) return true;
+  if (std::abs(x.z - room.floor_z - room.height) < kReceiverInset_m && n.z > kFacingOutCosine)
+    return true;
   for (size_t k = 0; k < room.outline.size(); ++k) {
     const geometry::EdgeCoordinates e = geometry::edge_coordinates(room.outline, k, Vec2(x.x, x.y));
     if (!(e.length_m > 0.0)) continue;
@@ -228,7 +231,8 @@ bool faces_out_of_room(const Room& room, const Vec3& x, const Vec3& n) {
 
 // `x` moved to at least kReceiverInset_m inside every face of `room` that it lies on or near.
 Vec3 inset_into_room(const Room& room, Vec3 x) {
-  x.z = std::clamp(x.z, room.floor_z + kReceiverInset_m, room.floor_z + room.height - kReceiverInset_m);
+  x.z = std::clamp(x.z, room.floor_z + kReceiverInset_m,
+                   room.floor_z + room.height - kReceiverInset_m);
   for (size_t k = 0; k < room.outline.size(); ++k) {
     const geometry::EdgeCoordinates e = geometry::edge_coordinates(room.outline, k, Vec2(x.x, x.y));
     if (!(e.length_m > 0.0)) continue;
@@ -255,8 +259,9 @@ constexpr double kChunkTile = 4.0;
 struct GatherSet {
   // Entries (patches with flux), structure of arrays, ordered by group and chunk.
   std::vector<double> cx, cy, cz, flux_lm;
-  std::vector<double> near_d2;  // (far_ratio x diameter)^2: closer, the quarters or the exact formula
-  std::vector<size_t> patch;    // index into the mesh
+  std::vector<double>
+      near_d2;                // (far_ratio x diameter)^2: closer, the quarters or the exact formula
+  std::vector<size_t> patch;  // index into the mesh
   struct Chunk {
     size_t begin = 0, end = 0;  // entries
     Vec3 lo{0.0}, hi{0.0};      // bounding box of the patches' vertices
@@ -266,7 +271,7 @@ struct GatherSet {
   struct Group {
     size_t begin = 0, end = 0;  // chunks
     Vec3 normal{0.0};
-    double max_offset = 0.0;    // largest normal . centroid over the group
+    double max_offset = 0.0;  // largest normal . centroid over the group
   };
   std::vector<Chunk> chunks;
   std::vector<Group> groups;
@@ -306,7 +311,8 @@ GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
       return std::array<double, 3>{t.x, t.y, t.z};
     };
     std::vector<size_t> order(emitting.begin() + first, emitting.begin() + last);
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return key(a) < key(b); });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return key(a) < key(b); });
     for (size_t k = 0; k < order.size(); ++k) {
       if (k == 0 || key(order[k]) != key(order[k - 1])) {
         GatherSet::Chunk c;
@@ -336,17 +342,18 @@ GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
   return set;
 }
 
-
 // Form factor from the point (x, n) to patch p in the final gather: the point kernel when the
 // patch is far (`far`: beyond far_ratio x its diameter), the kernel on its quarters between
 // far_ratio x D / 2 and far_ratio x D, Lambert's exact polygon formula closer (and whenever the
 // quarter rule declines: non-parallelogram patches, patches crossing the horizon).
-double gather_form_factor(const Vec3& x, const Vec3& n, const Patch& p, double far_ratio, bool far) {
+double gather_form_factor(const Vec3& x, const Vec3& n, const Patch& p, double far_ratio,
+                          bool far) {
   if (far) return point_kernel_form_factor(x, n, p.centroid, p.normal, p.area_m2);
   const double half = 0.5 * far_ratio * p.diameter_m;
-  const double f = p.has_quarters ? quarter_kernel_form_factor(x, n, p.polygon, p.centroid, p.quarter_centroid,
-                                                               p.normal, p.area_m2, p.diameter_m, half * half)
-                                  : -1.0;
+  const double f = p.has_quarters
+                       ? quarter_kernel_form_factor(x, n, p.polygon, p.centroid, p.quarter_centroid,
+                                                    p.normal, p.area_m2, p.diameter_m, half * half)
+                       : -1.0;
   return f < 0.0 ? point_polygon_form_factor(x, n, p.polygon) : f;
 }
 
@@ -417,14 +424,15 @@ IndirectResult compute_indirect(const Scene& scene,
                                 const IndirectOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   IndirectResult res;
-  const double size = options.patch_size_m > 0.0 ? options.patch_size_m
-                                                 : quality_patch_size(options.quality);
-  const double far_ratio = options.far_ratio > 0.0 ? options.far_ratio
-                                                   : quality_far_ratio(options.quality);
-  const double tol = options.tolerance > 0.0 ? options.tolerance
-                                             : quality_tolerance(options.quality);
-  const int bounces = options.bounces > 0 ? options.bounces
-                      : options.quality == Quality::draft ? 1 : 0;
+  const double size =
+      options.patch_size_m > 0.0 ? options.patch_size_m : quality_patch_size(options.quality);
+  const double far_ratio =
+      options.far_ratio > 0.0 ? options.far_ratio : quality_far_ratio(options.quality);
+  const double tol =
+      options.tolerance > 0.0 ? options.tolerance : quality_tolerance(options.quality);
+  const int bounces = options.bounces > 0                 ? options.bounces
+                      : options.quality == Quality::draft ? 1
+                                                          : 0;
 
   const PatchMesh mesh = mesh_within_budget(scene, options, size, res.notes);
   res.patches = mesh.patches.size();
@@ -485,7 +493,8 @@ IndirectResult compute_indirect(const Scene& scene,
   // Final gather.
   std::vector<GatherSet> gather_sets;
   for (size_t r = 0; r < scene.rooms.size(); ++r)
-    gather_sets.push_back(make_gather_set(mesh, mesh.room_begin[r], mesh.room_begin[r + 1], exitant, far_ratio));
+    gather_sets.push_back(
+        make_gather_set(mesh, mesh.room_begin[r], mesh.room_begin[r + 1], exitant, far_ratio));
   res.E_indirect_per_surface.resize(surfaces.size());
   for (size_t s = 0; s < surfaces.size(); ++s) {
     const auto& grid = surfaces[s];
@@ -503,9 +512,10 @@ IndirectResult compute_indirect(const Scene& scene,
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   std::string what = bounces == 1 ? "one bounce (RSM-style)"
-                     : bounces > 1 ? std::to_string(bounces) + " bounces"
-                                   : "converged interreflection (" + std::to_string(res.bounces_run) +
-                                         " bounces" + (res.tail_added ? " + geometric tail" : "") + ")";
+                     : bounces > 1
+                         ? std::to_string(bounces) + " bounces"
+                         : "converged interreflection (" + std::to_string(res.bounces_run) +
+                               " bounces" + (res.tail_added ? " + geometric tail" : "") + ")";
   res.summary =
       what + ": " + std::to_string(res.patches) + " patches of " +
       format_double("%.3g", res.patch_size_m) + " m, " + std::to_string(res.vpls) +

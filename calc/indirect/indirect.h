@@ -28,14 +28,14 @@ namespace luxgrid::calc::indirect {
 
 struct IndirectOptions {
   Quality quality = Quality::standard;
-  int bounces = 0;              // 0: auto (converged; draft: 1); N >= 1: exactly N reflections
-  double patch_size_m = 0.0;    // 0: the quality's (draft 1.0, standard 0.5, high 0.25, ref 0.2 m)
+  int bounces = 0;            // 0: auto (converged; draft: 1); N >= 1: exactly N reflections
+  double patch_size_m = 0.0;  // 0: the quality's (draft 1.0, standard 0.5, high 0.25, ref 0.2 m)
   // Budget: the patch size grows to fit, unless set above. At most kMaxPatchesPerRoom (the
   // form-factor matrix's memory; a larger value is lowered to it, with a note); all rooms
   // together at most kMaxTotalPatches (limits.h).
   size_t max_patches_per_room = kDefaultPatchesPerRoom;
-  double far_ratio = 0.0;       // 0: the quality's (draft 3, standard 5, high 8, reference: never)
-  double tolerance = 0.0;       // 0: the quality's (draft 1e-2, standard 1e-3, high 1e-4, ref 1e-6)
+  double far_ratio = 0.0;  // 0: the quality's (draft 3, standard 5, high 8, reference: never)
+  double tolerance = 0.0;  // 0: the quality's (draft 1e-2, standard 1e-3, high 1e-4, ref 1e-6)
   // What blocks light between two points of the scene: the plan's visibility test (its AABB tree
   // of room and obstacle faces, calc/visibility.h). Null: nothing blocks (make_visibility's
   // verdict for a convex room without obstacles).
@@ -49,19 +49,20 @@ struct IndirectOptions {
 IndirectOptions indirect_options(const Settings& settings);
 
 struct IndirectResult {
-  std::vector<std::vector<double>> E_indirect_per_surface;  // lx, same order as the surfaces' points
-  std::string summary;      // one line for Plan::indirect
+  std::vector<std::vector<double>>
+      E_indirect_per_surface;  // lx, same order as the surfaces' points
+  std::string summary;         // one line for Plan::indirect
   std::vector<std::string> notes;
   size_t patches = 0;
   size_t vpls = 0;
-  int bounces_run = 0;      // largest over rooms
+  int bounces_run = 0;  // largest over rooms
   bool tail_added = false;
-  double residual = 0.0;    // largest over rooms, relative
+  double residual = 0.0;  // largest over rooms, relative
   double patch_size_m = 0.0;
-  double emitted_flux_lm = 0.0;   // entering the rooms (the parts of the openings inside them)
-  double luminaire_flux_lm = 0.0; // of the luminaires that reach a room, whole
-  double received_flux_lm = 0.0;  // direct lumens landing on patches
-  double vpl_flux_lm = 0.0;       // sum over VPLs (= sum rho x received)
+  double emitted_flux_lm = 0.0;    // entering the rooms (the parts of the openings inside them)
+  double luminaire_flux_lm = 0.0;  // of the luminaires that reach a room, whole
+  double received_flux_lm = 0.0;   // direct lumens landing on patches
+  double vpl_flux_lm = 0.0;        // sum over VPLs (= sum rho x received)
   double max_row_correction = 0.0;
   double seconds = 0.0;
 };

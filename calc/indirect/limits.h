@@ -14,7 +14,8 @@ inline constexpr size_t kDefaultPatchesPerRoom = 4000;
 inline constexpr size_t kMaxPatchesPerRoom = 10000;
 // Rooms are solved one after the other and each matrix is freed before the next is built, so
 // this is the most the matrices ever take, however many rooms there are.
-inline constexpr size_t kMaxFormFactorMatrixBytes = sizeof(float) * kMaxPatchesPerRoom * kMaxPatchesPerRoom;
+inline constexpr size_t kMaxFormFactorMatrixBytes =
+    sizeof(float) * kMaxPatchesPerRoom * kMaxPatchesPerRoom;
 // For messages: decimal megabytes, as the figures above are given.
 inline constexpr size_t kBytesPerMegabyte = 1000000;
 // Patches in all rooms together at most. A patch with its polygon, first-bounce and gather

@@ -24,13 +24,12 @@ void check_room(const Room& room) {
   const std::string where = "room '" + room.name + "'";
   if (room.outline.size() < 3)
     throw InputError(where + ": outline has " + std::to_string(room.outline.size()) +
-                                " vertices, indirect light needs a closed polygon of at least 3");
-  if (!(room.height > 0.0))
-    throw InputError(where + ": height must be > 0 for indirect light");
+                     " vertices, indirect light needs a closed polygon of at least 3");
+  if (!(room.height > 0.0)) throw InputError(where + ": height must be > 0 for indirect light");
   const auto check = [&](double r, const char* face) {
     if (!(r >= 0.0 && r <= 1.0))
-      throw InputError(where + ": reflectance of the " + face + " is " +
-                                  std::to_string(r) + ", expected a number in [0, 1]");
+      throw InputError(where + ": reflectance of the " + face + " is " + std::to_string(r) +
+                       ", expected a number in [0, 1]");
   };
   check(room.reflectance.floor, "floor");
   check(room.reflectance.walls, "walls");
@@ -121,8 +120,10 @@ bool segment_enters_box(const Vec2& a, const Vec2& b, const Vec2& lo, const Vec2
         continue;
       }
       const double t = q[s] / p[s];
-      if (p[s] < 0.0) t0 = std::max(t0, t);
-      else t1 = std::min(t1, t);
+      if (p[s] < 0.0)
+        t0 = std::max(t0, t);
+      else
+        t1 = std::min(t1, t);
     }
   }
   return t1 - t0 > 1e-12;
@@ -142,7 +143,8 @@ void add_patch(PatchMesh& mesh, Polygon3 poly, const Vec3& normal, double reflec
   if (p.polygon.size() == 4) {
     // A parallelogram when the diagonals bisect each other; its quarters' centroids are then
     // halfway between the centre and each corner.
-    const Vec3 mid02 = 0.5 * (p.polygon[0] + p.polygon[2]), mid13 = 0.5 * (p.polygon[1] + p.polygon[3]);
+    const Vec3 mid02 = 0.5 * (p.polygon[0] + p.polygon[2]),
+               mid13 = 0.5 * (p.polygon[1] + p.polygon[3]);
     if (glm::length(mid02 - mid13) <= 1e-9 * p.diameter_m) {
       p.has_quarters = true;
       for (int k = 0; k < 4; ++k) p.quarter_centroid[k] = 0.5 * (p.polygon[k] + p.centroid);
@@ -177,7 +179,8 @@ std::vector<Polygon2> horizontal_pieces(const Polygon2& outline, double size) {
         crossed = segment_enters_box(outline[k], outline[(k + 1) % outline.size()], c0, c1);
       if (!crossed) {
         // No outline edge enters the cell: it is wholly inside or wholly outside.
-        if (geometry::locate(0.5 * (c0 + c1), outline) != geometry::Location::outside) pieces.push_back(cell);
+        if (geometry::locate(0.5 * (c0 + c1), outline) != geometry::Location::outside)
+          pieces.push_back(cell);
         continue;
       }
       if (ears.empty()) ears = geometry::triangles(outline);
@@ -253,10 +256,11 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
     for (const auto& piece : floor_holes.empty() ? pieces : subtract_holes(pieces, floor_holes)) {
       Polygon3 floor;
       for (const auto& v : piece) floor.emplace_back(v.x, v.y, z0);
-      add_patch(mesh, std::move(floor), Vec3(0, 0, 1), room.reflectance.floor, ri,
-                FaceKind::floor, 0);
+      add_patch(mesh, std::move(floor), Vec3(0, 0, 1), room.reflectance.floor, ri, FaceKind::floor,
+                0);
     }
-    for (const auto& piece : ceiling_holes.empty() ? pieces : subtract_holes(pieces, ceiling_holes)) {
+    for (const auto& piece :
+         ceiling_holes.empty() ? pieces : subtract_holes(pieces, ceiling_holes)) {
       Polygon3 ceiling;
       for (const auto& v : piece) ceiling.emplace_back(v.x, v.y, z1);
       add_patch(mesh, std::move(ceiling), Vec3(0, 0, -1), room.reflectance.ceiling, ri,
@@ -273,7 +277,8 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
           if (t < z1 - kTouch_m) {
             Polygon3 top;
             for (const auto& v : piece) top.emplace_back(v.x, v.y, t);
-            add_patch(mesh, std::move(top), Vec3(0, 0, 1), ob.reflectance, ri, FaceKind::obstacle, ki);
+            add_patch(mesh, std::move(top), Vec3(0, 0, 1), ob.reflectance, ri, FaceKind::obstacle,
+                      ki);
           }
           if (b > z0 + kTouch_m) {
             Polygon3 bottom;
@@ -290,7 +295,8 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
         const double len = glm::length(c - a);
         if (!(len > 0.0)) continue;
         const Vec2 dir = (c - a) / len;
-        const Vec3 outward(dir.y, -dir.x, 0.0);  // counter-clockwise footprint: outside on the right
+        const Vec3 outward(dir.y, -dir.x,
+                           0.0);  // counter-clockwise footprint: outside on the right
         const int nu = std::max(1, static_cast<int>(std::ceil(len / patch_size_m - 1e-9)));
         for (int j = 0; j < nv; ++j) {
           const double za = b + (t - b) * j / nv, zb = b + (t - b) * (j + 1) / nv;

@@ -29,16 +29,16 @@ using geometry::Polygon3;
 enum class FaceKind { floor, ceiling, wall, obstacle };
 
 struct Patch {
-  Polygon3 polygon;   // convex, counter-clockwise seen from the room side
+  Polygon3 polygon;  // convex, counter-clockwise seen from the room side
   Vec3 centroid{0.0};
-  Vec3 normal{0.0};   // unit, into the room (obstacles: out of the obstacle, into the room)
+  Vec3 normal{0.0};  // unit, into the room (obstacles: out of the obstacle, into the room)
   double area_m2 = 0.0;
   double diameter_m = 0.0;
   double reflectance = 0.0;
-  int room = 0;       // index into Scene::rooms
+  int room = 0;  // index into Scene::rooms
   FaceKind face = FaceKind::floor;
-  int face_index = 0; // 0 for floor / ceiling; outline edge index for a wall; obstacle index in
-                      // Room::obstacles for an obstacle face
+  int face_index = 0;  // 0 for floor / ceiling; outline edge index for a wall; obstacle index in
+                       // Room::obstacles for an obstacle face
   // Parallelograms (wall patches, whole floor and ceiling cells, obstacle sides: nearly all) are
   // also seen as 2 x 2 quarters, each of a quarter of the area and half the diameter, with these
   // centroids: the point kernel on the quarters is as accurate at half the distance as on the

@@ -86,7 +86,8 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
   if (n > kMaxPatchesPerRoom)
     throw CalculationError("indirect: room " + std::to_string(room) + " has " + std::to_string(n) +
                            " patches; its form-factor matrix would take " +
-                           std::to_string(sizeof(float) * n * n / kBytesPerMegabyte) + " MB, above the limit of " +
+                           std::to_string(sizeof(float) * n * n / kBytesPerMegabyte) +
+                           " MB, above the limit of " +
                            std::to_string(kMaxFormFactorMatrixBytes / kBytesPerMegabyte) + " MB (" +
                            std::to_string(kMaxPatchesPerRoom) + " patches)");
   // Centroids and normals side by side: the inner loop below streams through them n^2 times.
@@ -115,8 +116,8 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
     size_t begin = 0, end = 0;  // into `order`
     size_t run = 0;             // first patch of the coplanar run
     Vec3 normal{0.0};
-    double max_offset = 0.0;    // largest normal . centroid
-    Vec3 lo{0.0}, hi{0.0};      // bounding box of the centroids
+    double max_offset = 0.0;  // largest normal . centroid
+    Vec3 lo{0.0}, hi{0.0};    // bounding box of the centroids
   };
   std::vector<size_t> order;
   std::vector<double> ox, oy, oz;
@@ -188,7 +189,8 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
             const double h_dst = -(dn.x * dx + dn.y * dy + dn.z * dz);
             const double h_src = sn.x * dx + sn.y * dy + sn.z * dz;
             const double d2 = dx * dx + dy * dy + dz * dz;
-            row[order[k]] = static_cast<float>(area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi);
+            row[order[k]] =
+                static_cast<float>(area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi);
           }
           continue;
         }
@@ -196,7 +198,7 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
           const size_t j = order[k];
           if (i == j) continue;
           const Vec3 sc = centroid[j];
-          const Vec3 d = dc - sc;  // source -> receiver
+          const Vec3 d = dc - sc;                 // source -> receiver
           const double h_dst = -glm::dot(dn, d);  // source's height over the receiver's plane
           if (!(h_dst > kMinPlaneDistance_m)) continue;
           const double h_src = glm::dot(sn, d);
@@ -207,11 +209,12 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
           if (d2 > near_d2) {
             f = h_src > 0.0 ? dst.area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi : 0.0;
           } else {
-            // Between far_ratio x D / 2 and far_ratio x D: the kernel on the quarters; closer: exact.
-            f = dst.has_quarters ? quarter_kernel_form_factor(sc, sn, dst.polygon, dc,
-                                                              dst.quarter_centroid, dn,
-                                                              dst.area_m2, dst.diameter_m, 0.25 * near_d2)
-                                 : -1.0;
+            // Between far_ratio x D / 2 and far_ratio x D: the kernel on the quarters; closer:
+            // exact.
+            f = dst.has_quarters
+                    ? quarter_kernel_form_factor(sc, sn, dst.polygon, dc, dst.quarter_centroid, dn,
+                                                 dst.area_m2, dst.diameter_m, 0.25 * near_d2)
+                    : -1.0;
             if (f < 0.0) f = point_polygon_form_factor(sc, sn, dst.polygon);
           }
           if (f > 0.0 && visibility)
@@ -253,7 +256,8 @@ RadiosityResult solve_radiosity(const FormFactorMatrix& F, const std::vector<dou
 
   std::vector<double> shot(n);  // delta x the per-source renormalisation
   auto sweep = [&]() {
-    for (size_t j = 0; j < n; ++j) shot[j] = F.source_scale.empty() ? delta[j] : delta[j] * F.source_scale[j];
+    for (size_t j = 0; j < n; ++j)
+      shot[j] = F.source_scale.empty() ? delta[j] : delta[j] * F.source_scale[j];
     tbb::parallel_for(size_t(0), n, [&](size_t i) {
       const float* row = F.gather.data() + i * n;
       // Entries [zero_begin, zero_end) are 0 (coplanar patches): skipped.
@@ -293,7 +297,8 @@ RadiosityResult solve_radiosity(const FormFactorMatrix& F, const std::vector<dou
       for (size_t i = 0; i < n; ++i) res.exitant_flux_lm[i] += delta[i] * factor;
       res.tail_added = true;
       // Error of the tail: the ratio may still drift by |r - r_prev| per sweep.
-      res.residual = delta_norm * std::abs(r - ratio_prev) / ((1.0 - r) * (1.0 - r)) / (total + tail);
+      res.residual =
+          delta_norm * std::abs(r - ratio_prev) / ((1.0 - r) * (1.0 - r)) / (total + tail);
       return res;
     }
     ratio_prev = r;
@@ -301,8 +306,8 @@ RadiosityResult solve_radiosity(const FormFactorMatrix& F, const std::vector<dou
   // Fixed N (or the cap): the light not followed is roughly the next bounces' share.
   if (res.bounce_flux_lm.size() >= 2) {
     const double r = res.bounce_flux_lm.back() / res.bounce_flux_lm[res.bounce_flux_lm.size() - 2];
-    res.residual = r < 1.0 ? delta_norm * r / (1.0 - r) / total
-                           : std::numeric_limits<double>::infinity();
+    res.residual =
+        r < 1.0 ? delta_norm * r / (1.0 - r) / total : std::numeric_limits<double>::infinity();
   } else {
     // One bounce: estimate the next bounce from the mean reflectance (flux-weighted).
     double rho = 0.0;

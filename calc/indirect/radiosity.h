@@ -17,10 +17,11 @@
 // of Delta_k. Each sweep is exactly one more reflection, so `bounces: N` means exactly N
 // reflections (N = 1 is the seed's one-bounce model), which Gauss-Seidel and Southwell shooting
 // cannot promise. A sweep is one dense matrix-vector product (parallel, rows in order, the
-// coplanar blocks skipped), so even 4000 patches cost ~5 ms per bounce. For `auto`, the ratio r_k = |Delta_k+1| / |Delta_k| tends
-// to the dominant eigenvalue (exactly rho in a closed room of uniform rho); once it is stable the
-// remaining bounces are a geometric series whose sum Delta_k r / (1 - r) is added (the "ambient"
-// tail of Cohen et al. 1988), so rho = 0.95 converges in tens of sweeps, not hundreds.
+// coplanar blocks skipped), so even 4000 patches cost ~5 ms per bounce. For `auto`, the ratio r_k =
+// |Delta_k+1| / |Delta_k| tends to the dominant eigenvalue (exactly rho in a closed room of uniform
+// rho); once it is stable the remaining bounces are a geometric series whose sum Delta_k r / (1 -
+// r) is added (the "ambient" tail of Cohen et al. 1988), so rho = 0.95 converges in tens of sweeps,
+// not hundreds.
 #include <cstdlib>
 #include <new>
 #include <utility>
@@ -46,11 +47,17 @@ struct HugePageAllocator {
   T* allocate(size_t count);
   void deallocate(T* p, size_t) noexcept { std::free(p); }
   template <class U>
-  void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }  // default-init: no zeroing
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }  // default-init: no zeroing
   template <class U, class... Args>
-  void construct(U* p, Args&&... args) { ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...); }
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
   template <class U>
-  bool operator==(const HugePageAllocator<U>&) const noexcept { return true; }
+  bool operator==(const HugePageAllocator<U>&) const noexcept {
+    return true;
+  }
 };
 void* allocate_huge_pages(size_t bytes);  // radiosity.cpp; throws std::bad_alloc
 template <class T>
@@ -61,13 +68,14 @@ T* HugePageAllocator<T>::allocate(size_t count) {
 // Dense form-factor matrix of one room's patches, stored so that row i holds F[j -> i] for all j
 // (the "gather" layout: incident flux on i = row i . exitant flux).
 struct FormFactorMatrix {
-  size_t begin = 0, n = 0;      // patches [begin, begin + n) of the mesh
+  size_t begin = 0, n = 0;  // patches [begin, begin + n) of the mesh
   // n x n, unnormalised: F[j -> i] = gather[i * n + j] x source_scale[j] (use at(i, j)). The
   // renormalisation is a factor per source applied to the flux vector in each sweep, not a pass
   // over the matrix: the float entries then sum (in double) to exactly 1 / scale per source, so
   // the float matrix conserves the flux to double precision over any number of bounces.
   std::vector<float, HugePageAllocator<float>> gather;
-  std::vector<double> source_scale;  // per source j: 1 / sum_i gather[i * n + j] (1 if not renormalised)
+  std::vector<double>
+      source_scale;  // per source j: 1 / sum_i gather[i * n + j] (1 if not renormalised)
   double at(size_t i, size_t j) const {
     return static_cast<double>(gather[i * n + j]) * (source_scale.empty() ? 1.0 : source_scale[j]);
   }
@@ -96,7 +104,7 @@ struct RadiosityResult {
   bool tail_added = false;              // geometric remainder added (auto mode)
   double residual = 0.0;  // flux not accounted for, relative to the total: the next bounce's
                           // share for fixed N; the tail's estimated error for auto
-  std::vector<double> bounce_flux_lm;   // |Delta_k| for k = 1..bounces_run
+  std::vector<double> bounce_flux_lm;  // |Delta_k| for k = 1..bounces_run
 };
 
 // `bounces` = 0: auto, until the remaining flux < tolerance x total (with the geometric tail);

@@ -16,6 +16,7 @@ class BatwingDistribution final : public photometry::IntensityDistribution {
     const double c = -d.z;
     return i0_ * c * (1.0 + 2.0 * (1.0 - c * c));
   }
+
  private:
   double i0_;
 };
@@ -24,7 +25,10 @@ class BatwingDistribution final : public photometry::IntensityDistribution {
 class CosinePowerDistribution final : public photometry::IntensityDistribution {
  public:
   CosinePowerDistribution(double i0, double n) : i0_(i0), n_(n) {}
-  double intensity(const Vec3& d) const override { return d.z < 0.0 ? i0_ * std::pow(-d.z, n_) : 0.0; }
+  double intensity(const Vec3& d) const override {
+    return d.z < 0.0 ? i0_ * std::pow(-d.z, n_) : 0.0;
+  }
+
  private:
   double i0_, n_;
 };
@@ -38,6 +42,7 @@ class ZeroPatchDistribution final : public photometry::IntensityDistribution {
     if (!(d.z < 0.0) || d.x < 0.0) return 0.0;
     return -d.z > std::cos(20.0 * 3.14159265358979323846 / 180.0) ? 0.0 : -d.z * i0_;
   }
+
  private:
   double i0_;
 };

@@ -37,8 +37,8 @@ struct Integrand {
   Receiver what;
   double inv_area;
   const geometry::Visibility* occluder = nullptr;  // per-sample visibility (fan_sample.h)
-  Vec3 receiver{0.0};                  // unshifted receiver, world: segment end
-  Vec3 origin{0.0};                    // shifted receiver, world: origin of `r`
+  Vec3 receiver{0.0};                              // unshifted receiver, world: segment end
+  Vec3 origin{0.0};                                // shifted receiver, world: origin of `r`
   double operator()(const Vec3& r) const {
     const double d2 = glm::dot(r, r);
     if (!(d2 > 0.0)) return 0.0;
@@ -57,8 +57,8 @@ struct Integrand {
 
 struct Tri {
   Vec3 a, b, c;
-  double fine = 0.0;   // sum of the four children's 7-point values
-  double error = 0.0;  // |7-point value of the parent - fine|
+  double fine = 0.0;                       // sum of the four children's 7-point values
+  double error = 0.0;                      // |7-point value of the parent - fine|
   double child[4] = {0.0, 0.0, 0.0, 0.0};  // the children's 7-point values, in split order
   bool operator<(const Tri& o) const { return error < o.error; }
 };
@@ -121,7 +121,8 @@ class Cubature {
 ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                                       double rel_tol, std::int64_t max_evaluations,
                                       const geometry::Visibility* occluder) {
-  return reference_illuminance(e, point, Receiver::planar(normal), rel_tol, max_evaluations, occluder);
+  return reference_illuminance(e, point, Receiver::planar(normal), rel_tol, max_evaluations,
+                               occluder);
 }
 
 ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
@@ -160,8 +161,9 @@ ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const
     const Vec3 ab = 0.5 * (t.a + t.b), bc = 0.5 * (t.b + t.c), ca = 0.5 * (t.c + t.a);
     // The parent kept its children's 7-point values (its `fine`): each child only adds its own
     // four children (28 lookups, not 35).
-    for (const Tri& child : {cubature.make(t.a, ab, ca, t.child[0]), cubature.make(ab, t.b, bc, t.child[1]),
-                             cubature.make(ca, bc, t.c, t.child[2]), cubature.make(ab, bc, ca, t.child[3])}) {
+    for (const Tri& child :
+         {cubature.make(t.a, ab, ca, t.child[0]), cubature.make(ab, t.b, bc, t.child[1]),
+          cubature.make(ca, bc, t.c, t.child[2]), cubature.make(ab, bc, ca, t.child[3])}) {
       value += child.fine;
       error += child.error;
       queue.push(child);

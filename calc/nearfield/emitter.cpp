@@ -86,9 +86,7 @@ Emitter make_emitter(const photometry::LuminousOpening& opening, const Vec3& pos
                      " x " + std::to_string(opening.width) + " m");
   std::vector<Vec3> local;
   switch (opening.shape) {
-    case Shape::point:
-      local.push_back(Vec3(0.0));
-      break;
+    case Shape::point: local.push_back(Vec3(0.0)); break;
     case Shape::rectangle: {
       const double hx = 0.5 * opening.length, hy = 0.5 * opening.width;
       if (hx == 0.0 || hy == 0.0) {

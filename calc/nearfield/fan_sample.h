@@ -24,31 +24,31 @@ namespace luxgrid::nearfield {
 inline constexpr double kVisibilityInsetRelative = 1e-6;
 
 struct FanSample {
-  Vec3 w{0.0};     // unit direction receiver -> emitter point
-  double L = 0.0;  // cd/m^2, L_e(-w) = I(-w) / (A cos_e)   (Eq. 2)
-  double G = 0.0;  // w . n_x, >= 0 above the horizon      (Eq. 3)
-  Vec3 r{0.0};       // emitter point relative to the receiver, m
-  double d = 0.0;    // |r|, m
-  double I = 0.0;    // cd, I(-w)
+  Vec3 w{0.0};         // unit direction receiver -> emitter point
+  double L = 0.0;      // cd/m^2, L_e(-w) = I(-w) / (A cos_e)   (Eq. 2)
+  double G = 0.0;      // w . n_x, >= 0 above the horizon      (Eq. 3)
+  Vec3 r{0.0};         // emitter point relative to the receiver, m
+  double d = 0.0;      // |r|, m
+  double I = 0.0;      // cd, I(-w)
   double cos_e = 0.0;  // |s| / d, cosine at the emitter
-  double rho = 0.0;  // G / d^3 (1/m^3): the area-form weight cos_r cos_e / d^2 divided by the
-                     // plane distance s, which is the same for every point of the polygon
-  double vis = 1.0;  // 1 when the node sees the receiver (or no occluder), else 0; I and L
-                     // already include it
+  double rho = 0.0;    // G / d^3 (1/m^3): the area-form weight cos_r cos_e / d^2 divided by the
+                       // plane distance s, which is the same for every point of the polygon
+  double vis = 1.0;    // 1 when the node sees the receiver (or no occluder), else 0; I and L
+                       // already include it
 };
 
 struct SampleContext {
   const Emitter* emitter = nullptr;
   Vec3 normal{0.0};
-  double inv_area_distance = 0.0;  // 1 / (A |s|), 1/m^3
-  double plane_distance = 0.0;     // |s|, m
-  Vec3 emitter_normal{0.0};        // n_A, world
-  double side = 1.0;               // +1 on the emitting side, -1 behind
-  double inv_area = 0.0;           // 1 / A, 1/m^2
+  double inv_area_distance = 0.0;                  // 1 / (A |s|), 1/m^3
+  double plane_distance = 0.0;                     // |s|, m
+  Vec3 emitter_normal{0.0};                        // n_A, world
+  double side = 1.0;                               // +1 on the emitting side, -1 behind
+  double inv_area = 0.0;                           // 1 / A, 1/m^2
   const geometry::Visibility* occluder = nullptr;  // optional, per-node visibility
-  Vec3 receiver{0.0};              // the receiver as given (unshifted), world: segment end
-  Vec3 shifted_receiver{0.0};      // origin of the relative coordinates `r`, world
-  Vec3 origin_to_centroid{0.0};    // emitter centroid relative to shifted_receiver
+  Vec3 receiver{0.0};            // the receiver as given (unshifted), world: segment end
+  Vec3 shifted_receiver{0.0};    // origin of the relative coordinates `r`, world
+  Vec3 origin_to_centroid{0.0};  // emitter centroid relative to shifted_receiver
 
   // `point` is the receiver as the caller gave it (before the horizon shift): the visibility
   // segments end there.
@@ -96,9 +96,9 @@ struct SampleContext {
   }
 };
 
-// Every public illuminance is finite and >= 0 (docs/nearfield.md, "Conventions"): NaN and negatives become 0,
-// +inf becomes the largest double. A model that needs this on a valid input has a bug, which
-// the hard-case tests look for with the raw functions.
+// Every public illuminance is finite and >= 0 (docs/nearfield.md, "Conventions"): NaN and negatives
+// become 0, +inf becomes the largest double. A model that needs this on a valid input has a bug,
+// which the hard-case tests look for with the raw functions.
 inline double sanitize_illuminance(double e) {
   if (!(e > 0.0)) return 0.0;
   return std::min(e, std::numeric_limits<double>::max());

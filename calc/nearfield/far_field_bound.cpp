@@ -71,7 +71,9 @@ struct Probe {
     const Vec3 sides[] = {Vec3(0.0), side1, -side1, side2, -side2};
     for (int i = 0; i < 5; ++i) {
       const Vec3& s = sides[i];
-      const Vec3 n_local = glm::length(s) > 0 ? -u * std::cos(kReceiverTiltRad) + s * std::sin(kReceiverTiltRad) : -u;
+      const Vec3 n_local = glm::length(s) > 0
+                               ? -u * std::cos(kReceiverTiltRad) + s * std::sin(kReceiverTiltRad)
+                               : -u;
       r.normals[i] = e.rotation * n_local;
     }
     r.floor_lx = kDimFloor * peak_cd / (d * d);
@@ -105,8 +107,9 @@ struct Probe {
       double worst = 0.0;
       for (int i = 0; i < 5 && seen; ++i) {
         if (near[k][i] < 0.0) near[k][i] = illuminance(e, r.point, r.normals[i], model);
-        const double model_lx = fixed ? fixed_rule_illuminance(e, r.point, Receiver::planar(r.normals[i]))
-                                      : far_field_illuminance(e, r.point, r.normals[i]);
+        const double model_lx =
+            fixed ? fixed_rule_illuminance(e, r.point, Receiver::planar(r.normals[i]))
+                  : far_field_illuminance(e, r.point, r.normals[i]);
         const double error = std::abs(near[k][i] - model_lx) / std::max(near[k][i], r.floor_lx);
         if (!(error <= tolerance)) seen = 0;
         worst = std::max(worst, error);
@@ -134,7 +137,9 @@ struct Probe {
       }
       return hi;
     };
-    const auto over_D = [](int k) { return k < 0 ? kNearEverywhere : static_cast<float>(rung_over_D(k)); };
+    const auto over_D = [](int k) {
+      return k < 0 ? kNearEverywhere : static_cast<float>(rung_over_D(k));
+    };
     const int far = search(false, kLadderRungs - 1);
     const float far_error = far < 0 ? 0.0f : far_err[far];
     // The fixed rule is used only nearer than d_far, so only the rungs below it matter.
@@ -165,11 +170,14 @@ double kink_slack_rad(const Emitter& e) {
 }
 
 double relative_gradient_per_deg(const Emitter& e, double c_deg, double g_deg) {
-  auto I = [&](double c, double g) { return e.distribution->intensity(photometry::direction_of(c * kDegToRad, g * kDegToRad)); };
+  auto I = [&](double c, double g) {
+    return e.distribution->intensity(photometry::direction_of(c * kDegToRad, g * kDegToRad));
+  };
   const double i0 = I(c_deg, g_deg);
   if (!(i0 > 0.0)) return 0.0;
   const double dg = (I(c_deg, g_deg + 0.5) - I(c_deg, g_deg - 0.5));
-  const double dc = (I(c_deg + 0.5, g_deg) - I(c_deg - 0.5, g_deg)) / std::max(std::sin(g_deg * kDegToRad), 1e-3);
+  const double dc =
+      (I(c_deg + 0.5, g_deg) - I(c_deg - 0.5, g_deg)) / std::max(std::sin(g_deg * kDegToRad), 1e-3);
   return std::hypot(dg, dc) / i0;
 }
 
@@ -244,14 +252,17 @@ void merge_poles(std::vector<float>& raw) {
   for (int pole : {0, kGammaSamples - 1}) {
     const int next = pole == 0 ? 1 : kGammaSamples - 2;
     float worst = 0.0f;
-    for (int c = 0; c < kCSamples; ++c) worst = std::max({worst, raw[pole * kCSamples + c], raw[next * kCSamples + c]});
+    for (int c = 0; c < kCSamples; ++c)
+      worst = std::max({worst, raw[pole * kCSamples + c], raw[next * kCSamples + c]});
     for (int c = 0; c < kCSamples; ++c) raw[pole * kCSamples + c] = worst;
   }
 }
 
 }  // namespace
 
-double FarFieldBound::distance_over_D(const Vec3& u) const { return interpolate_over_D(d_far_over_D, spot_of(u)); }
+double FarFieldBound::distance_over_D(const Vec3& u) const {
+  return interpolate_over_D(d_far_over_D, spot_of(u));
+}
 
 double FarFieldBound::fixed_distance_over_D(const Vec3& u) const {
   return interpolate_over_D(d_fixed_over_D, spot_of(u));
@@ -280,7 +291,8 @@ FarFieldBound::Weights FarFieldBound::weights(const Vec3& u, double distance_m) 
   return w;
 }
 
-std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, const Model& near_model,
+std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
+                                                           const Model& near_model,
                                                            double tolerance) {
   auto bound = std::make_shared<FarFieldBound>();
   bound->tolerance = tolerance;
@@ -295,7 +307,9 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, con
     return bound;
   }
   double peak = 0.0;
-  for (int i = 0; i < n; ++i) peak = std::max(peak, e.distribution->intensity(direction_of_sample(i / kCSamples, i % kCSamples)));
+  for (int i = 0; i < n; ++i)
+    peak = std::max(peak,
+                    e.distribution->intensity(direction_of_sample(i / kCSamples, i % kCSamples)));
   const Probe probe{e, near_model, tolerance / kBoundSafetyFactor, peak};
   std::vector<Probe::Measured> measured(n);
   // Directions in parallel (the nearfield library has no TBB; the samples are independent).
@@ -324,12 +338,13 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, con
   // charges this sample with min(R', kFootprintMargin / (2 (delta - delta0))) (the distance at
   // which its footprint no longer reaches here), delta0 = kink_slack_rad (a kink lying between
   // two samples). A coarse full 3 x 3 max instead put whole 10-degree bands in the near
-  // field at every distance (2.5 x the open plan's cost) for a kink whose error is 0.5 degrees wide.
-  // The fixed rule's nodes see the same footprint, so its map is dilated the same way.
+  // field at every distance (2.5 x the open plan's cost) for a kink whose error is 0.5 degrees
+  // wide. The fixed rule's nodes see the same footprint, so its map is dilated the same way.
   const double delta0 = kink_slack_rad(e);
   bound->d_far_over_D = dilate(raw, delta0);
   bound->d_fixed_over_D = dilate(raw_fixed, delta0);
-  for (int i = 0; i < n; ++i) bound->d_fixed_over_D[i] = std::min(bound->d_fixed_over_D[i], bound->d_far_over_D[i]);
+  for (int i = 0; i < n; ++i)
+    bound->d_fixed_over_D[i] = std::min(bound->d_fixed_over_D[i], bound->d_far_over_D[i]);
   bound->far_everywhere_over_D =
       kBlendWidth * *std::max_element(bound->d_far_over_D.begin(), bound->d_far_over_D.end());
   {
@@ -348,7 +363,8 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e, con
   const auto worst = std::max_element(raw.begin(), raw.end()) - raw.begin();
   bound->worst_gamma_deg = (worst / kCSamples) * kGammaStepDeg;
   bound->worst_c_deg = (worst % kCSamples) * kCStepDeg;
-  bound->worst_gradient_per_deg = relative_gradient_per_deg(e, bound->worst_c_deg, bound->worst_gamma_deg);
+  bound->worst_gradient_per_deg =
+      relative_gradient_per_deg(e, bound->worst_c_deg, bound->worst_gamma_deg);
   return bound;
 }
 
@@ -357,9 +373,10 @@ std::string describe(const FarFieldBound& b) {
   char fixed[256];
   // Up to 8 D the opening's geometry alone (slanted receivers) explains the distance (a
   // Lambertian square measures 7.2 D); beyond, the table does.
-  const char* why = b.max_over_D <= 8.0              ? "smooth distribution (geometry of the opening)"
-                    : b.worst_gradient_per_deg > 0.05 ? "sharp beam"
-                                                      : "kinks or curvature between measured angles";
+  const char* why = b.max_over_D <= 8.0 ? "smooth distribution (geometry of the opening)"
+                    : b.worst_gradient_per_deg > 0.05
+                        ? "sharp beam"
+                        : "kinks or curvature between measured angles";
   if (b.near_everywhere_somewhere) {
     std::snprintf(
         buf, sizeof buf,

@@ -43,7 +43,7 @@ inline constexpr double kBoundSafetyFactor = 1.25;
 // direction still failing is left to the near field at every distance (the plan says so).
 inline constexpr double kLadderStart = 2.0;  // x D
 inline constexpr double kLadderRatio = 1.2;
-inline constexpr int kLadderRungs = 19;      // 2 D x 1.2^18 = 53 D
+inline constexpr int kLadderRungs = 19;  // 2 D x 1.2^18 = 53 D
 
 // The far weight rises from 0 at d_far(w) to 1 at kBlendWidth x d_far(w) (smoothstep: value
 // and slope continuous, so no seam; inside the band the far field is already within tolerance).
@@ -57,7 +57,7 @@ inline constexpr int kGammaSamples = 37;  // 0..180 degrees step 5
 inline constexpr int kCSamples = 48;      // 0..352.5 degrees step 7.5
 
 struct FarFieldBound {
-  double tolerance = kStandardPromise;   // the promise it was built for
+  double tolerance = kStandardPromise;  // the promise it was built for
   double largest_dimension_m = 0.0;
   // d_far / D per sample (gamma row-major, kCSamples per row) after dilation: each sample also
   // carries what its neighbours (up to 3 samples away) need, scaled by how far the opening's
@@ -107,7 +107,8 @@ struct FarFieldBound {
 // Builds the map for `emitter` (its own frame is read from emitter.rotation, so the map is the
 // same for every pose) against `near_model`, for the promise `tolerance`. Cost: about 2 x 10^5
 // near-field evaluations worst case, in parallel (tens to hundreds of ms per distinct emitter).
-std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& emitter, const Model& near_model,
+std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& emitter,
+                                                           const Model& near_model,
                                                            double tolerance);
 
 // The plan's line for one emitter: "near field out to 9.1 D (C 45, gamma 35), 2.0 D at least,

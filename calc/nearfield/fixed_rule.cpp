@@ -17,8 +17,9 @@ FixedRule make_fixed_rule(const std::vector<Vec3>& polygon, double largest_dimen
   Vec3 lo(INFINITY), hi(-INFINITY);
   for (const Vec3& v : polygon) lo = glm::min(lo, v), hi = glm::max(hi, v);
   const auto cells = [&](double extent) {
-    return std::clamp(static_cast<int>(std::ceil(kFixedRuleCellsPerD * extent / largest_dimension_m - 1e-9)), 1,
-                      kFixedRuleMaxCells);
+    return std::clamp(
+        static_cast<int>(std::ceil(kFixedRuleCellsPerD * extent / largest_dimension_m - 1e-9)), 1,
+        kFixedRuleMaxCells);
   };
   const int nx = cells(hi.x - lo.x), ny = cells(hi.y - lo.y);
   double total = 0.0;

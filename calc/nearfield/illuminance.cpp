@@ -26,9 +26,12 @@ std::string to_string(const Model& m) {
     case ModelKind::far_field: return "far field";
     case ModelKind::paper_cubature: return "paper cubature";
     case ModelKind::subdivided: std::snprintf(buf, sizeof buf, "paper k=%d", m.level); return buf;
-    case ModelKind::lambert_subdivided: std::snprintf(buf, sizeof buf, "lambert k=%d", m.level); return buf;
+    case ModelKind::lambert_subdivided:
+      std::snprintf(buf, sizeof buf, "lambert k=%d", m.level);
+      return buf;
     case ModelKind::adaptive:
-      std::snprintf(buf, sizeof buf, "adaptive %.0e", m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol);
+      std::snprintf(buf, sizeof buf, "adaptive %.0e",
+                    m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol);
       return buf;
     case ModelKind::standard: return "standard";
     case ModelKind::high: return "high";
@@ -49,19 +52,21 @@ bool centroid_visible(const Emitter& e, const Vec3& point, const geometry::Visib
 double illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, const Model& m,
                    const geometry::Visibility* occ) {
   // A point opening has no nodes: every model falls back to the far field, so the centroid test.
-  if (occ && e.is_point()) return centroid_visible(e, point, occ) ? far_field_illuminance(e, point, normal) : 0.0;
+  if (occ && e.is_point())
+    return centroid_visible(e, point, occ) ? far_field_illuminance(e, point, normal) : 0.0;
   switch (m.kind) {
     case ModelKind::far_field:
       return centroid_visible(e, point, occ) ? far_field_illuminance(e, point, normal) : 0.0;
     case ModelKind::paper_cubature: return paper_cubature_illuminance(e, point, normal, occ);
     case ModelKind::subdivided:
-      return subdivided_illuminance(e, point, normal, 1 << std::clamp(m.level, 0, 10), TriangleRule::paper, occ);
+      return subdivided_illuminance(e, point, normal, 1 << std::clamp(m.level, 0, 10),
+                                    TriangleRule::paper, occ);
     case ModelKind::lambert_subdivided:
       return subdivided_illuminance(e, point, normal, 1 << std::clamp(m.level, 0, 10),
                                     TriangleRule::lambert_product, occ);
     case ModelKind::adaptive:
-      return adaptive_illuminance(e, point, normal, m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol,
-                                  nullptr, occ);
+      return adaptive_illuminance(
+          e, point, normal, m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol, nullptr, occ);
     case ModelKind::standard: return standard_illuminance(e, point, normal, occ);
     case ModelKind::high: {
       // A table: the table rung, whose cells are the table's own; the adaptive rung at 1e-3
@@ -81,11 +86,13 @@ double illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, cons
 
 double illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver, const Model& m,
                    const geometry::Visibility* occ) {
-  if (receiver.kind == ReceiverKind::planar) return illuminance(e, point, receiver.direction, m, occ);
+  if (receiver.kind == ReceiverKind::planar)
+    return illuminance(e, point, receiver.direction, m, occ);
   if (e.is_point() || m.kind == ModelKind::far_field)
     return centroid_visible(e, point, occ) ? far_field_illuminance(e, point, receiver) : 0.0;
   const auto area_form = [&](double rel_tol) {
-    return reference_illuminance(e, point, receiver, rel_tol, kReferenceMaxEvaluations, occ).illuminance_lx;
+    return reference_illuminance(e, point, receiver, rel_tol, kReferenceMaxEvaluations, occ)
+        .illuminance_lx;
   };
   switch (m.kind) {
     case ModelKind::standard:
@@ -93,10 +100,13 @@ double illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver
       // A measured table: the table rung, cells on the table's kinks, as for planar.
       double lux = 0.0;
       if (!occ && table_aligned_illuminance(e, point, receiver, lux)) return lux;
-      return area_form(m.kind == ModelKind::standard ? kStandardAreaFormRelTol : kHighAdaptiveRelTol);
+      return area_form(m.kind == ModelKind::standard ? kStandardAreaFormRelTol
+                                                     : kHighAdaptiveRelTol);
     }
-    case ModelKind::adaptive: return area_form(m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol);
-    case ModelKind::reference: return area_form(m.tolerance > 0 ? m.tolerance : kDefaultReferenceRelTol);
+    case ModelKind::adaptive:
+      return area_form(m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol);
+    case ModelKind::reference:
+      return area_form(m.tolerance > 0 ? m.tolerance : kDefaultReferenceRelTol);
     default: return area_form(kDefaultAdaptiveRelTol);
   }
 }
@@ -117,7 +127,9 @@ SwitchWeights switch_weights(const Emitter& e, const Vec3& point) {
   return {t * t * (3.0 - 2.0 * t), 0.0};
 }
 
-double far_field_weight(const Emitter& e, const Vec3& point) { return switch_weights(e, point).far; }
+double far_field_weight(const Emitter& e, const Vec3& point) {
+  return switch_weights(e, point).far;
+}
 
 double estimated_pair_error(const Emitter& e, const SwitchWeights& w) {
   if (!e.far_bound || !(w.distance_m > 0.0)) return 0.0;
@@ -154,7 +166,8 @@ double hybrid_illuminance(const Emitter& e, const Vec3& point, const Receiver& r
     near = fixed_rule_illuminance(e, point, receiver, occ);
   } else {
     near = illuminance(e, point, receiver, near_model, occ);
-    if (w.fixed > 0.0) near = (1.0 - w.fixed) * near + w.fixed * fixed_rule_illuminance(e, point, receiver, occ);
+    if (w.fixed > 0.0)
+      near = (1.0 - w.fixed) * near + w.fixed * fixed_rule_illuminance(e, point, receiver, occ);
   }
   if (w.far <= 0.0) return near;
   return (1.0 - w.far) * near + w.far * illuminance(e, point, receiver, far, occ);

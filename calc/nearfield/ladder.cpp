@@ -10,8 +10,9 @@
 namespace luxgrid::nearfield {
 namespace {
 
-// Budgets of the adaptive rung per receiver point (intensity lookups, splits): a distribution with a discontinuity (a cut-off
-// beam) never passes a local test along the cut and would otherwise refine it forever.
+// Budgets of the adaptive rung per receiver point (intensity lookups, splits): a distribution with
+// a discontinuity (a cut-off beam) never passes a local test along the cut and would otherwise
+// refine it forever.
 constexpr int kMaxAdaptiveSamples = 20000;
 constexpr int kMaxAdaptiveSplits = 5000;
 
@@ -24,7 +25,9 @@ inline int grid_index(int i, int j, int n) { return j * (n + 1) - j * (j - 1) / 
 double subdivided_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, int n,
                               TriangleRule rule, const geometry::Visibility* occluder) {
   if (e.is_point())
-    return !occluder || occluder->visible(e.centroid, point) ? far_field_illuminance(e, point, normal) : 0.0;
+    return !occluder || occluder->visible(e.centroid, point)
+               ? far_field_illuminance(e, point, normal)
+               : 0.0;
   n = std::max(1, n);
   const ReceiverFan fan = build_fan(e, point, normal, horizon_shift_m(e));
   if (fan.triangles == 0) return 0.0;
@@ -36,7 +39,8 @@ double subdivided_illuminance(const Emitter& e, const Vec3& point, const Vec3& n
   for (int t = 0; t < fan.triangles; ++t) {
     const Vec3 a = fan.apex, ab = (fan.rim[t] - a) * inv_n, ac = (fan.rim[t + 1] - a) * inv_n;
     for (int j = 0; j <= n; ++j)
-      for (int i = 0; i + j <= n; ++i) grid[grid_index(i, j, n)] = sample(a + double(i) * ab + double(j) * ac);
+      for (int i = 0; i + j <= n; ++i)
+        grid[grid_index(i, j, n)] = sample(a + double(i) * ab + double(j) * ac);
     for (int j = 0; j < n; ++j)
       for (int i = 0; i + j < n; ++i) {
         const FanSample& p00 = grid[grid_index(i, j, n)];
@@ -91,7 +95,8 @@ class GlobalRefiner {
   Cell make(const FanSample& a, const FanSample& b, const FanSample& c, double coarse) {
     Cell cell{a, b, c, at((a.r + b.r) * 0.5), at((b.r + c.r) * 0.5), at((c.r + a.r) * 0.5)};
     const FanSample &ab = cell.ab, &bc = cell.bc, &ca = cell.ca;
-    cell.fine = estimate(a, ab, ca) + estimate(ab, b, bc) + estimate(ca, bc, c) + estimate(ab, bc, ca);
+    cell.fine =
+        estimate(a, ab, ca) + estimate(ab, b, bc) + estimate(ca, bc, c) + estimate(ab, bc, ca);
     cell.error = std::abs(cell.fine - coarse);
     if (sample_.occluder) {
       const double v = a.vis + b.vis + c.vis + ab.vis + bc.vis + ca.vis;
@@ -119,7 +124,9 @@ double adaptive_fan(const Emitter& e, const Vec3& point, const Vec3& normal, dou
   if (error_lx) *error_lx = 0.0;
   if (samples) *samples = 0;
   if (e.is_point())
-    return !occluder || occluder->visible(e.centroid, point) ? far_field_illuminance(e, point, normal) : 0.0;
+    return !occluder || occluder->visible(e.centroid, point)
+               ? far_field_illuminance(e, point, normal)
+               : 0.0;
   const ReceiverFan fan = build_fan(e, point, normal, horizon_shift_m(e));
   if (fan.triangles == 0) return 0.0;
   const SampleContext sample(e, fan, occluder, point);
@@ -159,7 +166,8 @@ double adaptive_fan(const Emitter& e, const Vec3& point, const Vec3& normal, dou
     heap.pop_back();
     ++splits;
     const FanSample &ab = t.ab, &bc = t.bc, &ca = t.ca;
-    const FanSample* kids[4][3] = {{&t.a, &ab, &ca}, {&ab, &t.b, &bc}, {&ca, &bc, &t.c}, {&ab, &bc, &ca}};
+    const FanSample* kids[4][3] = {
+        {&t.a, &ab, &ca}, {&ab, &t.b, &bc}, {&ca, &bc, &t.c}, {&ab, &bc, &ca}};
     value -= t.fine;
     error -= t.error;
     for (auto& k : kids) {
@@ -183,7 +191,8 @@ double adaptive_fan(const Emitter& e, const Vec3& point, const Vec3& normal, dou
 
 double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double rel_tol,
                             double* error_lx, const geometry::Visibility* occluder) {
-  return adaptive_fan(e, point, normal, rel_tol, TriangleRule::two_kernel, error_lx, nullptr, occluder);
+  return adaptive_fan(e, point, normal, rel_tol, TriangleRule::two_kernel, error_lx, nullptr,
+                      occluder);
 }
 
 double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double rel_tol,
@@ -231,15 +240,15 @@ constexpr GaussRule kGauss3{3, {kG3, 0.5, 1.0 - kG3}, {5.0 / 18.0, 8.0 / 18.0, 5
 constexpr long kNearMaxLookups = 2000;
 
 struct SinhTriangle {
-  Vec3 a, b, c;  // relative to the shifted receiver; a = CP
+  Vec3 a, b, c;        // relative to the shifted receiver; a = CP
   double area2 = 0.0;  // |ab x ac|
 };
 
 struct SinhCell {
   int tri = 0;
   double t0 = 0.0, t1 = 1.0, s0 = 0.0, s1 = 1.0;
-  double qi = 0.0;   // 3 x 3 rule: integral of I cos_r / d^2 dA (cd; / A gives lx)
-  double qg = 0.0;   // 3 x 3 rule: integral of cos_e cos_r / d^2 dA (sr)
+  double qi = 0.0;  // 3 x 3 rule: integral of I cos_r / d^2 dA (cd; / A gives lx)
+  double qg = 0.0;  // 3 x 3 rule: integral of cos_e cos_r / d^2 dA (sr)
   double error = 0.0;
 };
 
@@ -409,7 +418,8 @@ double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& nor
     return reference_illuminance(e, point, normal, kStandardAreaFormRelTol).illuminance_lx;
   }
   if (occluder)
-    return adaptive_fan(e, point, normal, kStandardRelTol, TriangleRule::two_kernel, nullptr, nullptr, occluder);
+    return adaptive_fan(e, point, normal, kStandardRelTol, TriangleRule::two_kernel, nullptr,
+                        nullptr, occluder);
   // Near tier; when it spends its budget without meeting the tolerance (a narrow beam landing
   // inside a fan triangle: the ERCO spot 0.1 m under the opening was 2.4 % high at 2000
   // lookups, tests/nearfield/reference_peak_test.cpp), the two-kernel adaptive rung finishes
@@ -417,7 +427,8 @@ double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& nor
   bool converged = false;
   const double near = sinh_adaptive(e, point, normal, kStandardRelTol, kNearMaxLookups, &converged);
   if (converged) return near;
-  return adaptive_fan(e, point, normal, kStandardRelTol, TriangleRule::two_kernel, nullptr, nullptr, nullptr);
+  return adaptive_fan(e, point, normal, kStandardRelTol, TriangleRule::two_kernel, nullptr, nullptr,
+                      nullptr);
 }
 
 }  // namespace luxgrid::nearfield

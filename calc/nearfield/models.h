@@ -38,13 +38,13 @@ double paper_cubature_illuminance(const Emitter& e, const Vec3& point, const Vec
 
 // How one (sub)triangle of the fan is integrated.
 enum class TriangleRule {
-  paper,           // Eq. 10: mean(L) mean(G) Omega, Omega by Van Oosterom-Strackee
-  lambert_mean,    // exact projected solid angle (Lambert) times mean(L): exact for uniform L
-  lambert_product, // exact projected solid angle times the L average that is exact when L and
-                   // the area-form weight cos_r cos_e / d^2 are both linear over the triangle
-  two_kernel,      // I fitted as a cos_e + b over the triangle's vertices, each term integrated
-                   // exactly: a * projected solid angle + b * integral of cos_r / d^2 dA
-                   // (exact for Lambertian and for isotropic emitters)
+  paper,            // Eq. 10: mean(L) mean(G) Omega, Omega by Van Oosterom-Strackee
+  lambert_mean,     // exact projected solid angle (Lambert) times mean(L): exact for uniform L
+  lambert_product,  // exact projected solid angle times the L average that is exact when L and
+                    // the area-form weight cos_r cos_e / d^2 are both linear over the triangle
+  two_kernel,       // I fitted as a cos_e + b over the triangle's vertices, each term integrated
+                    // exactly: a * projected solid angle + b * integral of cos_r / d^2 dA
+                    // (exact for Lambertian and for isotropic emitters)
 };
 
 // Every fan triangle split into n x n similar triangles in the emitter plane (n = 2^k gives the
@@ -82,10 +82,12 @@ double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& nor
 // lines are coordinate lines, with a 2 x 2 Gauss-Legendre rule on every table cell the emitter
 // covers. Converges like a smooth integrand where the adaptive rungs meet kinks. Returns false
 // (`lux` untouched) without a table view or for a point emitter.
-bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double& lux);
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
+                               double& lux);
 // The same for any receiver (receiver_kernel.h): the receiver's weight replaces cos_r at every
 // node; a cylinder has no horizon, so its polygon is the whole opening.
-bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver, double& lux);
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
+                               double& lux);
 
 // Exact illuminance from a uniform (Lambertian) emitter of luminance `luminance_cd_m2`:
 // Lambert's polygon formula E = L/2 |n . sum_edges theta g| on the horizon-clipped polygon.

@@ -31,10 +31,10 @@ enum class ClosestPointCase { none, inside, edge, vertex };
 // Triangle fan around the closest point. Triangle i = (apex, rim[i], rim[i + 1]), i < triangles.
 // Positions are relative to `receiver` (the shifted receiver point), in metres.
 struct ReceiverFan {
-  Vec3 receiver{0.0};            // shifted receiver point, world
-  Vec3 normal{0.0, 0.0, 1.0};    // receiver normal, unit
-  double plane_distance = 0.0;   // |signed distance| of `receiver` to the emitter plane, > 0
-  bool front = true;             // receiver on the emitting side
+  Vec3 receiver{0.0};           // shifted receiver point, world
+  Vec3 normal{0.0, 0.0, 1.0};   // receiver normal, unit
+  double plane_distance = 0.0;  // |signed distance| of `receiver` to the emitter plane, > 0
+  bool front = true;            // receiver on the emitting side
   ClosestPointCase cp_case = ClosestPointCase::none;
   int triangles = 0;
   Vec3 apex{0.0};
@@ -49,9 +49,9 @@ OpeningPolygon clip_to_horizon(const Emitter& e, const Vec3& point, const Vec3& 
 // The receiver moved off the emitter's plane by the horizon shift when closer than `shift_m`
 // (0 disables it), on its own side (the emitting side when exactly in the plane).
 struct ShiftedReceiver {
-  Vec3 point{0.0};             // world
-  double plane_distance = 0.0; // |signed distance| to the emitter plane after the shift
-  bool front = true;           // on the emitting side
+  Vec3 point{0.0};              // world
+  double plane_distance = 0.0;  // |signed distance| to the emitter plane after the shift
+  bool front = true;            // on the emitting side
 };
 ShiftedReceiver shift_off_emitter_plane(const Emitter& e, const Vec3& point, double shift_m);
 

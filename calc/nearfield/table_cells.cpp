@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-
 namespace luxgrid::nearfield {
 namespace {
 
@@ -26,14 +25,15 @@ void append_piece(const photometry::TabularDistribution& table, double p0, doubl
 
 }  // namespace
 
-void append_gamma_nodes(const photometry::TabularDistribution& table, double a, double b, double tan_a,
-                        double tan_b, std::vector<TableGammaNode>& out) {
+void append_gamma_nodes(const photometry::TabularDistribution& table, double a, double b,
+                        double tan_a, double tan_b, std::vector<TableGammaNode>& out) {
   if (!(b - a > 1e-12)) return;
   const bool back = a >= kHalfPi;
   const double lo = back ? kPi - b : a, hi = back ? kPi - a : b;  // gamma' interval
   const int wide = std::max(1, static_cast<int>(std::ceil((hi - lo) / kTableMaxGammaCell)));
   for (int k = 0; k < wide; ++k) {
-    const double p0 = lo + (hi - lo) * k / wide, p1 = k + 1 == wide ? hi : lo + (hi - lo) * (k + 1) / wide;
+    const double p0 = lo + (hi - lo) * k / wide,
+                 p1 = k + 1 == wide ? hi : lo + (hi - lo) * (k + 1) / wide;
     // |tan| at the piece's ends in gamma' order (the caller's values are in table order).
     const double known_lo = back ? tan_b : tan_a, known_hi = back ? tan_a : tan_b;
     const double t0 = k == 0 && known_lo >= 0.0 ? known_lo : std::tan(p0);
@@ -54,7 +54,8 @@ void append_gamma_nodes(const photometry::TabularDistribution& table, double a, 
   }
 }
 
-std::shared_ptr<const TableGammaCells> make_table_gamma_cells(const photometry::TabularDistribution& table) {
+std::shared_ptr<const TableGammaCells> make_table_gamma_cells(
+    const photometry::TabularDistribution& table) {
   auto cells = std::make_shared<TableGammaCells>();
   cells->table = &table;
   cells->lines = table.grid().gamma_rad;
@@ -63,14 +64,17 @@ std::shared_ptr<const TableGammaCells> make_table_gamma_cells(const photometry::
     std::sort(cells->lines.begin(), cells->lines.end());
   }
   const std::vector<double>& L = cells->lines;
-  for (double g : L) cells->line_tan.push_back(g == kHalfPi ? std::numeric_limits<double>::infinity() : std::abs(std::tan(g)));
+  for (double g : L)
+    cells->line_tan.push_back(g == kHalfPi ? std::numeric_limits<double>::infinity()
+                                           : std::abs(std::tan(g)));
   cells->first.assign(L.size(), 0);
   for (std::size_t k = 0; k + 1 < L.size(); ++k) {
     cells->first[k] = static_cast<int>(cells->nodes.size());
     // A cell touching pi / 2 is never crossed whole by a ray (the receiver is off the plane),
     // and tan is unbounded there: the rung integrates it as an end cell.
     if (L[k] != kHalfPi && L[k + 1] != kHalfPi)
-      append_gamma_nodes(table, L[k], L[k + 1], cells->line_tan[k], cells->line_tan[k + 1], cells->nodes);
+      append_gamma_nodes(table, L[k], L[k + 1], cells->line_tan[k], cells->line_tan[k + 1],
+                         cells->nodes);
   }
   cells->first.back() = static_cast<int>(cells->nodes.size());
   return cells;

@@ -38,18 +38,20 @@ struct TableGammaNode {
 struct TableGammaCells {
   const photometry::TabularDistribution* table = nullptr;  // built from this table
   std::vector<double> lines;  // the table's gamma lines and pi / 2, ascending, rad
-  std::vector<double> line_tan;  // |tan| of each line (of gamma' = gamma or pi - gamma); inf at pi / 2
-  std::vector<int> first;     // the nodes of cell k (lines[k], lines[k + 1]) are
-                              // nodes[first[k]] .. nodes[first[k + 1] - 1]
+  std::vector<double>
+      line_tan;            // |tan| of each line (of gamma' = gamma or pi - gamma); inf at pi / 2
+  std::vector<int> first;  // the nodes of cell k (lines[k], lines[k + 1]) are
+                           // nodes[first[k]] .. nodes[first[k + 1] - 1]
   std::vector<TableGammaNode> nodes;
 };
 
 // Appends the 2-point Gauss-Legendre nodes of the table-angle interval [a, b] (on one side of
 // pi / 2), split by kTableMaxGammaCell and kTableTanRatio, each with its cell in `table`.
 // tan_a, tan_b: |tan| at a and b when the caller knows them (else negative: computed here).
-void append_gamma_nodes(const photometry::TabularDistribution& table, double a, double b, double tan_a,
-                        double tan_b, std::vector<TableGammaNode>& out);
+void append_gamma_nodes(const photometry::TabularDistribution& table, double a, double b,
+                        double tan_a, double tan_b, std::vector<TableGammaNode>& out);
 
-std::shared_ptr<const TableGammaCells> make_table_gamma_cells(const photometry::TabularDistribution& table);
+std::shared_ptr<const TableGammaCells> make_table_gamma_cells(
+    const photometry::TabularDistribution& table);
 
 }  // namespace luxgrid::nearfield

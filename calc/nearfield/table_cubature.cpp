@@ -32,8 +32,8 @@
 
 #include "calc/nearfield/fan_sample.h"
 #include "calc/nearfield/models.h"
-#include "calc/nearfield/receiver_kernel.h"
 #include "calc/nearfield/receiver_fan.h"
+#include "calc/nearfield/receiver_kernel.h"
 #include "calc/nearfield/table_cells.h"
 #include "photometry/tabular_distribution.h"
 
@@ -101,7 +101,8 @@ void add_periodic_break(double x, double lo, double hi, std::vector<double>& out
 
 // Appends the directions (as breaks inside (lo, hi)) where the circle of radius r around the
 // origin crosses the polygon's edges.
-void add_circle_crossings(const Polygon2& p, double r, double lo, double hi, std::vector<double>& out) {
+void add_circle_crossings(const Polygon2& p, double r, double lo, double hi,
+                          std::vector<double>& out) {
   const double r2 = r * r;
   for (int i = 0; i < p.n; ++i) {
     const glm::dvec2 a = p.v[i], e = p.v[(i + 1) % p.n] - a;
@@ -120,7 +121,8 @@ void add_circle_crossings(const Polygon2& p, double r, double lo, double hi, std
 }
 
 // Sorted breaks of [lo, hi] with no cell wider than max_cell (`out` is scratch space).
-void finish_breaks(std::vector<double>& b, std::vector<double>& out, double lo, double hi, double max_cell) {
+void finish_breaks(std::vector<double>& b, std::vector<double>& out, double lo, double hi,
+                   double max_cell) {
   b.push_back(lo);
   b.push_back(hi);
   std::sort(b.begin(), b.end());
@@ -142,7 +144,8 @@ void finish_breaks(std::vector<double>& b, std::vector<double>& out, double lo, 
 // radius |sigma| tan gamma' around F) crosses the outline: there a ray's first or last gamma
 // cell changes, a kink in psi. False when the range is empty.
 bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, double reach,
-               const TableGammaCells& cells, const std::vector<double>& c_lines, std::vector<double>& out) {
+               const TableGammaCells& cells, const std::vector<double>& c_lines,
+               std::vector<double>& out) {
   thread_local std::vector<double> scratch;
   out.clear();
   double psi_lo, psi_hi;
@@ -164,7 +167,8 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
     psi_hi = psi_mid + hi;
   }
   if (!(psi_hi - psi_lo > kMinCell)) return false;
-  for (int i = 0; i < poly.n; ++i) add_periodic_break(std::atan2(poly.v[i].y, poly.v[i].x), psi_lo, psi_hi, out);
+  for (int i = 0; i < poly.n; ++i)
+    add_periodic_break(std::atan2(poly.v[i].y, poly.v[i].x), psi_lo, psi_hi, out);
   if (c_lines.size() > 1)
     for (double c : c_lines) add_periodic_break(c - kPi, psi_lo, psi_hi, out);
   for (std::size_t k = 0; k < cells.lines.size(); ++k) {
@@ -179,13 +183,17 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
 
 }  // namespace
 
-bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double& lux) {
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
+                               double& lux) {
   return table_aligned_illuminance(e, point, Receiver::planar(normal), lux);
 }
 
-bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver, double& lux) {
-  const photometry::TableView view = e.distribution ? e.distribution->table_view() : photometry::TableView{};
-  if (!view.table || e.is_point() || !e.table_cells || e.table_cells->table != view.table) return false;
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
+                               double& lux) {
+  const photometry::TableView view =
+      e.distribution ? e.distribution->table_view() : photometry::TableView{};
+  if (!view.table || e.is_point() || !e.table_cells || e.table_cells->table != view.table)
+    return false;
   lux = 0.0;
   const ShiftedReceiver shifted = shift_off_emitter_plane(e, point, horizon_shift_m(e));
   const OpeningPolygon clipped = clip_to_horizon(e, shifted.point, receiver.horizon_normal());
@@ -220,7 +228,8 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiv
   const bool inside = contains_origin(poly);
   thread_local std::vector<double> psi_breaks;
   thread_local std::vector<TableGammaNode> end_nodes;
-  if (!psi_cells(poly, inside, front, abs_sigma, std::sqrt(reach2), cells, table.grid().c_rad, psi_breaks))
+  if (!psi_cells(poly, inside, front, abs_sigma, std::sqrt(reach2), cells, table.grid().c_rad,
+                 psi_breaks))
     return true;
 
   double sum = 0.0;
@@ -267,8 +276,10 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiv
       const double tan_near = rho_min / abs_sigma, tan_far = rho_max / abs_sigma;
       const double tan_lo = front ? tan_near : tan_far, tan_hi = front ? tan_far : tan_near;
       // Lines strictly inside (t_lo, t_hi): [k_lo, k_hi).
-      const std::size_t k_lo = static_cast<std::size_t>(std::upper_bound(lines.begin(), lines.end(), t_lo) - lines.begin());
-      const std::size_t k_hi = static_cast<std::size_t>(std::lower_bound(lines.begin(), lines.end(), t_hi) - lines.begin());
+      const std::size_t k_lo = static_cast<std::size_t>(
+          std::upper_bound(lines.begin(), lines.end(), t_lo) - lines.begin());
+      const std::size_t k_hi = static_cast<std::size_t>(
+          std::lower_bound(lines.begin(), lines.end(), t_hi) - lines.begin());
       double ray = 0.0;
       if (k_lo >= k_hi) {
         ray = end_cell(t_lo, t_hi, tan_lo, tan_hi, cpos, dir);

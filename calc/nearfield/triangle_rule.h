@@ -32,7 +32,8 @@ inline double product_average(const FanSample& a, const FanSample& b, const FanS
 //   normal part  -sign(s) Omega n_A      (Omega the solid angle, Van Oosterom-Strackee)
 //   in-plane     -sum over edges m_e ln((R_a + R_b + l) / (R_a + R_b - l))
 // with m_e the outward in-plane edge normal (divergence theorem in the plane). The log's
-// denominator is computed without cancellation: (R_a + R_b)^2 - l^2 = |R_b a + R_a b|^2 / (R_a R_b).
+// denominator is computed without cancellation: (R_a + R_b)^2 - l^2 = |R_b a + R_a b|^2 / (R_a
+// R_b).
 inline double isotropic_kernel(const FanSample& a, const FanSample& b, const FanSample& c,
                                const Vec3& normal, const Vec3& plane_normal, double side) {
   const Vec3 area2 = glm::cross(b.r - a.r, c.r - a.r);
@@ -63,7 +64,8 @@ inline double two_kernel_estimate(const FanSample& a, const FanSample& b, const 
   const double cm = (a.cos_e + b.cos_e + c.cos_e) / 3.0, im = (a.I + b.I + c.I) / 3.0;
   const double sxx = (a.cos_e - cm) * (a.cos_e - cm) + (b.cos_e - cm) * (b.cos_e - cm) +
                      (c.cos_e - cm) * (c.cos_e - cm);
-  const double sxy = (a.cos_e - cm) * (a.I - im) + (b.cos_e - cm) * (b.I - im) + (c.cos_e - cm) * (c.I - im);
+  const double sxy =
+      (a.cos_e - cm) * (a.I - im) + (b.cos_e - cm) * (b.I - im) + (c.cos_e - cm) * (c.I - im);
   // A fit needs a spread of cos_e (relative, so grazing triangles with cos_e ~ 1e-6 still fit);
   // with all three equal (far away) both kernels agree: K = P / cos_e.
   constexpr double kMinRelativeCosSpread2 = 1e-16;

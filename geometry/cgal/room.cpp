@@ -47,14 +47,16 @@ bool normalize_outline(Polygon2& outline, const std::string& object) {
   // Zero area: compare with the size of the polygon, so rounding in a huge outline is not
   // mistaken for a real area and a tiny real room is not rejected.
   double extent = 0.0;
-  for (const auto& p : outline) extent = std::max({extent, std::abs(p.x - outline[0].x), std::abs(p.y - outline[0].y)});
+  for (const auto& p : outline)
+    extent = std::max({extent, std::abs(p.x - outline[0].x), std::abs(p.y - outline[0].y)});
   constexpr double kRelativeAreaFloor = 1e-12;  // of extent^2; below this the outline is a line
   const double area = signed_area(outline);
   const double area_floor = kRelativeAreaFloor * extent * extent;
   // All corners on one line: report the zero area rather than the fold it makes.
   bool collinear = true;
   for (size_t i = 2; i < n && collinear; ++i) {
-    collinear = CGAL::orientation(cgal(outline[0]), cgal(outline[1]), cgal(outline[i])) == CGAL::COLLINEAR;
+    collinear =
+        CGAL::orientation(cgal(outline[0]), cgal(outline[1]), cgal(outline[i])) == CGAL::COLLINEAR;
   }
   if (collinear) throw InputError(object + ": the outline has zero area");
   for (size_t i = 0; i < n; ++i) {
@@ -64,9 +66,12 @@ bool normalize_outline(Polygon2& outline, const std::string& object) {
       const bool next = j == i1;
       const bool prev = j1 == i;
       bool bad = false;
-      if (next) bad = folds_back(outline[i], outline[i1], outline[j1]);
-      else if (prev) bad = folds_back(outline[j], outline[i], outline[i1]);
-      else bad = edges_meet(outline[i], outline[i1], outline[j], outline[j1]);
+      if (next)
+        bad = folds_back(outline[i], outline[i1], outline[j1]);
+      else if (prev)
+        bad = folds_back(outline[j], outline[i], outline[i1]);
+      else
+        bad = edges_meet(outline[i], outline[i1], outline[j], outline[j1]);
       if (bad) {
         throw InputError(object + ": the outline crosses itself (edge " + corner_pair(i, i1) +
                          " meets edge " + corner_pair(j, j1) + ")");

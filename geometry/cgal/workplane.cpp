@@ -56,16 +56,15 @@ Bounds2 bounds(const std::vector<Polygon2>& region) {
   return b;
 }
 
-SurfaceGrid make_region_grid(const std::string& name, const std::vector<Polygon2>& region,
-                             double z, double spacing_m, const std::vector<Obstacle>& obstacles,
+SurfaceGrid make_region_grid(const std::string& name, const std::vector<Polygon2>& region, double z,
+                             double spacing_m, const std::vector<Obstacle>& obstacles,
                              bool normal_up) {
   const Bounds2 b = bounds(region);
   const double su = b.hi.x - b.lo.x, sv = b.hi.y - b.lo.y;
-  SurfaceGrid g = normal_up
-                      ? make_plane_grid(name, Vec3(b.lo.x, b.lo.y, z), Vec3(1, 0, 0),
-                                        Vec3(0, 1, 0), su, sv, spacing_m)
-                      : make_plane_grid(name, Vec3(b.lo.x, b.hi.y, z), Vec3(1, 0, 0),
-                                        Vec3(0, -1, 0), su, sv, spacing_m);
+  SurfaceGrid g = normal_up ? make_plane_grid(name, Vec3(b.lo.x, b.lo.y, z), Vec3(1, 0, 0),
+                                              Vec3(0, 1, 0), su, sv, spacing_m)
+                            : make_plane_grid(name, Vec3(b.lo.x, b.hi.y, z), Vec3(1, 0, 0),
+                                              Vec3(0, -1, 0), su, sv, spacing_m);
   g.region = region;
   std::vector<const Obstacle*> cutting;
   for (const auto& o : obstacles) {
@@ -83,7 +82,10 @@ SurfaceGrid make_region_grid(const std::string& name, const std::vector<Polygon2
     const K::Point_2 p(g.points[i].x, g.points[i].y);
     bool in_region = false;
     for (const auto& c : cgal_region) {
-      if (c.bounded_side(p) != CGAL::ON_UNBOUNDED_SIDE) { in_region = true; break; }
+      if (c.bounded_side(p) != CGAL::ON_UNBOUNDED_SIDE) {
+        in_region = true;
+        break;
+      }
     }
     if (!in_region) {
       g.active[i] = false;
@@ -106,8 +108,10 @@ std::vector<SurfaceGrid> make_room_surface_grids(const std::string& prefix, cons
                                                  const std::vector<Obstacle>& obstacles) {
   std::vector<SurfaceGrid> out;
   const std::vector<Polygon2> region = {room.outline};
-  const double region_spacing = spacing_m > 0.0 ? spacing_m : auto_spacing(bounds(region).longer_side());
-  out.push_back(make_region_grid(prefix + " floor", region, room.floor_z, region_spacing, obstacles, true));
+  const double region_spacing =
+      spacing_m > 0.0 ? spacing_m : auto_spacing(bounds(region).longer_side());
+  out.push_back(
+      make_region_grid(prefix + " floor", region, room.floor_z, region_spacing, obstacles, true));
   out.push_back(make_region_grid(prefix + " ceiling", region, room.floor_z + room.height,
                                  region_spacing, obstacles, false));
   const size_t n = room.outline.size();
@@ -117,8 +121,8 @@ std::vector<SurfaceGrid> make_room_surface_grids(const std::string& prefix, cons
     const double s = spacing_m > 0.0 ? spacing_m : auto_spacing(std::max(length, room.height));
     const Vec2 u = (a - b) / length;
     out.push_back(make_plane_grid(prefix + " wall " + std::to_string(k),
-                                  Vec3(b.x, b.y, room.floor_z), Vec3(u.x, u.y, 0.0),
-                                  Vec3(0, 0, 1), length, room.height, s));
+                                  Vec3(b.x, b.y, room.floor_z), Vec3(u.x, u.y, 0.0), Vec3(0, 0, 1),
+                                  length, room.height, s));
   }
   return out;
 }

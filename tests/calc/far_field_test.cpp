@@ -5,13 +5,14 @@
 
 #include "calc/direct.h"
 #include "calc/pipeline.h"
-#include "project/project_file.h"
 #include "photometry/builtin.h"
+#include "project/project_file.h"
 
 namespace luxgrid::calc {
 namespace {
 
-Luminaire point_luminaire(photometry::DistributionPtr d, Vec3 pos, glm::dmat3 rot = glm::dmat3(1.0)) {
+Luminaire point_luminaire(photometry::DistributionPtr d, Vec3 pos,
+                          glm::dmat3 rot = glm::dmat3(1.0)) {
   Luminaire l;
   l.distribution = std::move(d);
   l.pose.position = pos;
@@ -23,11 +24,14 @@ Luminaire point_luminaire(photometry::DistributionPtr d, Vec3 pos, glm::dmat3 ro
 // concretely I(dir) = 100 * (1 + x^2 + 2 y^2) so C0 and C90 differ (at gamma 90: 200 vs 300 cd).
 class AsymmetricDistribution final : public photometry::IntensityDistribution {
  public:
-  double intensity(const Vec3& d) const override { return 100.0 * (1.0 + d.x * d.x + 2.0 * d.y * d.y); }
+  double intensity(const Vec3& d) const override {
+    return 100.0 * (1.0 + d.x * d.x + 2.0 * d.y * d.y);
+  }
 };
 
 TEST(FarField, IsotropicInverseSquareCosine) {
-  const auto lum = point_luminaire(std::make_shared<photometry::IsotropicDistribution>(1000.0), {0, 0, 3});
+  const auto lum =
+      point_luminaire(std::make_shared<photometry::IsotropicDistribution>(1000.0), {0, 0, 3});
   for (double r : {0.0, 0.7, 2.0, 5.0}) {
     const double d = std::hypot(3.0, r);
     // Exact formula; 1e-12 relative covers double rounding.
@@ -37,15 +41,17 @@ TEST(FarField, IsotropicInverseSquareCosine) {
 }
 
 TEST(FarField, LightFromBehindIsZeroAndAlwaysFinite) {
-  const auto lum = point_luminaire(std::make_shared<photometry::IsotropicDistribution>(1000.0), {0, 0, 3});
-  EXPECT_EQ(far_field_illuminance(lum, {1, 0, 0}, {0, 0, -1}), 0.0);   // receiver faces away
-  EXPECT_EQ(far_field_illuminance(lum, {0, 0, 3}, {0, 0, 1}), 0.0);    // at the source itself
+  const auto lum =
+      point_luminaire(std::make_shared<photometry::IsotropicDistribution>(1000.0), {0, 0, 3});
+  EXPECT_EQ(far_field_illuminance(lum, {1, 0, 0}, {0, 0, -1}), 0.0);  // receiver faces away
+  EXPECT_EQ(far_field_illuminance(lum, {0, 0, 3}, {0, 0, 1}), 0.0);   // at the source itself
   EXPECT_EQ(far_field_illuminance(lum, {5, 0, 3}, {-1, 0, 0}), 1000.0 / 25.0);  // in its plane
 }
 
 TEST(FarField, LambertianCie171Case52) {
   // CIE 171 case 5.2: E = I0 h^2 / d^4.
-  const auto lum = point_luminaire(std::make_shared<photometry::LambertianDistribution>(1000.0), {2, 2, 3});
+  const auto lum =
+      point_luminaire(std::make_shared<photometry::LambertianDistribution>(1000.0), {2, 2, 3});
   const double d2 = 9.0 + 4.0 + 4.0;
   EXPECT_NEAR(far_field_illuminance(lum, {4, 4, 0}, {0, 0, 1}), 1000.0 * 9.0 / (d2 * d2), 1e-12);
 }
@@ -57,9 +63,12 @@ TEST(FarField, RotationAboutZBy90SwapsC0AndC90) {
   // A point along +x sees the C0 plane of the plain luminaire; after turning the luminaire 90 deg
   // about z its C90 plane points along -x... and its C0 plane along +y.
   const Vec3 up(0, 0, 1);
-  EXPECT_NEAR(far_field_illuminance(turned, {0, 1.5, 0}, up), far_field_illuminance(plain, {1.5, 0, 0}, up), 1e-12);
-  EXPECT_NEAR(far_field_illuminance(turned, {1.5, 0, 0}, up), far_field_illuminance(plain, {0, -1.5, 0}, up), 1e-12);
-  EXPECT_GT(far_field_illuminance(plain, {0, 1.5, 0}, up), far_field_illuminance(plain, {1.5, 0, 0}, up) * 1.05);
+  EXPECT_NEAR(far_field_illuminance(turned, {0, 1.5, 0}, up),
+              far_field_illuminance(plain, {1.5, 0, 0}, up), 1e-12);
+  EXPECT_NEAR(far_field_illuminance(turned, {1.5, 0, 0}, up),
+              far_field_illuminance(plain, {0, -1.5, 0}, up), 1e-12);
+  EXPECT_GT(far_field_illuminance(plain, {0, 1.5, 0}, up),
+            far_field_illuminance(plain, {1.5, 0, 0}, up) * 1.05);
 }
 
 TEST(FarField, RotationOrderIsXThenYThenZ) {

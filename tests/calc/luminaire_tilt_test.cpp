@@ -21,7 +21,8 @@ TEST(LuminaireTilt, AnglesFollowTheLampGeometry) {
 
 TEST(LuminaireTilt, TiltTableScalesTheLuminaire) {
   // The corpus file with TILT=INCLUDE; compare the same luminaire untilted and tilted.
-  const std::string file = std::string(LUXGRID_SOURCE_DIR) + "/tests/data/photometry/ies/synthetic_tilt_include_lm02.ies";
+  const std::string file = std::string(LUXGRID_SOURCE_DIR) +
+                           "/tests/data/photometry/ies/synthetic_tilt_include_lm02.ies";
   auto doc = nlohmann::json::parse(R"({
     "format": "luxgrid-project/1", "name": "tilt",
     "settings": {"indirect": "off", "near_field": "never"},

@@ -16,8 +16,8 @@
 #include "calc/nearfield/far_field_bound.h"
 #include "calc/nearfield/illuminance.h"
 #include "calc/pipeline.h"
-#include "project/project_file.h"
 #include "photometry/photometry.h"
+#include "project/project_file.h"
 
 namespace luxgrid::calc {
 namespace {
@@ -28,13 +28,15 @@ using nearfield::NearFieldSwitch;
 
 // The reference's own tolerance here: 1e-5 relative, 300 times below the 0.3 % bar.
 constexpr double kReferenceTol = 1e-5;
-// Points below this fraction of the surface's maximum are not held to the promise (docs/accuracy.md).
+// Points below this fraction of the surface's maximum are not held to the promise
+// (docs/accuracy.md).
 constexpr double kBrightFraction = 0.01;
 // Receivers per distance on each surface, spread around the emitter (12 distances x 10).
 constexpr int kAzimuths = 10;
 
 photometry::Photometry load(const std::string& rel) {
-  return photometry::load_photometry_file(std::string(LUXGRID_SOURCE_DIR) + "/tests/data/photometry/" + rel);
+  return photometry::load_photometry_file(std::string(LUXGRID_SOURCE_DIR) +
+                                          "/tests/data/photometry/" + rel);
 }
 
 struct Receiver {
@@ -50,8 +52,10 @@ std::vector<std::vector<Receiver>> floor_and_wall(const Emitter& e) {
     const double in_plane = std::sqrt(std::max(0.0, r * r * D * D - h * h));
     for (int k = 0; k < kAzimuths; ++k) {
       const double a = 2.0 * kPi * k / kAzimuths;
-      floor.push_back({e.centroid + Vec3(in_plane * std::cos(a), in_plane * std::sin(a), -h), Vec3(0, 0, 1)});
-      wall.push_back({e.centroid + Vec3(h, in_plane * std::cos(a), in_plane * std::sin(a)), Vec3(-1, 0, 0)});
+      floor.push_back(
+          {e.centroid + Vec3(in_plane * std::cos(a), in_plane * std::sin(a), -h), Vec3(0, 0, 1)});
+      wall.push_back(
+          {e.centroid + Vec3(h, in_plane * std::cos(a), in_plane * std::sin(a)), Vec3(-1, 0, 0)});
     }
   }
   return {floor, wall};
@@ -87,24 +91,29 @@ double brute_force(const Emitter& e, const Vec3& x, const Vec3& n_x, int n) {
 
 Worst check_scene(const std::string& what, Emitter e) {
   const auto t0 = std::chrono::steady_clock::now();
-  const auto standard_bound = nearfield::build_far_field_bound(e, Model::standard(), nearfield::kStandardPromise);
+  const auto standard_bound =
+      nearfield::build_far_field_bound(e, Model::standard(), nearfield::kStandardPromise);
   const auto t1 = std::chrono::steady_clock::now();
-  const auto high_bound = nearfield::build_far_field_bound(e, Model::high(), nearfield::kHighPromise);
+  const auto high_bound =
+      nearfield::build_far_field_bound(e, Model::high(), nearfield::kHighPromise);
   const auto t2 = std::chrono::steady_clock::now();
   std::printf("%s: map built in %.0f ms (standard), %.0f ms (high)\n", what.c_str(),
-              1e3 * std::chrono::duration<double>(t1 - t0).count(), 1e3 * std::chrono::duration<double>(t2 - t1).count());
+              1e3 * std::chrono::duration<double>(t1 - t0).count(),
+              1e3 * std::chrono::duration<double>(t2 - t1).count());
   Worst worst;
   const char* names[] = {"floor", "wall"};
   int s = 0;
   for (const auto& surface : floor_and_wall(e)) {
     std::vector<double> ref;
-    for (const auto& r : surface) ref.push_back(nearfield::illuminance(e, r.p, r.n, Model::reference(kReferenceTol)));
+    for (const auto& r : surface)
+      ref.push_back(nearfield::illuminance(e, r.p, r.n, Model::reference(kReferenceTol)));
     const double max_ref = *std::max_element(ref.begin(), ref.end());
     EXPECT_GT(max_ref, 0.0) << what;
     for (size_t i = 0; i < surface.size(); ++i) {
       if (ref[i] < kBrightFraction * max_ref) continue;
       e.far_bound = standard_bound;
-      const double es = nearfield::hybrid_illuminance(e, surface[i].p, surface[i].n, Model::standard());
+      const double es =
+          nearfield::hybrid_illuminance(e, surface[i].p, surface[i].n, Model::standard());
       e.far_bound = high_bound;
       const double eh = nearfield::hybrid_illuminance(e, surface[i].p, surface[i].n, Model::high());
       const double err_s = std::abs(es - ref[i]) / ref[i], err_h = std::abs(eh - ref[i]) / ref[i];
@@ -114,26 +123,31 @@ Worst check_scene(const std::string& what, Emitter e) {
       worst.high = std::max(worst.high, err_h);
       // What the five-times rule gave, printed to show the scene tests the decision.
       e.far_bound = nullptr;
-      const double e5 = nearfield::hybrid_illuminance(e, surface[i].p, surface[i].n, Model::standard());
+      const double e5 =
+          nearfield::hybrid_illuminance(e, surface[i].p, surface[i].n, Model::standard());
       worst.five_times = std::max(worst.five_times, std::abs(e5 - ref[i]) / ref[i]);
     }
     ++s;
   }
-  std::printf("near/far by error bound, %s: worst point standard %.3f %%, high %.3f %% (five-times rule: %.3f %%); "
-              "standard: %s\n", what.c_str(), 100 * worst.standard, 100 * worst.high, 100 * worst.five_times,
-              nearfield::describe(*standard_bound).c_str());
+  std::printf(
+      "near/far by error bound, %s: worst point standard %.3f %%, high %.3f %% (five-times rule: "
+      "%.3f %%); "
+      "standard: %s\n",
+      what.c_str(), 100 * worst.standard, 100 * worst.high, 100 * worst.five_times,
+      nearfield::describe(*standard_bound).c_str());
   return worst;
 }
 
 Emitter tilted(const photometry::Photometry& ph, double rx_deg, double ry_deg, double rz_deg) {
-  return nearfield::make_emitter(ph.opening, Vec3(0.0, 0.0, 3.0),
-                                 rotation_xyz(rx_deg * kDegToRad, ry_deg * kDegToRad, rz_deg * kDegToRad),
-                                 ph.distribution);
+  return nearfield::make_emitter(
+      ph.opening, Vec3(0.0, 0.0, 3.0),
+      rotation_xyz(rx_deg * kDegToRad, ry_deg * kDegToRad, rz_deg * kDegToRad), ph.distribution);
 }
 
 TEST(NearFarDecision, LedvanceFloodTilted) {
   // The flood: 8 C planes 45 degrees apart, 0.65 m opening, rotated [20, -35, 60].
-  check_scene("ledvance_flmax_asym_isym0 [20,-35,60]", tilted(load("ldt/ledvance_flmax_asym_isym0.ldt"), 20, -35, 60));
+  check_scene("ledvance_flmax_asym_isym0 [20,-35,60]",
+              tilted(load("ldt/ledvance_flmax_asym_isym0.ldt"), 20, -35, 60));
 }
 
 TEST(NearFarDecision, ReferenceAgreesWithBruteForce) {
@@ -142,9 +156,10 @@ TEST(NearFarDecision, ReferenceAgreesWithBruteForce) {
   // the centroid rule's error is O(h^2), ~1e-5 here (halving n moved it by < 2e-5, measured).
   const Emitter e = tilted(load("ldt/ledvance_flmax_asym_isym0.ldt"), 20, -35, 60);
   const double D = e.largest_dimension_m;
-  const Receiver probes[] = {{Vec3(5.0 * std::cos(0.3), 5.0 * std::sin(0.3), 0.0), Vec3(0, 0, 1)},
-                             {e.centroid + Vec3(0.5, -2.0, -2.0) * (3.0 * D / 3.0), glm::normalize(Vec3(0.2, 0.5, 1))},
-                             {e.centroid + Vec3(-4.0, 6.0, -3.0) * (8.0 * D / std::sqrt(61.0)), Vec3(0.6, -0.8, 0)}};
+  const Receiver probes[] = {
+      {Vec3(5.0 * std::cos(0.3), 5.0 * std::sin(0.3), 0.0), Vec3(0, 0, 1)},
+      {e.centroid + Vec3(0.5, -2.0, -2.0) * (3.0 * D / 3.0), glm::normalize(Vec3(0.2, 0.5, 1))},
+      {e.centroid + Vec3(-4.0, 6.0, -3.0) * (8.0 * D / std::sqrt(61.0)), Vec3(0.6, -0.8, 0)}};
   for (const auto& r : probes) {
     const double ref = nearfield::illuminance(e, r.p, r.n, Model::reference(kReferenceTol));
     const double brute = brute_force(e, r.p, r.n, 400);
@@ -157,15 +172,18 @@ TEST(NearFarDecision, ReferenceAgreesWithBruteForce) {
 
 TEST(NearFarDecision, MirelTilted) {
   // The office's Mirel (kink at gamma 35 on C45), tilted so the kink sweeps floor and wall.
-  check_scene("zumtobel_mirel_isym4 [15,25,10]", tilted(load("ldt/zumtobel_mirel_isym4.ldt"), 15, 25, 10));
+  check_scene("zumtobel_mirel_isym4 [15,25,10]",
+              tilted(load("ldt/zumtobel_mirel_isym4.ldt"), 15, 25, 10));
 }
 
 TEST(NearFarDecision, ErcoSpotTilted) {
-  check_scene("erco_qrcbc35_lm86_spot [30,-20,0]", tilted(load("ies/erco_qrcbc35_lm86_spot.ies"), 30, -20, 0));
+  check_scene("erco_qrcbc35_lm86_spot [30,-20,0]",
+              tilted(load("ies/erco_qrcbc35_lm86_spot.ies"), 30, -20, 0));
 }
 
 TEST(NearFarDecision, RoadLuminaireTilted) {
-  check_scene("rab_roadway_bilateral_lm02 [10,15,40]", tilted(load("ies/rab_roadway_bilateral_lm02.ies"), 10, 15, 40));
+  check_scene("rab_roadway_bilateral_lm02 [10,15,40]",
+              tilted(load("ies/rab_roadway_bilateral_lm02.ies"), 10, 15, 40));
 }
 
 TEST(NearFarDecision, BatwingPanelTilted) {
@@ -180,15 +198,19 @@ TEST(NearFarDecision, BatwingPanelTilted) {
 TEST(NearFarDecision, BundledOfficeThroughThePipeline) {
   // The office: desk probe (2, 2, 0.75) was 630.5 lx at standard and high against 618.6
   // at reference (+1.9 %), 8 of 240 workplane points > 1 % off. Direct light only.
-  Scene scene = project::load_project(std::string(LUXGRID_SOURCE_DIR) + "/examples/office/project.json").scene;
+  Scene scene =
+      project::load_project(std::string(LUXGRID_SOURCE_DIR) + "/examples/office/project.json")
+          .scene;
   scene.settings.indirect = IndirectMode::off;
   // Its observers surface needs reflected light (UGR); this test is about direct light only.
-  std::erase_if(scene.surfaces, [](const auto& g) { return g.kind == geometry::SurfaceGrid::Kind::observers; });
+  std::erase_if(scene.surfaces,
+                [](const auto& g) { return g.kind == geometry::SurfaceGrid::Kind::observers; });
   auto run = [&](Quality q) {
     scene.settings.quality = q;
     return run_scene(scene);
   };
-  const Results ref = run(Quality::reference), standard = run(Quality::standard), high = run(Quality::high);
+  const Results ref = run(Quality::reference), standard = run(Quality::standard),
+                high = run(Quality::high);
   EXPECT_NE(standard.plan.direct.find("error bound"), std::string::npos) << standard.plan.direct;
   std::printf("office plan (standard): %s\n", standard.plan.direct.c_str());
   for (size_t k = 0; k < ref.surfaces.size(); ++k) {
@@ -202,8 +224,8 @@ TEST(NearFarDecision, BundledOfficeThroughThePipeline) {
     }
     EXPECT_LE(worst_s, nearfield::kStandardPromise) << ref.surfaces[k].grid.name;
     EXPECT_LE(worst_h, nearfield::kHighPromise) << ref.surfaces[k].grid.name;
-    std::printf("office %s: worst point standard %.3f %%, high %.3f %%\n", ref.surfaces[k].grid.name.c_str(),
-                100 * worst_s, 100 * worst_h);
+    std::printf("office %s: worst point standard %.3f %%, high %.3f %%\n",
+                ref.surfaces[k].grid.name.c_str(), 100 * worst_s, 100 * worst_h);
   }
 }
 

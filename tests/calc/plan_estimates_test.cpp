@@ -18,7 +18,8 @@ namespace {
 
 Scene office() {
   Scene scene =
-      project::load_project(std::string(LUXGRID_SOURCE_DIR) + "/examples/office/project.json").scene;
+      project::load_project(std::string(LUXGRID_SOURCE_DIR) + "/examples/office/project.json")
+          .scene;
   // The glare surface is not what these tests look at.
   std::erase_if(scene.surfaces,
                 [](const auto& g) { return g.kind == geometry::SurfaceGrid::Kind::observers; });

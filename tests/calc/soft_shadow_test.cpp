@@ -37,10 +37,13 @@ Scene partition_scene(const std::string& obstacles) {
       { "at": [1.65, 2.3, 0], "normal": [0, 0, 1] },
       { "at": [1.8, 2.0, 0], "normal": [0, 0, 1] },
       { "at": [1.85, 1.6, 0], "normal": [0, 0, 1] } ] } ]
-  })"), "soft.json", ".").scene;
+  })"),
+                                "soft.json", ".")
+      .scene;
 }
 
-const char* kPartition = R"([ { "name": "partition", "box": { "min": [1.9, 0, 0], "max": [2.0, 4, 1.5] } } ])";
+const char* kPartition =
+    R"([ { "name": "partition", "box": { "min": [1.9, 0, 0], "max": [2.0, 4, 1.5] } } ])";
 
 // Exact value of the visible strip by Lambert's formula (nearfield::lambert_uniform_illuminance).
 double exact_visible(const Vec3& r) {
@@ -69,9 +72,11 @@ TEST(SoftShadow, PanelHalfHiddenByAPartitionGivesLambertOfItsVisiblePart) {
     EXPECT_NEAR(E[i], exact, 0.01 * exact) << p.x << ", " << p.y;
   }
   // The first point sees the whole panel, the last ones less than half of it.
-  const double full = nearfield::lambert_uniform_illuminance(emitters[0], grid.points[0], Vec3(0, 0, 1), kI0);
+  const double full =
+      nearfield::lambert_uniform_illuminance(emitters[0], grid.points[0], Vec3(0, 0, 1), kI0);
   EXPECT_NEAR(E[0], full, 0.01 * full);
-  EXPECT_LT(E[4], 0.6 * nearfield::lambert_uniform_illuminance(emitters[0], grid.points[4], Vec3(0, 0, 1), kI0));
+  EXPECT_LT(E[4], 0.6 * nearfield::lambert_uniform_illuminance(emitters[0], grid.points[4],
+                                                               Vec3(0, 0, 1), kI0));
 }
 
 TEST(SoftShadow, PanelFullyHiddenGivesZero) {
@@ -80,7 +85,8 @@ TEST(SoftShadow, PanelFullyHiddenGivesZero) {
       R"([ { "name": "wall", "box": { "min": [1.3, 0, 0], "max": [1.4, 4, 2.9] } } ])");
   const Plan plan = make_plan(scene);
   ASSERT_TRUE(plan.visibility_test);
-  const std::vector<double> E = direct_illuminance(plan, make_emitters(scene), scene.surfaces.at(0));
+  const std::vector<double> E =
+      direct_illuminance(plan, make_emitters(scene), scene.surfaces.at(0));
   EXPECT_EQ(E[0], 0.0);  // (1.0, 2.0): every ray to x_p >= 1.5 crosses x = 1.3 below z = 0.9
 }
 

@@ -29,9 +29,7 @@ photometry::Photometry flood() {
 struct TypeBAngles {
   double h, v;
 };
-TypeBAngles type_b_angles(const Vec3& d) {
-  return {safe_asin(-d.y), std::atan2(d.x, -d.z)};
-}
+TypeBAngles type_b_angles(const Vec3& d) { return {safe_asin(-d.y), std::atan2(d.x, -d.z)}; }
 
 // Intensity of the type B table at (H, V), read in the grid's own frame (C' = V, gamma' = 90 - H;
 // photometry/symmetry.h), which bypasses the luminaire-frame matrix under test.
@@ -43,7 +41,8 @@ double table_at(const TabularDistribution& t, const TypeBAngles& a) {
 
 // The type B table resampled on a regular type C grid (step_deg in C and gamma) by the
 // documented mapping: exact at every type C node.
-std::shared_ptr<TabularDistribution> resampled_type_c(const TabularDistribution& b, double step_deg) {
+std::shared_ptr<TabularDistribution> resampled_type_c(const TabularDistribution& b,
+                                                      double step_deg) {
   photometry::SphericalGrid g;
   const int nc = static_cast<int>(std::lround(360.0 / step_deg));
   const int ng = static_cast<int>(std::lround(180.0 / step_deg)) + 1;
@@ -73,7 +72,8 @@ TEST(TypeBFrame, LookupIsTheDocumentedMapping) {
     const Vec3 d = glm::normalize(Vec3(n(rng), n(rng), n(rng)));
     // Same table, same interpolation, two routes to its cell: only rounding differs (1e-9 of
     // the peak covers the degree/radian and atan2 round-off, ~1e-15 rad times <= 1e4 cd/rad).
-    ASSERT_NEAR(t.intensity(d), table_at(t, type_b_angles(d)), 1e-9 * peak) << d.x << " " << d.y << " " << d.z;
+    ASSERT_NEAR(t.intensity(d), table_at(t, type_b_angles(d)), 1e-9 * peak)
+        << d.x << " " << d.y << " " << d.z;
   }
 }
 
@@ -84,13 +84,15 @@ TEST(TypeBFrame, HandednessFollowsLm63) {
   for (int type : {2, 3}) {
     SCOPED_TRACE(type == 2 ? "type B" : "type A");
     std::ostringstream f;
-    f << "IESNA:LM-63-2002\n[TEST] handedness\nTILT=NONE\n1 -1 1 19 19 " << type << " 2 0 0 0\n1 1 0\n";
+    f << "IESNA:LM-63-2002\n[TEST] handedness\nTILT=NONE\n1 -1 1 19 19 " << type
+      << " 2 0 0 0\n1 1 0\n";
     for (int v = -90; v <= 90; v += 10) f << v << ' ';
     f << '\n';
     for (int h = -90; h <= 90; h += 10) f << h << ' ';
     f << '\n';
     for (int h = -90; h <= 90; h += 10) {
-      for (int v = -90; v <= 90; v += 10) f << (h == 30 && v == 0 ? 1000 : h == 0 && v == 30 ? 500 : 0) << ' ';
+      for (int v = -90; v <= 90; v += 10)
+        f << (h == 30 && v == 0 ? 1000 : h == 0 && v == 30 ? 500 : 0) << ' ';
       f << '\n';
     }
     const photometry::Photometry p = photometry::load_photometry_text(f.str(), "spike.ies");
@@ -105,7 +107,8 @@ TEST(TypeBFrame, HandednessFollowsLm63) {
     const Luminaire lum = aimed_down_at_3m(p.distribution);
     const double y = 3.0 * std::tan(30.0 * kDegToRad);
     const double r = 3.0 / c30;
-    EXPECT_NEAR(far_field_illuminance(lum, {0.0, -y, 0.0}, {0, 0, 1}), 1000.0 * c30 / (r * r), 1e-9);
+    EXPECT_NEAR(far_field_illuminance(lum, {0.0, -y, 0.0}, {0, 0, 1}), 1000.0 * c30 / (r * r),
+                1e-9);
     EXPECT_EQ(far_field_illuminance(lum, {0.0, y, 0.0}, {0, 0, 1}), 0.0);
     EXPECT_NEAR(far_field_illuminance(lum, {y, 0.0, 0.0}, {0, 0, 1}), 500.0 * c30 / (r * r), 1e-9);
   }
@@ -114,7 +117,8 @@ TEST(TypeBFrame, HandednessFollowsLm63) {
 TEST(TypeBFrame, TypeCResamplingLightsTheFloorTheSame) {
   const photometry::Photometry p = flood();
   const TabularDistribution& b = *p.table;
-  // 1 deg: the file's finest spacing (its H and V step by 1 deg around the axis, 2..10 further out).
+  // 1 deg: the file's finest spacing (its H and V step by 1 deg around the axis, 2..10 further
+  // out).
   constexpr double kStepDeg = 1.0;
   const auto c = resampled_type_c(b, kStepDeg);
 

@@ -27,7 +27,8 @@ TEST(UgrSum, TermMatchesBruteForceIntegralOverTheOpening) {
     const double yaw = 2.0 * kPi * u(rng);
     const Vec3 view(std::cos(yaw), std::sin(yaw), 0.0);
     const ViewFrame frame = ViewFrame::looking(view);
-    const double R = 1.5 + 4.5 * u(rng), H = R * (0.05 + 1.7 * u(rng)), T = R * (-2.5 + 5.0 * u(rng));
+    const double R = 1.5 + 4.5 * u(rng), H = R * (0.05 + 1.7 * u(rng)),
+                 T = R * (-2.5 + 5.0 * u(rng));
     const Vec3 eye(0.3, -0.2, 1.2);
     Pose pose;
     pose.position = eye + R * frame.forward + T * frame.right + H * frame.up;
@@ -43,16 +44,19 @@ TEST(UgrSum, TermMatchesBruteForceIntegralOverTheOpening) {
     EXPECT_NEAR(t->L_cd_m2 / L, 1.0, 1e-12);
     constexpr int n = 80;
     double brute = 0.0;
-    bool whole = true;  // every cell inside the field (else the term and the integral differ by design)
+    bool whole =
+        true;  // every cell inside the field (else the term and the integral differ by design)
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) {
         const Vec3 local((-0.5 + (i + 0.5) / n) * o.length, (-0.5 + (j + 0.5) / n) * o.width, 0.0);
         const Vec3 c = pose.position + pose.rotation * local;
         const Vec3 d = c - eye;
         const double r = glm::length(d);
-        const double cr = glm::dot(d, frame.forward), ch = glm::dot(d, frame.up), ct = glm::dot(d, frame.right);
+        const double cr = glm::dot(d, frame.forward), ch = glm::dot(d, frame.up),
+                     ct = glm::dot(d, frame.right);
         if (!in_guth_field(cr, ct, ch)) whole = false;
-        const double d_omega = (o.length * o.width / (n * n)) * (ch / r) / (r * r);  // cos at the cell = H / r
+        const double d_omega =
+            (o.length * o.width / (n * n)) * (ch / r) / (r * r);  // cos at the cell = H / r
         const double p = guth_position_index(ch / cr, ct / cr);
         brute += L * L * d_omega / (p * p);
       }

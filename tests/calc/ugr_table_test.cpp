@@ -29,8 +29,10 @@ TEST(FluxTransfer, ReproducesCie190TransferFactors) {
   struct Row {
     double c, w, f, FW, WW1, CW;
   };
-  const Row rows[] = {{0.7, 0.5, 0.2, 0.115, 0.211, 0.307}, {0.7, 0.3, 0.2, 0.106, 0.117, 0.283},
-                      {0.5, 0.5, 0.2, 0.100, 0.187, 0.211}, {0.5, 0.3, 0.2, 0.093, 0.104, 0.196},
+  const Row rows[] = {{0.7, 0.5, 0.2, 0.115, 0.211, 0.307},
+                      {0.7, 0.3, 0.2, 0.106, 0.117, 0.283},
+                      {0.5, 0.5, 0.2, 0.100, 0.187, 0.211},
+                      {0.5, 0.3, 0.2, 0.093, 0.104, 0.196},
                       {0.3, 0.3, 0.2, 0.081, 0.092, 0.114}};
   for (const Row& r : rows) {
     const ThreeSurfaces rho{r.f, r.w, r.c};
@@ -69,15 +71,18 @@ TEST(UgrTable, LambertianFourByEightMatchesHandComputation) {
     for (int i = 0; i < 16; ++i) {
       const double x = -0.5 * X + S * (i + 0.5), y = S * (j + 0.5);  // T = x, R = y
       ++n;
-      floor_lm += kPi * I0 * (corner_fraction(x + 0.5 * X, y, H) + corner_fraction(0.5 * X - x, y, H) +
-                              corner_fraction(x + 0.5 * X, Y - y, H) + corner_fraction(0.5 * X - x, Y - y, H));
+      floor_lm += kPi * I0 *
+                  (corner_fraction(x + 0.5 * X, y, H) + corner_fraction(0.5 * X - x, y, H) +
+                   corner_fraction(x + 0.5 * X, Y - y, H) + corner_fraction(0.5 * X - x, Y - y, H));
       if (!in_guth_field(y, x, H)) continue;
       const double d2 = x * x + y * y + H * H;
-      const double L = I0 / A, omega = A * (H / std::sqrt(d2)) / d2, p = guth_position_index(H / y, x / y);
+      const double L = I0 / A, omega = A * (H / std::sqrt(d2)) / d2,
+                   p = guth_position_index(H / y, x / y);
       sum += L * L * omega / (p * p);
     }
   const double total_lm = n * kPi * I0;
-  const ThreeSurfaces in = indirect_flux(X, Y, H, {0.2, 0.5, 0.7}, {floor_lm, total_lm - floor_lm, 0.0});
+  const ThreeSurfaces in =
+      indirect_flux(X, Y, H, {0.2, 0.5, 0.7}, {floor_lm, total_lm - floor_lm, 0.0});
   const double Lb = in.walls / (2 * H * (X + Y)) / kPi;
   const double hand = 8.0 * std::log10(0.25 * sum / Lb);
   const TableRoom room{4, 8};
@@ -92,7 +97,8 @@ TEST(UgrTable, LambertianFourByEightMatchesHandComputation) {
 // (the two differ only in which C plane faces the observer). 1e-6 UGR: the table is
 // C-independent, so only rounding differs.
 TEST(UgrTable, RotationallySymmetricFileIsTheSameCrosswiseAndEndwise) {
-  const auto file = std::filesystem::path(LUXGRID_SOURCE_DIR) / "tests/data/photometry/ies/interlight_ovni_lm02_nonascii.ies";
+  const auto file = std::filesystem::path(LUXGRID_SOURCE_DIR) /
+                    "tests/data/photometry/ies/interlight_ovni_lm02_nonascii.ies";
   const photometry::Photometry p = photometry::load_photometry_file(file);
   ASSERT_EQ(p.symmetry, photometry::Symmetry::rotational);
   ASSERT_EQ(p.opening.height, 0.0);
@@ -101,7 +107,8 @@ TEST(UgrTable, RotationallySymmetricFileIsTheSameCrosswiseAndEndwise) {
   for (size_t i = 0; i < kTableRooms.size(); ++i)
     for (size_t r = 0; r < 5; ++r) {
       ASSERT_TRUE(t.crosswise[i][r] && t.endwise[i][r]);
-      EXPECT_NEAR(*t.crosswise[i][r], *t.endwise[i][r], 1e-6) << "room " << i << ", reflectances " << r;
+      EXPECT_NEAR(*t.crosswise[i][r], *t.endwise[i][r], 1e-6)
+          << "room " << i << ", reflectances " << r;
     }
 }
 

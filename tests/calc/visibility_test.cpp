@@ -5,8 +5,8 @@
 
 #include "calc/direct.h"
 #include "calc/pipeline.h"
-#include "project/project_file.h"
 #include "calc/visibility.h"
+#include "project/project_file.h"
 
 #include <filesystem>
 
@@ -18,12 +18,16 @@ Scene scene_from(const std::string& rooms, const std::string& lamp) {
     "format": "luxgrid-project/1",
     "photometry": { "iso": { "builtin": "isotropic", "intensity_cd": 1000 } },
     "rooms": )" + rooms + R"(,
-    "luminaires": [ { "photometry": "iso", "position": )" + lamp + R"( } ],
+    "luminaires": [ { "photometry": "iso", "position": )" +
+                                                      lamp + R"( } ],
     "surfaces": [ { "name": "p", "points": [ { "at": [1, 1, 0], "normal": [0, 0, 1] } ] } ]
-  })"), "v.json", ".").scene;
+  })"),
+                                "v.json", ".")
+      .scene;
 }
 
-const char* kLRoom = R"([ { "name": "L", "outline": [[0,0],[6,0],[6,3],[3,3],[3,6],[0,6]], "height": 3 } ])";
+const char* kLRoom =
+    R"([ { "name": "L", "outline": [[0,0],[6,0],[6,3],[3,3],[3,6],[0,6]], "height": 3 } ])";
 
 // E with visibility, as the direct calculation will form it.
 double shadowed(const geometry::Visibility* vis, const Luminaire& lum, const Vec3& p) {
@@ -52,9 +56,10 @@ TEST(Visibility, LRoomPointSourceDarkBehindTheCorner) {
 }
 
 TEST(Visibility, BoxBetweenSourceAndPointGivesZero) {
-  const Scene scene = scene_from(R"([ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3,
+  const Scene scene =
+      scene_from(R"([ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3,
       "obstacles": [ { "name": "cabinet", "box": { "min": [1.5, 1.5, 0], "max": [2.5, 2.5, 1.8] } } ] } ])",
-                                 "[2, 2, 3]");
+                 "[2, 2, 3]");
   std::string reason;
   const auto vis = make_visibility(scene, reason);
   ASSERT_TRUE(vis);
@@ -71,12 +76,13 @@ TEST(Visibility, BoxBetweenSourceAndPointGivesZero) {
 
 TEST(Visibility, OffForAConvexEmptyRoomWithTheLuminaireInside) {
   std::string reason;
-  const Scene scene = scene_from(R"([ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3 } ])",
-                                 "[2, 2, 3]");  // on the ceiling: inside the closed room
+  const Scene scene =
+      scene_from(R"([ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3 } ])",
+                 "[2, 2, 3]");  // on the ceiling: inside the closed room
   EXPECT_EQ(make_visibility(scene, reason), nullptr);
   EXPECT_EQ(reason, "off: convex room, no obstacles, every luminaire inside");
-  const Scene outside = scene_from(R"([ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3 } ])",
-                                   "[2, 2, 3.5]");
+  const Scene outside = scene_from(
+      R"([ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3 } ])", "[2, 2, 3.5]");
   EXPECT_NE(make_visibility(outside, reason), nullptr);
   EXPECT_EQ(reason, "on: luminaire 0 outside every room");
   const Scene no_rooms = scene_from("[]", "[2, 2, 3]");
@@ -89,14 +95,16 @@ TEST(Visibility, Cie171Case57ShadowEdgesMatchTheDerivation) {
   // README's z_min = (4 - 0.5) / (1.9 - 0.5) = 2.5 m; from the wall point (2, 0, 0.5)
   // z_min = 0.5 + 0.5 * 4 / 1.9 = 1.5526 m. The AABB tree must agree on both sides of each edge.
   const Scene scene = project::load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) /
-                                   "cases/cie171_5_7_obstruction/project.json").scene;
+                                            "cases/cie171_5_7_obstruction/project.json")
+                          .scene;
   std::string reason;
   const auto vis = make_visibility(scene, reason);
   ASSERT_TRUE(vis);
   EXPECT_EQ(reason, "on: 1 obstacle");
   EXPECT_TRUE(scene.warnings.empty());
   // The emitter faces into the room: its nadir (local -z) is world -y.
-  EXPECT_NEAR(glm::length(scene.luminaires[0].pose.rotation * Vec3(0, 0, -1) - Vec3(0, -1, 0)), 0.0, 1e-12);
+  EXPECT_NEAR(glm::length(scene.luminaires[0].pose.rotation * Vec3(0, 0, -1) - Vec3(0, -1, 0)), 0.0,
+              1e-12);
   for (double x : {0.1, 2.0, 3.9}) {
     EXPECT_FALSE(vis->visible(Vec3(2, 0.5, 0), Vec3(x, 4, 2.5 - 1e-6)));
     EXPECT_TRUE(vis->visible(Vec3(2, 0.5, 0), Vec3(x, 4, 2.5 + 1e-6)));
@@ -115,14 +123,18 @@ TEST(Visibility, EarlierCasesNeedNone) {
   // visibility must stay off so their results cannot change.
   for (const char* c : {"cie171_5_2_directional_point", "point_isotropic_horizontal",
                         "point_isotropic_vertical", "point_lambertian_tilted"}) {
-    const Scene scene = project::load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) / "cases" / c / "project.json").scene;
+    const Scene scene = project::load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) / "cases" /
+                                              c / "project.json")
+                            .scene;
     std::string reason;
     EXPECT_EQ(make_visibility(scene, reason), nullptr) << c << ": " << reason;
   }
 }
 
 TEST(Visibility, LShapeExampleLoads) {
-  const Scene scene = project::load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) / "examples/lshape/project.json").scene;
+  const Scene scene = project::load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) /
+                                            "examples/lshape/project.json")
+                          .scene;
   EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
   std::string reason;
   const auto vis = make_visibility(scene, reason);
@@ -131,14 +143,13 @@ TEST(Visibility, LShapeExampleLoads) {
   EXPECT_EQ(vis->triangle_count(), 20u + 2u * 12u);
   ASSERT_EQ(scene.surfaces.size(), 1u + 8u);
   const auto& wp = scene.surfaces[0];
-  EXPECT_EQ(wp.nu, 35);  // inset L spans 0.5..7.5: 7 m / 0.2 m
+  EXPECT_EQ(wp.nu, 35);                // inset L spans 0.5..7.5: 7 m / 0.2 m
   EXPECT_EQ(wp.points_outside, 400u);  // the inset's missing 4 x 4 m quadrant: 20 x 20 cells
   // Centres 0.5 + (i + 0.5) * 0.2 strictly inside a footprint, counted apart with the same
   // arithmetic: the column gives 2 (its faces lie on rows of centres, so rounding decides), the
   // cabinet (1.6 x 0.5 m about (2, 3.75), turned 20 degrees) 19.
   EXPECT_EQ(wp.points_in_obstacles, 21u);
 }
-
 
 // An opening larger than its convex room (a 6 x 6 m Lambertian panel under the ceiling of a
 // 4 x 4 m room) reaches through the walls: the walls must hide its part outside. Its luminance is
@@ -152,11 +163,14 @@ TEST(Visibility, OpeningReachingThroughTheWallsIsClippedByThem) {
       "photometry": { "panel": { "builtin": "lambertian", "intensity_cd": 1000 } },
       "rooms": [ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3 } ],
       "luminaires": [ { "photometry": "panel", "position": [2, 2, 2.999],
-                        "emitter": { "shape": "rectangle", "size": [)" + std::to_string(size_m) + ", " +
-                                               std::to_string(size_m) + R"(] } } ],
+                        "emitter": { "shape": "rectangle", "size": [)" +
+                                                        std::to_string(size_m) + ", " +
+                                                        std::to_string(size_m) + R"(] } } ],
       "surfaces": [ { "name": "p", "points": [ { "at": [2, 2, 0], "normal": [0, 0, 1] },
                                               { "at": [0.5, 1, 0.8], "normal": [0, 0, 1] } ] } ]
-    })"), "v.json", ".").scene;
+    })"),
+                                  "v.json", ".")
+        .scene;
   };
   const Scene big = scene_with(6.0), filling = scene_with(4.0);
   std::string reason;

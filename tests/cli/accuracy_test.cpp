@@ -40,14 +40,16 @@ TEST(AccuracyCommand, QuickRunWritesTableAndPlot) {
 }
 
 TEST(AccuracyCommand, MissingPhotometryIsBadInput) {
-  const std::string cmd = std::string(LUXGRID_BINARY) + " accuracy --quick --photometry /nonexistent 2>&1";
+  const std::string cmd =
+      std::string(LUXGRID_BINARY) + " accuracy --quick --photometry /nonexistent 2>&1";
   FILE* pipe = popen(cmd.c_str(), "r");
   std::array<char, 4096> buf{};
   std::string output;
   while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) output.append(buf.data(), n);
   const int status = pclose(pipe);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << output;
-  EXPECT_NE(output.find("zumtobel_arcos3_isym1.ldt: photometry file of the study not found"), std::string::npos)
+  EXPECT_NE(output.find("zumtobel_arcos3_isym1.ldt: photometry file of the study not found"),
+            std::string::npos)
       << output;
 }
 

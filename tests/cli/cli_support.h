@@ -3,6 +3,8 @@
 // suite, name and the process id), so tests run in parallel and in any order without meeting.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -12,8 +14,6 @@
 #include <set>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <vector>
 
 namespace luxgrid::test {
@@ -34,7 +34,9 @@ inline CommandResult shell(const std::string& cmd) {
   return r;
 }
 
-inline CommandResult luxgrid(const std::string& args) { return shell(std::string(LUXGRID_BINARY) + " " + args); }
+inline CommandResult luxgrid(const std::string& args) {
+  return shell(std::string(LUXGRID_BINARY) + " " + args);
+}
 
 // Folders handed out by scratch(), removed when the test program ends.
 inline std::vector<std::filesystem::path>& scratch_folders() {
@@ -86,7 +88,8 @@ inline std::string quote(const std::filesystem::path& p) { return "'" + p.string
 // The names in a folder (not recursing), sorted.
 inline std::set<std::string> entries(const std::filesystem::path& folder) {
   std::set<std::string> out;
-  for (const auto& e : std::filesystem::directory_iterator(folder)) out.insert(e.path().filename().string());
+  for (const auto& e : std::filesystem::directory_iterator(folder))
+    out.insert(e.path().filename().string());
   return out;
 }
 

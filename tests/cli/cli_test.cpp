@@ -2,11 +2,11 @@
 // or not at all.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sys/wait.h>
 
 #include <nlohmann/json.hpp>
 
@@ -51,7 +51,8 @@ TEST(Cli, CalcWritesEveryOutputAndTheValuesAreRight) {
   ASSERT_EQ(r.code, 0) << r.output;
   const fs::path out = dir / "p.out";  // the default: beside the project
   EXPECT_NE(r.output.find("results written to " + out.string()), std::string::npos) << r.output;
-  for (const char* f : {"results.json", "floor.csv", "floor.png"}) EXPECT_TRUE(fs::exists(out / f)) << f;
+  for (const char* f : {"results.json", "floor.csv", "floor.png"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
   const auto j = nlohmann::json::parse(std::ifstream(out / "results.json"));
   // Point (0.5, 0.5, 0): d^2 = 1.5^2 + 1.5^2 + 3^2 = 13.5, E = I h / d^3.
   const double d = std::sqrt(13.5);
@@ -67,9 +68,11 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoOutput) {
   std::string bad = kGood;
   bad.replace(bad.find("\"height\": 3"), 11, "\"height\": -3");  // the room's height
   write(dir / "p.json", bad);
-  const CommandResult r = run("calc " + (dir / "p.json").string() + " -o " + (dir / "out").string());
+  const CommandResult r =
+      run("calc " + (dir / "p.json").string() + " -o " + (dir / "out").string());
   EXPECT_EQ(r.code, 2);
-  EXPECT_EQ(r.output, "luxgrid: error: p.json /rooms/0/height: expected a positive number, got -3\n");
+  EXPECT_EQ(r.output,
+            "luxgrid: error: p.json /rooms/0/height: expected a positive number, got -3\n");
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
@@ -93,9 +96,11 @@ TEST(Cli, ValidateFailsOnAWrongExpectedValue) {
   fs::create_directories(dir / "cases" / "one");
   write(dir / "cases" / "one" / "project.json", kGood);
   // The nadir point is not on the 1 m grid; use the corner cell: deliberately wrong value.
-  write(dir / "cases" / "one" / "expected.json",
-        R"({"cases": [{"surface": "floor", "point": 0, "expected": 1.0, "rel_tol": 0.01, "source": "wrong on purpose"}]})");
-  const CommandResult r = run("validate " + (dir / "cases").string() + " -o " + (dir / "v.out").string());
+  write(
+      dir / "cases" / "one" / "expected.json",
+      R"({"cases": [{"surface": "floor", "point": 0, "expected": 1.0, "rel_tol": 0.01, "source": "wrong on purpose"}]})");
+  const CommandResult r =
+      run("validate " + (dir / "cases").string() + " -o " + (dir / "v.out").string());
   EXPECT_EQ(r.code, 1) << r.output;
   EXPECT_NE(r.output.find("FAIL"), std::string::npos);
   EXPECT_NE(r.output.find("0 passed, 1 failed"), std::string::npos);

@@ -11,8 +11,8 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <functional>
 #include <filesystem>
+#include <functional>
 #include <set>
 #include <string>
 #include <vector>
@@ -77,8 +77,9 @@ Outcome run_limited(const std::vector<std::string>& args, const fs::path& log) {
 }
 
 // Runs one command per file, a few at a time (each run is mostly start-up), in file order.
-std::vector<Outcome> run_all(const std::vector<fs::path>& inputs, const fs::path& tmp,
-                             const std::function<std::vector<std::string>(const fs::path&, const fs::path&)>& args) {
+std::vector<Outcome> run_all(
+    const std::vector<fs::path>& inputs, const fs::path& tmp,
+    const std::function<std::vector<std::string>(const fs::path&, const fs::path&)>& args) {
   constexpr size_t kParallel = 4;
   std::vector<Outcome> out(inputs.size());
   for (size_t first = 0; first < inputs.size(); first += kParallel) {
@@ -89,7 +90,8 @@ std::vector<Outcome> run_all(const std::vector<fs::path>& inputs, const fs::path
       fs::create_directories(work);
       children.push_back(start_limited(args(inputs[k], work), work / "log"));
     }
-    for (size_t k = first; k < last; ++k) out[k] = finish(children[k - first], tmp / std::to_string(k) / "log");
+    for (size_t k = first; k < last; ++k)
+      out[k] = finish(children[k - first], tmp / std::to_string(k) / "log");
   }
   return out;
 }
@@ -102,7 +104,8 @@ std::string without(std::string s, const std::string& what) {
 std::vector<fs::path> files(const fs::path& dir, const std::set<std::string>& extensions) {
   std::vector<fs::path> out;
   for (const auto& e : fs::directory_iterator(dir)) {
-    if (e.is_regular_file() && extensions.count(e.path().extension().string())) out.push_back(e.path());
+    if (e.is_regular_file() && extensions.count(e.path().extension().string()))
+      out.push_back(e.path());
   }
   std::sort(out.begin(), out.end());
   return out;
@@ -136,7 +139,8 @@ TEST(HostileCorpus, ProjectsAreRefusedInBoundedMemory) {
   });
   for (size_t k = 0; k < projects.size(); ++k) {
     expect_refused(runs[k], projects[k], dir.string() + "/");
-    EXPECT_FALSE(fs::exists(tmp / std::to_string(k) / "out")) << projects[k].filename() << " wrote an output folder";
+    EXPECT_FALSE(fs::exists(tmp / std::to_string(k) / "out"))
+        << projects[k].filename() << " wrote an output folder";
     peak.add(runs[k], projects[k]);
   }
   EXPECT_EQ(luxgrid::test::entries(dir), before) << "a refused project wrote beside itself";
@@ -157,8 +161,9 @@ TEST(HostileCorpus, PhotometricFilesAreRefusedInBoundedMemory) {
     expect_refused(runs[k], bad[k], kBad.string() + "/");
     peak.add(runs[k], bad[k]);
   }
-  std::printf("hostile photometric files: %zu refused with exit 2; peak resident memory %.1f MiB (%s)\n",
-              bad.size(), peak.kib / 1024.0, peak.file.c_str());
+  std::printf(
+      "hostile photometric files: %zu refused with exit 2; peak resident memory %.1f MiB (%s)\n",
+      bad.size(), peak.kib / 1024.0, peak.file.c_str());
   EXPECT_LT(peak.kib, kPeakResidentLimit_kiB);
 }
 
@@ -176,7 +181,8 @@ TEST(HostileCorpus, HugeFilesAreRefusedBeforeReading) {
     ASSERT_EQ(ftruncate(fd, off_t{200} << 20), 0);  // 200 MiB of NUL bytes, none on disk
     close(fd);
   }
-  const Outcome r = run_limited({"calc", project.string(), "-o", (dir / "out").string()}, dir / "log");
+  const Outcome r =
+      run_limited({"calc", project.string(), "-o", (dir / "out").string()}, dir / "log");
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("huge.json"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("limit"), std::string::npos) << r.output;
@@ -188,13 +194,15 @@ TEST(HostileCorpus, HugeFilesAreRefusedBeforeReading) {
     ASSERT_EQ(ftruncate(fd, off_t{1} << 30), 0);  // 1 GiB
     close(fd);
   }
-  luxgrid::test::write_file(dir / "lamp.ies", "IESNA:LM-63-2002\n[TEST] big tilt\nTILT=big.tilt\n"
-                                             "1 1000 1 3 1 1 2 0.1 0.1 0\n1 1 10\n0 45 90\n0\n100 70 10\n");
+  luxgrid::test::write_file(dir / "lamp.ies",
+                            "IESNA:LM-63-2002\n[TEST] big tilt\nTILT=big.tilt\n"
+                            "1 1000 1 3 1 1 2 0.1 0.1 0\n1 1 10\n0 45 90\n0\n100 70 10\n");
   const Outcome t = run_limited({"info", (dir / "lamp.ies").string()}, dir / "log");
   EXPECT_EQ(t.code, 2) << t.output;
   EXPECT_NE(t.output.find("lamp.ies:3"), std::string::npos) << t.output;
   EXPECT_NE(t.output.find("big.tilt"), std::string::npos) << t.output;
-  EXPECT_LT(t.peak_kib, start_kib + kReadingMargin_kiB) << "read the TILT file before checking its size";
+  EXPECT_LT(t.peak_kib, start_kib + kReadingMargin_kiB)
+      << "read the TILT file before checking its size";
 }
 
 }  // namespace

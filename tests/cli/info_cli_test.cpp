@@ -24,7 +24,8 @@ Result info(const std::string& args) {
 
 // stdout alone: --json output must parse even when the file has warnings (they go to stderr).
 Result info_stdout(const std::string& args) {
-  const auto r = luxgrid::test::shell("(" + std::string(LUXGRID_BINARY) + " info " + args + " 2>/dev/null)");
+  const auto r =
+      luxgrid::test::shell("(" + std::string(LUXGRID_BINARY) + " info " + args + " 2>/dev/null)");
   return {r.code, r.output};
 }
 
@@ -35,8 +36,9 @@ const std::string kPole =
 TEST(InfoCli, WarningsAndTheFluxConventionInText) {
   const Result r = info(kCorpus + "ldt/synthetic_isym3_c90c270.ldt");
   EXPECT_EQ(r.code, 0);
-  EXPECT_NE(r.out.find("luxgrid: warning: " + kCorpus + "ldt/synthetic_isym3_c90c270.ldt: " + kPole),
-            std::string::npos)
+  EXPECT_NE(
+      r.out.find("luxgrid: warning: " + kCorpus + "ldt/synthetic_isym3_c90c270.ldt: " + kPole),
+      std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("  photometry    absolute photometry (EULUMDAT lamp count -2 < 0; 1000 lm "
                        "is the luminaire flux)\n"),

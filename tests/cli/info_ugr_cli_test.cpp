@@ -11,7 +11,8 @@
 
 namespace {
 
-const std::string kMirel = std::string(LUXGRID_SOURCE_DIR) + "/tests/data/photometry/ldt/zumtobel_mirel_isym4.ldt";
+const std::string kMirel =
+    std::string(LUXGRID_SOURCE_DIR) + "/tests/data/photometry/ldt/zumtobel_mirel_isym4.ldt";
 
 TEST(InfoUgrCli, TextAndJsonAgree) {
   const auto j = luxgrid::test::luxgrid("info " + kMirel + " --ugr --json");
@@ -26,7 +27,8 @@ TEST(InfoUgrCli, TextAndJsonAgree) {
   EXPECT_EQ(row.at("x_H").get<double>(), 4.0);
   EXPECT_EQ(row.at("y_H").get<double>(), 8.0);
   const double corrected = row.at("crosswise").at(0).get<double>();
-  EXPECT_NEAR(corrected - row.at("crosswise_1000lm").at(0).get<double>(), t.at("correction").get<double>(), 1e-9);
+  EXPECT_NEAR(corrected - row.at("crosswise_1000lm").at(0).get<double>(),
+              t.at("correction").get<double>(), 1e-9);
   // The text row for 4H x 8H starts with the same value to one decimal.
   const auto text = luxgrid::test::luxgrid("info " + kMirel + " --ugr");
   ASSERT_EQ(text.code, 0);
@@ -37,10 +39,12 @@ TEST(InfoUgrCli, TextAndJsonAgree) {
 }
 
 TEST(InfoUgrCli, PointOpeningIsRefused) {
-  const std::string file = std::string(LUXGRID_SOURCE_DIR) + "/tests/data/photometry/ies/mdl_rimlight_iesna91_onevalueperline.ies";
+  const std::string file = std::string(LUXGRID_SOURCE_DIR) +
+                           "/tests/data/photometry/ies/mdl_rimlight_iesna91_onevalueperline.ies";
   const auto r = luxgrid::test::luxgrid("info " + file + " --ugr");
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.output.find("UGR table: the file gives no luminous area"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("UGR table: the file gives no luminous area"), std::string::npos)
+      << r.output;
 }
 
 }  // namespace

@@ -17,25 +17,30 @@
 namespace {
 
 namespace fs = std::filesystem;
-using luxgrid::test::luxgrid;
 using luxgrid::test::entries;
+using luxgrid::test::luxgrid;
 using luxgrid::test::quote;
 using luxgrid::test::read_file;
 using luxgrid::test::scratch;
 using luxgrid::test::write_file;
 
 // A black 4 x 4 m room, one isotropic source; `spacing` sets the cost.
-std::string project(const std::string& name, double spacing = 1.0, const std::string& quality = "standard") {
+std::string project(const std::string& name, double spacing = 1.0,
+                    const std::string& quality = "standard") {
   return R"({
-  "format": "luxgrid-project/1", "name": ")" + name + R"(",
-  "settings": { "quality": ")" + quality + R"(" },
+  "format": "luxgrid-project/1", "name": ")" +
+         name + R"(",
+  "settings": { "quality": ")" +
+         quality + R"(" },
   "photometry": { "panel": { "builtin": "lambertian", "intensity_cd": 1000 } },
   "rooms": [ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3,
                "reflectance": { "floor": 0.2, "walls": 0.5, "ceiling": 0.7 } } ],
   "luminaires": [ { "photometry": "panel", "position": [2, 2, 2.9],
                     "emitter": { "shape": "rectangle", "size": [1.2, 0.6] } } ],
-  "surfaces": [ { "name": ")" + name + R"(", "workplane": { "room": "r", "height": 0.8, "border": 0 },
-                  "spacing": )" + std::to_string(spacing) + R"( } ]
+  "surfaces": [ { "name": ")" +
+         name + R"(", "workplane": { "room": "r", "height": 0.8, "border": 0 },
+                  "spacing": )" +
+         std::to_string(spacing) + R"( } ]
 })";
 }
 
@@ -59,7 +64,8 @@ TEST(OutputSafety, ForeignFolderIsRefusedAndKept) {
   write_file(dir / "home" / "notes.txt", "mine");
   const auto r = luxgrid("calc " + quote(dir / "p.json") + " -o " + quote(dir / "home"));
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.output.find(": is a folder that luxgrid did not write"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(": is a folder that luxgrid did not write"), std::string::npos)
+      << r.output;
   EXPECT_EQ(entries(dir / "home"), std::set<std::string>{"notes.txt"});
   EXPECT_EQ(entries(dir), (std::set<std::string>{"home", "p.json"}));
 }
@@ -70,8 +76,9 @@ TEST(OutputSafety, TheProjectFileAndItsFolderAreRefused) {
   write_file(dir / "p.json", text);
   const auto r = luxgrid("calc " + quote(dir / "p.json") + " -o " + quote(dir / "p.json"));
   EXPECT_EQ(r.code, 2);
-  EXPECT_EQ(r.output, "luxgrid: error: " + (dir / "p.json").string() + ": the output folder would replace " +
-                          (dir / "p.json").string() + ", an input of this run; choose another output folder (-o)\n");
+  EXPECT_EQ(r.output, "luxgrid: error: " + (dir / "p.json").string() +
+                          ": the output folder would replace " + (dir / "p.json").string() +
+                          ", an input of this run; choose another output folder (-o)\n");
   EXPECT_EQ(read_file(dir / "p.json"), text);
   const auto folder = luxgrid("calc " + quote(dir / "p.json") + " -o " + quote(dir));
   EXPECT_EQ(folder.code, 2);
@@ -101,7 +108,8 @@ TEST(OutputSafety, KilledRunLeavesStagingThatTheNextRunRemoves) {
   const pid_t child = fork();
   if (child == 0) {
     const std::string out = (dir / "out").string(), proj = (dir / "slow.json").string();
-    execl(LUXGRID_BINARY, LUXGRID_BINARY, "calc", proj.c_str(), "-o", out.c_str(), static_cast<char*>(nullptr));
+    execl(LUXGRID_BINARY, LUXGRID_BINARY, "calc", proj.c_str(), "-o", out.c_str(),
+          static_cast<char*>(nullptr));
     _exit(127);
   }
   // Wait for the staging folder (it appears once the project is loaded), then SIGKILL.
@@ -132,8 +140,10 @@ TEST(OutputSafety, TwoConcurrentRunsLeaveOneWholeOutput) {
   write_file(dir / "b.json", project("beta", 0.1));
   const std::string out = quote(dir / "out");
   luxgrid::test::CommandResult ra, rb;
-  std::thread ta([&] { ra = luxgrid("calc " + quote(dir / "a.json") + " -o " + out + " --no-report"); });
-  std::thread tb([&] { rb = luxgrid("calc " + quote(dir / "b.json") + " -o " + out + " --no-report"); });
+  std::thread ta(
+      [&] { ra = luxgrid("calc " + quote(dir / "a.json") + " -o " + out + " --no-report"); });
+  std::thread tb(
+      [&] { rb = luxgrid("calc " + quote(dir / "b.json") + " -o " + out + " --no-report"); });
   ta.join();
   tb.join();
   EXPECT_EQ(ra.code, 0) << ra.output;
@@ -142,8 +152,8 @@ TEST(OutputSafety, TwoConcurrentRunsLeaveOneWholeOutput) {
   const std::string name = j["surfaces"][0]["name"];
   ASSERT_TRUE(name == "alpha" || name == "beta") << name;
   EXPECT_EQ(entries(dir / "out"),
-            (std::set<std::string>{".luxgrid-output", "results.json", "timing.json", name + ".csv", name + ".png",
-                                   name + "_direct.png", name + "_indirect.png"}));
+            (std::set<std::string>{".luxgrid-output", "results.json", "timing.json", name + ".csv",
+                                   name + ".png", name + "_direct.png", name + "_indirect.png"}));
   EXPECT_EQ(entries(dir), (std::set<std::string>{"a.json", "b.json", "out"}));
 }
 

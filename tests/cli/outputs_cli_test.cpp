@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -58,8 +58,8 @@ class LShapeOutputs : public ::testing::Test {
   static void SetUpTestSuite() {
     dir_ = new fs::path(scratch("lshape"));
     project_ = new fs::path(copy_example("lshape", *dir_));
-    const CommandResult r = luxgrid::test::luxgrid("calc " + quote(*project_) + " --quality draft --no-report -o " +
-                                                   quote(*dir_ / "out"));
+    const CommandResult r = luxgrid::test::luxgrid(
+        "calc " + quote(*project_) + " --quality draft --no-report -o " + quote(*dir_ / "out"));
     ASSERT_EQ(r.code, 0) << r.output;
     results_ = new nlohmann::json(nlohmann::json::parse(read_file(*dir_ / "out/results.json")));
   }
@@ -108,8 +108,9 @@ TEST_F(LShapeOutputs, PointsOutsideTheLAreFlaggedAndLeftOutOfTheStatistics) {
 TEST_F(LShapeOutputs, TheCsvSaysActiveAndItsEmptyCellsGiveTheSameStatistics) {
   const auto rows = csv_rows(*dir_ / "out/workplane.csv");
   ASSERT_GT(rows.size(), 2u);
-  EXPECT_EQ(rows[0], (std::vector<std::string>{"i", "j", "x", "y", "z", "nx", "ny", "nz", "active", "E_maintained_lx",
-                                               "E_direct_maintained_lx", "E_indirect_maintained_lx", "quantity"}));
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"i", "j", "x", "y", "z", "nx", "ny", "nz", "active",
+                                               "E_maintained_lx", "E_direct_maintained_lx",
+                                               "E_indirect_maintained_lx", "quantity"}));
   double emin = INFINITY;
   size_t inactive = 0;
   for (size_t r = 1; r < rows.size(); ++r) {
@@ -120,14 +121,16 @@ TEST_F(LShapeOutputs, TheCsvSaysActiveAndItsEmptyCellsGiveTheSameStatistics) {
       continue;
     }
     ASSERT_EQ(rows[r][8], "true");
-    const double e = std::stod(rows[r][9]), ed = std::stod(rows[r][10]), ei = std::stod(rows[r][11]);
+    const double e = std::stod(rows[r][9]), ed = std::stod(rows[r][10]),
+                 ei = std::stod(rows[r][11]);
     emin = std::min(emin, e);
     // All three maintained: the parts add up to the total within the 6 significant digits the
     // CSV prints (two roundings of half a unit in the 6th digit each).
     EXPECT_NEAR(ed + ei, e, 1e-5 * e) << "row " << r;
     EXPECT_GT(ei, 0.0);  // reflected light ran: the sum is not trivially E_direct
   }
-  EXPECT_EQ(inactive, std::count(workplane()["active"].begin(), workplane()["active"].end(), false));
+  EXPECT_EQ(inactive,
+            std::count(workplane()["active"].begin(), workplane()["active"].end(), false));
   EXPECT_NEAR(emin, workplane()["stats"]["Emin"].get<double>(), 1e-5 * emin);
 }
 
@@ -142,7 +145,8 @@ TEST_F(LShapeOutputs, ResultsJsonSaysWhereTheNumbersCameFrom) {
   EXPECT_EQ("luxgrid " + j["luxgrid_version"].get<std::string>() + "\n", version);
   const auto& s = workplane();
   for (size_t i = 0; i < s["E"].size(); ++i)
-    EXPECT_DOUBLE_EQ(s["E_direct"][i].get<double>() + s["E_indirect"][i].get<double>(), s["E"][i].get<double>());
+    EXPECT_DOUBLE_EQ(s["E_direct"][i].get<double>() + s["E_indirect"][i].get<double>(),
+                     s["E"][i].get<double>());
 }
 
 TEST(Outputs, TheMaintenanceFactorScalesEveryPart) {
@@ -153,9 +157,11 @@ TEST(Outputs, TheMaintenanceFactorScalesEveryPart) {
   const auto at = text.find("\"maintenance_factor\": 0.8");
   ASSERT_NE(at, std::string::npos);
   const fs::path initial = dir / "office/initial.json";
-  luxgrid::test::write_file(initial, std::string(text).replace(at, 25, "\"maintenance_factor\": 1.0"));
+  luxgrid::test::write_file(initial,
+                            std::string(text).replace(at, 25, "\"maintenance_factor\": 1.0"));
   for (const auto& [p, out] : {std::pair{project, dir / "a"}, std::pair{initial, dir / "b"}}) {
-    const CommandResult r = luxgrid::test::luxgrid("calc " + quote(p) + " --quality draft --no-report -o " + quote(out));
+    const CommandResult r = luxgrid::test::luxgrid("calc " + quote(p) +
+                                                   " --quality draft --no-report -o " + quote(out));
     ASSERT_EQ(r.code, 0) << r.output;
   }
   const auto a = nlohmann::json::parse(read_file(dir / "a/results.json"));
@@ -165,7 +171,8 @@ TEST(Outputs, TheMaintenanceFactorScalesEveryPart) {
     const auto& ea = a["surfaces"][0][key];
     const auto& eb = b["surfaces"][0][key];
     for (size_t i = 0; i < ea.size(); ++i)
-      EXPECT_NEAR(ea[i].get<double>(), 0.8 * eb[i].get<double>(), 1e-12 * eb[i].get<double>()) << key << " " << i;
+      EXPECT_NEAR(ea[i].get<double>(), 0.8 * eb[i].get<double>(), 1e-12 * eb[i].get<double>())
+          << key << " " << i;
   }
 }
 
@@ -188,10 +195,12 @@ TEST(Outputs, AnOfficeInMillimetresIsRefusedBeforeItIsCalculated) {
     std::snprintf(text, sizeof text, office_mm, indirect);
     luxgrid::test::write_file(dir / "mm.json", text);
     const auto t0 = std::chrono::steady_clock::now();
-    const CommandResult r = luxgrid::test::luxgrid("calc " + quote(dir / "mm.json") + " -o " + quote(dir / "out"));
+    const CommandResult r =
+        luxgrid::test::luxgrid("calc " + quote(dir / "mm.json") + " -o " + quote(dir / "out"));
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     EXPECT_EQ(r.code, 2) << indirect << ": " << r.output;
-    EXPECT_NE(r.output.find("luxgrid: error: mm.json /rooms/0/height: the room \"office\" is 2800 m high, more than "
+    EXPECT_NE(r.output.find("luxgrid: error: mm.json /rooms/0/height: the room \"office\" is 2800 "
+                            "m high, more than "
                             "the limit of 1000 m for a room; the lengths look like millimetres"),
               std::string::npos)
         << r.output;
@@ -211,32 +220,37 @@ TEST(Outputs, WarningsGoToStderrAndNameTheObjectAtOnce) {
     "luminaires": [ { "photometry": "iso", "position": [3, 2, 3] } ],
     "surfaces": [ { "name": "wp", "workplane": { "room": "r", "height": 0.8, "border": 0.5 }, "spacing": 250 } ]
   })");
-  const std::string calc = std::string(LUXGRID_BINARY) + " calc " + quote(dir / "p.json") + " -o " + quote(dir / "out");
+  const std::string calc =
+      std::string(LUXGRID_BINARY) + " calc " + quote(dir / "p.json") + " -o " + quote(dir / "out");
   const CommandResult stdout_only = luxgrid::test::shell("(" + calc + " 2>/dev/null)");
   ASSERT_EQ(stdout_only.code, 0) << stdout_only.output;
   EXPECT_EQ(stdout_only.output.find("warning"), std::string::npos) << stdout_only.output;
   const CommandResult both = luxgrid::test::shell(calc);
-  const std::string w = "luxgrid: warning: /surfaces/0/spacing: the spacing 250 m of surface \"wp\" is larger than "
-                        "the surface (5 m x 3 m)";
+  const std::string w =
+      "luxgrid: warning: /surfaces/0/spacing: the spacing 250 m of surface \"wp\" is larger than "
+      "the surface (5 m x 3 m)";
   const auto at = both.output.find(w);
   ASSERT_NE(at, std::string::npos) << both.output;
   // Printed when the project is loaded, before the results.
   EXPECT_LT(at, both.output.find("results written to"));
   const auto j = nlohmann::json::parse(read_file(dir / "out/results.json"));
   ASSERT_EQ(j["warnings"].size(), 2u);  // the spacing, and the 1 x 1 grid it gave
-  EXPECT_EQ("luxgrid: warning: " + j["warnings"][0].get<std::string>(), both.output.substr(at, both.output.find('\n', at) - at));
+  EXPECT_EQ("luxgrid: warning: " + j["warnings"][0].get<std::string>(),
+            both.output.substr(at, both.output.find('\n', at) - at));
 }
 
 TEST(Outputs, InfoPrintsItsWarningsOnStderr) {
-  const std::string file = (kSource / "tests/data/photometry/ldt/synthetic_isym3_c90c270.ldt").string();
+  const std::string file =
+      (kSource / "tests/data/photometry/ldt/synthetic_isym3_c90c270.ldt").string();
   const std::string cmd = std::string(LUXGRID_BINARY) + " info " + quote(file);
   const CommandResult stdout_only = luxgrid::test::shell("(" + cmd + " 2>/dev/null)");
   ASSERT_EQ(stdout_only.code, 0);
   EXPECT_EQ(stdout_only.output.find("warning"), std::string::npos) << stdout_only.output;
   EXPECT_NE(stdout_only.output.find("flux"), std::string::npos);  // the summary itself is there
   const CommandResult stderr_only = luxgrid::test::shell("(" + cmd + " >/dev/null)");
-  EXPECT_NE(stderr_only.output.find("luxgrid: warning: " + file + ": the C planes disagree at gamma 0"),
-            std::string::npos)
+  EXPECT_NE(
+      stderr_only.output.find("luxgrid: warning: " + file + ": the C planes disagree at gamma 0"),
+      std::string::npos)
       << stderr_only.output;
 }
 
@@ -250,7 +264,8 @@ TEST(Outputs, ANoReportRerunKeepsTheEarlierReport) {
     "luminaires": [ { "photometry": "iso", "position": [2, 2, 3] } ],
     "surfaces": [ { "name": "floor", "workplane": { "room": "r", "height": 0, "border": 0 }, "spacing": 1 } ]
   })");
-  const std::string calc = "calc " + quote(dir / "p.json") + " --quality draft -o " + quote(dir / "out");
+  const std::string calc =
+      "calc " + quote(dir / "p.json") + " --quality draft -o " + quote(dir / "out");
   ASSERT_EQ(luxgrid::test::luxgrid(calc).code, 0);
   const std::string report = read_file(dir / "out/report.html");
   ASSERT_FALSE(report.empty());
@@ -296,8 +311,8 @@ TEST(Outputs, RepositoryDataIsFoundWhateverTheCurrentFolder) {
 
 TEST(Outputs, AccuracyTakesDashOAndFindsItsFilesFromAnyFolder) {
   const fs::path dir = scratch("accuracy");
-  const CommandResult r =
-      luxgrid::test::shell("cd " + quote(dir) + " && " + LUXGRID_BINARY + " accuracy --quick --grid 2 -o acc");
+  const CommandResult r = luxgrid::test::shell("cd " + quote(dir) + " && " + LUXGRID_BINARY +
+                                               " accuracy --quick --grid 2 -o acc");
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_GT(fs::file_size(dir / "acc/accuracy.md"), 100u);
   EXPECT_GT(fs::file_size(dir / "acc/accuracy.png"), 1000u);

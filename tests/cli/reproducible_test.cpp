@@ -20,16 +20,20 @@ TEST(Reproducible, TwoRunsOfTheOfficeWriteIdenticalFiles) {
   const fs::path dir = scratch("office");
   const fs::path project = fs::path(LUXGRID_SOURCE_DIR) / "examples/office/project.json";
   for (const char* run : {"a", "b"}) {
-    const auto r = luxgrid::test::shell("SOURCE_DATE_EPOCH=1764547200 " + std::string(LUXGRID_BINARY) +
-                                        " calc " + quote(project) + " -o " + quote(dir / run));
+    const auto r =
+        luxgrid::test::shell("SOURCE_DATE_EPOCH=1764547200 " + std::string(LUXGRID_BINARY) +
+                             " calc " + quote(project) + " -o " + quote(dir / run));
     ASSERT_EQ(r.code, 0) << r.output;
   }
   const auto files = entries(dir / "a");
   ASSERT_EQ(files, entries(dir / "b"));
-  EXPECT_TRUE(files.count("report.html") && files.count("results.json") && files.count("timing.json"));
+  EXPECT_TRUE(files.count("report.html") && files.count("results.json") &&
+              files.count("timing.json"));
   for (const auto& f : files) {
     if (f == "timing.json") continue;
-    EXPECT_EQ(luxgrid::test::shell("cmp " + quote(dir / "a" / f) + " " + quote(dir / "b" / f)).code, 0) << f;
+    EXPECT_EQ(luxgrid::test::shell("cmp " + quote(dir / "a" / f) + " " + quote(dir / "b" / f)).code,
+              0)
+        << f;
   }
   // The date is the one given: 2025-12-01 00:00 UTC.
   EXPECT_NE(read_file(dir / "a" / "report.html").find("2025-12-01 00:00 UTC"), std::string::npos);

@@ -21,7 +21,7 @@ std::vector<Face> l_room(const std::vector<Obstacle>& obstacles = {}) {
 TEST(Occlusion, InnerCornerOfAnLHidesTheOtherLeg) {
   const OcclusionTree tree(l_room());
   EXPECT_EQ(tree.triangle_count(), 2u * 4u + 6u * 2u);  // floor, ceiling: 4 each; walls: 2 each
-  const Vec3 lamp(1.0, 5.0, 3.0);  // on the ceiling of the upper leg
+  const Vec3 lamp(1.0, 5.0, 3.0);                       // on the ceiling of the upper leg
   EXPECT_TRUE(tree.visible(lamp, Vec3(1, 1, 0)));       // straight down the leg
   EXPECT_TRUE(tree.visible(lamp, Vec3(2.5, 1, 0)));     // round the corner but in sight
   EXPECT_FALSE(tree.visible(lamp, Vec3(5.5, 0.5, 0)));  // behind the inner corner

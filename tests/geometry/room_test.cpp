@@ -102,7 +102,9 @@ TEST(Obstacles, BadBoxesAndPrisms) {
     make_box("cabinet", {0, 0, 1.8}, {1, 1, 0}, 0.0, 0.0);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "obstacle \"cabinet\": box min must be below max in x, y and z, got z from 1.8 to 0");
+    EXPECT_STREQ(
+        e.what(),
+        "obstacle \"cabinet\": box min must be below max in x, y and z, got z from 1.8 to 0");
   }
   try {
     make_prism("wall", {{0, 0}, {1, 0}, {1, 1}}, 2.0, 2.0, 0.0);

@@ -23,7 +23,8 @@ TEST(Inset, LShapeByHalfAMetre) {
   const auto region = inset_outline(kL, 0.5);
   ASSERT_EQ(region.size(), 1u);
   // The inset L, corner by corner (any start corner): exact after snapping.
-  const Polygon2 expected = {{0.5, 0.5}, {5.5, 0.5}, {5.5, 2.5}, {2.5, 2.5}, {2.5, 5.5}, {0.5, 5.5}};
+  const Polygon2 expected = {{0.5, 0.5}, {5.5, 0.5}, {5.5, 2.5},
+                             {2.5, 2.5}, {2.5, 5.5}, {0.5, 5.5}};
   ASSERT_EQ(region[0].size(), expected.size());
   EXPECT_DOUBLE_EQ(signed_area(region[0]), signed_area(expected));  // 5*2 + 2*3 = 16 m^2
   EXPECT_DOUBLE_EQ(signed_area(region[0]), 16.0);
@@ -96,7 +97,8 @@ TEST(Workplane, ChamferedCornerHandCounted) {
   const Polygon2 chamfered = {{0, 0}, {4, 0}, {4, 2}, {2, 4}, {0, 4}};
   const auto region = inset_outline(chamfered, 0.5);
   ASSERT_EQ(region.size(), 1u);
-  EXPECT_NEAR(signed_area(region[0]), 9.0 - 0.5 * std::pow(3.5 + 3.5 - (6.0 - 0.5 * std::sqrt(2.0)), 2), 1e-9);
+  EXPECT_NEAR(signed_area(region[0]),
+              9.0 - 0.5 * std::pow(3.5 + 3.5 - (6.0 - 0.5 * std::sqrt(2.0)), 2), 1e-9);
   const auto g = make_region_grid("wp", region, 0.8, 0.5, {});
   EXPECT_EQ(g.nu, 6);
   EXPECT_EQ(g.nv, 6);
@@ -124,7 +126,8 @@ TEST(Workplane, ObstaclesSpanningTheHeightRemovePoints) {
 
 TEST(Workplane, RectangleMatchesPlaneGridExactly) {
   // The old rectangular path: 4 x 3 room, border 0.5 -> 6 x 4 cells at 0.5 m from (0.75, 0.75).
-  const auto g = make_region_grid("wp", inset_outline({{0, 0}, {4, 0}, {4, 3}, {0, 3}}, 0.5), 0.8, 0.5, {});
+  const auto g =
+      make_region_grid("wp", inset_outline({{0, 0}, {4, 0}, {4, 3}, {0, 3}}, 0.5), 0.8, 0.5, {});
   EXPECT_EQ(g.nu, 6);
   EXPECT_EQ(g.nv, 4);
   EXPECT_EQ(g.points.front(), Vec3(0.75, 0.75, 0.8));

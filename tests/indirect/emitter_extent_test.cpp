@@ -36,10 +36,13 @@ Scene extent_scene(const std::string& shape, double size_m, int bounces = 1) {
       {"luminaires",
        {{{"photometry", "lamb"},
          {"position", {2.0, 2.0, kEmitterZ_m}},
-         {"emitter", shape == "disk" ? nlohmann::json{{"shape", "disk"}, {"diameter", size_m}}
-                                     : nlohmann::json{{"shape", "rectangle"}, {"size", {size_m, size_m}}}}}}},
+         {"emitter", shape == "disk"
+                         ? nlohmann::json{{"shape", "disk"}, {"diameter", size_m}}
+                         : nlohmann::json{{"shape", "rectangle"}, {"size", {size_m, size_m}}}}}}},
       {"surfaces",
-       {{{"name", "floor"}, {"workplane", {{"room", "box"}, {"height", 0.0}, {"border", 0.0}}}, {"spacing", 0.25}}}}};
+       {{{"name", "floor"},
+         {"workplane", {{"room", "box"}, {"height", 0.0}, {"border", 0.0}}},
+         {"spacing", 0.25}}}}};
   return project::parse_project(doc, "extent.json", ".").scene;
 }
 
@@ -149,10 +152,13 @@ TEST(EmitterExtent, EnergyBalanceForOpeningsFromOneCentimetreToOneHundredMetres)
     const double inside = disk ? (c.size_m <= kRoom_m ? opening : kRoom_m * kRoom_m)
                                : std::pow(std::min(c.size_m, kRoom_m), 2.0);
     const double floor_exact = floor_flux_integral(c.shape, c.size_m);
-    std::printf("%-9s %7.2f m: luminaire %.6g lm, entering %.6g lm, received %.6g lm (%+.2e), floor %.6g lm, "
-                "integral %.6g lm (%+.2e)\n",
-                c.shape.c_str(), c.size_m, b.luminaire_lm, b.emitted_lm, b.received_lm,
-                b.received_lm / b.emitted_lm - 1.0, b.floor_lm, floor_exact, b.floor_lm / floor_exact - 1.0);
+    std::printf(
+        "%-9s %7.2f m: luminaire %.6g lm, entering %.6g lm, received %.6g lm (%+.2e), floor %.6g "
+        "lm, "
+        "integral %.6g lm (%+.2e)\n",
+        c.shape.c_str(), c.size_m, b.luminaire_lm, b.emitted_lm, b.received_lm,
+        b.received_lm / b.emitted_lm - 1.0, b.floor_lm, floor_exact,
+        b.floor_lm / floor_exact - 1.0);
     EXPECT_NEAR(b.luminaire_lm / phi, 1.0, 1e-3);  // luminous_flux's own integral of I0 cos
     // The clip planes are moved out by kOpeningOnFace_m: 1e-6 m on a 4 m side.
     EXPECT_NEAR(b.emitted_lm / (b.luminaire_lm * inside / opening), 1.0, 1e-5);
@@ -171,7 +177,8 @@ TEST(EmitterExtent, AnOpeningPartlyOutsideItsRoomSaysSo) {
   const FirstBounce fb =
       first_bounce(scene, mesh, std::vector<const geometry::Visibility*>(1, nullptr));
   ASSERT_EQ(fb.notes.size(), 1u);
-  EXPECT_NE(fb.notes[0].find("99.84 % of its luminous opening (rectangle 100 x 100 m)"), std::string::npos)
+  EXPECT_NE(fb.notes[0].find("99.84 % of its luminous opening (rectangle 100 x 100 m)"),
+            std::string::npos)
       << fb.notes[0];
   EXPECT_NE(fb.notes[0].find("room 'box'"), std::string::npos) << fb.notes[0];
 }
@@ -222,8 +229,8 @@ TEST(EmitterExtent, LShapedRoomsAndObstaclesCutTheOpening) {
     EXPECT_FALSE(c.position.x < 2.0 && c.position.y < 2.0) << c.position.x << " " << c.position.y;
 }
 
-// The largest emitter a project may give (1000 m, project/project_file.cpp's limit; the 1e9 m
-// one is refused at load): its 4 x 4 m part inside (1.6e-5 of it) is real light: pi I0 x 1.6e-5
+// The largest emitter a project may give (1000 m, project/project_file.cpp's limit; the 1e9
+// m one is refused at load): its 4 x 4 m part inside (1.6e-5 of it) is real light: pi I0 x 1.6e-5
 // enters, and lands on the patches.
 TEST(EmitterExtent, AKilometreEmitterLetsInItsPartInside) {
   const Scene scene = extent_scene("rectangle", 1000.0);
@@ -238,7 +245,8 @@ TEST(EmitterExtent, AKilometreEmitterLetsInItsPartInside) {
 
 TEST(EmitterExtent, OrdinaryOpeningsStayOnePoint) {
   for (double size : {0.01, 0.6, 2.0}) {
-    const auto parts = emitter_cells(extent_scene("rectangle", size), extent_scene("rectangle", size).luminaires[0]);
+    const auto parts = emitter_cells(extent_scene("rectangle", size),
+                                     extent_scene("rectangle", size).luminaires[0]);
     ASSERT_EQ(parts.size(), 1u);
     ASSERT_EQ(parts[0].cells.size(), 1u) << size;
     EXPECT_DOUBLE_EQ(parts[0].weight, 1.0);
@@ -266,10 +274,11 @@ TEST(EmitterExtent, ReflectedLightOfAHugeEmitterIsInProportionToItsDirectLight) 
   const double dir4 = mean(fills.surfaces[0].E_direct), ind4 = mean(fills.surfaces[0].E_indirect);
   const double dir100 = floor_flux_integral("rectangle", 100.0) / floor_m2;
   const double ind100 = mean(huge.surfaces[0].E_indirect);
-  std::printf("4 m: direct %.6g lx (integral %.6g lx), indirect %.6g lx; 100 m: direct %.6g lx (integral; "
-              "the pipeline's direct: %.6g lx), indirect %.6g lx\n",
-              dir4, floor_flux_integral("rectangle", 4.0) / floor_m2, ind4, dir100,
-              mean(huge.surfaces[0].E_direct), ind100);
+  std::printf(
+      "4 m: direct %.6g lx (integral %.6g lx), indirect %.6g lx; 100 m: direct %.6g lx (integral; "
+      "the pipeline's direct: %.6g lx), indirect %.6g lx\n",
+      dir4, floor_flux_integral("rectangle", 4.0) / floor_m2, ind4, dir100,
+      mean(huge.surfaces[0].E_direct), ind100);
   EXPECT_NEAR(dir4 / (floor_flux_integral("rectangle", 4.0) / floor_m2), 1.0, 5e-3);
   // The pipeline's direct light of the 100 m emitter: the walls hide its part outside (the plan
   // turns visibility on for an opening reaching outside its room), so it too is the integral's.

@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "calc/pipeline.h"
-#include "project/project_file.h"
 #include "photometry/builtin.h"
+#include "project/project_file.h"
 #include "util/error.h"
 
 namespace luxgrid::calc {
@@ -33,9 +33,10 @@ Scene huge_scene(const std::string& indirect) {
       {"luminaires", {{{"photometry", "iso"}, {"position", {2, 2, 2.5}}}}},
       {"surfaces",
        {{{"name", "probes"},
-         {"points", {{{"at", {1, 1, 0.75}}, {"normal", {0, 0, 1}}},
-                     {{"at", {2, 2, 2.0}}, {"normal", {0, 0, 1}}},
-                     {{"at", {2.1, 2, 2.0}}, {"normal", {0, 0, 1}}}}}}}}};
+         {"points",
+          {{{"at", {1, 1, 0.75}}, {"normal", {0, 0, 1}}},
+           {{"at", {2, 2, 2.0}}, {"normal", {0, 0, 1}}},
+           {{"at", {2.1, 2, 2.0}}, {"normal", {0, 0, 1}}}}}}}}};
   Scene s = project::parse_project(doc, "huge.json", ".").scene;
   s.luminaires[0].distribution = std::make_shared<HugeDistribution>();
   return s;
@@ -63,9 +64,10 @@ TEST(FiniteResults, ANonFinitePointIsNamedWithItsIndexAndPosition) {
   // gets the largest double as direct light, and that plus its reflected light overflows: the
   // first bad point, named by index and position.
   const std::string m = error_of(huge_scene("on"));
-  EXPECT_NE(m.find("surface 'probes': the illuminance at point 1 (2, 2, 2) m is not a finite number "
-                   "(E_direct 1.798e+308 lx"),
-            std::string::npos)
+  EXPECT_NE(
+      m.find("surface 'probes': the illuminance at point 1 (2, 2, 2) m is not a finite number "
+             "(E_direct 1.798e+308 lx"),
+      std::string::npos)
       << m;
 }
 

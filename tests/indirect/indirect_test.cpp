@@ -13,12 +13,12 @@
 #include <map>
 #include <memory>
 
+#include "calc/direct.h"
 #include "calc/indirect/first_bounce.h"
 #include "calc/indirect/form_factor.h"
 #include "calc/indirect/indirect.h"
 #include "calc/indirect/patches.h"
 #include "calc/indirect/radiosity.h"
-#include "calc/direct.h"
 #include "calc/scaled_distribution.h"
 #include "calc/visibility.h"
 #include "photometry/builtin.h"
@@ -93,7 +93,8 @@ double mean(const std::vector<double>& v) {
 }
 
 // Area-weighted mean over grids of the per-grid mean.
-double area_weighted(const std::vector<SurfaceGrid>& grids, const std::vector<std::vector<double>>& E) {
+double area_weighted(const std::vector<SurfaceGrid>& grids,
+                     const std::vector<std::vector<double>>& E) {
   double s = 0.0, a = 0.0;
   for (size_t k = 0; k < grids.size(); ++k) {
     s += mean(E[k]) * face_area(grids[k]);
@@ -202,7 +203,8 @@ double hottel_corner(double a, double b, double c) {
 
 TEST(FormFactor, LambertMatchesHottelForParallelRectangle) {
   const Polygon3 rect = {{0, 0, 2}, {3, 0, 2}, {3, 1.5, 2}, {0, 1.5, 2}};
-  EXPECT_NEAR(point_polygon_form_factor({0, 0, 0}, {0, 0, 1}, rect), hottel_corner(3, 1.5, 2), 1e-12);
+  EXPECT_NEAR(point_polygon_form_factor({0, 0, 0}, {0, 0, 1}, rect), hottel_corner(3, 1.5, 2),
+              1e-12);
   // Centre under the rectangle: four corner rectangles.
   EXPECT_NEAR(point_polygon_form_factor({1.5, 0.75, 0}, {0, 0, 1}, rect),
               4 * hottel_corner(1.5, 0.75, 2), 1e-12);
@@ -288,9 +290,8 @@ TEST(FirstBounce, ClosedRoomsReceiveTheWholeFlux) {
       const double emitted = luminous_flux(*lum.distribution);
       EXPECT_NEAR(fb.emitted_flux_lm, emitted, 1e-9 * emitted);
       std::printf("[ first bounce, %s, %s ] received %.3f lm of %.3f lm (%+.4f %%), %zu VPLs\n",
-                  room.name.c_str(), which == 0 ? "isotropic" : "lambertian",
-                  fb.received_flux_lm, emitted, 100 * (fb.received_flux_lm / emitted - 1),
-                  fb.vpl_count);
+                  room.name.c_str(), which == 0 ? "isotropic" : "lambertian", fb.received_flux_lm,
+                  emitted, 100 * (fb.received_flux_lm / emitted - 1), fb.vpl_count);
       // Exact solid angles tile the sphere: isotropic is exact up to visibility sampling in the L.
       EXPECT_NEAR(fb.received_flux_lm / emitted, 1.0, 0.005) << room.name << " " << which;
       if (which == 0 && room.name == "box") {
@@ -337,8 +338,8 @@ TEST(FirstBounce, PatchFluxMatchesDirectIlluminanceOnPatch) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Energy balance (docs/indirect.md): closed room of uniform rho; mean direct Phi/A, first bounce rho Phi/A,
-// converged rho Phi/(A (1 - rho)); after N bounces rho Phi (1 - rho^N) / (A (1 - rho)).
+// Energy balance (docs/indirect.md): closed room of uniform rho; mean direct Phi/A, first bounce
+// rho Phi/A, converged rho Phi/(A (1 - rho)); after N bounces rho Phi (1 - rho^N) / (A (1 - rho)).
 
 TEST(EnergyBalance, BoxAndLRoomPerBounceCount) {
   const double flux = 10000.0;
@@ -350,15 +351,16 @@ TEST(EnergyBalance, BoxAndLRoomPerBounceCount) {
       const double A = room_surface_area(room);
       for (int bounces : {1, 2, 3, 5, 10, 0}) {
         const PatchLevel pl = patch_level(s, 0.5, bounces);
-        const double expect =
-            bounces == 0 ? rho * flux / (A * (1 - rho))
-                         : rho * flux * (1 - std::pow(rho, bounces)) / (A * (1 - rho));
+        const double expect = bounces == 0
+                                  ? rho * flux / (A * (1 - rho))
+                                  : rho * flux * (1 - std::pow(rho, bounces)) / (A * (1 - rho));
         const double err = pl.indirect_mean_lx / expect - 1.0;
-        std::printf("[ energy %s rho %.1f bounces %-4s ] direct %.4f (err %+.1e)  indirect %.4f lx, "
-                    "expected %.4f, err %+.2e\n",
-                    shape == 0 ? "box" : "L  ", rho,
-                    bounces ? std::to_string(bounces).c_str() : "auto", pl.direct_mean_lx,
-                    pl.direct_mean_lx / (flux / A) - 1.0, pl.indirect_mean_lx, expect, err);
+        std::printf(
+            "[ energy %s rho %.1f bounces %-4s ] direct %.4f (err %+.1e)  indirect %.4f lx, "
+            "expected %.4f, err %+.2e\n",
+            shape == 0 ? "box" : "L  ", rho, bounces ? std::to_string(bounces).c_str() : "auto",
+            pl.direct_mean_lx, pl.direct_mean_lx / (flux / A) - 1.0, pl.indirect_mean_lx, expect,
+            err);
         EXPECT_NEAR(pl.direct_mean_lx / (flux / A), 1.0, shape == 0 ? 1e-9 : 5e-3);
         // Per bounce: exact in the box (rows sum to 1 and direct is exact); the L's error is
         // the direct flux's visibility-sampling error.
@@ -373,7 +375,8 @@ TEST(EnergyBalance, GatheredFaceAveragesInTheBox) {
   const double flux = 10000.0;
   const auto grids = box_face_grids(4, 4, 3, 0.125);
   for (double rho : {0.2, 0.5, 0.8}) {
-    const Scene s = scene_of(box_room(4, 4, 3, rho, rho, rho), {isotropic_at({1.5, 2.5, 2.0}, flux)});
+    const Scene s =
+        scene_of(box_room(4, 4, 3, rho, rho, rho), {isotropic_at({1.5, 2.5, 2.0}, flux)});
     const double A = room_surface_area(s.rooms[0]);
     for (int bounces : {1, 0}) {
       IndirectOptions o;
@@ -397,14 +400,16 @@ TEST(EnergyBalance, GatheredFaceAveragesInTheBox) {
 
 TEST(Cie171Case58, FaceAveragedIndirectAtEveryRho) {
   const auto grids = box_face_grids(4, 4, 4, 0.25);
-  std::printf("[ CIE 171 5.8 ]   rho   expected lx   floor lx   wall lx   ceiling lx   worst err   "
-              "bounces  time s\n");
+  std::printf(
+      "[ CIE 171 5.8 ]   rho   expected lx   floor lx   wall lx   ceiling lx   worst err   "
+      "bounces  time s\n");
   for (double rho : {0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95}) {
     const Scene s = scene_of(box_room(4, 4, 4, rho, rho, rho), {isotropic_at({2, 2, 2}, 10000.0)});
     const double expect = rho * 10000.0 / (96.0 * (1 - rho));
     const IndirectResult r = compute_indirect(s, grids, IndirectOptions{});
     double worst = 0.0;
-    for (const auto& e : r.E_indirect_per_surface) worst = std::max(worst, std::abs(mean(e) / expect - 1));
+    for (const auto& e : r.E_indirect_per_surface)
+      worst = std::max(worst, std::abs(mean(e) / expect - 1));
     std::printf("[ CIE 171 5.8 ]  %.2f  %10.3f  %9.3f  %8.3f  %10.3f  %+9.2e  %4d%s  %.2f\n", rho,
                 expect, mean(r.E_indirect_per_surface[0]), mean(r.E_indirect_per_surface[2]),
                 mean(r.E_indirect_per_surface[1]), worst, r.bounces_run, r.tail_added ? "+t" : "  ",
@@ -479,9 +484,12 @@ TEST(Gather, ContinuousAcrossTheNearFarSwitch) {
   double worst = 0.0;
   for (size_t k = 0; k < grids.size(); ++k)
     for (size_t i = 0; i < grids[k].points.size(); ++i)
-      worst = std::max(worst, std::abs(b.E_indirect_per_surface[k][i] / a.E_indirect_per_surface[k][i] - 1));
-  std::printf("[ gather switch ] hybrid (far ratio 5) vs exact: worst point %.3f %%; time %.2f s vs %.2f s\n",
-              100 * worst, b.seconds, a.seconds);
+      worst = std::max(
+          worst, std::abs(b.E_indirect_per_surface[k][i] / a.E_indirect_per_surface[k][i] - 1));
+  std::printf(
+      "[ gather switch ] hybrid (far ratio 5) vs exact: worst point %.3f %%; time %.2f s vs %.2f "
+      "s\n",
+      100 * worst, b.seconds, a.seconds);
   EXPECT_LT(worst, 0.01);
 }
 
@@ -517,8 +525,8 @@ std::vector<double> lu_solve(std::vector<double> A, std::vector<double> b, size_
 
 TEST(NonUniformReflectance, AgreesWithIndependentFinePatchSolve) {
   const Room room = box_room(4, 4, 3, 0.2, 0.5, 0.8);
-  const Scene s = scene_of(room, {isotropic_at({2.2, 1.8, 2.4}, 6000.0),
-                                  lambertian_at({1.0, 3.0, 2.95}, 800.0)});
+  const Scene s = scene_of(
+      room, {isotropic_at({2.2, 1.8, 2.4}, 6000.0), lambertian_at({1.0, 3.0, 2.95}, 800.0)});
   // Reference.
   const PatchMesh m = build_patch_mesh(s, 0.25);
   const size_t n = m.patches.size();
@@ -530,7 +538,8 @@ TEST(NonUniformReflectance, AgreesWithIndependentFinePatchSolve) {
     for (int a = 0; a < 4; ++a)
       for (int b = 0; b < 4; ++b)
         for (const auto& lum : s.luminaires)
-          e += far_field_illuminance(lum, p.polygon[0] + e1 * ((a + 0.5) / 4) + e2 * ((b + 0.5) / 4), p.normal);
+          e += far_field_illuminance(
+              lum, p.polygon[0] + e1 * ((a + 0.5) / 4) + e2 * ((b + 0.5) / 4), p.normal);
     D[i] = e / 16 * p.area_m2;
   }
   std::vector<double> M(n * n, 0.0);  // M[i][j] = delta_ij - rho_i F[j->i]
@@ -543,8 +552,9 @@ TEST(NonUniformReflectance, AgreesWithIndependentFinePatchSolve) {
       double f = 0.0;
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b)
-          f += point_polygon_form_factor(src.polygon[0] + e1 * ((a + 0.5) / 3) + e2 * ((b + 0.5) / 3),
-                                         src.normal, dst.polygon);
+          f += point_polygon_form_factor(
+              src.polygon[0] + e1 * ((a + 0.5) / 3) + e2 * ((b + 0.5) / 3), src.normal,
+              dst.polygon);
       M[i * n + j] = -dst.reflectance * f / 9;
     }
     M[j * n + j] = 1.0;
@@ -574,8 +584,9 @@ TEST(NonUniformReflectance, AgreesWithIndependentFinePatchSolve) {
   const double got[3] = {got_floor, got_ceiling, walls};
   const char* names[3] = {"floor", "ceiling", "walls"};
   for (int f = 0; f < 3; ++f) {
-    std::printf("[ non-uniform 0.2/0.5/0.8 ] %-7s luxgrid %.3f lx, fine LU reference %.3f lx (%+.2f %%)\n",
-                names[f], got[f], want[f], 100 * (got[f] / want[f] - 1));
+    std::printf(
+        "[ non-uniform 0.2/0.5/0.8 ] %-7s luxgrid %.3f lx, fine LU reference %.3f lx (%+.2f %%)\n",
+        names[f], got[f], want[f], 100 * (got[f] / want[f] - 1));
     EXPECT_NEAR(got[f] / want[f], 1.0, 0.01) << names[f];
   }
   std::printf("[ non-uniform ] reference %zu patches; luxgrid: %s\n", n, r.summary.c_str());
@@ -630,8 +641,10 @@ TEST(Decision, PatchBudgetIsEnforced) {
 Scene box_with_obstacles(double rho, const Vec3& lum, bool with_obstacles = true) {
   Scene s = scene_of(box_room(4, 4, 3, rho, rho, rho), {isotropic_at(lum, 10000.0)});
   if (with_obstacles) {
-    s.rooms[0].obstacles.push_back(geometry::make_box("cabinet", {0.3, 0.3, 0.0}, {1.1, 0.9, 1.2}, 0.3, rho));
-    s.rooms[0].obstacles.push_back(geometry::make_box("table", {1.5, 1.5, 0.70}, {2.5, 2.5, 0.75}, 0.0, rho));
+    s.rooms[0].obstacles.push_back(
+        geometry::make_box("cabinet", {0.3, 0.3, 0.0}, {1.1, 0.9, 1.2}, 0.3, rho));
+    s.rooms[0].obstacles.push_back(
+        geometry::make_box("table", {1.5, 1.5, 0.70}, {2.5, 2.5, 0.75}, 0.0, rho));
   }
   return s;
 }
@@ -684,14 +697,15 @@ TEST(Obstacles, EnergyBalanceInClosedBoxWithObstacles) {
       double total = 0.0;
       for (double x : sol.exitant_flux_lm) total += x;
       const double R = fb.received_flux_lm;
-      const double expect = bounces == 0 ? rho * R / (1 - rho)
-                                         : rho * R * (1 - std::pow(rho, bounces)) / (1 - rho);
+      const double expect =
+          bounces == 0 ? rho * R / (1 - rho) : rho * R * (1 - std::pow(rho, bounces)) / (1 - rho);
       const double expect_emitted = expect * fb.emitted_flux_lm / R;
-      std::printf("[ energy obstacles rho %.1f bounces %-4s ] direct %+.2e  exitant %.2f lm, vs "
-                  "received %+.2e, vs emitted %+.2e  (%zu patches, max row corr %.1e)\n",
-                  rho, bounces ? std::to_string(bounces).c_str() : "auto", direct_err, total,
-                  total / expect - 1.0, total / expect_emitted - 1.0, mesh.patches.size(),
-                  F.max_row_correction);
+      std::printf(
+          "[ energy obstacles rho %.1f bounces %-4s ] direct %+.2e  exitant %.2f lm, vs "
+          "received %+.2e, vs emitted %+.2e  (%zu patches, max row corr %.1e)\n",
+          rho, bounces ? std::to_string(bounces).c_str() : "auto", direct_err, total,
+          total / expect - 1.0, total / expect_emitted - 1.0, mesh.patches.size(),
+          F.max_row_correction);
       EXPECT_NEAR(total / expect, 1.0, bounces == 0 ? 1e-5 : 1e-9);
       EXPECT_NEAR(total / expect_emitted, 1.0, 5e-3);
     }
@@ -711,7 +725,8 @@ TEST(Obstacles, TableShadowsTheFloorInTheFirstBounce) {
     double flux = 0.0;
     for (size_t i = 0; i < m.patches.size(); ++i) {
       const auto& p = m.patches[i];
-      if (p.face == FaceKind::floor && std::abs(p.centroid.x - 2) < 0.5 && std::abs(p.centroid.y - 2) < 0.5)
+      if (p.face == FaceKind::floor && std::abs(p.centroid.x - 2) < 0.5 &&
+          std::abs(p.centroid.y - 2) < 0.5)
         flux += fb.incident_flux_lm[i];
     }
     return flux;
@@ -733,9 +748,10 @@ TEST(Obstacles, TableShadowsTheFloorInTheFirstBounce) {
   one_shaded.visibility = tree_of(with);
   const auto Ew = compute_indirect(with, {g}, one_shaded).E_indirect_per_surface[0];
   const auto Eo = compute_indirect(without, {g}, one).E_indirect_per_surface[0];
-  std::printf("[ obstacle shadow ] first-bounce E_indirect with / without the table: centre %.2f / "
-              "%.2f lx, (2.3, 1.8) %.2f / %.2f lx, corner (3.7, 3.7) %.2f / %.2f lx\n",
-              Ew[0], Eo[0], Ew[1], Eo[1], Ew[2], Eo[2]);
+  std::printf(
+      "[ obstacle shadow ] first-bounce E_indirect with / without the table: centre %.2f / "
+      "%.2f lx, (2.3, 1.8) %.2f / %.2f lx, corner (3.7, 3.7) %.2f / %.2f lx\n",
+      Ew[0], Eo[0], Ew[1], Eo[1], Ew[2], Eo[2]);
   EXPECT_LT(Ew[0], 0.5 * Eo[0]);
   EXPECT_LT(Ew[1], 0.7 * Eo[1]);
   EXPECT_GT(Ew[2], 0.0);
@@ -782,12 +798,13 @@ TEST(SphereLikeRoom, FirstBounceIsNearlyUniform) {
     dmin = std::min(dmin, f[0] / f[2]), dmax = std::max(dmax, f[0] / f[2]);
     imin = std::min(imin, f[1] / f[2]), imax = std::max(imax, f[1] / f[2]);
   }
-  std::printf("[ sphere-like 24-gon ] direct per face %.1f .. %.1f lx (max/min %.2f); first bounce "
-              "per face %.2f .. %.2f lx, rho Phi / A = %.2f lx (%+.1f %% .. %+.1f %%)\n",
-              dmin, dmax, dmax / dmin, imin, imax, uniform, 100 * (imin / uniform - 1),
-              100 * (imax / uniform - 1));
-  EXPECT_GT(dmax / dmin, 3.0);       // the direct light is far from uniform...
-  EXPECT_LT(imax / imin, 1.35);      // ...its first reflection nearly uniform
+  std::printf(
+      "[ sphere-like 24-gon ] direct per face %.1f .. %.1f lx (max/min %.2f); first bounce "
+      "per face %.2f .. %.2f lx, rho Phi / A = %.2f lx (%+.1f %% .. %+.1f %%)\n",
+      dmin, dmax, dmax / dmin, imin, imax, uniform, 100 * (imin / uniform - 1),
+      100 * (imax / uniform - 1));
+  EXPECT_GT(dmax / dmin, 3.0);   // the direct light is far from uniform...
+  EXPECT_LT(imax / imin, 1.35);  // ...its first reflection nearly uniform
   EXPECT_NEAR(imin / uniform, 1.0, 0.25);
   EXPECT_NEAR(imax / uniform, 1.0, 0.25);
 }

@@ -29,7 +29,8 @@ Room square_room(const std::string& name, double x0, double side, double rho) {
 // kMaxTotalPatches though every room is within its own budget.
 Scene many_rooms() {
   Scene s;
-  for (int k = 0; k < 60; ++k) s.rooms.push_back(square_room("r" + std::to_string(k), 13.0 * k, 12.0, 0.5));
+  for (int k = 0; k < 60; ++k)
+    s.rooms.push_back(square_room("r" + std::to_string(k), 13.0 * k, 12.0, 0.5));
   return s;
 }
 
@@ -40,9 +41,10 @@ TEST(Limits, ABudgetAboveTheMatrixLimitIsLowered) {
   o.max_patches_per_room = 20000;
   const IndirectResult r = compute_indirect(s, {}, o);
   ASSERT_FALSE(r.notes.empty());
-  EXPECT_EQ(r.notes[0],
-            "indirect: the budget of 20000 patches per room is above the limit of 10000 (a form-factor "
-            "matrix of 400 MB); 10000 used");
+  EXPECT_EQ(
+      r.notes[0],
+      "indirect: the budget of 20000 patches per room is above the limit of 10000 (a form-factor "
+      "matrix of 400 MB); 10000 used");
 }
 
 TEST(Limits, TheSolverRefusesARoomAboveTheMatrixLimit) {
@@ -61,8 +63,10 @@ TEST(Limits, ManyRoomsCoarsenToTheTotalPatchLimit) {
   EXPECT_LE(r.patches, kMaxTotalPatches);
   EXPECT_GT(r.patches, kMaxTotalPatches * 8 / 10);  // coarsened just enough, not to a few patches
   ASSERT_FALSE(r.notes.empty());
-  EXPECT_NE(r.notes[0].find("all 60 rooms: patch size raised from 0.5 m to"), std::string::npos) << r.notes[0];
-  EXPECT_NE(r.notes[0].find("to stay within 100000 patches in all rooms"), std::string::npos) << r.notes[0];
+  EXPECT_NE(r.notes[0].find("all 60 rooms: patch size raised from 0.5 m to"), std::string::npos)
+      << r.notes[0];
+  EXPECT_NE(r.notes[0].find("to stay within 100000 patches in all rooms"), std::string::npos)
+      << r.notes[0];
 }
 
 TEST(Limits, AnExplicitPatchSizeOverTheTotalLimitIsRefused) {
@@ -73,7 +77,8 @@ TEST(Limits, AnExplicitPatchSizeOverTheTotalLimitIsRefused) {
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
-              "103680 patches in 60 rooms at a patch size of 0.5 m exceed the limit of 100000 patches in all rooms");
+              "103680 patches in 60 rooms at a patch size of 0.5 m exceed the limit of 100000 "
+              "patches in all rooms");
   }
 }
 

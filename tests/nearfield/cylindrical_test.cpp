@@ -30,7 +30,8 @@ enum class What { cylindrical, semi_cylindrical };
 // the half cylinder facing `facing`, alpha the angle between `facing` and the horizontal
 // direction to the element (by atan2, not by a dot product as in the code under test).
 double brute_force(const Emitter& e, const Vec3& x, What what, const Vec3& facing, int n) {
-  const Vec3 o = e.vertices[0], su = e.vertices[1] - e.vertices[0], sv = e.vertices[3] - e.vertices[0];
+  const Vec3 o = e.vertices[0], su = e.vertices[1] - e.vertices[0],
+             sv = e.vertices[3] - e.vertices[0];
   const double cell = glm::length(glm::cross(su, sv)) / (double(n) * n);
   double sum = 0.0;
   for (int i = 0; i < n; ++i) {
@@ -65,8 +66,8 @@ Receiver receiver_for(What what, const Vec3& facing) {
 }
 
 Emitter ledvance(const Vec3& position, const glm::dmat3& rotation) {
-  const auto ph = photometry::load_photometry_file(std::string(LUXGRID_SOURCE_DIR) +
-                                                   "/tests/data/photometry/ldt/ledvance_flmax_asym_isym0.ldt");
+  const auto ph = photometry::load_photometry_file(
+      std::string(LUXGRID_SOURCE_DIR) + "/tests/data/photometry/ldt/ledvance_flmax_asym_isym0.ldt");
   return make_emitter(ph.opening, position, rotation, ph.distribution);
 }
 
@@ -90,14 +91,16 @@ void expect_rungs_match(const char* label, const Emitter& e, const Vec3& x, What
   const double reference = illuminance(e, x, r, Model::reference());
   const double far = illuminance(e, x, r, Model::far_field());
   const double hybrid = hybrid_illuminance(e, x, r, Model::standard());
-  std::printf("%-44s brute %10.2f  standard %10.2f (%+.4f %%)  high %10.2f (%+.4f %%)  reference %10.2f "
-              "(%+.4f %%)  far %10.2f\n",
-              label, t.value, standard, 100 * (standard / t.value - 1), high, 100 * (high / t.value - 1),
-              reference, 100 * (reference / t.value - 1), far);
+  std::printf(
+      "%-44s brute %10.2f  standard %10.2f (%+.4f %%)  high %10.2f (%+.4f %%)  reference %10.2f "
+      "(%+.4f %%)  far %10.2f\n",
+      label, t.value, standard, 100 * (standard / t.value - 1), high, 100 * (high / t.value - 1),
+      reference, 100 * (reference / t.value - 1), far);
   EXPECT_NEAR(standard, t.value, kStandardPromise * t.value) << label;
   EXPECT_NEAR(hybrid, t.value, kStandardPromise * t.value) << label;
-  // high promises 0.3 % (docs/accuracy.md); the reference 1e-6 of its own integrand, which the brute
-  // force matches to its own convergence (1e-3 between 600 and 1200 cells, so 0.3 % here too).
+  // high promises 0.3 % (docs/accuracy.md); the reference 1e-6 of its own integrand, which the
+  // brute force matches to its own convergence (1e-3 between 600 and 1200 cells, so 0.3 % here
+  // too).
   EXPECT_NEAR(high, t.value, 3e-3 * t.value) << label;
   EXPECT_NEAR(reference, t.value, 3e-3 * t.value) << label;
 }
@@ -108,9 +111,10 @@ void expect_rungs_match(const char* label, const Emitter& e, const Vec3& x, What
 TEST(Cylindrical, LedvancePointsOfTheIssueAgainstBruteForce) {
   const Emitter e = ledvance(Vec3(5, 5, 3), rotation_xyz_deg(0, 0, 25));
   expect_rungs_match("ledvance (5, 5, 2) cylindrical", e, Vec3(5, 5, 2), What::cylindrical);
-  expect_rungs_match("ledvance (5.2, 4.6, 2.8) cylindrical", e, Vec3(5.2, 4.6, 2.8), What::cylindrical);
-  expect_rungs_match("ledvance (5, 5, 2) semi-cyl facing +x", e, Vec3(5, 5, 2), What::semi_cylindrical,
-                     Vec3(1, 0, 0));
+  expect_rungs_match("ledvance (5.2, 4.6, 2.8) cylindrical", e, Vec3(5.2, 4.6, 2.8),
+                     What::cylindrical);
+  expect_rungs_match("ledvance (5, 5, 2) semi-cyl facing +x", e, Vec3(5, 5, 2),
+                     What::semi_cylindrical, Vec3(1, 0, 0));
   expect_rungs_match("ledvance (5.2, 4.6, 2.8) semi-cyl facing -y", e, Vec3(5.2, 4.6, 2.8),
                      What::semi_cylindrical, Vec3(0, -1, 0));
   expect_rungs_match("ledvance (5.2, 4.6, 2.8) semi-cyl facing +y", e, Vec3(5.2, 4.6, 2.8),
@@ -130,17 +134,20 @@ TEST(Cylindrical, IssueValuesOfTheBruteForceReproduced) {
 TEST(Cylindrical, TiltedLedvanceAgainstBruteForce) {
   const Emitter e = ledvance(Vec3(5, 5, 3), rotation_xyz_deg(20, -35, 60));
   expect_rungs_match("tilted ledvance (5, 5, 2) cylindrical", e, Vec3(5, 5, 2), What::cylindrical);
-  expect_rungs_match("tilted ledvance (4.6, 5.3, 2.6) cylindrical", e, Vec3(4.6, 5.3, 2.6), What::cylindrical);
-  expect_rungs_match("tilted ledvance (4.6, 5.3, 2.6) semi-cyl facing [1,1]", e, Vec3(4.6, 5.3, 2.6),
-                     What::semi_cylindrical, glm::normalize(Vec3(1, 1, 0)));
+  expect_rungs_match("tilted ledvance (4.6, 5.3, 2.6) cylindrical", e, Vec3(4.6, 5.3, 2.6),
+                     What::cylindrical);
+  expect_rungs_match("tilted ledvance (4.6, 5.3, 2.6) semi-cyl facing [1,1]", e,
+                     Vec3(4.6, 5.3, 2.6), What::semi_cylindrical, glm::normalize(Vec3(1, 1, 0)));
 }
 
 // Analytic profiles (no table rung: the area form at the rung's tolerance) against the brute force.
 TEST(Cylindrical, AnalyticProfilesAgainstBruteForce) {
-  for (auto [name, dist] : {std::pair{"batwing", testing::batwing()}, std::pair{"spot", testing::spot()}}) {
+  for (auto [name, dist] :
+       {std::pair{"batwing", testing::batwing()}, std::pair{"spot", testing::spot()}}) {
     const Emitter e = testing::paper_emitter(1.0, kPi, dist, 1.0, 0.6);
     for (const Vec3& x : {Vec3(0.2, 0.1, 0.5), Vec3(0.9, -0.4, 0.0), Vec3(0.0, 0.0, 0.8)}) {
-      const std::string label = std::string(name) + " (" + std::to_string(x.x) + ", " + std::to_string(x.z) + ")";
+      const std::string label =
+          std::string(name) + " (" + std::to_string(x.x) + ", " + std::to_string(x.z) + ")";
       expect_rungs_match((label + " cyl").c_str(), e, x, What::cylindrical);
       expect_rungs_match((label + " semi").c_str(), e, x, What::semi_cylindrical, Vec3(0, 1, 0));
     }
@@ -159,15 +166,18 @@ TEST(Cylindrical, OnTheAxisOfALambertianDiskClosedForm) {
   disk.length = disk.width = 2 * kRadius;
   // The disk is a regular N-gon of the disk's area (emitter.h); at 128 sides its outline is
   // within (pi / 128)^2 / 2 = 3e-4 of the circle, which bounds the change of the integral.
-  const Emitter e = make_emitter(disk, Vec3(0, 0, 2), glm::dmat3(1.0), testing::lambertian(kIntensity),
-                                 kMaxDiskSegments);
+  const Emitter e = make_emitter(disk, Vec3(0, 0, 2), glm::dmat3(1.0),
+                                 testing::lambertian(kIntensity), kMaxDiskSegments);
   const double luminance = kIntensity / e.area_m2;
   for (double h : {0.05, 0.3, 1.0, 2.0}) {
     const Vec3 x(0, 0, 2 - h);
-    const double exact = luminance * (std::atan(kRadius / h) - kRadius * h / (kRadius * kRadius + h * h));
+    const double exact =
+        luminance * (std::atan(kRadius / h) - kRadius * h / (kRadius * kRadius + h * h));
     for (const Model& m : {Model::standard(), Model::high(), Model::reference()}) {
-      EXPECT_NEAR(illuminance(e, x, Receiver::cylindrical(), m), exact, 3e-4 * exact) << h << " " << to_string(m);
-      EXPECT_NEAR(illuminance(e, x, Receiver::semi_cylindrical(Vec3(0, 1, 0)), m), exact, 3e-4 * exact)
+      EXPECT_NEAR(illuminance(e, x, Receiver::cylindrical(), m), exact, 3e-4 * exact)
+          << h << " " << to_string(m);
+      EXPECT_NEAR(illuminance(e, x, Receiver::semi_cylindrical(Vec3(0, 1, 0)), m), exact,
+                  3e-4 * exact)
           << h << " " << to_string(m);
     }
   }
@@ -189,18 +199,21 @@ TEST(Cylindrical, SmallDiskFarAwayIsThePointFormula) {
     const double e_cyl = dist->intensity(w) * 0.8 / (kPi * d2);
     // The finite disk differs from the point by O((D / d)^2) = 1e-4.
     constexpr double kPointLimit = 2e-4;
-    EXPECT_NEAR(illuminance(e, x, Receiver::cylindrical(), Model::standard()), e_cyl, kPointLimit * e_cyl);
-    EXPECT_NEAR(illuminance(e, x, Receiver::cylindrical(), Model::far_field()), e_cyl, 1e-12 * e_cyl);
-    // The source lies towards -x seen from the receiver.
-    EXPECT_NEAR(illuminance(e, x, Receiver::semi_cylindrical(Vec3(-1, 0, 0)), Model::standard()), 2 * e_cyl,
+    EXPECT_NEAR(illuminance(e, x, Receiver::cylindrical(), Model::standard()), e_cyl,
                 kPointLimit * e_cyl);
-    EXPECT_NEAR(illuminance(e, x, Receiver::semi_cylindrical(Vec3(0, 1, 0)), Model::standard()), e_cyl,
-                kPointLimit * e_cyl);
-    EXPECT_NEAR(illuminance(e, x, Receiver::semi_cylindrical(Vec3(1, 0, 0)), Model::standard()), 0.0,
-                kPointLimit * e_cyl);
-    EXPECT_NEAR(illuminance(e, x, Receiver::semi_cylindrical(Vec3(-1, 0, 0)), Model::far_field()), 2 * e_cyl,
+    EXPECT_NEAR(illuminance(e, x, Receiver::cylindrical(), Model::far_field()), e_cyl,
                 1e-12 * e_cyl);
-    EXPECT_NEAR(illuminance(e, x, Receiver::semi_cylindrical(Vec3(1, 0, 0)), Model::far_field()), 0.0, 1e-12);
+    // The source lies towards -x seen from the receiver.
+    EXPECT_NEAR(illuminance(e, x, Receiver::semi_cylindrical(Vec3(-1, 0, 0)), Model::standard()),
+                2 * e_cyl, kPointLimit * e_cyl);
+    EXPECT_NEAR(illuminance(e, x, Receiver::semi_cylindrical(Vec3(0, 1, 0)), Model::standard()),
+                e_cyl, kPointLimit * e_cyl);
+    EXPECT_NEAR(illuminance(e, x, Receiver::semi_cylindrical(Vec3(1, 0, 0)), Model::standard()),
+                0.0, kPointLimit * e_cyl);
+    EXPECT_NEAR(illuminance(e, x, Receiver::semi_cylindrical(Vec3(-1, 0, 0)), Model::far_field()),
+                2 * e_cyl, 1e-12 * e_cyl);
+    EXPECT_NEAR(illuminance(e, x, Receiver::semi_cylindrical(Vec3(1, 0, 0)), Model::far_field()),
+                0.0, 1e-12);
   }
 }
 

@@ -16,7 +16,8 @@ namespace luxgrid::nearfield {
 namespace {
 
 photometry::Photometry load(const std::string& rel) {
-  return photometry::load_photometry_file(std::string(LUXGRID_SOURCE_DIR) + "/tests/data/photometry/" + rel);
+  return photometry::load_photometry_file(std::string(LUXGRID_SOURCE_DIR) +
+                                          "/tests/data/photometry/" + rel);
 }
 
 TEST(FarFieldBound, KinkErrorFallsOnlyAsOneOverDistance) {
@@ -33,8 +34,9 @@ TEST(FarFieldBound, KinkErrorFallsOnlyAsOneOverDistance) {
     return std::abs(far_field_illuminance(e, p, -u) - nr) / nr;
   };
   const double e10 = error_at(10), e20 = error_at(20), e40 = error_at(40);
-  std::printf("Mirel C0 gamma 35: far-field error %.3f %% at 10 D, %.3f %% at 20 D, %.3f %% at 40 D\n", 100 * e10,
-              100 * e20, 100 * e40);
+  std::printf(
+      "Mirel C0 gamma 35: far-field error %.3f %% at 10 D, %.3f %% at 20 D, %.3f %% at 40 D\n",
+      100 * e10, 100 * e20, 100 * e40);
   // Ratio 2 per doubling within 10 % (a second-order error would give 4).
   EXPECT_NEAR(e10 / e20, 2.0, 0.2);
   EXPECT_NEAR(e20 / e40, 2.0, 0.2);
@@ -59,16 +61,20 @@ TEST(FarFieldBound, BlendLeavesNoSeam) {
       double prev_auto = 0.0, prev_near = 0.0;
       for (double s = 0.95 * start; s <= 1.3 * start; s += 0.1) {
         const Vec3 p = e.centroid + s * D * u;
-        const double a = hybrid_illuminance(e, p, -u, Model::standard(), NearFieldSwitch::automatic);
+        const double a =
+            hybrid_illuminance(e, p, -u, Model::standard(), NearFieldSwitch::automatic);
         const double n = hybrid_illuminance(e, p, -u, Model::standard(), NearFieldSwitch::always);
-        EXPECT_LE(std::abs(a - n), kStandardPromise * n) << "gamma " << gamma_deg << " C " << c_deg << " at " << s;
-        if (prev_near > 0.0) worst_step = std::max(worst_step, std::abs((a - prev_auto) - (n - prev_near)) / n);
+        EXPECT_LE(std::abs(a - n), kStandardPromise * n)
+            << "gamma " << gamma_deg << " C " << c_deg << " at " << s;
+        if (prev_near > 0.0)
+          worst_step = std::max(worst_step, std::abs((a - prev_auto) - (n - prev_near)) / n);
         prev_auto = a;
         prev_near = n;
       }
     }
   }
-  std::printf("error-bound blend: adds at most %.3f %% per 0.1 D to the change between receivers\n", 100 * worst_step);
+  std::printf("error-bound blend: adds at most %.3f %% per 0.1 D to the change between receivers\n",
+              100 * worst_step);
   EXPECT_LT(worst_step, 0.005);
 }
 
@@ -123,7 +129,8 @@ TEST(FarFieldBound, ContinuousAcrossDirections) {
   double worst = 0.0;
   for (double g = 0.5; g < 89.5; g += 0.05) {
     const double a = 1.0 / b->distance_over_D(photometry::direction_of(0.4, g * kDegToRad));
-    const double c = 1.0 / b->distance_over_D(photometry::direction_of(0.4, (g + 0.05) * kDegToRad));
+    const double c =
+        1.0 / b->distance_over_D(photometry::direction_of(0.4, (g + 0.05) * kDegToRad));
     worst = std::max(worst, std::abs(a - c));
   }
   // 1 / d_far <= 1 / 2 D; over 0.05 degrees (1 % of a 5-degree cell) it moves <= 0.5 / 100.
@@ -155,15 +162,18 @@ TEST(FarFieldBound, FigureData) {
   square.length = square.width = 0.6;
   const auto flood = load("ldt/ledvance_flmax_asym_isym0.ldt");
   const std::pair<std::string, Emitter> cases[] = {
-      {"ledvance_flmax_asym_isym0", make_emitter(flood.opening, Vec3(0, 0, 3), glm::dmat3(1.0), flood.distribution)},
-      {"lambertian_square_0.6m", make_emitter(square, Vec3(0, 0, 3), glm::dmat3(1.0), testing::lambertian())}};
+      {"ledvance_flmax_asym_isym0",
+       make_emitter(flood.opening, Vec3(0, 0, 3), glm::dmat3(1.0), flood.distribution)},
+      {"lambertian_square_0.6m",
+       make_emitter(square, Vec3(0, 0, 3), glm::dmat3(1.0), testing::lambertian())}};
   for (const auto& [name, e] : cases) {
     const auto b = build_far_field_bound(e, Model::standard(), kStandardPromise);
     std::ofstream out(std::string(dir) + "/" + name + ".csv");
     out << "# " << name << ": " << describe(*b) << "\n";
     for (double g = 0.0; g <= 180.0; g += 1.0) {
       for (double c = 0.0; c < 360.0; c += 2.0)
-        out << (c > 0 ? "," : "") << b->distance_over_D(photometry::direction_of(c * kDegToRad, g * kDegToRad));
+        out << (c > 0 ? "," : "")
+            << b->distance_over_D(photometry::direction_of(c * kDegToRad, g * kDegToRad));
       out << "\n";
     }
   }

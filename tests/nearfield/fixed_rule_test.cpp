@@ -16,7 +16,8 @@ namespace luxgrid::nearfield {
 namespace {
 
 photometry::Photometry load(const std::string& rel) {
-  return photometry::load_photometry_file(std::string(LUXGRID_SOURCE_DIR) + "/tests/data/photometry/" + rel);
+  return photometry::load_photometry_file(std::string(LUXGRID_SOURCE_DIR) +
+                                          "/tests/data/photometry/" + rel);
 }
 
 TEST(FixedRule, NodesCarryTheAreaAndItsCentroid) {
@@ -30,7 +31,8 @@ TEST(FixedRule, NodesCarryTheAreaAndItsCentroid) {
   strip.length = 1.2, strip.width = 0.2;
   disk.shape = photometry::LuminousOpening::Shape::disk;
   disk.length = 0.3;
-  const std::pair<photometry::LuminousOpening, size_t> cases[] = {{square, 9}, {strip, 4}, {disk, 16}};
+  const std::pair<photometry::LuminousOpening, size_t> cases[] = {
+      {square, 9}, {strip, 4}, {disk, 16}};
   for (const auto& [opening, nodes] : cases) {
     const Emitter e = make_emitter(opening, Vec3(1, 2, 3), glm::dmat3(1.0), testing::lambertian());
     ASSERT_EQ(e.rule_nodes.size(), nodes);
@@ -81,8 +83,8 @@ TEST(FixedRule, MirelKinkFarOutWithinThePromiseWhereTheFarFieldIsNot) {
   const double near = illuminance(e, p, n, Model::standard());
   const double far = far_field_illuminance(e, p, n);
   const double fixed = fixed_rule_illuminance(e, p, Receiver::planar(n));
-  std::printf("Mirel C0 gamma 37.5 at 10 D: far field %+.3f %%, fixed rule %+.3f %%\n", 100 * (far / near - 1),
-              100 * (fixed / near - 1));
+  std::printf("Mirel C0 gamma 37.5 at 10 D: far field %+.3f %%, fixed rule %+.3f %%\n",
+              100 * (far / near - 1), 100 * (fixed / near - 1));
   EXPECT_LT(std::abs(fixed / near - 1.0), kStandardPromise / kBoundSafetyFactor);
   EXPECT_LT(std::abs(fixed / near - 1.0), std::abs(far / near - 1.0));
 }

@@ -36,7 +36,8 @@ Emitter ceiling_panel(photometry::DistributionPtr d = testing::isotropic()) {
 TEST(HardCases, ReceiverInTheEmitterPlaneAndNearIt) {
   const Emitter e = ceiling_panel();
   for (double dz : {0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6, -1e-6, 1e-4, 1e-2, -1e-2})
-    for (Vec3 n : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 0, 1), Vec3(0, 0, -1), glm::normalize(Vec3(1, 0, -1))})
+    for (Vec3 n : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 0, 1), Vec3(0, 0, -1),
+                   glm::normalize(Vec3(1, 0, -1))})
       for (Vec3 p : {Vec3(0.0), Vec3(0.7, 0.1, 0.0), Vec3(-2.0, 0.3, 0.0)})
         expect_sane_everywhere(e, p + Vec3(0, 0, dz), n, "near plane");
 }
@@ -70,7 +71,8 @@ TEST(HardCases, ClosestPointOnVertexAndEdgeAndReceiverOnEdgeOrCorner) {
   // CP exactly on a vertex / edge (receiver below a corner / edge, and outside them).
   for (Vec3 p : {Vec3(0.5, 0.5, 0.0), Vec3(0.5, 0.0, 0.0), Vec3(1.0, 1.0, 0.0), Vec3(1.0, 0.0, 0.0),
                  Vec3(0.5, 0.5, 0.5), Vec3(0.5, 0.1, 0.5), Vec3(0.5, 0.5, 0.5 - 1e-13)})
-    for (Vec3 n : {kUp, Vec3(-1, 0, 0), glm::normalize(Vec3(-1, -1, 1))}) expect_sane_everywhere(e, p, n, "cp");
+    for (Vec3 n : {kUp, Vec3(-1, 0, 0), glm::normalize(Vec3(-1, -1, 1))})
+      expect_sane_everywhere(e, p, n, "cp");
   const ReceiverFan vertex = build_fan(e, Vec3(1.0, 1.0, 0.0), kUp, horizon_shift_m(e));
   EXPECT_EQ(vertex.cp_case, ClosestPointCase::vertex);
   EXPECT_EQ(vertex.triangles, 2);  // apex at the vertex: no zero-area triangles
@@ -85,7 +87,8 @@ TEST(HardCases, ClosestPointOnVertexAndEdgeAndReceiverOnEdgeOrCorner) {
 TEST(HardCases, EmitterBelowOrGrazingTheHorizon) {
   const Emitter e = paper_emitter(0.5, kPi, testing::isotropic());
   // Fully below the horizon: receiver normal points away.
-  for (const Model& m : kAllModels) EXPECT_EQ(illuminance(e, Vec3(0.0), -kUp, m), 0.0) << to_string(m);
+  for (const Model& m : kAllModels)
+    EXPECT_EQ(illuminance(e, Vec3(0.0), -kUp, m), 0.0) << to_string(m);
   // Partly below: receiver at the panel height looking up at a tilt; sliver clips.
   for (double tilt : {0.0, 1e-12, 1e-8, 1e-4, 0.1})
     for (Vec3 p : {Vec3(0.0, 0.0, 0.5), Vec3(0.0, 0.0, 0.5 - 1e-9), Vec3(2.0, 0.0, 0.5)}) {
@@ -126,7 +129,8 @@ TEST(HardCases, PaperOrientationsSymmetry) {
     const Emitter e = paper_emitter(1.0, theta, testing::batwing());
     for (Vec3 p : {Vec3(0.3, 0.4, 0.0), Vec3(-1.0, 1.5, 0.0)})
       for (const Model& m : {Model::paper_cubature(), Model::standard(), Model::subdivided(2)}) {
-        const double a = illuminance(e, p, kUp, m), b = illuminance(e, Vec3(p.x, -p.y, p.z), kUp, m);
+        const double a = illuminance(e, p, kUp, m),
+                     b = illuminance(e, Vec3(p.x, -p.y, p.z), kUp, m);
         EXPECT_NEAR(a, b, 1e-9 * std::max(a, 1e-300)) << theta << " " << to_string(m);
       }
   }
@@ -137,14 +141,15 @@ TEST(HardCases, TinyAndHugeScalesAgreeAfterScaling) {
   // position must give 1e6 x and 1e-6 x the 1 m value.
   const Vec3 rel(0.3, -0.2, 0.0);
   for (const Model& m : {Model::paper_cubature(), Model::standard(), Model::far_field()}) {
-    const double unit = illuminance(paper_emitter(0.4, 7 * kPi / 8, testing::batwing()), rel, kUp, m);
+    const double unit =
+        illuminance(paper_emitter(0.4, 7 * kPi / 8, testing::batwing()), rel, kUp, m);
     for (double scale : {1e-3, 1e3}) {
       photometry::LuminousOpening o;
       o.shape = photometry::LuminousOpening::Shape::rectangle;
       o.length = o.width = scale;
       const Vec3 offset(1e3, -2e3, 5e2);  // far from the origin: relative coordinates matter
-      const Emitter e = make_emitter(o, offset + Vec3(0, 0, 0.4 * scale), testing::rotation_about_y(kPi / 8),
-                                     testing::batwing());
+      const Emitter e = make_emitter(o, offset + Vec3(0, 0, 0.4 * scale),
+                                     testing::rotation_about_y(kPi / 8), testing::batwing());
       const double v = illuminance(e, offset + rel * scale, kUp, m) * scale * scale;
       EXPECT_NEAR(v, unit, 1e-6 * unit) << to_string(m) << " " << scale;
     }
@@ -154,7 +159,8 @@ TEST(HardCases, TinyAndHugeScalesAgreeAfterScaling) {
 TEST(HardCases, ZeroIntensityInSomeDirections) {
   const Emitter e = paper_emitter(0.3, kPi, std::make_shared<ZeroPatchDistribution>(1000.0));
   for (double x = -1.0; x <= 1.0; x += 0.25)
-    for (double y = -1.0; y <= 1.0; y += 0.5) expect_sane_everywhere(e, Vec3(x, y, 0.0), kUp, "zero patch");
+    for (double y = -1.0; y <= 1.0; y += 0.5)
+      expect_sane_everywhere(e, Vec3(x, y, 0.0), kUp, "zero patch");
   // Only x >= 0 emits: a receiver far on the -x side gets nothing from any model.
   EXPECT_EQ(illuminance(e, Vec3(-3.0, 0.0, 0.0), kUp, Model::standard()), 0.0);
 }
@@ -166,9 +172,12 @@ TEST(HardCases, ContinuityUnderSmallMoves) {
   // between its front and its back (a physical discontinuity, see docs/nearfield.md).
   for (double theta : {kPi / 2, 3 * kPi / 4, kPi}) {
     const Emitter e = paper_emitter(0.1, theta, testing::batwing());
-    for (Vec3 p : {Vec3(0.5, 0.5, 0.0), Vec3(-0.5, 0.2, 0.0), Vec3(-0.013, 0.007, 0.0), Vec3(0.49, -0.5, 0.0)})
-      for (const Model& m : {Model::paper_cubature(), Model::standard(), Model::lambert_subdivided(2)}) {
-        const double a = illuminance(e, p, kUp, m), b = illuminance(e, p + Vec3(1e-6, 1e-6, 0.0), kUp, m);
+    for (Vec3 p : {Vec3(0.5, 0.5, 0.0), Vec3(-0.5, 0.2, 0.0), Vec3(-0.013, 0.007, 0.0),
+                   Vec3(0.49, -0.5, 0.0)})
+      for (const Model& m :
+           {Model::paper_cubature(), Model::standard(), Model::lambert_subdivided(2)}) {
+        const double a = illuminance(e, p, kUp, m),
+                     b = illuminance(e, p + Vec3(1e-6, 1e-6, 0.0), kUp, m);
         EXPECT_NEAR(a, b, 1e-4 * std::max(a, b) + 1e-12) << theta << " " << to_string(m);
       }
   }
@@ -185,7 +194,8 @@ TEST(HardCases, FarAwayEveryModelTendsToTheFarField) {
 
 TEST(HardCases, StandardMatchesLambertOnCosineEmitterEverywhere) {
   // Per-rung tolerance on cosine distributions: standard is exact (1e-9), the paper's rule is
-  // off by up to 28 % at h = 0.1 (docs/nearfield.md), k = 2 subdivision by up to 25 % (measured 20 %).
+  // off by up to 28 % at h = 0.1 (docs/nearfield.md), k = 2 subdivision by up to 25 % (measured 20
+  // %).
   for (double h : {0.1, 1.0})
     for (double theta : {5 * kPi / 8, kPi}) {
       const Emitter e = paper_emitter(h, theta, testing::lambertian(500.0));

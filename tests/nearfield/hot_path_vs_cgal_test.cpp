@@ -56,7 +56,8 @@ Emitter polygon_emitter(const std::vector<Vec3>& v, const Vec3& normal) {
   // The largest vertex-to-vertex distance, as make_emitter computes it (largest_dimension(e)
   // would only read the field back, still 0 here, and zero the horizon shift).
   for (const Vec3& a : v)
-    for (const Vec3& b : v) e.largest_dimension_m = std::max(e.largest_dimension_m, glm::length(a - b));
+    for (const Vec3& b : v)
+      e.largest_dimension_m = std::max(e.largest_dimension_m, glm::length(a - b));
   double area2 = 0.0;
   for (size_t i = 1; i + 1 < v.size(); ++i)
     area2 += glm::dot(glm::cross(v[i] - v[0], v[i + 1] - v[0]), normal);
@@ -94,7 +95,8 @@ std::vector<XPoint> exact_clip(const Emitter& e, const Vec3& point, const Vec3& 
 double exact_area(const std::vector<XPoint>& p) {
   if (p.size() < 3) return 0.0;
   XVector s(0, 0, 0);
-  for (size_t i = 1; i + 1 < p.size(); ++i) s = s + CGAL::cross_product(p[i] - p[0], p[i + 1] - p[0]);
+  for (size_t i = 1; i + 1 < p.size(); ++i)
+    s = s + CGAL::cross_product(p[i] - p[0], p[i + 1] - p[0]);
   return 0.5 * std::sqrt(to_d(s.squared_length()));
 }
 
@@ -111,7 +113,8 @@ double distance_to_boundary(const XPoint& q, const std::vector<XPoint>& poly) {
   if (poly.size() == 1) return std::sqrt(to_d(CGAL::squared_distance(q, poly[0])));
   FT best = CGAL::squared_distance(q, XSegment(poly[0], poly[1 % poly.size()]));
   for (size_t i = 1; i < poly.size(); ++i)
-    best = std::min(best, CGAL::squared_distance(q, XSegment(poly[i], poly[(i + 1) % poly.size()])));
+    best =
+        std::min(best, CGAL::squared_distance(q, XSegment(poly[i], poly[(i + 1) % poly.size()])));
   return std::sqrt(to_d(best));
 }
 
@@ -191,10 +194,10 @@ void check_against_exact(const Emitter& e, const Vec3& point, const Vec3& normal
   if (exact.size() < 3) return;  // rounding-thin sliver: nothing exact to compare with
   const XPoint cp = exact_closest_point(exact, to_exact_v(e.normal));
   const Vec3 cp_d(to_d(cp.x()), to_d(cp.y()), to_d(cp.z()));
-  EXPECT_LE(glm::length(fan.apex - cp_d), tol) << "closest point, case "
-                                               << static_cast<int>(fan.cp_case);
-  EXPECT_NEAR(glm::length(fan.apex), std::sqrt(to_d(CGAL::squared_distance(XPoint(CGAL::ORIGIN), cp))),
-              tol);
+  EXPECT_LE(glm::length(fan.apex - cp_d), tol)
+      << "closest point, case " << static_cast<int>(fan.cp_case);
+  EXPECT_NEAR(glm::length(fan.apex),
+              std::sqrt(to_d(CGAL::squared_distance(XPoint(CGAL::ORIGIN), cp))), tol);
   // CGAL's own point-triangle distance over a fan of the exact polygon agrees too.
   FT d2 = CGAL::squared_distance(XPoint(CGAL::ORIGIN), XTriangle(exact[0], exact[1], exact[2]));
   for (size_t i = 2; i + 1 < exact.size(); ++i)
@@ -244,7 +247,8 @@ TEST(HotPathVsCgal, RandomPolygonsAndPlanesAtEveryScale) {
     for (int trial = 0; trial < 150; ++trial) {
       const Vec3 en = random_unit(rng);
       const Vec3 centre = scale * Vec3(u(rng), u(rng), u(rng));
-      const Emitter e = polygon_emitter(random_convex_polygon(rng, sides(rng), centre, en, scale), en);
+      const Emitter e =
+          polygon_emitter(random_convex_polygon(rng, sides(rng), centre, en, scale), en);
       // Receivers near (plane cuts the polygon often) and far from the emitter.
       const double reach = (trial % 2 ? 0.5 : 3.0) * scale;
       const Vec3 point = centre + reach * Vec3(u(rng), u(rng), u(rng));
@@ -261,7 +265,8 @@ TEST(HotPathVsCgal, PlaneThroughAVertex) {
   std::uniform_int_distribution<int> sides(3, 12);
   for (int trial = 0; trial < 200; ++trial) {
     const Vec3 en = random_unit(rng);
-    const Emitter e = polygon_emitter(random_convex_polygon(rng, sides(rng), Vec3(0.3, -0.2, 2.0), en, 1.0), en);
+    const Emitter e =
+        polygon_emitter(random_convex_polygon(rng, sides(rng), Vec3(0.3, -0.2, 2.0), en, 1.0), en);
     const Vec3& vtx = e.vertices[trial % e.vertices.size()];
     check_against_exact(e, vtx, random_unit(rng), "at vertex, trial " + std::to_string(trial));
     // Horizon z = vtx.z exactly (an axis-aligned normal keeps h exact in binary).
@@ -300,7 +305,8 @@ TEST(HotPathVsCgal, PolygonInTheHorizonPlane) {
   std::mt19937_64 rng(11);
   for (int n : {3, 4, 17, kMaxDiskSegments}) {
     const Vec3 up(0.0, 0.0, 1.0);
-    const Emitter e = polygon_emitter(random_convex_polygon(rng, n, Vec3(0.0, 0.0, 3.0), up, 1.0), up);
+    const Emitter e =
+        polygon_emitter(random_convex_polygon(rng, n, Vec3(0.0, 0.0, 3.0), up, 1.0), up);
     for (const Vec3& point : {Vec3(0.0, 0.0, 3.0), Vec3(5.0, 1.0, 3.0)}) {
       const OpeningPolygon p = clip_to_horizon(e, point, up);
       EXPECT_EQ(p.n, n);
@@ -320,18 +326,20 @@ TEST(HotPathVsCgal, TiltedPolygonNearlyInTheHorizonPlaneStaysInCapacity) {
   for (int trial = 0; trial < 50; ++trial) {
     const Vec3 en = random_unit(rng);
     const Vec3 centre(1.25, -0.5, 2.0);
-    const Emitter e = polygon_emitter(random_convex_polygon(rng, kMaxDiskSegments, centre, en, 1.0), en);
+    const Emitter e =
+        polygon_emitter(random_convex_polygon(rng, kMaxDiskSegments, centre, en, 1.0), en);
     const OpeningPolygon p = clip_to_horizon(e, e.vertices[5], en);
     ASSERT_LE(p.n, static_cast<int>(e.vertices.size()) + 1) << "trial " << trial;
     for (int i = 0; i < p.n; ++i) EXPECT_NEAR(glm::dot(p.v[i], en), 0.0, 1e-12);
     // With the shift the receiver leaves the plane to the side its rounded distance has: in
     // front it faces away (nothing visible); behind, it sees the whole back of the polygon.
     const ReceiverFan fan = build_fan(e, e.vertices[5], en, horizon_shift_m(e));
-    if (fan.front) EXPECT_EQ(fan.triangles, 0) << "trial " << trial << " plane distance "
-                                               << fan.plane_distance << " shift "
-                                               << horizon_shift_m(e) << " cp case "
-                                               << static_cast<int>(fan.cp_case);
-    else EXPECT_GE(fan.triangles, kMaxDiskSegments - 2) << "trial " << trial;
+    if (fan.front)
+      EXPECT_EQ(fan.triangles, 0) << "trial " << trial << " plane distance " << fan.plane_distance
+                                  << " shift " << horizon_shift_m(e) << " cp case "
+                                  << static_cast<int>(fan.cp_case);
+    else
+      EXPECT_GE(fan.triangles, kMaxDiskSegments - 2) << "trial " << trial;
     EXPECT_LE(fan.triangles, kMaxDiskSegments) << "trial " << trial;
   }
 }

@@ -8,8 +8,8 @@
 
 #include "calc/nearfield/illuminance.h"
 #include "calc/nearfield/models.h"
-#include "photometry/photometry.h"
 #include "nearfield_test_support.h"
+#include "photometry/photometry.h"
 
 namespace luxgrid::nearfield {
 namespace {
@@ -56,9 +56,14 @@ TEST(Reference, AgreesWithLambertOnCosineEmitter) {
 TEST(PaperCubature, ReproducesIssueFigures) {
   // Issue 5: uniform 1 x 1 emitter, -6 % at distance 1 and -28 % at 0.1 below its centre;
   // batwing +9 % at 1 and -15 % at 0.1 (measured with an independent re-implementation).
-  struct Case { double h; photometry::DistributionPtr d; double expected_rel; };
-  for (const Case& c : {Case{1.0, testing::lambertian(), -0.06}, Case{0.1, testing::lambertian(), -0.28},
-                        Case{1.0, testing::batwing(), 0.09}, Case{0.1, testing::batwing(), -0.15}}) {
+  struct Case {
+    double h;
+    photometry::DistributionPtr d;
+    double expected_rel;
+  };
+  for (const Case& c :
+       {Case{1.0, testing::lambertian(), -0.06}, Case{0.1, testing::lambertian(), -0.28},
+        Case{1.0, testing::batwing(), 0.09}, Case{0.1, testing::batwing(), -0.15}}) {
     const Emitter e = paper_emitter(c.h, kPi, c.d);
     const double ref = reference_illuminance(e, Vec3(0.0), kUp, 1e-8).illuminance_lx;
     const double rel = paper_cubature_illuminance(e, Vec3(0.0), kUp) / ref - 1.0;
@@ -72,8 +77,10 @@ TEST(Ladder, SubdivisionConverges) {
   for (auto dist : {testing::lambertian(), testing::batwing()}) {
     const Emitter e = paper_emitter(0.1, kPi, dist);
     const double ref = reference_illuminance(e, Vec3(0.0), kUp, 1e-9).illuminance_lx;
-    double e4 = std::abs(subdivided_illuminance(e, Vec3(0.0), kUp, 16, TriangleRule::paper) / ref - 1);
-    double e5 = std::abs(subdivided_illuminance(e, Vec3(0.0), kUp, 32, TriangleRule::paper) / ref - 1);
+    double e4 =
+        std::abs(subdivided_illuminance(e, Vec3(0.0), kUp, 16, TriangleRule::paper) / ref - 1);
+    double e5 =
+        std::abs(subdivided_illuminance(e, Vec3(0.0), kUp, 32, TriangleRule::paper) / ref - 1);
     EXPECT_LT(e4, 0.016);
     EXPECT_LT(e5, e4 / 3.0);
     EXPECT_LT(e5, 0.004);
@@ -87,8 +94,10 @@ TEST(Ladder, LambertRulesAreExactForUniformEmitter) {
       for (Vec3 p : {Vec3(0.0), Vec3(0.4, 0.45, 0.0), Vec3(2.0, -1.0, 0.0)}) {
         const double exact = lambert_uniform_illuminance(e, p, kUp, 1000.0);
         // In the emitter plane the horizon shift (1.4e-6 m) is the only difference.
-        const double tol = 1e-9 * exact + (p.x == 0.0 && theta == kPi / 2 ? 1e-5 * 1000.0 / (h * h) : 1e-12);
-        for (TriangleRule rule : {TriangleRule::lambert_mean, TriangleRule::lambert_product, TriangleRule::two_kernel})
+        const double tol =
+            1e-9 * exact + (p.x == 0.0 && theta == kPi / 2 ? 1e-5 * 1000.0 / (h * h) : 1e-12);
+        for (TriangleRule rule :
+             {TriangleRule::lambert_mean, TriangleRule::lambert_product, TriangleRule::two_kernel})
           EXPECT_NEAR(subdivided_illuminance(e, p, kUp, 1, rule), exact, tol);
         EXPECT_NEAR(standard_illuminance(e, p, kUp), exact, tol);
       }
@@ -96,7 +105,8 @@ TEST(Ladder, LambertRulesAreExactForUniformEmitter) {
 }
 
 TEST(Standard, WithinOnePercentOfReferenceOnProtocolSample) {
-  for (auto dist : {testing::lambertian(), testing::batwing(), testing::spot(1000.0, 10.0), testing::isotropic()})
+  for (auto dist : {testing::lambertian(), testing::batwing(), testing::spot(1000.0, 10.0),
+                    testing::isotropic()})
     for (double h : {0.1, 1.0, 2.5})
       for (double theta : {kPi / 2, 5 * kPi / 8, 3 * kPi / 4, 7 * kPi / 8, kPi}) {
         const Emitter e = paper_emitter(h, theta, dist);
@@ -123,8 +133,8 @@ TEST(Standard, WithinOnePercentOfReferenceOnProtocolSample) {
 // The floor is 100x below the 1 % claim on the study's measure; every point brighter than 1e-3
 // of the peak is within 1 % of its own value (measured worst 0.79 %, printed below).
 TEST(Standard, WithinOnePercentOfReferenceOnProtocolSampleWithLdtSpot) {
-  const auto spot = photometry::load_photometry_file(std::string(LUXGRID_SOURCE_DIR) +
-                                                     "/tests/data/photometry/ldt/zumtobel_arcos3_isym1.ldt");
+  const auto spot = photometry::load_photometry_file(
+      std::string(LUXGRID_SOURCE_DIR) + "/tests/data/photometry/ldt/zumtobel_arcos3_isym1.ldt");
   double worst = 0.0;
   for (auto dist : {spot.distribution, testing::batwing(), testing::lambertian()})
     for (double h : {0.1, 1.0, 2.5})
@@ -145,7 +155,8 @@ TEST(Standard, WithinOnePercentOfReferenceOnProtocolSampleWithLdtSpot) {
               << h << " " << theta << " " << points[k].x << " " << points[k].y;
           if (refs[k] > 1e-3 * max_ref) {
             worst = std::max(worst, std::abs(got / refs[k] - 1.0));
-            EXPECT_NEAR(got, refs[k], 0.01 * refs[k]) << h << " " << theta << " " << points[k].x << " " << points[k].y;
+            EXPECT_NEAR(got, refs[k], 0.01 * refs[k])
+                << h << " " << theta << " " << points[k].x << " " << points[k].y;
           }
         }
       }
@@ -156,7 +167,8 @@ TEST(FarField, InverseSquareCosine) {
   const Emitter e = paper_emitter(2.0, kPi, testing::isotropic(500.0));
   EXPECT_DOUBLE_EQ(far_field_illuminance(e, Vec3(0.0), kUp), 500.0 / 4.0);
   // 45 degrees: cos / d^2 with d^2 = 8.
-  EXPECT_NEAR(far_field_illuminance(e, Vec3(2.0, 0.0, 0.0), kUp), 500.0 * std::sqrt(0.5) / 8.0, 1e-12);
+  EXPECT_NEAR(far_field_illuminance(e, Vec3(2.0, 0.0, 0.0), kUp), 500.0 * std::sqrt(0.5) / 8.0,
+              1e-12);
   EXPECT_EQ(far_field_illuminance(e, Vec3(0.0, 0.0, 3.0), kUp), 0.0);  // behind the receiver
 }
 
@@ -184,7 +196,8 @@ TEST(Ladder, TwoKernelRuleIsExactForIsotropicEmitter) {
       const Emitter e = paper_emitter(h, theta, testing::isotropic(1000.0));
       for (Vec3 p : {Vec3(0.0), Vec3(0.4, 0.45, 0.0), Vec3(2.0, -1.0, 0.0)}) {
         const double ref = reference_illuminance(e, p, kUp, 1e-10).illuminance_lx;
-        EXPECT_NEAR(subdivided_illuminance(e, p, kUp, 1, TriangleRule::two_kernel), ref, 1e-7 * ref);
+        EXPECT_NEAR(subdivided_illuminance(e, p, kUp, 1, TriangleRule::two_kernel), ref,
+                    1e-7 * ref);
       }
     }
 }

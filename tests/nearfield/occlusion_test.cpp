@@ -75,9 +75,13 @@ TEST(Occlusion, HalfHiddenPanelGivesLambertOfItsVisiblePart) {
     const double full = lambert_uniform_illuminance(e, r, kUp, kI0);
     ASSERT_GT(exact, 0.05 * full) << x;
     ASSERT_LT(exact, 0.98 * full) << x;  // really a partial shadow
-    EXPECT_NEAR(illuminance(e, r, kUp, Model::standard(), &screen), exact, kStandardTol * exact) << x;
-    EXPECT_NEAR(illuminance(e, r, kUp, Model::adaptive(1e-3), &screen), exact, kStandardTol * exact) << x;
-    EXPECT_NEAR(illuminance(e, r, kUp, Model::reference(1e-5), &screen), exact, kReferenceTol * exact) << x;
+    EXPECT_NEAR(illuminance(e, r, kUp, Model::standard(), &screen), exact, kStandardTol * exact)
+        << x;
+    EXPECT_NEAR(illuminance(e, r, kUp, Model::adaptive(1e-3), &screen), exact, kStandardTol * exact)
+        << x;
+    EXPECT_NEAR(illuminance(e, r, kUp, Model::reference(1e-5), &screen), exact,
+                kReferenceTol * exact)
+        << x;
   }
 }
 
@@ -92,7 +96,8 @@ TEST(Occlusion, FullyHiddenGivesZeroFullyVisibleGivesTheUnoccludedValue) {
     const Vec3 r(0.1, -0.2, 0.0);
     EXPECT_EQ(illuminance(e, r, kUp, m, &wall), 0.0) << to_string(m);
     EXPECT_EQ(illuminance(e, r, kUp, m, &open), illuminance(e, r, kUp, m)) << to_string(m);
-    EXPECT_EQ(hybrid_illuminance(e, r, kUp, m, NearFieldSwitch::automatic, &wall), 0.0) << to_string(m);
+    EXPECT_EQ(hybrid_illuminance(e, r, kUp, m, NearFieldSwitch::automatic, &wall), 0.0)
+        << to_string(m);
   }
   // Behind the screen's shadow: x_c <= -0.5 once R.x >= 0.1 + 0.6 = 0.7.
   for (double x : {0.8, 1.5}) {

@@ -32,7 +32,7 @@ Vec3 random_unit(std::mt19937_64& rng) {
 double distance_to_polygon(const Emitter& e, const Vec3& p) {
   const auto& v = e.vertices;
   const double h = glm::dot(p - e.centroid, e.normal);
-  const Vec3 q = p - h * e.normal;  // p projected into the plane
+  const Vec3 q = p - h * e.normal;   // p projected into the plane
   bool left = false, right = false;  // q on the left / right of some edge (either orientation)
   double best = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < v.size(); ++i) {
@@ -64,8 +64,9 @@ TEST(Randomized, ConfigurationsAreFiniteNonNegativeAndWithinTheIntensityBound) {
   constexpr int kConfigurations = 100'000;
   std::mt19937_64 rng(20240605);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  const photometry::DistributionPtr dists[] = {testing::lambertian(), testing::isotropic(), testing::batwing(),
-                                               testing::spot(), std::make_shared<ZeroPatchDistribution>(800.0)};
+  const photometry::DistributionPtr dists[] = {testing::lambertian(), testing::isotropic(),
+                                               testing::batwing(), testing::spot(),
+                                               std::make_shared<ZeroPatchDistribution>(800.0)};
   double i_max[5];
   for (int d = 0; d < 5; ++d) i_max[d] = max_intensity(*dists[d]);
   // The bound is loose almost everywhere (cos(theta_r) and the spread over the opening); 2 %
@@ -78,13 +79,15 @@ TEST(Randomized, ConfigurationsAreFiniteNonNegativeAndWithinTheIntensityBound) {
     static thread_local Emitter e;
     if (k % 64 == 0) {
       photometry::LuminousOpening o;
-      o.shape = u(rng) < 0.2 ? photometry::LuminousOpening::Shape::disk : photometry::LuminousOpening::Shape::rectangle;
+      o.shape = u(rng) < 0.2 ? photometry::LuminousOpening::Shape::disk
+                             : photometry::LuminousOpening::Shape::rectangle;
       const double scale = std::pow(10.0, -3.0 + 6.0 * u(rng));
       o.length = scale * (0.05 + u(rng));
       o.width = scale * (0.05 + u(rng));
       const Vec3 axis = random_unit(rng);
       const glm::dmat3 r = glm::dmat3(glm::rotate(glm::dmat4(1.0), 2 * kPi * u(rng), axis));
-      e = make_emitter(o, Vec3(u(rng), u(rng), u(rng)) * scale, r, dists[k / 64 % 5], 3 + int(u(rng) * 30));
+      e = make_emitter(o, Vec3(u(rng), u(rng), u(rng)) * scale, r, dists[k / 64 % 5],
+                       3 + int(u(rng) * 30));
     }
     const double size = e.largest_dimension_m;
     Vec3 p;

@@ -35,8 +35,8 @@ TEST(ReferencePeak, NarrowSpotUnderTheOpening) {
   // covers a disc of about 9 mm radius around each receiver's foot point. Before the peak guard
   // the reference returned 310.2 lx here (its interior nodes never saw the beam), with an error
   // estimate of 1e-6.
-  const auto ph = photometry::load_photometry_file(std::string(LUXGRID_SOURCE_DIR) +
-                                                   "/tests/data/photometry/ies/erco_qrcbc35_lm86_spot.ies");
+  const auto ph = photometry::load_photometry_file(
+      std::string(LUXGRID_SOURCE_DIR) + "/tests/data/photometry/ies/erco_qrcbc35_lm86_spot.ies");
   const Emitter e = testing::paper_emitter(0.1, kPi, ph.distribution);
   for (const Vec3 p : {Vec3(-0.31, -0.31, 0.0), Vec3(0.1, 0.05, 0.0), Vec3(-0.45, 0.2, 0.0)}) {
     // 1500 x 1500 cells of 0.67 mm resolve the 9 mm beam: the midpoint rule is then good to far

@@ -19,7 +19,8 @@ namespace luxgrid::nearfield {
 namespace {
 
 photometry::DistributionPtr corpus(const std::string& relative) {
-  return photometry::load_photometry_file(std::string(LUXGRID_SOURCE_DIR) + "/tests/data/photometry/" + relative)
+  return photometry::load_photometry_file(std::string(LUXGRID_SOURCE_DIR) +
+                                          "/tests/data/photometry/" + relative)
       .distribution;
 }
 
@@ -48,7 +49,8 @@ std::vector<FileCase> files() {
       {"intro (isym 0)", corpus("ldt/zumtobel_intro_isym0.ldt")},
       {"arcos3 (rotational)", corpus("ldt/zumtobel_arcos3_isym1.ldt")},
       {"acme road (irregular C and gamma lists)", corpus("ldt/acme_road_dc0_dg0_isym3.ldt")},
-      {"crossign (light on both sides, 1 deg gamma)", corpus("ldt/zumtobel_crossign_isym3_nonascii.ldt")},
+      {"crossign (light on both sides, 1 deg gamma)",
+       corpus("ldt/zumtobel_crossign_isym3_nonascii.ldt")},
       {"erco spot (IES, half intensity at 5 deg)", corpus("ies/erco_qrcbc35_lm86_spot.ies")},
       {"mirel x 2.5 (scaled)", std::make_shared<calc::ScaledDistribution>(mirel, 2.5)},
   };
@@ -59,7 +61,8 @@ TEST(TableRung, OnlyForTabulatedDistributions) {
   const Emitter analytic = testing::paper_emitter(1.0, kPi, testing::batwing());
   EXPECT_FALSE(table_aligned_illuminance(analytic, Vec3(0.0), testing::kUp, lux));
   EXPECT_EQ(lux, 7.0);
-  const Emitter tabulated = testing::paper_emitter(1.0, kPi, corpus("ldt/zumtobel_mirel_isym4.ldt"));
+  const Emitter tabulated =
+      testing::paper_emitter(1.0, kPi, corpus("ldt/zumtobel_mirel_isym4.ldt"));
   EXPECT_TRUE(table_aligned_illuminance(tabulated, Vec3(0.0), testing::kUp, lux));
   EXPECT_GT(lux, 0.0);
 }
@@ -90,7 +93,8 @@ double brute_force(const Emitter& e, const Vec3& p, const Vec3& n, int n_psi, in
       const double d2 = glm::dot(r, r);
       const Vec3 w = r / std::sqrt(d2);
       const double cos_r = glm::dot(w, n);
-      if (cos_r > 0.0) sum += e.intensity_towards(-w) * cos_r / d2 * 0.5 * (rb * rb - ra * ra) * 2.0 * kPi / n_psi;
+      if (cos_r > 0.0)
+        sum += e.intensity_towards(-w) * cos_r / d2 * 0.5 * (rb * rb - ra * ra) * 2.0 * kPi / n_psi;
     }
   }
   return sum / e.area_m2;
@@ -99,7 +103,8 @@ double brute_force(const Emitter& e, const Vec3& p, const Vec3& n, int n_psi, in
 TEST(TableRung, IsStandardAndHighForTablesOnly) {
   // quality standard and high both use the table rung on a measured table (it is the most
   // accurate rung there); on an analytic profile high stays the adaptive rung at 1e-3.
-  const Emitter table = testing::paper_emitter(0.3, 3 * kPi / 4, corpus("ldt/zumtobel_mirel_isym4.ldt"));
+  const Emitter table =
+      testing::paper_emitter(0.3, 3 * kPi / 4, corpus("ldt/zumtobel_mirel_isym4.ldt"));
   const Emitter analytic = testing::paper_emitter(0.3, 3 * kPi / 4, testing::batwing());
   for (const Vec3 p : {Vec3(0.2, 0.1, 0.0), Vec3(-1.0, 0.7, 0.0)}) {
     const double rung = table_rung(table, p, testing::kUp);
@@ -156,7 +161,8 @@ TEST(TableRung, MatchesTheReferenceOnRandomConfigurations) {
       ++adjudicated;
       const double brute = brute_force(emitters[k], points[k], normals[k], 3000, 3000);
       EXPECT_NEAR(got[k], brute, 5e-4 * brute + 1e-7 * scale)
-          << f.name << ", configuration " << k << ": reference " << truth[k] << ", brute force " << brute;
+          << f.name << ", configuration " << k << ": reference " << truth[k] << ", brute force "
+          << brute;
     }
     // The reference is right nearly everywhere: at most 2 of 24 configurations need the judge.
     EXPECT_LE(adjudicated, 2) << f.name;
@@ -175,8 +181,10 @@ TEST(TableRung, CloseRangeAgainstABruteForceIntegral) {
     Vec3 p, n;
   };
   const Case cases[] = {
-      {"ies/erco_qrcbc35_lm86_spot.ies", Vec3(0.0118263, 0.0286537, -0.00322989), Vec3(-0.862965, -0.432039, 0.261981)},
-      {"ldt/zumtobel_intro_isym0.ldt", Vec3(-0.0654328, 0.0231952, 0.00579453), Vec3(0.892454, -0.450254, -0.028227)},
+      {"ies/erco_qrcbc35_lm86_spot.ies", Vec3(0.0118263, 0.0286537, -0.00322989),
+       Vec3(-0.862965, -0.432039, 0.261981)},
+      {"ldt/zumtobel_intro_isym0.ldt", Vec3(-0.0654328, 0.0231952, 0.00579453),
+       Vec3(0.892454, -0.450254, -0.028227)},
   };
   photometry::LuminousOpening o;
   o.shape = photometry::LuminousOpening::Shape::rectangle;
@@ -204,7 +212,8 @@ TEST(TableRung, TabulatedCosineMatchesLambertsFormula) {
   for (double h : {0.01, 0.1, 1.0, 2.5})
     for (double theta : {kPi / 2, 5 * kPi / 8, 3 * kPi / 4, 7 * kPi / 8, kPi}) {
       const Emitter e = testing::paper_emitter(h, theta, table);
-      for (const Vec3 p : {Vec3(0.0), Vec3(0.31, -0.2, 0.0), Vec3(-1.7, 0.9, 0.0), Vec3(0.5, 0.5, 0.0)}) {
+      for (const Vec3 p :
+           {Vec3(0.0), Vec3(0.31, -0.2, 0.0), Vec3(-1.7, 0.9, 0.0), Vec3(0.5, 0.5, 0.0)}) {
         const double exact = lambert_uniform_illuminance(e, p, testing::kUp, 1000.0 / e.area_m2);
         // 1e-2 lx: a receiver in the emitter's plane (theta = pi / 2 puts the origin there) is
         // moved 1e-6 of the size off it by the horizon shift and sees ~1e-3 lx; Lambert's formula
@@ -218,13 +227,16 @@ TEST(TableRung, TabulatedCosineMatchesLambertsFormula) {
 TEST(TableRung, HardCasesStayFiniteAndContinuous) {
   // Receivers in the emitter's plane and 1e-12 to 1e-2 m off it on either side, at the centre, on
   // an edge, on a corner and beyond the outline, for a file that emits on both sides.
-  const Emitter e = testing::paper_emitter(1.0, kPi, corpus("ldt/zumtobel_crossign_isym3_nonascii.ldt"));
+  const Emitter e =
+      testing::paper_emitter(1.0, kPi, corpus("ldt/zumtobel_crossign_isym3_nonascii.ldt"));
   const std::vector<Vec3> in_plane = {Vec3(0.0, 0.0, 1.0), Vec3(0.5, 0.0, 1.0), Vec3(0.5, 0.5, 1.0),
                                       Vec3(0.8, 0.1, 1.0), Vec3(0.2, 0.3, 1.0)};
-  const std::vector<Vec3> normals = {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(1, 0, 0), glm::normalize(Vec3(1, 1, -1))};
+  const std::vector<Vec3> normals = {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(1, 0, 0),
+                                     glm::normalize(Vec3(1, 1, -1))};
   for (const Vec3& base : in_plane)
     for (const Vec3& n : normals) {
-      for (double offset : {0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6, -1e-6, 1e-3, -1e-3, 1e-2, -1e-2}) {
+      for (double offset :
+           {0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6, -1e-6, 1e-3, -1e-3, 1e-2, -1e-2}) {
         const double v = table_rung(e, base + Vec3(0.0, 0.0, offset), n);
         EXPECT_TRUE(std::isfinite(v) && v >= 0.0) << v;
       }
@@ -235,7 +247,8 @@ TEST(TableRung, HardCasesStayFiniteAndContinuous) {
       for (double h : {1e-2, -1e-2, 0.1, -0.1}) {
         const Vec3 p = base + Vec3(0.0, 0.0, h);
         const double v = table_rung(e, p, n), w = table_rung(e, p + Vec3(1e-6, 1e-6, 0.0), n);
-        EXPECT_NEAR(w, v, 1e-5 / std::abs(h) * std::max(v, w) + 1e-12) << "at " << p.x << ", " << p.y << ", " << p.z;
+        EXPECT_NEAR(w, v, 1e-5 / std::abs(h) * std::max(v, w) + 1e-12)
+            << "at " << p.x << ", " << p.y << ", " << p.z;
       }
     }
 }

@@ -73,15 +73,17 @@ TEST(BadInput, MissingFileNamesIt) {
 // Every prefix of a real file either reads or throws InputError (never crashes or hangs): a
 // cheap, deterministic cousin of the fuzzers in fuzz/.
 TEST(BadInput, EveryTruncationOfARealFileIsHandled) {
-  for (const char* rel : {"ies/lithonia_esg_iesna91_commas.ies", "ldt/zumtobel_mirel_isym4.ldt",
-                          "ies/synthetic_tilt_include_lm02.ies", "ies/mdl_test_iesna91_typeb.ies"}) {
+  for (const char* rel :
+       {"ies/lithonia_esg_iesna91_commas.ies", "ldt/zumtobel_mirel_isym4.ldt",
+        "ies/synthetic_tilt_include_lm02.ies", "ies/mdl_test_iesna91_typeb.ies"}) {
     const auto path = std::filesystem::path(LUXGRID_SOURCE_DIR) / "tests/data/photometry" / rel;
     std::ifstream in(path, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     ASSERT_FALSE(bytes.empty());
     for (std::size_t n = 0; n < bytes.size(); n += 7) {
       try {
-        const Photometry p = load_photometry_text(std::string_view(bytes).substr(0, n), path.filename().string());
+        const Photometry p =
+            load_photometry_text(std::string_view(bytes).substr(0, n), path.filename().string());
         EXPECT_TRUE(p.distribution);
       } catch (const InputError&) {
       }

@@ -62,8 +62,9 @@ TEST(Interpolation, ExactAtMeasuredAngles) {
 TEST(Interpolation, ExactAtTheFilesOwnNumbers) {
   // lithonia_esg: multiplier 1; plane C0 starts 166 160 125 (gamma 0, 2.5, 5); plane C22.5 at
   // gamma 2.5 is 158; the quadrant mirror puts the C22.5 plane at C157.5, C202.5 and C337.5.
-  const Photometry p = load_photometry_file(std::filesystem::path(LUXGRID_SOURCE_DIR) /
-                                            "tests/data/photometry/ies/lithonia_esg_iesna91_commas.ies");
+  const Photometry p =
+      load_photometry_file(std::filesystem::path(LUXGRID_SOURCE_DIR) /
+                           "tests/data/photometry/ies/lithonia_esg_iesna91_commas.ies");
   for (Interpolation mode : kModes) {
     const auto t = p.table->with_interpolation(mode);
     EXPECT_DOUBLE_EQ(t->intensity_at(0, 0), 166);
@@ -87,7 +88,8 @@ TEST(Interpolation, ContinuousAcrossC0AndAtThePoles) {
         const double g = gamma(rng);
         const Vec3 a = glm::normalize(Vec3(std::sin(g), 1e-10, -std::cos(g)));
         const Vec3 b = glm::normalize(Vec3(std::sin(g), -1e-10, -std::cos(g)));
-        ASSERT_NEAR(t->intensity(a), t->intensity(b), 1e-6 * scale) << f.filename() << " gamma " << g;
+        ASSERT_NEAR(t->intensity(a), t->intensity(b), 1e-6 * scale)
+            << f.filename() << " gamma " << g;
       }
       // Towards each pole from every side.
       for (double z : {-1.0, 1.0}) {
@@ -117,9 +119,7 @@ TEST(Interpolation, SymmetricFilesGiveSymmetricLookups) {
         auto at = [&](double cc) { return t->intensity(direction_of(cc, g)); };
         const double tol = 1e-7 * scale;
         switch (p.symmetry) {
-          case Symmetry::rotational:
-            ASSERT_NEAR(at(c + 1.234), v, tol) << f.filename();
-            break;
+          case Symmetry::rotational: ASSERT_NEAR(at(c + 1.234), v, tol) << f.filename(); break;
           case Symmetry::quadrant:
             ASSERT_NEAR(at(kPi - c), v, tol) << f.filename();
             ASSERT_NEAR(at(kPi + c), v, tol) << f.filename();
@@ -131,8 +131,7 @@ TEST(Interpolation, SymmetricFilesGiveSymmetricLookups) {
           case Symmetry::bilateral_c90_c270:
             ASSERT_NEAR(at(kPi - c), v, tol) << f.filename();
             break;
-          case Symmetry::none:
-            break;
+          case Symmetry::none: break;
         }
       }
     }
@@ -180,7 +179,7 @@ SphericalGrid constant_grid(double i0, std::vector<double> c_deg, std::vector<do
 TEST(Flux, ConstantTableIsFourPiI) {
   const double i0 = 123.456;
   const std::vector<SphericalGrid> grids = {
-      constant_grid(i0, {0}, {0, 180}),                                  // two rows, one plane
+      constant_grid(i0, {0}, {0, 180}),                                   // two rows, one plane
       constant_grid(i0, {0, 90, 180, 270}, {0, 5, 10, 45, 90, 91, 180}),  // irregular
       constant_grid(i0, {0, 7, 100, 200, 359}, {0, 30, 60, 90, 120, 150, 180})};
   for (const auto& g : grids)
@@ -205,8 +204,10 @@ TEST(Flux, CosineOnTheLowerHemisphereIsPiI0) {
   }
   g.cd.back() = 0.0;
   const double exact = kPi * i0;
-  EXPECT_NEAR(integrate_flux(TabularDistribution(g, Interpolation::bilinear)).total_lm, exact, 3e-5 * exact);
-  EXPECT_NEAR(integrate_flux(TabularDistribution(g, Interpolation::bicubic)).total_lm, exact, 1e-8 * exact);
+  EXPECT_NEAR(integrate_flux(TabularDistribution(g, Interpolation::bilinear)).total_lm, exact,
+              3e-5 * exact);
+  EXPECT_NEAR(integrate_flux(TabularDistribution(g, Interpolation::bicubic)).total_lm, exact,
+              1e-8 * exact);
   Photometry lambert;
   lambert.distribution = std::make_shared<LambertianDistribution>(i0);
   const DerivedPhotometry d = derive(lambert);
@@ -216,10 +217,12 @@ TEST(Flux, CosineOnTheLowerHemisphereIsPiI0) {
 
 TEST(Flux, IsotropicTwoPlaneFileIsFourPi) {
   // MANIFEST: opple_mtd is 1 cd everywhere in two planes {0, 90}: 4 pi lm exactly.
-  const Photometry p = load_photometry_file(std::filesystem::path(LUXGRID_SOURCE_DIR) /
-                                            "tests/data/photometry/ies/opple_mtd0700312_lm02_h0_90.ies");
+  const Photometry p =
+      load_photometry_file(std::filesystem::path(LUXGRID_SOURCE_DIR) /
+                           "tests/data/photometry/ies/opple_mtd0700312_lm02_h0_90.ies");
   for (Interpolation mode : kModes)
-    EXPECT_NEAR(integrate_flux(*p.table->with_interpolation(mode)).total_lm, 4 * kPi, 1e-9 * 4 * kPi);
+    EXPECT_NEAR(integrate_flux(*p.table->with_interpolation(mode)).total_lm, 4 * kPi,
+                1e-9 * 4 * kPi);
 }
 
 TEST(TypeB, MapsIntoTheLuminaireFrame) {
@@ -229,13 +232,13 @@ TEST(TypeB, MapsIntoTheLuminaireFrame) {
                                             "tests/data/photometry/ies/mdl_test_iesna91_typeb.ies");
   const auto& t = *p.distribution;
   const double s = std::sqrt(0.5);
-  EXPECT_NEAR(t.intensity({1, 0, 0}), 0.6, 1e-12);     // H 0, V 90
-  EXPECT_NEAR(t.intensity({-1, 0, 0}), 0.5, 1e-12);    // H 0, V -90
-  EXPECT_NEAR(t.intensity({s, -s, 0}), 0.8, 1e-12);    // H 45, V 90
-  EXPECT_NEAR(t.intensity({-s, s, 0}), 0.3, 1e-12);    // H -45, V -90
-  EXPECT_NEAR(t.intensity({0, -1, 0}), 0.95, 1e-12);   // H 90 is one direction: the mean
-  EXPECT_NEAR(t.intensity({0, 0, -1}), 0.55, 1e-12);   // the aim, halfway between V = -+90
-  EXPECT_NEAR(t.intensity({0, 0, 1}), 0.0, 1e-12);     // behind the floodlight: no data
+  EXPECT_NEAR(t.intensity({1, 0, 0}), 0.6, 1e-12);    // H 0, V 90
+  EXPECT_NEAR(t.intensity({-1, 0, 0}), 0.5, 1e-12);   // H 0, V -90
+  EXPECT_NEAR(t.intensity({s, -s, 0}), 0.8, 1e-12);   // H 45, V 90
+  EXPECT_NEAR(t.intensity({-s, s, 0}), 0.3, 1e-12);   // H -45, V -90
+  EXPECT_NEAR(t.intensity({0, -1, 0}), 0.95, 1e-12);  // H 90 is one direction: the mean
+  EXPECT_NEAR(t.intensity({0, 0, -1}), 0.55, 1e-12);  // the aim, halfway between V = -+90
+  EXPECT_NEAR(t.intensity({0, 0, 1}), 0.0, 1e-12);    // behind the floodlight: no data
   EXPECT_EQ(p.photometric_type, PhotometricType::B);
 }
 
@@ -261,7 +264,8 @@ TEST(Texture, AgreesWithTheTableAndIsContinuous) {
       // (the step to zero at the end of the data is smeared over one texel).
       EXPECT_LT(sum_err / samples, 0.005 * scale) << rel << " " << to_string(mode);
       for (double z : {-1.0, 1.0})
-        EXPECT_NEAR(tex.intensity(glm::normalize(Vec3(1e-9, 1e-9, z))), tex.intensity({0, 0, z}), 1e-6 * scale);
+        EXPECT_NEAR(tex.intensity(glm::normalize(Vec3(1e-9, 1e-9, z))), tex.intensity({0, 0, z}),
+                    1e-6 * scale);
       EXPECT_NEAR(tex.intensity(glm::normalize(Vec3(1, 1e-12, -1))),
                   tex.intensity(glm::normalize(Vec3(1, -1e-12, -1))), 1e-6 * scale);
     }

@@ -73,8 +73,9 @@ TEST(Opening, CorpusIesFeetAndLdtCircles) {
 }
 
 TEST(Tilt, IncludeIsReadAndInterpolated) {
-  const Photometry p = load_photometry_file(std::filesystem::path(LUXGRID_SOURCE_DIR) /
-                                            "tests/data/photometry/ies/synthetic_tilt_include_lm02.ies");
+  const Photometry p =
+      load_photometry_file(std::filesystem::path(LUXGRID_SOURCE_DIR) /
+                           "tests/data/photometry/ies/synthetic_tilt_include_lm02.ies");
   ASSERT_TRUE(p.tilt);
   EXPECT_EQ(p.tilt->lamp_to_luminaire_geometry, 1);
   EXPECT_EQ(p.tilt->angle_deg, (std::vector<double>{0, 45, 90, 180}));

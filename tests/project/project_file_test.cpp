@@ -5,12 +5,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "project/project_file.h"
-#include "project/project_limits.h"
 #include "calc/scaled_distribution.h"
 #include "geometry/polygon.h"
-#include "temp_folder.h"
+#include "project/project_file.h"
+#include "project/project_limits.h"
 #include "project_error.h"
+#include "temp_folder.h"
 #include "util/error.h"
 
 namespace luxgrid::project {
@@ -44,8 +44,9 @@ TEST(ProjectFile, MinimalProjectLoads) {
 
 TEST(ProjectFile, ArrayExpandsAlongXThenY) {
   auto doc = minimal();
-  doc["luminaires"][0] = {{"photometry", "iso"},
-                          {"array", {{"origin", {1, 1, 2.5}}, {"count", {3, 2}}, {"spacing", {1.0, 0.5}}}}};
+  doc["luminaires"][0] = {
+      {"photometry", "iso"},
+      {"array", {{"origin", {1, 1, 2.5}}, {"count", {3, 2}}, {"spacing", {1.0, 0.5}}}}};
   const Scene s = parse_project(doc, "p.json", ".").scene;
   ASSERT_EQ(s.luminaires.size(), 6u);
   EXPECT_EQ(s.luminaires[1].pose.position, Vec3(2, 1, 2.5));
@@ -55,8 +56,11 @@ TEST(ProjectFile, ArrayExpandsAlongXThenY) {
 
 TEST(ProjectFile, SettingsAreRead) {
   auto doc = minimal();
-  doc["settings"] = {{"quality", "draft"}, {"near_field", "never"}, {"indirect", "off"},
-                     {"bounces", 3}, {"maintenance_factor", 0.8}};
+  doc["settings"] = {{"quality", "draft"},
+                     {"near_field", "never"},
+                     {"indirect", "off"},
+                     {"bounces", 3},
+                     {"maintenance_factor", 0.8}};
   const Scene s = parse_project(doc, "p.json", ".").scene;
   EXPECT_EQ(s.settings.quality, Quality::draft);
   EXPECT_EQ(s.settings.near_field, NearFieldMode::never);
@@ -68,7 +72,8 @@ TEST(ProjectFile, SettingsAreRead) {
 TEST(ProjectFile, MaintenanceFactorFromItsCie97Parts) {
   // MF = LLMF x LSF x LMF x RSMF [CIE97]: 0.9 x 0.98 x 0.95 x 0.94 = 0.787626 (by hand).
   auto doc = minimal();
-  doc["settings"] = {{"maintenance", {{"LLMF", 0.9}, {"LSF", 0.98}, {"LMF", 0.95}, {"RSMF", 0.94}}}};
+  doc["settings"] = {
+      {"maintenance", {{"LLMF", 0.9}, {"LSF", 0.98}, {"LMF", 0.95}, {"RSMF", 0.94}}}};
   const Scene s = parse_project(doc, "p.json", ".").scene;
   EXPECT_NEAR(s.settings.maintenance_factor, 0.787626, 1e-15);
   ASSERT_TRUE(s.settings.maintenance_parts.has_value());
@@ -115,9 +120,9 @@ TEST(ProjectFile, AutoSpacingFollowsEn12464) {
 
 struct BadCase {
   const char* name;
-  const char* pointer;    // JSON pointer to patch (RFC 6902 "add"/"replace" path)
-  const char* value;      // JSON text to put there
-  const char* expected;   // the exact message
+  const char* pointer;   // JSON pointer to patch (RFC 6902 "add"/"replace" path)
+  const char* value;     // JSON text to put there
+  const char* expected;  // the exact message
 };
 
 class ProjectFileBad : public ::testing::TestWithParam<BadCase> {};
@@ -133,7 +138,8 @@ INSTANTIATE_TEST_SUITE_P(
     Messages, ProjectFileBad,
     ::testing::Values(
         BadCase{"unknown_top_key", "/reflectence", "1",
-                "p.json /reflectence: unknown key \"reflectence\" (expected one of: format, luminaires, name, photometry, rooms, settings, surfaces)"},
+                "p.json /reflectence: unknown key \"reflectence\" (expected one of: format, "
+                "luminaires, name, photometry, rooms, settings, surfaces)"},
         BadCase{"wrong_format", "/format", "\"luxgrid-project/2\"",
                 "p.json /format: expected \"luxgrid-project/1\", got \"luxgrid-project/2\""},
         BadCase{"rotation_two_numbers", "/luminaires/0/rotation", "[0, 90]",
@@ -149,96 +155,152 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"reflectance_above_one", "/rooms/0/reflectance", "{\"walls\": 1.2}",
                 "p.json /rooms/0/reflectance/walls: expected a number in [0, 1], got 1.2"},
         BadCase{"reflectance_unknown", "/rooms/0/reflectance", "{\"wall\": 0.5}",
-                "p.json /rooms/0/reflectance/wall: unknown key \"wall\" (expected one of: ceiling, floor, walls)"},
+                "p.json /rooms/0/reflectance/wall: unknown key \"wall\" (expected one of: ceiling, "
+                "floor, walls)"},
         BadCase{"empty_outline", "/rooms/0/outline", "[]",
                 "p.json /rooms/0/outline: expected at least 3 corners, got 0"},
         BadCase{"unknown_photometry", "/luminaires/0/photometry", "\"panel\"",
                 "p.json /luminaires/0/photometry: no photometry entry named \"panel\""},
         BadCase{"negative_spacing", "/surfaces/0/spacing", "-0.25",
                 "p.json /surfaces/0/spacing: expected a positive number, got -0.25"},
-        BadCase{"negative_emitter_size", "/luminaires/0/emitter", "{\"shape\": \"rectangle\", \"size\": [0.6, -0.6]}",
+        BadCase{"negative_emitter_size", "/luminaires/0/emitter",
+                "{\"shape\": \"rectangle\", \"size\": [0.6, -0.6]}",
                 "p.json /luminaires/0/emitter/size: expected two positive sizes in metres"},
         BadCase{"unknown_builtin", "/photometry/iso/builtin", "\"spot\"",
-                "p.json /photometry/iso/builtin: expected \"isotropic\" or \"lambertian\", got \"spot\""},
+                "p.json /photometry/iso/builtin: expected \"isotropic\" or \"lambertian\", got "
+                "\"spot\""},
         BadCase{"missing_file", "/photometry/iso", "\"no/such/file.ies\"",
                 "p.json /photometry/iso: photometry file not found: ./no/such/file.ies"},
         BadCase{"bad_quality", "/settings", "{\"quality\": \"best\"}",
-                "p.json /settings/quality: expected \"draft\", \"standard\", \"high\" or \"reference\", got \"best\""},
-        BadCase{"bounces_zero", "/settings", "{\"bounces\": 0}",
-                "p.json /settings/bounces: expected \"auto\" or a whole number from 1 to 1000, got 0"},
+                "p.json /settings/quality: expected \"draft\", \"standard\", \"high\" or "
+                "\"reference\", got \"best\""},
+        BadCase{
+            "bounces_zero", "/settings", "{\"bounces\": 0}",
+            "p.json /settings/bounces: expected \"auto\" or a whole number from 1 to 1000, got 0"},
         BadCase{"bounces_billion", "/settings", "{\"bounces\": 1e9}",
-                "p.json /settings/bounces: expected \"auto\" or a whole number from 1 to 1000, got 1000000000.0"},
-        BadCase{"array_10000_by_10000", "/luminaires/0", "{\"photometry\": \"iso\", \"array\": {\"origin\": [0,0,2], \"count\": [10000, 10000], \"spacing\": [0.1, 0.1]}}",
-                "p.json /luminaires/0/array/count: the array has 100000000 luminaires, more than the limit of 20000 in a project"},
-        BadCase{"array_count_above_limit", "/luminaires/0", "{\"photometry\": \"iso\", \"array\": {\"origin\": [0,0,2], \"count\": [10001, 1], \"spacing\": [0.1, 0.1]}}",
+                "p.json /settings/bounces: expected \"auto\" or a whole number from 1 to 1000, got "
+                "1000000000.0"},
+        BadCase{"array_10000_by_10000", "/luminaires/0",
+                "{\"photometry\": \"iso\", \"array\": {\"origin\": [0,0,2], \"count\": [10000, "
+                "10000], \"spacing\": [0.1, 0.1]}}",
+                "p.json /luminaires/0/array/count: the array has 100000000 luminaires, more than "
+                "the limit of 20000 in a project"},
+        BadCase{"array_count_above_limit", "/luminaires/0",
+                "{\"photometry\": \"iso\", \"array\": {\"origin\": [0,0,2], \"count\": [10001, 1], "
+                "\"spacing\": [0.1, 0.1]}}",
                 "p.json /luminaires/0/array/count/0: expected a count from 1 to 10000"},
-        BadCase{"luminaires_in_total", "/luminaires/1", "{\"photometry\": \"iso\", \"array\": {\"origin\": [0,0,2], \"count\": [200, 100], \"spacing\": [0.01, 0.01]}}",
-                "p.json /luminaires/1/array/count: the project would have 20001 luminaires, more than the limit of 20000"},
-        BadCase{"array_beyond_coordinates", "/luminaires/0", "{\"photometry\": \"iso\", \"array\": {\"origin\": [0,0,2], \"count\": [10000, 1], \"spacing\": [100, 1]}}",
-                "p.json /luminaires/0/array/spacing: the array reaches x = 999900 m, beyond the limit of 100000 m for coordinates"},
+        BadCase{"luminaires_in_total", "/luminaires/1",
+                "{\"photometry\": \"iso\", \"array\": {\"origin\": [0,0,2], \"count\": [200, 100], "
+                "\"spacing\": [0.01, 0.01]}}",
+                "p.json /luminaires/1/array/count: the project would have 20001 luminaires, more "
+                "than the limit of 20000"},
+        BadCase{"array_beyond_coordinates", "/luminaires/0",
+                "{\"photometry\": \"iso\", \"array\": {\"origin\": [0,0,2], \"count\": [10000, 1], "
+                "\"spacing\": [100, 1]}}",
+                "p.json /luminaires/0/array/spacing: the array reaches x = 999900 m, beyond the "
+                "limit of 100000 m for coordinates"},
         BadCase{"position_far_away", "/luminaires/0/position", "[1e6, 0, 2]",
-                "p.json /luminaires/0/position/0: 1e+06 m is beyond the limit of 100000 m for coordinates and lengths"},
+                "p.json /luminaires/0/position/0: 1e+06 m is beyond the limit of 100000 m for "
+                "coordinates and lengths"},
         BadCase{"outline_far_away", "/rooms/0/outline/2", "[4, -3e5]",
-                "p.json /rooms/0/outline/2/1: -300000 m is beyond the limit of 100000 m for coordinates and lengths"},
+                "p.json /rooms/0/outline/2/1: -300000 m is beyond the limit of 100000 m for "
+                "coordinates and lengths"},
         BadCase{"room_too_high", "/rooms/0/height", "1e300",
-                "p.json /rooms/0/height: 1e+300 m is beyond the limit of 100000 m for coordinates and lengths"},
+                "p.json /rooms/0/height: 1e+300 m is beyond the limit of 100000 m for coordinates "
+                "and lengths"},
         BadCase{"spacing_1e_300", "/surfaces/0/spacing", "1e-300",
-                "p.json /surfaces/0: the grid would have over 1e308 points, more than the limit of 4000000; use a larger spacing"},
+                "p.json /surfaces/0: the grid would have over 1e308 points, more than the limit of "
+                "4000000; use a larger spacing"},
         BadCase{"spacing_1e_100", "/surfaces/0/spacing", "1e-100",
-                "p.json /surfaces/0: the grid would have 6e+200 points, more than the limit of 4000000; use a larger spacing"},
-        BadCase{"emitter_one_nanometre", "/luminaires/0/emitter", "{\"shape\": \"disk\", \"diameter\": 1e-9}",
-                "p.json /luminaires/0/emitter/diameter: expected an emitter size from 0.001 to 1000 m, got 1e-09 m (a smaller source is a \"point\")"},
-        BadCase{"emitter_two_kilometres", "/luminaires/0/emitter", "{\"shape\": \"rectangle\", \"size\": [0.6, 2000]}",
-                "p.json /luminaires/0/emitter/size/1: expected an emitter size from 0.001 to 1000 m, got 2000 m (a smaller source is a \"point\")"},
+                "p.json /surfaces/0: the grid would have 6e+200 points, more than the limit of "
+                "4000000; use a larger spacing"},
+        BadCase{"emitter_one_nanometre", "/luminaires/0/emitter",
+                "{\"shape\": \"disk\", \"diameter\": 1e-9}",
+                "p.json /luminaires/0/emitter/diameter: expected an emitter size from 0.001 to "
+                "1000 m, got 1e-09 m (a smaller source is a \"point\")"},
+        BadCase{"emitter_two_kilometres", "/luminaires/0/emitter",
+                "{\"shape\": \"rectangle\", \"size\": [0.6, 2000]}",
+                "p.json /luminaires/0/emitter/size/1: expected an emitter size from 0.001 to 1000 "
+                "m, got 2000 m (a smaller source is a \"point\")"},
         BadCase{"builtin_too_bright", "/photometry/iso/intensity_cd", "1e12",
-                "p.json /photometry/iso/intensity_cd: expected at most 1e+09 cd (the intensity limit), got 1e+12"},
-        BadCase{"surface_name_too_long", "/surfaces/0/name", "\"xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx\"",
-                "p.json /surfaces/0/name: the surface name is 101 characters long, more than the limit of 100 (it names the surface's output files)"},
+                "p.json /photometry/iso/intensity_cd: expected at most 1e+09 cd (the intensity "
+                "limit), got 1e+12"},
+        BadCase{"surface_name_too_long", "/surfaces/0/name",
+                "\"xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx"
+                "xxxxxxxxxxxxxxxxxxxxx\"",
+                "p.json /surfaces/0/name: the surface name is 101 characters long, more than the "
+                "limit of 100 (it names the surface's output files)"},
         BadCase{"hidden_output_file", "/surfaces/0/name", "\".wp\"",
-                "p.json /surfaces/0/name: surface \".wp\" would write the hidden file .wp.csv; start its name with a letter or digit"},
+                "p.json /surfaces/0/name: surface \".wp\" would write the hidden file .wp.csv; "
+                "start its name with a letter or digit"},
         BadCase{"absolute_photometry_path", "/photometry/iso", "\"/etc/passwd\"",
-                "p.json /photometry/iso: the photometry file /etc/passwd lies outside the project folder; to allow it, set \"settings\": {\"allow_files_outside_project\": true}"},
-        BadCase{"photometry_path_climbs_out", "/photometry/iso", "{\"file\": \"../../x.ies\"}",
-                "p.json /photometry/iso/file: the photometry file ../../x.ies lies outside the project folder; to allow it, set \"settings\": {\"allow_files_outside_project\": true}"},
+                "p.json /photometry/iso: the photometry file /etc/passwd lies outside the project "
+                "folder; to allow it, set \"settings\": {\"allow_files_outside_project\": true}"},
+        BadCase{
+            "photometry_path_climbs_out", "/photometry/iso", "{\"file\": \"../../x.ies\"}",
+            "p.json /photometry/iso/file: the photometry file ../../x.ies lies outside the project "
+            "folder; to allow it, set \"settings\": {\"allow_files_outside_project\": true}"},
         BadCase{"unknown_room", "/surfaces/0/workplane/room", "\"hall\"",
                 "p.json /surfaces/0/workplane/room: no room named \"hall\""},
-        BadCase{"border_too_wide", "/surfaces/0/workplane/border", "1.5",
-                "p.json /surfaces/0/workplane/border: the border leaves no workplane inside the room"},
+        BadCase{
+            "border_too_wide", "/surfaces/0/workplane/border", "1.5",
+            "p.json /surfaces/0/workplane/border: the border leaves no workplane inside the room"},
         BadCase{"huge_grid", "/surfaces/0/spacing", "0.0001",
-                "p.json /surfaces/0: the grid would have 600000000 points, more than the limit of 4000000; use a larger spacing"},
+                "p.json /surfaces/0: the grid would have 600000000 points, more than the limit of "
+                "4000000; use a larger spacing"},
         BadCase{"self_intersecting_outline", "/rooms/0/outline", "[[0,0],[4,3],[4,0],[0,3]]",
-                "p.json /rooms/0/outline: room \"r\": the outline crosses itself (edge 0-1 meets edge 2-3)"},
+                "p.json /rooms/0/outline: room \"r\": the outline crosses itself (edge 0-1 meets "
+                "edge 2-3)"},
         BadCase{"zero_area_outline", "/rooms/0/outline", "[[0,0],[2,0],[4,0]]",
                 "p.json /rooms/0/outline: room \"r\": the outline has zero area"},
         BadCase{"repeated_corner", "/rooms/0/outline", "[[0,0],[4,0],[4,0],[0,3]]",
                 "p.json /rooms/0/outline: room \"r\": corners 1 and 2 coincide"},
-        BadCase{"box_min_above_max", "/rooms/0/obstacles", "[{\"name\": \"cabinet\", \"box\": {\"min\": [1,1,1.8], \"max\": [2,2,0]}}]",
-                "p.json /rooms/0/obstacles/0/box: obstacle \"cabinet\": box min must be below max in x, y and z, got z from 1.8 to 0"},
-        BadCase{"box_flat", "/rooms/0/obstacles", "[{\"box\": {\"min\": [1,1,0], \"max\": [1,2,1]}}]",
-                "p.json /rooms/0/obstacles/0/box: obstacle \"obstacle 0\": box min must be below max in x, y and z, got x from 1 to 1"},
-        BadCase{"obstacle_outside", "/rooms/0/obstacles", "[{\"name\": \"shed\", \"box\": {\"min\": [5,0,0], \"max\": [6,1,2]}}]",
+        BadCase{"box_min_above_max", "/rooms/0/obstacles",
+                "[{\"name\": \"cabinet\", \"box\": {\"min\": [1,1,1.8], \"max\": [2,2,0]}}]",
+                "p.json /rooms/0/obstacles/0/box: obstacle \"cabinet\": box min must be below max "
+                "in x, y and z, got z from 1.8 to 0"},
+        BadCase{"box_flat", "/rooms/0/obstacles",
+                "[{\"box\": {\"min\": [1,1,0], \"max\": [1,2,1]}}]",
+                "p.json /rooms/0/obstacles/0/box: obstacle \"obstacle 0\": box min must be below "
+                "max in x, y and z, got x from 1 to 1"},
+        BadCase{"obstacle_outside", "/rooms/0/obstacles",
+                "[{\"name\": \"shed\", \"box\": {\"min\": [5,0,0], \"max\": [6,1,2]}}]",
                 "p.json /rooms/0/obstacles/0: obstacle \"shed\" lies outside room \"r\""},
-        BadCase{"obstacle_above_ceiling", "/rooms/0/obstacles", "[{\"name\": \"lamp\", \"box\": {\"min\": [1,1,2.5], \"max\": [2,2,3]}}]",
+        BadCase{"obstacle_above_ceiling", "/rooms/0/obstacles",
+                "[{\"name\": \"lamp\", \"box\": {\"min\": [1,1,2.5], \"max\": [2,2,3]}}]",
                 "p.json /rooms/0/obstacles/0: obstacle \"lamp\" lies outside room \"r\""},
-        BadCase{"obstacle_box_and_prism", "/rooms/0/obstacles", "[{\"box\": {\"min\": [1,1,0], \"max\": [2,2,1]}, \"prism\": {}}]",
+        BadCase{"obstacle_box_and_prism", "/rooms/0/obstacles",
+                "[{\"box\": {\"min\": [1,1,0], \"max\": [2,2,1]}, \"prism\": {}}]",
                 "p.json /rooms/0/obstacles/0: expected exactly one of \"box\" or \"prism\""},
-        BadCase{"prism_self_intersecting", "/rooms/0/obstacles", "[{\"name\": \"x\", \"prism\": {\"outline\": [[1,1],[2,2],[2,1],[1,2]], \"z0\": 0, \"z1\": 1}}]",
-                "p.json /rooms/0/obstacles/0/prism/outline: obstacle \"x\": the outline crosses itself (edge 0-1 meets edge 2-3)"},
-        BadCase{"obstacle_unknown_key", "/rooms/0/obstacles", "[{\"box\": {\"min\": [1,1,0], \"max\": [2,2,1], \"rotation\": 30}}]",
-                "p.json /rooms/0/obstacles/0/box/rotation: unknown key \"rotation\" (expected one of: max, min, rotation_z)"},
-        BadCase{"zero_size_plane", "/surfaces/0", "{\"name\": \"w\", \"plane\": {\"origin\": [0,0,0], \"u\": [1,0,0], \"v\": [0,0,1], \"size\": [0, 2]}, \"spacing\": 0.5}",
+        BadCase{"prism_self_intersecting", "/rooms/0/obstacles",
+                "[{\"name\": \"x\", \"prism\": {\"outline\": [[1,1],[2,2],[2,1],[1,2]], \"z0\": 0, "
+                "\"z1\": 1}}]",
+                "p.json /rooms/0/obstacles/0/prism/outline: obstacle \"x\": the outline crosses "
+                "itself (edge 0-1 meets edge 2-3)"},
+        BadCase{"obstacle_unknown_key", "/rooms/0/obstacles",
+                "[{\"box\": {\"min\": [1,1,0], \"max\": [2,2,1], \"rotation\": 30}}]",
+                "p.json /rooms/0/obstacles/0/box/rotation: unknown key \"rotation\" (expected one "
+                "of: max, min, rotation_z)"},
+        BadCase{"zero_size_plane", "/surfaces/0",
+                "{\"name\": \"w\", \"plane\": {\"origin\": [0,0,0], \"u\": [1,0,0], \"v\": "
+                "[0,0,1], \"size\": [0, 2]}, \"spacing\": 0.5}",
                 "p.json /surfaces/0/plane/size: expected two positive sizes in metres"},
         BadCase{"zero_spacing", "/surfaces/0/spacing", "0",
                 "p.json /surfaces/0/spacing: expected a positive number, got 0"},
         BadCase{"bad_quantity", "/surfaces/0/quantity", "\"semicylindrical\"",
-                "p.json /surfaces/0/quantity: expected \"planar\", \"horizontal\", \"vertical\", \"cylindrical\" or \"semi-cylindrical\", got \"semicylindrical\""},
+                "p.json /surfaces/0/quantity: expected \"planar\", \"horizontal\", \"vertical\", "
+                "\"cylindrical\" or \"semi-cylindrical\", got \"semicylindrical\""},
         BadCase{"vertical_without_facing", "/surfaces/0/quantity", "\"vertical\"",
-                "p.json /surfaces/0/quantity: a vertical quantity on a horizontal surface needs \"facing\": [x, y]"},
+                "p.json /surfaces/0/quantity: a vertical quantity on a horizontal surface needs "
+                "\"facing\": [x, y]"},
         BadCase{"facing_without_vertical", "/surfaces/0/facing", "[1, 0]",
-                "p.json /surfaces/0/facing: \"facing\" only goes with \"quantity\": \"vertical\" or \"semi-cylindrical\""},
+                "p.json /surfaces/0/facing: \"facing\" only goes with \"quantity\": \"vertical\" "
+                "or \"semi-cylindrical\""},
         BadCase{"semi_cylindrical_without_facing", "/surfaces/0/quantity", "\"semi-cylindrical\"",
-                "p.json /surfaces/0/quantity: a semi-cylindrical quantity on a horizontal surface needs \"facing\": [x, y]"},
-        BadCase{"position_and_array", "/luminaires/0/array", "{\"origin\": [0,0,0], \"count\": [1,1], \"spacing\": [1,1]}",
+                "p.json /surfaces/0/quantity: a semi-cylindrical quantity on a horizontal surface "
+                "needs \"facing\": [x, y]"},
+        BadCase{"position_and_array", "/luminaires/0/array",
+                "{\"origin\": [0,0,0], \"count\": [1,1], \"spacing\": [1,1]}",
                 "p.json /luminaires/0: expected exactly one of \"position\" or \"array\""}),
     [](const auto& info) { return std::string(info.param.name); });
 
@@ -264,7 +326,8 @@ TEST(ProjectFile, LShapedRoomWithObstacles) {
   EXPECT_DOUBLE_EQ(s.rooms[0].obstacles[0].z1, 3.0);
   // The clockwise prism outline was reversed, with a warning.
   ASSERT_EQ(s.warnings.size(), 1u);
-  EXPECT_EQ(s.warnings[0], "obstacle \"partition\": the outline is clockwise; reversed to counter-clockwise");
+  EXPECT_EQ(s.warnings[0],
+            "obstacle \"partition\": the outline is clockwise; reversed to counter-clockwise");
   // Inset L: 5 x 5 cells of 1 m; 16 inside the L, (2, 2) inside the column; the table (0.7 m)
   // and the partition (its footprint holds no cell centre) remove nothing.
   const auto& g = s.surfaces[0];
@@ -288,7 +351,8 @@ TEST(ProjectFile, ClockwiseRoomIsReversedWithAWarning) {
 TEST(ProjectFile, LuminaireOutsideEveryRoomOrInsideAnObstacleWarns) {
   auto doc = l_room();
   doc["luminaires"][0]["position"] = {5, 5, 2.9};  // in the missing quadrant of the L
-  doc["luminaires"].push_back({{"name", "in column"}, {"photometry", "iso"}, {"position", {2, 2, 2}}});
+  doc["luminaires"].push_back(
+      {{"name", "in column"}, {"photometry", "iso"}, {"position", {2, 2, 2}}});
   const Scene s = parse_project(doc, "p.json", ".").scene;
   ASSERT_EQ(s.warnings.size(), 3u);
   EXPECT_EQ(s.warnings[1], "luminaire 0: outside every room");
@@ -297,7 +361,8 @@ TEST(ProjectFile, LuminaireOutsideEveryRoomOrInsideAnObstacleWarns) {
 
 TEST(ProjectFile, RoomSurfacesGiveOneGridPerFace) {
   auto doc = l_room();
-  doc["surfaces"][0] = nlohmann::json::parse(R"({ "name": "L", "room_surfaces": { "room": "r" }, "spacing": 0.5 })");
+  doc["surfaces"][0] =
+      nlohmann::json::parse(R"({ "name": "L", "room_surfaces": { "room": "r" }, "spacing": 0.5 })");
   const Scene s = parse_project(doc, "p.json", ".").scene;
   ASSERT_EQ(s.surfaces.size(), 8u);  // floor, ceiling, 6 walls
   const auto& floor = s.surfaces[0];
@@ -346,16 +411,18 @@ TEST(ProjectFile, QuantitiesSetReceiverNormals) {
 
 TEST(ProjectFile, MalformedJsonNamesLineAndColumn) {
   const testing_support::TempFolder dir;
-  const auto file = dir.write("broken.json",
-                              "{\n  \"format\": \"luxgrid-project/1\",\n  \"name\": \"x\"\n  \"rooms\": []\n}\n");
+  const auto file =
+      dir.write("broken.json",
+                "{\n  \"format\": \"luxgrid-project/1\",\n  \"name\": \"x\"\n  \"rooms\": []\n}\n");
   try {
     load_project(file).scene;
     FAIL() << "expected an error";
   } catch (const InputError& e) {
     const std::string msg = e.what();
     // nlohmann stops at the end of the offending token: the "rooms" string ending in column 9.
-    EXPECT_EQ(msg, file.string() + ":4:9: malformed JSON: syntax error while parsing object - "
-                   "unexpected string literal; expected '}'");
+    EXPECT_EQ(msg, file.string() +
+                       ":4:9: malformed JSON: syntax error while parsing object - "
+                       "unexpected string literal; expected '}'");
   }
 }
 
@@ -378,31 +445,38 @@ const char* kRenameHint =
     "'-', '_' and '.' into '_'); rename one of them";
 
 TEST(ProjectFile, SurfacesWritingTheSameFileAreRefused) {
-  EXPECT_EQ(error_with_surfaces({"a/b", "a_b"}),
-            std::string("p.json /surfaces/1/name: surface \"a_b\" would write a_b.csv, which surface \"a/b\"") +
-                kRenameHint);
+  EXPECT_EQ(
+      error_with_surfaces({"a/b", "a_b"}),
+      std::string(
+          "p.json /surfaces/1/name: surface \"a_b\" would write a_b.csv, which surface \"a/b\"") +
+          kRenameHint);
   // x's direct-light plot is x_direct.png, the plot of a surface named x_direct.
   EXPECT_EQ(error_with_surfaces({"x", "x_direct"}),
-            std::string("p.json /surfaces/1/name: surface \"x_direct\" would write x_direct.png, which surface \"x\"") +
+            std::string("p.json /surfaces/1/name: surface \"x_direct\" would write x_direct.png, "
+                        "which surface \"x\"") +
                 kRenameHint);
   // Case-insensitive file systems (macOS, Windows) make Hall.csv and hall.csv one file.
   EXPECT_EQ(error_with_surfaces({"Hall", "hall"}),
-            std::string("p.json /surfaces/1/name: surface \"hall\" would write hall.csv, which surface \"Hall\"") +
+            std::string("p.json /surfaces/1/name: surface \"hall\" would write hall.csv, which "
+                        "surface \"Hall\"") +
                 kRenameHint);
   EXPECT_EQ(error_with_surfaces({"a b", "a-b", "a.b", "ab"}), "(no error)");
 }
 
 TEST(ProjectFile, RoomSurfaceGridsAreCheckedForCollisionsAndLength) {
   auto doc = minimal();
-  doc["surfaces"] = nlohmann::json::array({plane_surface("R FLOOR"),
-                                           {{"name", "r"}, {"room_surfaces", {{"room", "r"}}}, {"spacing", 1}}});
-  EXPECT_EQ(error_of(doc), std::string("p.json /surfaces/1/name: surface \"r floor\" would write r_floor.csv, which surface \"R FLOOR\"") +
+  doc["surfaces"] =
+      nlohmann::json::array({plane_surface("R FLOOR"),
+                             {{"name", "r"}, {"room_surfaces", {{"room", "r"}}}, {"spacing", 1}}});
+  EXPECT_EQ(error_of(doc), std::string("p.json /surfaces/1/name: surface \"r floor\" would write "
+                                       "r_floor.csv, which surface \"R FLOOR\"") +
                                kRenameHint);
   // 95 characters are fine for the entry, but its first grid, "<name> floor", has 101.
   doc["surfaces"] = nlohmann::json::array(
       {{{"name", std::string(95, 'r')}, {"room_surfaces", {{"room", "r"}}}, {"spacing", 1}}});
-  EXPECT_EQ(error_of(doc), "p.json /surfaces/0/name: the surface name is 101 characters long, more than "
-                           "the limit of 100 (it names the surface's output files)");
+  EXPECT_EQ(error_of(doc),
+            "p.json /surfaces/0/name: the surface name is 101 characters long, more than "
+            "the limit of 100 (it names the surface's output files)");
 }
 
 TEST(ProjectFile, RoomAndObstacleCountsAreCheckedBeforeBuilding) {
@@ -413,7 +487,9 @@ TEST(ProjectFile, RoomAndObstacleCountsAreCheckedBeforeBuilding) {
   doc = minimal();
   doc["rooms"][0]["obstacles"] = nlohmann::json::array();
   for (size_t k = 0; k <= kMaxObstacles; ++k) doc["rooms"][0]["obstacles"].push_back(nullptr);
-  EXPECT_EQ(error_of(doc), "p.json /rooms/0/obstacles: the project would have 10001 obstacles, more than the limit of 10000");
+  EXPECT_EQ(error_of(doc),
+            "p.json /rooms/0/obstacles: the project would have 10001 obstacles, more than the "
+            "limit of 10000");
 }
 
 TEST(ProjectFile, OutlineSurfaceAndPhotometryCountsAreLimited) {
@@ -425,19 +501,23 @@ TEST(ProjectFile, OutlineSurfaceAndPhotometryCountsAreLimited) {
   for (size_t k = 0; k < kMaxSurfaces; ++k) doc["surfaces"].push_back(nullptr);
   EXPECT_EQ(error_of(doc), "p.json /surfaces: 1001 surfaces, more than the limit of 1000");
   doc = minimal();
-  for (size_t k = 0; k < kMaxPhotometryEntries; ++k) doc["photometry"]["p" + std::to_string(k)] = nullptr;
-  EXPECT_EQ(error_of(doc), "p.json /photometry: 1001 photometry entries, more than the limit of 1000");
+  for (size_t k = 0; k < kMaxPhotometryEntries; ++k)
+    doc["photometry"]["p" + std::to_string(k)] = nullptr;
+  EXPECT_EQ(error_of(doc),
+            "p.json /photometry: 1001 photometry entries, more than the limit of 1000");
 }
 
 TEST(ProjectFile, LuminairePointPairsAreLimited) {
   auto doc = minimal();
   // 20 000 luminaires (the limit) and a 224 x 224 m plane at 1 m: 50 176 points.
-  doc["luminaires"][0] = {{"photometry", "iso"},
-                          {"array", {{"origin", {0, 0, 2}}, {"count", {200, 100}}, {"spacing", {0.01, 0.01}}}}};
+  doc["luminaires"][0] = {
+      {"photometry", "iso"},
+      {"array", {{"origin", {0, 0, 2}}, {"count", {200, 100}}, {"spacing", {0.01, 0.01}}}}};
   doc["surfaces"][0] = plane_surface("big");
   doc["surfaces"][0]["plane"]["size"] = {224, 224};
-  EXPECT_EQ(error_of(doc), "p.json /surfaces/0: 20000 luminaires x 50176 points = 1.00352e+09 luminaire-point "
-                           "pairs, more than the limit of 1e+09; use fewer luminaires or larger spacings");
+  EXPECT_EQ(error_of(doc),
+            "p.json /surfaces/0: 20000 luminaires x 50176 points = 1.00352e+09 luminaire-point "
+            "pairs, more than the limit of 1e+09; use fewer luminaires or larger spacings");
   doc["surfaces"][0]["plane"]["size"] = {250, 200};  // 50 000 points: exactly at the limit
   EXPECT_EQ(error_of(doc), "(no error)");
 }
@@ -452,8 +532,9 @@ TEST(ProjectFile, DeeplyNestedUnknownKeyFailsWithoutCrashing) {
     parse_project_text(text, "p.json", ".").scene;
     FAIL() << "expected an error";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "p.json:1:" + std::to_string(prefix + 63 * 5 + 1) +
-                                         ": objects and arrays nested deeper than the limit of 64 levels");
+    EXPECT_EQ(std::string(e.what()),
+              "p.json:1:" + std::to_string(prefix + 63 * 5 + 1) +
+                  ": objects and arrays nested deeper than the limit of 64 levels");
   }
 }
 
@@ -465,7 +546,8 @@ TEST(ProjectFile, DuplicateLuminairesKeyIsAnError) {
     parse_project_text(text, "p.json", ".").scene;
     FAIL() << "expected an error";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "p.json:2:12 /luminaires: duplicate key \"luminaires\" (first given on line 1)");
+    EXPECT_EQ(std::string(e.what()),
+              "p.json:2:12 /luminaires: duplicate key \"luminaires\" (first given on line 1)");
   }
 }
 
@@ -493,11 +575,13 @@ std::string error_in(const nlohmann::json& doc, const std::filesystem::path& bas
 TEST(ProjectFile, MultiplierAndFluxMayNotScaleBeyondTheIntensityLimit) {
   const testing_support::TempFolder dir;
   dir.write("lamp.ies", small_ies());
-  EXPECT_EQ(error_in(with_file_photometry({{"file", "lamp.ies"}, {"multiplier", 1e7}}), dir.path()),
-            "p.json /photometry/lamp/multiplier: the peak intensity would be 1e+10 cd (1000 cd x 1e+07), "
-            "more than the limit of 1e+09 cd");
+  EXPECT_EQ(
+      error_in(with_file_photometry({{"file", "lamp.ies"}, {"multiplier", 1e7}}), dir.path()),
+      "p.json /photometry/lamp/multiplier: the peak intensity would be 1e+10 cd (1000 cd x 1e+07), "
+      "more than the limit of 1e+09 cd");
   // At the limit exactly it loads.
-  EXPECT_EQ(error_in(with_file_photometry({{"file", "lamp.ies"}, {"multiplier", 1e6}}), dir.path()), "(no error)");
+  EXPECT_EQ(error_in(with_file_photometry({{"file", "lamp.ies"}, {"multiplier", 1e6}}), dir.path()),
+            "(no error)");
   // flux_lm: the factor is the target over the distribution's own flux.
   const Scene plain = parse_project(with_file_photometry("lamp.ies"), "p.json", dir.path()).scene;
   const double flux = luminous_flux(*plain.photometry.at("lamp").distribution);
@@ -531,21 +615,25 @@ TEST(ProjectFile, PhotometryOutsideTheProjectFolderNeedsTheSetting) {
   std::filesystem::create_directories(project_dir / "sub");
   const auto doc = with_file_photometry("../shared/lamp.ies");
   EXPECT_EQ(error_in(doc, project_dir),
-            "p.json /photometry/lamp: the photometry file ../shared/lamp.ies lies outside the project folder; "
+            "p.json /photometry/lamp: the photometry file ../shared/lamp.ies lies outside the "
+            "project folder; "
             "to allow it, set \"settings\": {\"allow_files_outside_project\": true}");
   const std::string absolute = (dir.path() / "shared/lamp.ies").string();
   EXPECT_EQ(error_in(with_file_photometry(absolute), project_dir),
-            "p.json /photometry/lamp: the photometry file " + absolute + " lies outside the project folder; "
-            "to allow it, set \"settings\": {\"allow_files_outside_project\": true}");
+            "p.json /photometry/lamp: the photometry file " + absolute +
+                " lies outside the project folder; "
+                "to allow it, set \"settings\": {\"allow_files_outside_project\": true}");
   // A ../ that stays inside the tree is fine.
   dir.write("project/lamp.ies", small_ies());
   EXPECT_EQ(error_in(with_file_photometry("sub/../lamp.ies"), project_dir), "(no error)");
   // With the setting, both load.
   auto allowed = doc;
   allowed["settings"] = {{"allow_files_outside_project", true}};
-  EXPECT_EQ(parse_project(allowed, "p.json", project_dir).scene.photometry.at("lamp").source, "../shared/lamp.ies");
+  EXPECT_EQ(parse_project(allowed, "p.json", project_dir).scene.photometry.at("lamp").source,
+            "../shared/lamp.ies");
   allowed["photometry"]["lamp"] = absolute;
-  EXPECT_EQ(parse_project(allowed, "p.json", project_dir).scene.photometry.at("lamp").source, absolute);
+  EXPECT_EQ(parse_project(allowed, "p.json", project_dir).scene.photometry.at("lamp").source,
+            absolute);
 }
 
 TEST(ProjectFile, LoadProjectReadsThroughTheSafeParse) {

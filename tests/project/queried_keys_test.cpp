@@ -39,23 +39,27 @@ TEST(QueriedKeys, TheKeysOfferedAreThoseTheBranchTakenAskedFor) {
   // shape, those are the keys offered for a misspelt one.
   auto doc = office();
   doc["luminaires"][0]["emitter"] = {{"shape", "point"}, {"diameter_mm", 5}};
-  EXPECT_EQ(error_of(doc), "p.json /luminaires/0/emitter/diameter_mm: unknown key \"diameter_mm\" "
-                           "(expected one of: diameter, shape, size)");
+  EXPECT_EQ(error_of(doc),
+            "p.json /luminaires/0/emitter/diameter_mm: unknown key \"diameter_mm\" "
+            "(expected one of: diameter, shape, size)");
 }
 
 TEST(QueriedKeys, UnreadKeysDeepInsideAreFoundByTheirPointer) {
   auto doc = office();
   doc["rooms"][0]["obstacles"] = nlohmann::json::parse(
       R"([{ "name": "desk", "box": { "min": [1, 1, 0], "max": [2, 2, 0.7], "colour": "oak" } }])");
-  EXPECT_EQ(error_of(doc), "p.json /rooms/0/obstacles/0/box/colour: unknown key \"colour\" "
-                           "(expected one of: max, min, rotation_z)");
+  EXPECT_EQ(error_of(doc),
+            "p.json /rooms/0/obstacles/0/box/colour: unknown key \"colour\" "
+            "(expected one of: max, min, rotation_z)");
 }
 
 TEST(QueriedKeys, AMissingKeyPointsAtItsLikelyMisspelling) {
   auto doc = office();
   doc["rooms"][0].erase("height");
   doc["rooms"][0]["heigth"] = 2.5;
-  EXPECT_EQ(error_of(doc), "p.json /rooms/0: missing required key \"height\" (the object has \"heigth\": misspelt?)");
+  EXPECT_EQ(
+      error_of(doc),
+      "p.json /rooms/0: missing required key \"height\" (the object has \"heigth\": misspelt?)");
   // Nothing within two edits: no guess.
   doc["rooms"][0].erase("heigth");
   doc["rooms"][0]["z"] = 2.5;
@@ -69,19 +73,24 @@ TEST(QueriedKeys, RequirementsAreReadOnceWithTheProject) {
   EXPECT_EQ(p.requirements.surfaces.at("wp").limits.at("U0"), 0.6);
   auto doc = office();
   doc["surfaces"][0]["requirements"]["Eav"] = 500;
-  EXPECT_EQ(error_of(doc).rfind("p.json /surfaces/0/requirements/Eav: unknown quantity \"Eav\"", 0), 0u)
+  EXPECT_EQ(error_of(doc).rfind("p.json /surfaces/0/requirements/Eav: unknown quantity \"Eav\"", 0),
+            0u)
       << error_of(doc);
 }
 
 TEST(QueriedKeys, AnUnknownNearFieldModelNamesTheFile) {
   auto doc = office();
   doc["settings"] = {{"near_field_model", "lambert-9"}};
-  EXPECT_EQ(error_of(doc).rfind("p.json /settings/near_field_model: unknown model \"lambert-9\" (expected paper,", 0), 0u)
+  EXPECT_EQ(
+      error_of(doc).rfind(
+          "p.json /settings/near_field_model: unknown model \"lambert-9\" (expected paper,", 0),
+      0u)
       << error_of(doc);
 }
 
 TEST(QueriedKeys, FreeTextKeysAreAcceptedOnlyWhereSaid) {
-  const auto doc = nlohmann::json::parse(R"({"notes": ["any", {"thing": 1}], "value": 2, "other": 3})");
+  const auto doc =
+      nlohmann::json::parse(R"({"notes": ["any", {"thing": 1}], "value": 2, "other": 3})");
   const JsonDocument document(doc, "e.json");
   const JsonValue root = document.root();
   root.accept_any("notes");
@@ -90,7 +99,8 @@ TEST(QueriedKeys, FreeTextKeysAreAcceptedOnlyWhereSaid) {
     root.report_unqueried();
     FAIL() << "expected an error";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "e.json /other: unknown key \"other\" (expected one of: notes, value)");
+    EXPECT_EQ(std::string(e.what()),
+              "e.json /other: unknown key \"other\" (expected one of: notes, value)");
     EXPECT_EQ(e.where().pointer, "/other");
     EXPECT_EQ(e.message(), "unknown key \"other\" (expected one of: notes, value)");
   }
@@ -100,11 +110,15 @@ TEST(QueriedKeys, FreeTextKeysAreAcceptedOnlyWhereSaid) {
 // pointer, then ": " and the message.
 TEST(SourceLocation, OneFormatForEveryKindOfPlace) {
   EXPECT_EQ(InputError(SourceLocation{"p.json", 12, 7}, "m").what(), std::string("p.json:12:7: m"));
-  EXPECT_EQ(InputError(SourceLocation{"panel.ies", 14}, "m").what(), std::string("panel.ies:14: m"));
-  EXPECT_EQ(InputError(SourceLocation{"p.json", 0, 0, "/rooms/0"}, "m").what(), std::string("p.json /rooms/0: m"));
-  EXPECT_EQ(InputError(SourceLocation{"p.json", 3, 5, "/a"}, "m").what(), std::string("p.json:3:5 /a: m"));
+  EXPECT_EQ(InputError(SourceLocation{"panel.ies", 14}, "m").what(),
+            std::string("panel.ies:14: m"));
+  EXPECT_EQ(InputError(SourceLocation{"p.json", 0, 0, "/rooms/0"}, "m").what(),
+            std::string("p.json /rooms/0: m"));
+  EXPECT_EQ(InputError(SourceLocation{"p.json", 3, 5, "/a"}, "m").what(),
+            std::string("p.json:3:5 /a: m"));
   EXPECT_EQ(InputError(SourceLocation{"panel.ies"}, "m").what(), std::string("panel.ies: m"));
-  EXPECT_EQ(InputError(SourceLocation{"", 0, 0, "/settings/x"}, "m").what(), std::string("/settings/x: m"));
+  EXPECT_EQ(InputError(SourceLocation{"", 0, 0, "/settings/x"}, "m").what(),
+            std::string("/settings/x: m"));
   EXPECT_EQ(InputError("m").what(), std::string("m"));
   // A place found after reading (while calculating) gets the file it came from, once.
   const InputError late(SourceLocation{"", 0, 0, "/settings/x"}, "m");

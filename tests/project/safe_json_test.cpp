@@ -48,7 +48,8 @@ TEST(SafeJson, HundredThousandNestedObjectsAreRefusedAtTheLimit) {
 
 TEST(SafeJson, HundredThousandNestedArraysAreRefusedAtTheLimit) {
   const std::string text = std::string(100000, '[') + std::string(100000, ']');
-  EXPECT_EQ(error_of(text), "p.json:1:65: objects and arrays nested deeper than the limit of 64 levels");
+  EXPECT_EQ(error_of(text),
+            "p.json:1:65: objects and arrays nested deeper than the limit of 64 levels");
 }
 
 TEST(SafeJson, SixtyFourLevelsAreAccepted) {
@@ -60,21 +61,24 @@ TEST(SafeJson, DuplicateTopLevelKeyNamesPointerAndBothLines) {
   // Last-wins made `"luminaires": []` silently give 0 lx.
   const std::string text =
       "{\"format\": \"luxgrid-project/1\",\n \"luminaires\": [1],\n \"luminaires\": []}";
-  EXPECT_EQ(error_of(text), "p.json:3:13 /luminaires: duplicate key \"luminaires\" (first given on line 2)");
+  EXPECT_EQ(error_of(text),
+            "p.json:3:13 /luminaires: duplicate key \"luminaires\" (first given on line 2)");
 }
 
 TEST(SafeJson, DuplicateNestedKeyNamesItsPointer) {
   const std::string text = R"({"settings": {"quality": "draft", "quality": "high"}})";
   const size_t closing_quote = text.rfind("\"quality\"") + 8;
-  EXPECT_EQ(error_of(text), "p.json:1:" + column_of(closing_quote) +
-                                " /settings/quality: duplicate key \"quality\" (first given on line 1)");
+  EXPECT_EQ(error_of(text),
+            "p.json:1:" + column_of(closing_quote) +
+                " /settings/quality: duplicate key \"quality\" (first given on line 1)");
 }
 
 TEST(SafeJson, DuplicateKeyInsideAnArrayNamesTheIndex) {
   const std::string text = R"({"surfaces": [{"name": "a"}, {"name": "b", "name": "c"}]})";
   const size_t closing_quote = text.rfind("\"name\"") + 5;
-  EXPECT_EQ(error_of(text), "p.json:1:" + column_of(closing_quote) +
-                                " /surfaces/1/name: duplicate key \"name\" (first given on line 1)");
+  EXPECT_EQ(error_of(text),
+            "p.json:1:" + column_of(closing_quote) +
+                " /surfaces/1/name: duplicate key \"name\" (first given on line 1)");
 }
 
 TEST(SafeJson, SameKeyInSiblingObjectsIsFine) {
@@ -84,9 +88,10 @@ TEST(SafeJson, SameKeyInSiblingObjectsIsFine) {
 TEST(SafeJson, NumberBeyondDoubleIsBadInputWithPointer) {
   const std::string text = R"({"settings": {"bounces": 1e400}})";
   const size_t end = text.find("1e400") + 4;  // nlohmann points at the number's last character
-  EXPECT_EQ(error_of(text), "p.json:1:" + column_of(end) +
-                                " /settings/bounces: the number 1e400 is out of range (a number must "
-                                "fit a double, |x| < 1.8e308)");
+  EXPECT_EQ(error_of(text),
+            "p.json:1:" + column_of(end) +
+                " /settings/bounces: the number 1e400 is out of range (a number must "
+                "fit a double, |x| < 1.8e308)");
 }
 
 TEST(SafeJson, NegativeNumberBeyondDoubleInAnArray) {
@@ -112,8 +117,9 @@ TEST(SafeJson, FileLargerThanTheLimitIsRefusedBeforeReading) {
     read_json_file(file);
     FAIL() << "expected an error";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), file.string() + ": the file is 16777217 bytes, more than the "
-                                                      "limit of 16777216 bytes (16 MiB) for a project file");
+    EXPECT_EQ(std::string(e.what()), file.string() +
+                                         ": the file is 16777217 bytes, more than the "
+                                         "limit of 16777216 bytes (16 MiB) for a project file");
   }
 }
 

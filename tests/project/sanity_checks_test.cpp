@@ -5,10 +5,10 @@
 
 #include <algorithm>
 
+#include "photometry/builtin.h"
 #include "project/project_file.h"
 #include "project/project_limits.h"
 #include "project/sanity_checks.h"
-#include "photometry/builtin.h"
 #include "util/error.h"
 
 namespace luxgrid::project {
@@ -39,8 +39,10 @@ std::vector<std::string> warnings_of(const nlohmann::json& doc, const std::strin
 void expect_one_warning(const nlohmann::json& doc, std::initializer_list<const char*> expected,
                         const std::string& base = ".") {
   const auto w = warnings_of(doc, base);
-  ASSERT_EQ(w.size(), 1u) << (w.empty() ? "(none)" : w.front() + (w.size() > 1 ? " | " + w[1] : ""));
-  for (const char* piece : expected) EXPECT_NE(w[0].find(piece), std::string::npos) << piece << "\n in: " << w[0];
+  ASSERT_EQ(w.size(), 1u) << (w.empty() ? "(none)"
+                                        : w.front() + (w.size() > 1 ? " | " + w[1] : ""));
+  for (const char* piece : expected)
+    EXPECT_NE(w[0].find(piece), std::string::npos) << piece << "\n in: " << w[0];
 }
 
 TEST(SanityChecks, TheCleanOfficeHasNone) {
@@ -70,9 +72,11 @@ TEST(SanityChecks, ARoomHigherThanAnyHallIsRefusedAsMillimetres) {
     parse_project(doc, "p.json", ".").scene;
     FAIL() << "accepted a 2800 m high room";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "p.json /rooms/0/height: the room \"office\" is 2800 m high, more than the limit of 1000 m for a "
-              "room; the lengths look like millimetres, and luxgrid reads metres (divide them by 1000)");
+    EXPECT_EQ(
+        std::string(e.what()),
+        "p.json /rooms/0/height: the room \"office\" is 2800 m high, more than the limit of 1000 m "
+        "for a "
+        "room; the lengths look like millimetres, and luxgrid reads metres (divide them by 1000)");
   }
   doc["rooms"][0]["height"] = kMaxRoomHeight_m;  // the limit itself is a room
   doc["luminaires"][0]["position"] = {3, 2, kMaxRoomHeight_m};
@@ -85,10 +89,14 @@ TEST(SanityChecks, ASpacingLargerThanTheSurfaceWarnsAndSoDoesTheOnePointGrid) {
   doc["surfaces"][0]["spacing"] = 250;
   const auto w = warnings_of(doc);
   ASSERT_EQ(w.size(), 2u);
-  EXPECT_EQ(w[0], "/surfaces/0/spacing: the spacing 250 m of surface \"wp\" is larger than the surface (5 m x 3 m); "
-                  "luxgrid used one cell across it (spacings are in metres)");
-  EXPECT_EQ(w[1], "/surfaces/0 \"wp\": a grid of fewer than 3 x 3 points (1 x 1 points); luxgrid calculated it as "
-                  "given, but its Emin, U0 and map say little (use a smaller spacing)");
+  EXPECT_EQ(w[0],
+            "/surfaces/0/spacing: the spacing 250 m of surface \"wp\" is larger than the surface "
+            "(5 m x 3 m); "
+            "luxgrid used one cell across it (spacings are in metres)");
+  EXPECT_EQ(w[1],
+            "/surfaces/0 \"wp\": a grid of fewer than 3 x 3 points (1 x 1 points); luxgrid "
+            "calculated it as "
+            "given, but its Emin, U0 and map say little (use a smaller spacing)");
 }
 
 TEST(SanityChecks, AGridOfTwoRowsWarnsAndThreeDoesNot) {
@@ -101,11 +109,13 @@ TEST(SanityChecks, AGridOfTwoRowsWarnsAndThreeDoesNot) {
 
 TEST(SanityChecks, RoomSurfacesNameTheirCoarseGrids) {
   auto doc = office();
-  doc["surfaces"].push_back(nlohmann::json::parse(R"({ "name": "room", "room_surfaces": { "room": "office" }, "spacing": 1.0 })"));
+  doc["surfaces"].push_back(nlohmann::json::parse(
+      R"({ "name": "room", "room_surfaces": { "room": "office" }, "spacing": 1.0 })"));
   // Floor and ceiling 6 x 4 points, long walls 6 x 3, short walls 4 x 3: all at least 3 x 3.
   EXPECT_EQ(warnings_of(doc), std::vector<std::string>{});
   doc["surfaces"][2]["spacing"] = 1.5;  // height 2.8 m: 2 rows on every wall
-  expect_one_warning(doc, {"/surfaces/2 \"room\"", "room wall 0 4 x 2 points", "room wall 3 3 x 2 points"});
+  expect_one_warning(
+      doc, {"/surfaces/2 \"room\"", "room wall 0 4 x 2 points", "room wall 3 3 x 2 points"});
 }
 
 TEST(SanityChecks, FluxInKilolumensWarns) {
@@ -113,8 +123,9 @@ TEST(SanityChecks, FluxInKilolumensWarns) {
   const std::string base = std::string(LUXGRID_SOURCE_DIR) + "/examples/office";
   auto doc = office();
   doc["photometry"]["down"] = {{"file", "photometry/zumtobel_mirel_isym4.ldt"}, {"flux_lm", 4.4}};
-  expect_one_warning(doc, {"/photometry/down/flux_lm: flux_lm 4.4 lm", "looks like kilolumens",
-                           "luxgrid scaled the luminaire to 4.4 lm", "for 4400 lm write 4400"},
+  expect_one_warning(doc,
+                     {"/photometry/down/flux_lm: flux_lm 4.4 lm", "looks like kilolumens",
+                      "luxgrid scaled the luminaire to 4.4 lm", "for 4400 lm write 4400"},
                      base);
   doc["photometry"]["down"]["flux_lm"] = 4400;  // a real value
   EXPECT_EQ(warnings_of(doc, base), std::vector<std::string>{});
@@ -153,7 +164,8 @@ TEST(SanityChecks, AnArrayNamesItsFirstMemberAimedIntoAWall) {
       R"({ "name": "row", "photometry": "down", "rotation": [0, 90, 0],
            "array": { "origin": [0.2, 1, 2], "count": [2, 3], "spacing": [3, 1] } })");
   // The members at x = 0.2 (three of them) face the west wall 0.2 m away; those at 3.2 do not.
-  expect_one_warning(doc, {"/luminaires/0 \"row [0,0]\" and 2 more of this entry", "wall 3 0.2 m away"});
+  expect_one_warning(doc,
+                     {"/luminaires/0 \"row [0,0]\" and 2 more of this entry", "wall 3 0.2 m away"});
 }
 
 TEST(SanityChecks, AGridFacingOutOfEveryRoomWarns) {
@@ -161,7 +173,8 @@ TEST(SanityChecks, AGridFacingOutOfEveryRoomWarns) {
   auto doc = office();
   doc["surfaces"][1]["plane"]["u"] = {0, 0, 1};
   doc["surfaces"][1]["plane"]["v"] = {-1, 0, 0};
-  expect_one_warning(doc, {"/surfaces/1 \"south wall\": grid \"south wall\" faces out of every room"});
+  expect_one_warning(doc,
+                     {"/surfaces/1 \"south wall\": grid \"south wall\" faces out of every room"});
   // A plane outside every room (a facade outdoors) is not a mistake of this kind.
   doc["surfaces"][1]["plane"]["origin"] = {6, -5, 0};
   EXPECT_EQ(warnings_of(doc), std::vector<std::string>{});

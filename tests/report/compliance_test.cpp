@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 
 #include "calc/statistics.h"
+#include "project/task_presets.h"
 #include "report/compliance_table.h"
 #include "report/requirements.h"
-#include "project/task_presets.h"
 #include "util/error.h"
 
 namespace luxgrid::report {
@@ -30,8 +30,8 @@ calc::SurfaceResult surface(const std::string& name, std::vector<double> E,
   return s;
 }
 
-const RequirementCheck& find(const std::vector<RequirementCheck>& checks, const std::string& surface,
-                             const std::string& q) {
+const RequirementCheck& find(const std::vector<RequirementCheck>& checks,
+                             const std::string& surface, const std::string& q) {
   for (const auto& c : checks) {
     if (c.surface == surface && c.quantity == q) return c;
   }
@@ -64,7 +64,8 @@ TEST(TaskPresets, EveryRowCitesItsSourceAndIsPlausible) {
     EXPECT_GE(p.Ra, 20.0);
     EXPECT_LE(p.Ra, 100.0);
   }
-  // The office row as EN 12464-1:2021 prints it (docs/compliance.md: checked against a public copy).
+  // The office row as EN 12464-1:2021 prints it (docs/compliance.md: checked against a public
+  // copy).
   const TaskPreset* office = find_task_preset("office-writing");
   ASSERT_NE(office, nullptr);
   EXPECT_EQ(office->Em_lx, 500.0);
@@ -79,13 +80,16 @@ TEST(TaskPresets, EveryRowCitesItsSourceAndIsPlausible) {
 TEST(Compliance, PresetFillsAndExplicitKeysOverride) {
   // wp: E = {400, 600}: Em 500, U0 0.8. Preset office-writing: Em 500, U0 0.60, UGR_L 19, Ra 80,
   // Ez 150. The explicit Em 450 replaces the preset's 500 (margin +50 lx, not 0).
-  const json p = {{"surfaces", {{{"name", "wp"}, {"requirements", {{"preset", "office-writing"}, {"Em", 450}}}}}}};
+  const json p = {
+      {"surfaces",
+       {{{"name", "wp"}, {"requirements", {{"preset", "office-writing"}, {"Em", 450}}}}}}};
   const Requirements req = parse_requirements(p, "p.json");
   const auto& r = req.surfaces.at("wp");
   EXPECT_EQ(r.limits.at("Em"), 450.0);
   EXPECT_EQ(r.from_preset.count("Em"), 0u);
   EXPECT_EQ(r.limits.at("U0"), 0.60);
-  EXPECT_EQ(r.from_preset.at("U0"), "office-writing: EN 12464-1:2021 Table 5.26 Offices, ref. 5.26.2");
+  EXPECT_EQ(r.from_preset.at("U0"),
+            "office-writing: EN 12464-1:2021 Table 5.26 Offices, ref. 5.26.2");
   EXPECT_EQ(r.limits.at("UGR_L"), 19.0);
   EXPECT_EQ(r.limits.at("Ez"), 150.0);
 
@@ -115,7 +119,9 @@ TEST(Compliance, PresetFillsAndExplicitKeysOverride) {
 
 TEST(Compliance, UnknownPresetListsTheKeys) {
   const json p = {{"surfaces", {{{"name", "wp"}, {"requirements", {{"preset", "office"}}}}}}};
-  EXPECT_EQ(error_of(p), "p.json /surfaces/0/requirements/preset: unknown preset \"office\", expected " + task_preset_keys());
+  EXPECT_EQ(error_of(p),
+            "p.json /surfaces/0/requirements/preset: unknown preset \"office\", expected " +
+                task_preset_keys());
 }
 
 TEST(Compliance, UgrFromObserversSurfaces) {
@@ -131,7 +137,10 @@ TEST(Compliance, UgrFromObserversSurfaces) {
   b.UGR_max = 18.4;
   results.surfaces.push_back(a);
   results.surfaces.push_back(b);
-  const json all = {{"surfaces", {{{"name", "wp"}, {"requirements", {{"UGR_L", 19}}}}, {{"name", "eyes a"}}, {{"name", "eyes b"}}}}};
+  const json all = {{"surfaces",
+                     {{{"name", "wp"}, {"requirements", {{"UGR_L", 19}}}},
+                      {{"name", "eyes a"}},
+                      {{"name", "eyes b"}}}}};
   const auto c1 = check_requirements(results, parse_requirements(all, "p.json"));
   ASSERT_EQ(c1.size(), 1u);
   EXPECT_TRUE(c1[0].calculated);
@@ -164,8 +173,11 @@ TEST(Compliance, EzAndModellingPointByPoint) {
   results.surfaces.push_back(surface("h", {400, 500}, geometry::Quantity::horizontal));
   results.surfaces.push_back(surface("z", {160, 250}, geometry::Quantity::cylindrical));
   const json p = {{"surfaces",
-                   {{{"name", "h"}, {"quantity", "horizontal"}, {"requirements", {{"Ez", 150}, {"cylindrical", "z"}}}},
-                    {{"name", "z"}, {"quantity", "cylindrical"},
+                   {{{"name", "h"},
+                     {"quantity", "horizontal"},
+                     {"requirements", {{"Ez", 150}, {"cylindrical", "z"}}}},
+                    {{"name", "z"},
+                     {"quantity", "cylindrical"},
                      {"requirements", {{"modelling", {0.3, 0.6}}, {"horizontal", "h"}}}}}}};
   const auto checks = check_requirements(results, parse_requirements(p, "p.json"));
   const auto& ez = find(checks, "h", "Ez");
@@ -188,18 +200,34 @@ TEST(Compliance, EzAndModellingPointByPoint) {
 TEST(Compliance, QuantityTheSurfaceDoesNotComputeIsRefused) {
   const json ez = {{"surfaces", {{{"name", "wp"}, {"requirements", {{"Ez", 150}}}}}}};
   EXPECT_EQ(error_of(ez),
-            "p.json /surfaces/0/requirements/Ez: surface \"wp\" computes planar illuminance, so it cannot give Ez; give it "
-            "\"quantity\": \"cylindrical\", or name a cylindrical surface with \"cylindrical\": \"<surface>\"");
-  const json esc = {{"surfaces", {{{"name", "z"}, {"quantity", "cylindrical"}, {"requirements", {{"Esc", 50}}}}}}};
-  EXPECT_NE(error_of(esc).find("surface \"z\" computes cylindrical illuminance, so it cannot give Esc"), std::string::npos);
-  const json wrong_pair = {{"surfaces",
-                            {{{"name", "wp"}, {"requirements", {{"Ez", 150}, {"cylindrical", "v"}}}},
-                             {{"name", "v"}, {"quantity", "vertical"}}}}};
-  EXPECT_EQ(error_of(wrong_pair), "p.json /surfaces/0/requirements/cylindrical: surface \"v\" computes vertical illuminance, not cylindrical");
-  const json modelling_alone = {{"surfaces", {{{"name", "z"}, {"quantity", "cylindrical"}, {"requirements", {{"modelling", {0.3, 0.6}}}}}}}};
+            "p.json /surfaces/0/requirements/Ez: surface \"wp\" computes planar illuminance, so it "
+            "cannot give Ez; give it "
+            "\"quantity\": \"cylindrical\", or name a cylindrical surface with \"cylindrical\": "
+            "\"<surface>\"");
+  const json esc = {
+      {"surfaces",
+       {{{"name", "z"}, {"quantity", "cylindrical"}, {"requirements", {{"Esc", 50}}}}}}};
+  EXPECT_NE(
+      error_of(esc).find("surface \"z\" computes cylindrical illuminance, so it cannot give Esc"),
+      std::string::npos);
+  const json wrong_pair = {
+      {"surfaces",
+       {{{"name", "wp"}, {"requirements", {{"Ez", 150}, {"cylindrical", "v"}}}},
+        {{"name", "v"}, {"quantity", "vertical"}}}}};
+  EXPECT_EQ(error_of(wrong_pair),
+            "p.json /surfaces/0/requirements/cylindrical: surface \"v\" computes vertical "
+            "illuminance, not cylindrical");
+  const json modelling_alone = {{"surfaces",
+                                 {{{"name", "z"},
+                                   {"quantity", "cylindrical"},
+                                   {"requirements", {{"modelling", {0.3, 0.6}}}}}}}};
   EXPECT_NE(error_of(modelling_alone).find("cannot give modelling"), std::string::npos);
-  const json preset_on_cyl = {{"surfaces", {{{"name", "z"}, {"quantity", "cylindrical"}, {"requirements", {{"preset", "classroom"}}}}}}};
-  EXPECT_NE(error_of(preset_on_cyl).find("a task preset belongs on the task area"), std::string::npos);
+  const json preset_on_cyl = {{"surfaces",
+                               {{{"name", "z"},
+                                 {"quantity", "cylindrical"},
+                                 {"requirements", {{"preset", "classroom"}}}}}}};
+  EXPECT_NE(error_of(preset_on_cyl).find("a task preset belongs on the task area"),
+            std::string::npos);
 }
 
 TEST(Compliance, WallsAndCeilingsMetAndMissed) {
@@ -212,7 +240,10 @@ TEST(Compliance, WallsAndCeilingsMetAndMissed) {
   results.surfaces.push_back(surface("room ceiling", {2, 58}));
   results.surfaces.push_back(surface("room wall 0", {40, 80}));
   results.surfaces.push_back(surface("room wall 1", {5, 75}));
-  const json p = {{"surfaces", {{{"name", "room"}, {"room_surfaces", {{"room", "r"}}}, {"requirements", {{"preset", "walls-and-ceilings"}}}}}}};
+  const json p = {{"surfaces",
+                   {{{"name", "room"},
+                     {"room_surfaces", {{"room", "r"}}},
+                     {"requirements", {{"preset", "walls-and-ceilings"}}}}}}};
   const auto checks = check_requirements(results, parse_requirements(p, "p.json"));
   ASSERT_EQ(checks.size(), 6u);
   EXPECT_EQ(find(checks, "room ceiling", "Em").role, "ceiling");
@@ -229,21 +260,29 @@ TEST(Compliance, WallsAndCeilingsMetAndMissed) {
 
   // A task preset gives its own wall and ceiling values (office: 150 and 100 lx); explicit
   // "walls" override them, and a preset without such values is refused.
-  const json office = {{"surfaces", {{{"name", "room"}, {"room_surfaces", {{"room", "r"}}},
-                                      {"requirements", {{"preset", "office-writing"}, {"walls", {{"Em", 75}}}}}}}}};
+  const json office = {
+      {"surfaces",
+       {{{"name", "room"},
+         {"room_surfaces", {{"room", "r"}}},
+         {"requirements", {{"preset", "office-writing"}, {"walls", {{"Em", 75}}}}}}}}};
   const auto req = parse_requirements(office, "p.json");
   EXPECT_EQ(req.walls.at("room").limits.at("Em"), 75.0);
   EXPECT_EQ(req.walls.at("room").limits.at("U0"), 0.10);
   EXPECT_EQ(req.surfaces.at("room ceiling").limits.at("Em"), 100.0);
-  const json corridor = {{"surfaces", {{{"name", "room"}, {"room_surfaces", {{"room", "r"}}}, {"requirements", {{"preset", "corridor"}}}}}}};
+  const json corridor = {{"surfaces",
+                          {{{"name", "room"},
+                            {"room_surfaces", {{"room", "r"}}},
+                            {"requirements", {{"preset", "corridor"}}}}}}};
   EXPECT_NE(error_of(corridor).find("gives no wall and ceiling illuminance"), std::string::npos);
 }
 
 TEST(Compliance, TableShowsEveryRowWithItsResult) {
   calc::Results results;
   results.surfaces.push_back(surface("wp", {400, 600}));
-  const json p = {{"surfaces", {{{"name", "wp"}, {"requirements", {{"preset", "office-writing"}}}}}}};
-  const auto checks = check_requirements(results, parse_requirements(p, "p.json"), {std::nullopt, "unknown: no CRI"});
+  const json p = {
+      {"surfaces", {{{"name", "wp"}, {"requirements", {{"preset", "office-writing"}}}}}}};
+  const auto checks = check_requirements(results, parse_requirements(p, "p.json"),
+                                         {std::nullopt, "unknown: no CRI"});
   const std::string h = compliance_table_html(checks);
   EXPECT_NE(h.find("data-check=\"wp|Em\" data-result=\"met\""), std::string::npos);
   EXPECT_NE(h.find("data-check=\"wp|UGR_L\" data-result=\"not calculated\""), std::string::npos);

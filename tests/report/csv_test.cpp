@@ -15,7 +15,8 @@ TEST(SurfaceCsv, EveryRowNamesTheQuantity) {
   s.E = {80.0, 40.0};
   s.E_direct = {80.0, 40.0};
   EXPECT_EQ(surface_csv(s),
-            "i,j,x,y,z,nx,ny,nz,active,E_maintained_lx,E_direct_maintained_lx,E_indirect_maintained_lx,quantity\n"
+            "i,j,x,y,z,nx,ny,nz,active,E_maintained_lx,E_direct_maintained_lx,E_indirect_"
+            "maintained_lx,quantity\n"
             "0,0,0.25,0.25,1.2,0,-1,0,true,80,80,0,semi-cylindrical\n"
             "1,0,0.75,0.25,1.2,0,-1,0,true,40,40,0,semi-cylindrical\n");
 }
@@ -30,7 +31,8 @@ TEST(SurfaceCsv, PointsLeftOutSayActiveFalseAndHaveNoIlluminance) {
   s.E_indirect = {0.0, 0.0, 10.0};
   s.E = {80.0, 0.0, 40.0};
   EXPECT_EQ(surface_csv(s),
-            "i,j,x,y,z,nx,ny,nz,active,E_maintained_lx,E_direct_maintained_lx,E_indirect_maintained_lx,quantity\n"
+            "i,j,x,y,z,nx,ny,nz,active,E_maintained_lx,E_direct_maintained_lx,E_indirect_"
+            "maintained_lx,quantity\n"
             "0,0,0.25,0.25,0.8,0,0,1,true,80,80,0,planar\n"
             "1,0,0.75,0.25,0.8,0,0,1,false,,,,planar\n"
             "2,0,1.25,0.25,0.8,0,0,1,true,40,30,10,planar\n");

@@ -10,7 +10,10 @@ namespace {
 nlohmann::json results(std::vector<std::pair<std::string, std::vector<double>>> surfaces) {
   nlohmann::json j = {{"format", "luxgrid-results/1"}, {"surfaces", nlohmann::json::array()}};
   for (auto& [name, e] : surfaces) {
-    j["surfaces"].push_back({{"name", name}, {"E", e}, {"stats", {{"Emin", 1}, {"Eavg", 2}, {"Emax", 3}, {"U0", 0.5}, {"Ud", 0.3}}}});
+    j["surfaces"].push_back(
+        {{"name", name},
+         {"E", e},
+         {"stats", {{"Emin", 1}, {"Eavg", 2}, {"Emax", 3}, {"U0", 0.5}, {"Ud", 0.3}}}});
   }
   return j;
 }

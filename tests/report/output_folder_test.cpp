@@ -2,12 +2,12 @@
 // refusal leaves the user's files byte for byte as they were; what luxgrid wrote is replaced whole.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
 #include <thread>
-#include <unistd.h>
 
 #include "report/output_folder.h"
 #include "util/error.h"
@@ -31,7 +31,9 @@ class OutputFolderTest : public ::testing::Test {
   fs::path dir_;
 };
 
-void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
 std::string read(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream s;
@@ -91,9 +93,10 @@ TEST_F(OutputFolderTest, EmptyFolderIsAccepted) {
 TEST_F(OutputFolderTest, ExistingFileIsRefusedAndKept) {
   const fs::path file = dir_ / "thesis.docx";
   write(file, "years of work");
-  EXPECT_EQ(refusal(file), file.string() +
-                               ": exists and is not a folder; luxgrid writes only into a new folder, "
-                               "an empty one, or one it wrote before (choose another -o)");
+  EXPECT_EQ(refusal(file),
+            file.string() +
+                ": exists and is not a folder; luxgrid writes only into a new folder, "
+                "an empty one, or one it wrote before (choose another -o)");
   EXPECT_EQ(read(file), "years of work");
   EXPECT_EQ(entries(dir_), std::vector<std::string>{"thesis.docx"});
 }
@@ -102,9 +105,10 @@ TEST_F(OutputFolderTest, ForeignFolderIsRefusedAndKept) {
   const fs::path photos = dir_ / "photos";
   fs::create_directory(photos);
   write(photos / "a.jpg", "jpeg");
-  EXPECT_EQ(refusal(photos), photos.string() +
-                                 ": is a folder that luxgrid did not write (it has no .luxgrid-output "
-                                 "file) and it is not empty; choose a new or empty folder (-o)");
+  EXPECT_EQ(refusal(photos),
+            photos.string() +
+                ": is a folder that luxgrid did not write (it has no .luxgrid-output "
+                "file) and it is not empty; choose a new or empty folder (-o)");
   EXPECT_EQ(entries(photos), std::vector<std::string>{"a.jpg"});
   EXPECT_EQ(entries(dir_), std::vector<std::string>{"photos"});
 }
@@ -113,9 +117,10 @@ TEST_F(OutputFolderTest, OutputWithAUserFileAddedIsRefusedAndKept) {
   const fs::path out = dir_ / "out";
   write_run(out, "1");
   write(out / "notes.txt", "mine");
-  EXPECT_EQ(refusal(out), out.string() +
-                              ": holds \"notes.txt\", which luxgrid did not write; it is left as it "
-                              "is (move it away or choose another -o)");
+  EXPECT_EQ(refusal(out),
+            out.string() +
+                ": holds \"notes.txt\", which luxgrid did not write; it is left as it "
+                "is (move it away or choose another -o)");
   EXPECT_EQ(read(out / "notes.txt"), "mine");
   EXPECT_EQ(read(out / "results.json"), "1");
 }
@@ -125,7 +130,8 @@ TEST_F(OutputFolderTest, ForgedMarkerWithoutTheListProtectsNothingItDoesNotList)
   fs::create_directory(out);
   write(out / kOutputMarker, "");
   write(out / "data.csv", "mine");
-  EXPECT_NE(refusal(out).find("holds \"data.csv\", which luxgrid did not write"), std::string::npos);
+  EXPECT_NE(refusal(out).find("holds \"data.csv\", which luxgrid did not write"),
+            std::string::npos);
   EXPECT_EQ(read(out / "data.csv"), "mine");
 }
 
@@ -141,7 +147,8 @@ TEST_F(OutputFolderTest, FolderHoldingAnInputIsRefused) {
   EXPECT_EQ(read(out / "p.json"), "{}");
   // The project file itself as the output folder.
   write(dir_ / "p.json", "{ }");
-  EXPECT_NE(refusal(dir_ / "p.json", {dir_ / "p.json"}).find("an input of this run"), std::string::npos);
+  EXPECT_NE(refusal(dir_ / "p.json", {dir_ / "p.json"}).find("an input of this run"),
+            std::string::npos);
   EXPECT_EQ(read(dir_ / "p.json"), "{ }");
   // The project's own folder.
   EXPECT_NE(refusal(dir_, {dir_ / "p.json"}).find("an input of this run"), std::string::npos);
@@ -187,12 +194,12 @@ TEST_F(OutputFolderTest, StagingOfDeadProcessesIsRemovedOthersKept) {
     write(dir_ / name / "results.json", "half");
     if (marker) write(dir_ / name / kOutputMarker, "# luxgrid staging folder, being written\n");
   };
-  staging(".out.tmp-" + dead + "-0", true);                               // killed mid-run
-  staging(".out.tmp-" + dead + "-3.old", true);                           // killed mid-replace
-  staging(".out.tmp-" + std::to_string(getppid()) + "-0", true);          // a live process's
-  staging(".out.tmp-" + dead + "-0-mine", true);                          // not our pattern
-  staging(".out.tmp-" + dead + "-1", false);                              // no marker: not ours
-  fs::create_directory(dir_ / (".out.tmp-" + dead + "-2"));                // killed before its marker
+  staging(".out.tmp-" + dead + "-0", true);                       // killed mid-run
+  staging(".out.tmp-" + dead + "-3.old", true);                   // killed mid-replace
+  staging(".out.tmp-" + std::to_string(getppid()) + "-0", true);  // a live process's
+  staging(".out.tmp-" + dead + "-0-mine", true);                  // not our pattern
+  staging(".out.tmp-" + dead + "-1", false);                      // no marker: not ours
+  fs::create_directory(dir_ / (".out.tmp-" + dead + "-2"));       // killed before its marker
   write_run(dir_ / "out", "{}");
   std::vector<std::string> kept{".out.tmp-" + dead + "-0-mine", ".out.tmp-" + dead + "-1",
                                 ".out.tmp-" + std::to_string(getppid()) + "-0", "out"};
@@ -210,7 +217,8 @@ TEST_F(OutputFolderTest, ConcurrentRunsDoNotInterleave) {
     threads.emplace_back([&, w] {
       try {
         OutputFolder f(out);
-        for (int k = 0; k < kFiles; ++k) write_text_file(f.file("f" + std::to_string(k)), std::to_string(w));
+        for (int k = 0; k < kFiles; ++k)
+          write_text_file(f.file("f" + std::to_string(k)), std::to_string(w));
         f.commit();
       } catch (const InputError&) {
         ++refused;

@@ -18,7 +18,8 @@ std::vector<double> obstacle_points(const std::string& svg) {
   std::vector<double> out;
   const std::string pts = m[1];
   const std::regex num("-?[0-9.]+");
-  for (auto it = std::sregex_iterator(pts.begin(), pts.end(), num); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(pts.begin(), pts.end(), num); it != std::sregex_iterator();
+       ++it)
     out.push_back(std::stod(it->str()));
   return out;
 }
@@ -36,8 +37,10 @@ TEST(PlanView, ObstacleFootprintIsDrawnWhereItStands) {
   // The coordinates are printed with one decimal, so 0.05 px is the rounding bound.
   double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
   for (size_t i = 0; i < p.size(); i += 2) {
-    xmin = std::min(xmin, p[i]); xmax = std::max(xmax, p[i]);
-    ymin = std::min(ymin, p[i + 1]); ymax = std::max(ymax, p[i + 1]);
+    xmin = std::min(xmin, p[i]);
+    xmax = std::max(xmax, p[i]);
+    ymin = std::min(ymin, p[i + 1]);
+    ymax = std::max(ymax, p[i + 1]);
   }
   EXPECT_NEAR(xmin, 40 + 56 * 4, 0.05);
   EXPECT_NEAR(xmax, 40 + 56 * 5, 0.05);

@@ -34,7 +34,9 @@ namespace fs = std::filesystem;
 struct Decoded {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgb;
-  std::uint8_t at(int x, int y, int c) const { return rgb[(static_cast<std::size_t>(y) * width + x) * 3 + c]; }
+  std::uint8_t at(int x, int y, int c) const {
+    return rgb[(static_cast<std::size_t>(y) * width + x) * 3 + c];
+  }
 };
 
 Decoded decode(const fs::path& file) {
@@ -48,14 +50,16 @@ Decoded decode(const fs::path& file) {
   d.width = static_cast<int>(image.width);
   d.height = static_cast<int>(image.height);
   d.rgb.resize(PNG_IMAGE_SIZE(image));
-  if (!png_image_finish_read(&image, nullptr, d.rgb.data(), 0, nullptr)) ADD_FAILURE() << image.message;
+  if (!png_image_finish_read(&image, nullptr, d.rgb.data(), 0, nullptr))
+    ADD_FAILURE() << image.message;
   return d;
 }
 
 fs::path scratch() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(::testing::TempDir()) /
-                       ("luxgrid_png_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::path(::testing::TempDir()) /
+      ("luxgrid_png_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -109,7 +113,7 @@ TEST(Raster, LinesIncludeBothEndsAndBoxesTheirCorners) {
   b.box(2, 2, 5, 6, {0, 0, 0}, false);
   EXPECT_EQ(b.at(2, 2).r, 0.f);
   EXPECT_EQ(b.at(5, 6).r, 0.f);
-  EXPECT_EQ(b.at(3, 3).r, 1.f);  // outline only
+  EXPECT_EQ(b.at(3, 3).r, 1.f);        // outline only
   b.fill(-5, 100, 9, 100, {0, 0, 0});  // clipped, no crash
   EXPECT_EQ(b.at(0, 9).r, 0.f);
 }
@@ -383,20 +387,26 @@ TEST(Npy, HeaderAndValuesReadBack) {
   EXPECT_EQ(f.substr(0, 6), "\x93NUMPY");
   EXPECT_EQ(f[6], 1);
   EXPECT_EQ(f[7], 0);
-  const std::size_t header_len = static_cast<unsigned char>(f[8]) | (static_cast<unsigned char>(f[9]) << 8);
+  const std::size_t header_len =
+      static_cast<unsigned char>(f[8]) | (static_cast<unsigned char>(f[9]) << 8);
   EXPECT_EQ((10 + header_len) % 64, 0u) << "data aligned to 64 bytes";
   const std::string dict = f.substr(10, header_len);
   EXPECT_EQ(dict.back(), '\n');
-  EXPECT_EQ(dict.rfind("{'descr': '<f8', 'fortran_order': False, 'shape': (2, 6), }", 0), 0u) << dict;
+  EXPECT_EQ(dict.rfind("{'descr': '<f8', 'fortran_order': False, 'shape': (2, 6), }", 0), 0u)
+      << dict;
   ASSERT_EQ(f.size(), 10 + header_len + 2 * 6 * 8);
   auto value = [&](std::size_t index) {
     std::uint64_t bits = 0;
-    for (int k = 0; k < 8; ++k) bits |= std::uint64_t(static_cast<unsigned char>(f[10 + header_len + index * 8 + k])) << (8 * k);
+    for (int k = 0; k < 8; ++k)
+      bits |= std::uint64_t(static_cast<unsigned char>(f[10 + header_len + index * 8 + k]))
+              << (8 * k);
     return std::bit_cast<double>(bits);
   };
-  const double want[2][6] = {{0.25, 0.25, 1.2, 80.0, 100.0, 1.0 / 3.0}, {0.75, 0.25, 1.2, -0.0, 50.25, 0.0}};
+  const double want[2][6] = {{0.25, 0.25, 1.2, 80.0, 100.0, 1.0 / 3.0},
+                             {0.75, 0.25, 1.2, -0.0, 50.25, 0.0}};
   for (int row = 0; row < 2; ++row)
-    for (int col = 0; col < 6; ++col) EXPECT_EQ(value(row * 6 + col), want[row][col]) << row << "," << col;  // bit-exact
+    for (int col = 0; col < 6; ++col)
+      EXPECT_EQ(value(row * 6 + col), want[row][col]) << row << "," << col;  // bit-exact
   EXPECT_TRUE(std::signbit(value(9)));
 }
 

@@ -23,7 +23,10 @@ nlohmann::json project(const nlohmann::json& req) {
 }
 
 TEST(Requirements, ExactlyAtTheLimitIsMet) {
-  const auto checks = check_requirements(two_points(), parse_requirements(project({{"Em", 500}, {"U0", 0.8}, {"Emin", 400}, {"Emax", 600}}), "p.json"));
+  const auto checks = check_requirements(
+      two_points(),
+      parse_requirements(project({{"Em", 500}, {"U0", 0.8}, {"Emin", 400}, {"Emax", 600}}),
+                         "p.json"));
   ASSERT_EQ(checks.size(), 4u);
   for (const auto& c : checks) {
     EXPECT_TRUE(c.met) << c.quantity;
@@ -36,22 +39,25 @@ TEST(Requirements, ExactlyAtTheLimitIsMet) {
 }
 
 TEST(Requirements, PassWithMargin) {
-  const auto checks = check_requirements(two_points(), parse_requirements(project({{"Em", 400}, {"U0", 0.6}}), "p.json"));
+  const auto checks = check_requirements(
+      two_points(), parse_requirements(project({{"Em", 400}, {"U0", 0.6}}), "p.json"));
   ASSERT_EQ(checks.size(), 2u);
   EXPECT_TRUE(checks[0].met);
-  EXPECT_DOUBLE_EQ(checks[0].margin, 100.0);      // 500 - 400 lx
-  EXPECT_DOUBLE_EQ(checks[0].margin_rel, 0.25);   // 100 / 400
+  EXPECT_DOUBLE_EQ(checks[0].margin, 100.0);     // 500 - 400 lx
+  EXPECT_DOUBLE_EQ(checks[0].margin_rel, 0.25);  // 100 / 400
   EXPECT_TRUE(checks[1].met);
-  EXPECT_NEAR(checks[1].margin, 0.2, 1e-12);      // 0.8 - 0.6
+  EXPECT_NEAR(checks[1].margin, 0.2, 1e-12);  // 0.8 - 0.6
 }
 
 TEST(Requirements, FailJustBelowAndAbove) {
-  const auto checks = check_requirements(two_points(), parse_requirements(project({{"Em", 500.1}, {"Emax", 599.9}, {"Emin", 401}}), "p.json"));
+  const auto checks = check_requirements(
+      two_points(),
+      parse_requirements(project({{"Em", 500.1}, {"Emax", 599.9}, {"Emin", 401}}), "p.json"));
   ASSERT_EQ(checks.size(), 3u);
   for (const auto& c : checks) EXPECT_FALSE(c.met) << c.quantity;
-  EXPECT_NEAR(checks[0].margin, -0.1, 1e-9);   // Em: 500 - 500.1
-  EXPECT_NEAR(checks[1].margin, -1.0, 1e-9);   // Emin: 400 - 401
-  EXPECT_NEAR(checks[2].margin, -0.1, 1e-9);   // Emax: 599.9 - 600
+  EXPECT_NEAR(checks[0].margin, -0.1, 1e-9);  // Em: 500 - 500.1
+  EXPECT_NEAR(checks[1].margin, -1.0, 1e-9);  // Emin: 400 - 401
+  EXPECT_NEAR(checks[2].margin, -0.1, 1e-9);  // Emax: 599.9 - 600
   EXPECT_FALSE(all_met(checks));
   const auto j = check_to_json(checks[2]);
   EXPECT_EQ(j["limit"], "max");
@@ -63,7 +69,9 @@ TEST(Requirements, UnknownQuantityNamesTheKey) {
     parse_requirements(project({{"Em", 500}, {"Eav", 500}}), "p.json");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "p.json /surfaces/0/requirements/Eav: unknown quantity \"Eav\", expected Em, U0, Emin, Emax, Ez, Esc, "
+    EXPECT_STREQ(e.what(),
+                 "p.json /surfaces/0/requirements/Eav: unknown quantity \"Eav\", expected Em, U0, "
+                 "Emin, Emax, Ez, Esc, "
                  "UGR_L, Ra, modelling, preset, glare_observers, cylindrical or horizontal");
   }
 }

@@ -33,7 +33,8 @@ TEST(ResultsJson, HasTheDocumentedShape) {
   EXPECT_EQ(j["format"], "luxgrid-results/2");
   EXPECT_EQ(j["project"], "demo");
   EXPECT_EQ(j["values"], "maintained");
-  for (const char* k : {"direct", "indirect", "visibility", "notes"}) EXPECT_TRUE(j["plan"].contains(k)) << k;
+  for (const char* k : {"direct", "indirect", "visibility", "notes"})
+    EXPECT_TRUE(j["plan"].contains(k)) << k;
   const auto& s = j["surfaces"][0];
   EXPECT_EQ(s["name"], "wp");
   EXPECT_EQ(s["kind"], "grid");
@@ -44,7 +45,8 @@ TEST(ResultsJson, HasTheDocumentedShape) {
   EXPECT_EQ(s["points"][1], nlohmann::json::array({0.75, 0.25, 0.8}));
   EXPECT_EQ(s["normals"][0], nlohmann::json::array({0.0, 0.0, 1.0}));
   for (const char* k : {"E", "E_direct", "E_indirect"}) EXPECT_EQ(s[k].size(), 8u) << k;
-  for (const char* k : {"Emin", "Eavg", "Emax", "U0", "Ud"}) EXPECT_TRUE(s["stats"].contains(k)) << k;
+  for (const char* k : {"Emin", "Eavg", "Emax", "U0", "Ud"})
+    EXPECT_TRUE(s["stats"].contains(k)) << k;
   EXPECT_DOUBLE_EQ(s["stats"]["U0"].get<double>(), 1.0);
   // Times are not results: they go to timing.json, so identical runs give identical results.json.
   EXPECT_FALSE(j.contains("timing_s"));
@@ -62,14 +64,17 @@ TEST(ResultsJson, SaysWhatGeometryDid) {
   g.active = {true, false, false, true, true, true, false, true};
   g.points_outside = 2;
   g.points_in_obstacles = 1;
-  const auto j = results_to_json(r, {"room \"L\": the outline is clockwise; reversed to counter-clockwise"});
+  const auto j =
+      results_to_json(r, {"room \"L\": the outline is clockwise; reversed to counter-clockwise"});
   const auto& s = j["surfaces"][0];
   EXPECT_EQ(s["quantity"], "cylindrical");
   EXPECT_EQ(s["points_outside"], 2);
   EXPECT_EQ(s["points_in_obstacles"], 1);
-  EXPECT_EQ(s["active"], nlohmann::json::array({true, false, false, true, true, true, false, true}));
+  EXPECT_EQ(s["active"],
+            nlohmann::json::array({true, false, false, true, true, true, false, true}));
   ASSERT_EQ(j["warnings"].size(), 1u);
-  EXPECT_EQ(j["warnings"][0], "room \"L\": the outline is clockwise; reversed to counter-clockwise");
+  EXPECT_EQ(j["warnings"][0],
+            "room \"L\": the outline is clockwise; reversed to counter-clockwise");
 }
 
 TEST(ResultsJson, SaysWhereTheResultsCameFrom) {
@@ -84,7 +89,8 @@ TEST(ResultsJson, SaysWhereTheResultsCameFrom) {
   // The parts add up to the total at every point: all three are maintained values.
   const auto& s = j["surfaces"][0];
   for (size_t i = 0; i < s["E"].size(); ++i)
-    EXPECT_DOUBLE_EQ(s["E_direct"][i].get<double>() + s["E_indirect"][i].get<double>(), s["E"][i].get<double>());
+    EXPECT_DOUBLE_EQ(s["E_direct"][i].get<double>() + s["E_indirect"][i].get<double>(),
+                     s["E"][i].get<double>());
 }
 
 TEST(ResultsJson, StreamedFileIsTheDocumentByteForByte) {
