@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/run_project.h"
 #include "cli/commands.h"
-#include "cli/run_project.h"
 #include "util/error.h"
 
 namespace luxgrid::cli {
@@ -41,7 +41,7 @@ void add_calc_command(CLI::App& app, Runner& run) {
                 "Also run draft/standard/high/reference and put the cost table into the report");
   cmd->callback([opt, &run] {
     run = [opt] {
-      RunOptions options;
+      app::RunOptions options;
       if (!opt->quality.empty()) options.quality = calc::quality_from_string(opt->quality);
       if (!opt->scale.empty()) options.scale = report::parse_scale(opt->scale);
       if (!opt->scene.empty()) {
@@ -52,13 +52,13 @@ void add_calc_command(CLI::App& app, Runner& run) {
       options.with_cost = opt->with_cost;
       options.arrays_npy = opt->arrays == "npy";
       options.show_progress = true;
-      const std::filesystem::path out =
-          opt->out.empty() ? default_output_dir(opt->project) : std::filesystem::path(opt->out);
+      const std::filesystem::path out = opt->out.empty() ? app::default_output_dir(opt->project)
+                                                         : std::filesystem::path(opt->out);
       auto warn = [](const std::string& w) {
         std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
       };
       options.on_load_warning = warn;
-      const auto outcome = run_project(opt->project, out, options);
+      const auto outcome = app::run_project(opt->project, out, options);
       // The scene's warnings were printed on loading; the outputs' (after them in the list) now.
       for (size_t k = outcome.scene_warnings; k < outcome.warnings.size(); ++k)
         warn(outcome.warnings[k]);

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/run_project.h"
 #include "cli/commands.h"
-#include "cli/run_project.h"
 #include "project/project_file.h"
 
 namespace luxgrid::cli {
@@ -24,7 +24,7 @@ void add_cost_command(CLI::App& app, Runner& run) {
       const project::Project loaded = project::load_project(opt->project);
       for (const auto& w : loaded.scene.warnings)
         std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
-      const auto table = run_cost(loaded.scene, true);
+      const auto table = app::run_cost(loaded.scene, true);
       // Each level's surfaces whose estimated error exceeds its promise (the table marks them "!").
       for (const auto& level : table.levels)
         for (const auto& w : level.warnings)

@@ -2,9 +2,9 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/validation.h"
 #include "cli/commands.h"
 #include "cli/data_paths.h"
-#include "cli/validation.h"
 #include "report/output_folder.h"
 
 namespace luxgrid::cli {
@@ -26,7 +26,7 @@ void add_validate_command(CLI::App& app, Runner& run) {
       const std::filesystem::path cases =
           opt->cases.empty() ? find_repository_path("cases") : std::filesystem::path(opt->cases);
       report::OutputFolder folder(opt->out, {cases});
-      const ValidationReport report = run_validation(cases, folder.staging());
+      const app::ValidationReport report = app::run_validation(cases, folder.staging());
       const std::string md = report.markdown();
       report::write_text_file(folder.file("validation.md"), md);
       report::write_text_file(folder.file("validation.json"), report.json().dump(1) + "\n");

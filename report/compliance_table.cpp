@@ -6,16 +6,11 @@
 
 #include "report/html_report.h"
 #include "report/requirements_en1838.h"
+#include "util/format.h"
 
 namespace luxgrid::report {
 
 namespace {
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 // Digits as a designer reads them: lux to 0.1, ratios to 0.001, UGR and Ra to 0.1.
 const char* format_of(const std::string& q) {
@@ -90,17 +85,18 @@ std::string compliance_table_html(const std::vector<RequirementCheck>& checks) {
   for (const auto& c : checks) {
     const std::string unit = requirement_unit(c.quantity);
     const char* f = format_of(c.quantity);
-    const std::string required =
-        c.required_max
-            ? fmt(f, c.required) + " &ndash; " + fmt(f, *c.required_max)
-            : std::string(c.upper_limit ? "&le; " : "&ge; ") + fmt("%g", c.required) + unit;
+    const std::string required = c.required_max ? format_double(f, c.required) + " &ndash; " +
+                                                      format_double(f, *c.required_max)
+                                                : std::string(c.upper_limit ? "&le; " : "&ge; ") +
+                                                      format_double("%g", c.required) + unit;
     std::string achieved = "&ndash;", margin = "&ndash;";
     if (c.calculated) {
-      achieved = c.achieved_max ? fmt(f, c.achieved) + " &ndash; " + fmt(f, *c.achieved_max)
-                                : fmt(f, c.achieved) + unit;
+      achieved = c.achieved_max ? format_double(f, c.achieved) + " &ndash; " +
+                                      format_double(f, *c.achieved_max)
+                                : format_double(f, c.achieved) + unit;
       const std::string mf = std::string("%+") + (f + 1);
-      margin = fmt(mf.c_str(), c.margin) + unit + "<br><span class=\"muted\">" +
-               fmt("%+.1f", 100.0 * c.margin_rel) + " %</span>";
+      margin = format_double(mf.c_str(), c.margin) + unit + "<br><span class=\"muted\">" +
+               format_double("%+.1f", 100.0 * c.margin_rel) + " %</span>";
     }
     const char* result = check_result(c);
     const char* css = !c.calculated ? "notcalc" : c.met ? "met" : "notmet";

@@ -16,6 +16,7 @@
 #include "report/plan_view_svg.h"
 #include "report/png_file.h"
 #include "report/polar_diagram.h"
+#include "util/format.h"
 
 namespace luxgrid::report {
 
@@ -24,12 +25,6 @@ namespace {
 // Grids up to this many points per side get their values printed as a table (EN 12464-1 asks for
 // the grid values to be documented; beyond 30 x 30 a table no longer fits a printed page).
 constexpr int kMaxValueTableSide = 30;
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 // A CSS string literal: quotes and backslashes escaped, '<' as an escape so "</style>" in a
 // project name cannot end the style sheet.
@@ -135,15 +130,15 @@ std::string luminaire_sections(const calc::Scene& scene) {
                                  calc::glare::Viewing::crosswise);
       const auto e = calc::glare::table_ugr(
           *dist, *opening, room, calc::glare::kTableReflectances[0], calc::glare::Viewing::endwise);
-      if (c && e) ugr = fmt("%.1f", *c) + " / " + fmt("%.1f", *e);
+      if (c && e) ugr = format_double("%.1f", *c) + " / " + format_double("%.1f", *e);
     }
     h += "<tr data-type=\"" + html_escape(key) + "\"><td>" + html_escape(key) + "</td><td>" +
          product + "</td><td>" + html_escape(std::filesystem::path(p.source).filename().string()) +
          "</td><td class=\"num\">" + std::to_string(count) + "</td><td class=\"num\">" +
-         (have_flux ? fmt("%.0f", flux_lm) + " lm" : "&ndash;") +
+         (have_flux ? format_double("%.0f", flux_lm) + " lm" : "&ndash;") +
          "</td><td class=\"num\" data-power=\"" + html_escape(key) + "\">" +
-         (file.power_W ? fmt("%.1f", *file.power_W) + " W" : std::string("not in file")) +
-         "</td><td class=\"num\">" + (lor ? fmt("%.2f", *lor) : std::string("&ndash;")) +
+         (file.power_W ? format_double("%.1f", *file.power_W) + " W" : std::string("not in file")) +
+         "</td><td class=\"num\">" + (lor ? format_double("%.2f", *lor) : std::string("&ndash;")) +
          "</td><td class=\"num\" data-ugr-table=\"" + html_escape(key) + "\">" + ugr + "</td></tr>";
     if (dist) {
       const Raster polar = polar_diagram(*dist, key, 600);
@@ -172,7 +167,7 @@ std::string luminaire_sections(const calc::Scene& scene) {
     std::string mounting = "&ndash;";
     for (const auto& room : scene.rooms) {
       if (geometry::locate(Vec2(p), room.outline, 1e-6) != geometry::Location::outside) {
-        mounting = fmt("%.2f", p.z - room.floor_z) + " m";
+        mounting = format_double("%.2f", p.z - room.floor_z) + " m";
         break;
       }
     }
@@ -230,7 +225,8 @@ std::string surface_section(const calc::SurfaceResult& s, const calc::Scene* sce
   h += stat_cell(g.name, "U0", format_ratio_value(s.stats.U0));
   h += stat_cell(g.name, "Ud", format_ratio_value(s.stats.Ud));
   h += grid ? "<td>" + std::to_string(g.nu) + " x " + std::to_string(g.nv) + ", spacing " +
-                  fmt("%.3f", g.spacing_u) + " x " + fmt("%.3f", g.spacing_v) + " m</td>"
+                  format_double("%.3f", g.spacing_u) + " x " + format_double("%.3f", g.spacing_v) +
+                  " m</td>"
             : "<td>" + std::to_string(g.points.size()) + " points</td>";
   h += "</tr></table>\n";
   std::string rows;
@@ -239,12 +235,13 @@ std::string surface_section(const calc::SurfaceResult& s, const calc::Scene* sce
     const std::string unit = requirement_unit(c.quantity);
     const char* f = c.quantity == "U0" || c.quantity == "modelling" ? "%.3f" : "%.1f";
     std::string required =
-        std::string(c.upper_limit ? "&le; " : "&ge; ") + fmt(f, c.required) + unit;
-    if (c.required_max) required = fmt(f, c.required) + " to " + fmt(f, *c.required_max);
+        std::string(c.upper_limit ? "&le; " : "&ge; ") + format_double(f, c.required) + unit;
+    if (c.required_max)
+      required = format_double(f, c.required) + " to " + format_double(f, *c.required_max);
     const char* cls = !c.calculated ? "notcalc" : c.met ? "met" : "notmet";
     rows += "<tr><td>" + html_escape(c.quantity) + "</td><td class=\"num\">" + required +
             "</td><td class=\"num\">" +
-            (c.calculated ? fmt(f, c.achieved) + unit : std::string("&ndash;")) +
+            (c.calculated ? format_double(f, c.achieved) + unit : std::string("&ndash;")) +
             "</td><td class=\"" + cls + "\">" + check_result(c) + "</td></tr>";
   }
   if (!rows.empty())
@@ -261,7 +258,8 @@ std::string surface_section(const calc::SurfaceResult& s, const calc::Scene* sce
       for (int i = 0; i < g.nu; ++i) {
         const size_t k = static_cast<size_t>(j) * g.nu + i;
         const bool on = k >= g.active.size() || g.active[k];
-        h += "<td>" + (on && k < s.E.size() ? fmt("%.0f", s.E[k]) : std::string("&ndash;")) +
+        h += "<td>" +
+             (on && k < s.E.size() ? format_double("%.0f", s.E[k]) : std::string("&ndash;")) +
              "</td>";
       }
       h += "</tr>";
@@ -318,7 +316,7 @@ std::string method_section(const calc::Results& r, const calc::Scene* scene) {
          "illuminance in this report is the maintained value: the value of a new installation "
          "multiplied by the "
          "maintenance factor " +
-         fmt("%.2f", scene->settings.maintenance_factor) + ".</p>";
+         format_double("%.2f", scene->settings.maintenance_factor) + ".</p>";
     h += std::string("<p><strong>Accuracy.</strong> The calculation ran at the quality &ldquo;") +
          calc::to_string(scene->settings.quality) +
          "&rdquo;; docs/accuracy.md gives the accuracy each quality "
@@ -334,8 +332,8 @@ std::string method_section(const calc::Results& r, const calc::Scene* scene) {
 
 }  // namespace
 
-std::string format_lux_value(double lx) { return fmt("%.1f", lx); }
-std::string format_ratio_value(double ratio) { return fmt("%.3f", ratio); }
+std::string format_lux_value(double lx) { return format_double("%.1f", lx); }
+std::string format_ratio_value(double ratio) { return format_double("%.3f", ratio); }
 
 std::string base64(const std::string& bytes) {
   static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -394,11 +392,11 @@ std::string html_report(const ReportInput& in) {
     h += std::string("<tr><th>Calculation quality</th><td data-meta=\"quality\">") +
          calc::to_string(scene->settings.quality) + "</td></tr>";
     h += "<tr><th>Maintenance factor</th><td data-meta=\"maintenance_factor\">" +
-         fmt("%.2f", scene->settings.maintenance_factor);
+         format_double("%.2f", scene->settings.maintenance_factor);
     if (const auto& m = scene->settings.maintenance_parts) {
-      h += " = LLMF " + fmt("%.2f", m->LLMF) + " &times; LSF " + fmt("%.2f", m->LSF) +
-           " &times; LMF " + fmt("%.2f", m->LMF) + " &times; RSMF " + fmt("%.2f", m->RSMF) +
-           " (CIE 97:2005)";
+      h += " = LLMF " + format_double("%.2f", m->LLMF) + " &times; LSF " +
+           format_double("%.2f", m->LSF) + " &times; LMF " + format_double("%.2f", m->LMF) +
+           " &times; RSMF " + format_double("%.2f", m->RSMF) + " (CIE 97:2005)";
     }
     h += "<br><span class=\"muted\">All illuminances in this report are maintained "
          "values.</span></td></tr>";
@@ -434,14 +432,17 @@ std::string html_report(const ReportInput& in) {
         y0 = std::min(y0, room.outline[k].y), y1 = std::max(y1, room.outline[k].y);
       }
       h += "<tr data-room=\"" + html_escape(room.name) + "\"><td>" + html_escape(room.name) +
-           "</td><td class=\"num\">" + fmt("%.2f", std::abs(geometry::signed_area(room.outline))) +
-           " m&sup2;</td><td class=\"num\">" + fmt("%.2f", perimeter) +
-           " m</td><td class=\"num\">" + fmt("%.2f", x1 - x0) + " &times; " + fmt("%.2f", y1 - y0) +
-           " m</td><td class=\"num\">" + fmt("%.2f", room.height) +
+           "</td><td class=\"num\">" +
+           format_double("%.2f", std::abs(geometry::signed_area(room.outline))) +
+           " m&sup2;</td><td class=\"num\">" + format_double("%.2f", perimeter) +
+           " m</td><td class=\"num\">" + format_double("%.2f", x1 - x0) + " &times; " +
+           format_double("%.2f", y1 - y0) + " m</td><td class=\"num\">" +
+           format_double("%.2f", room.height) +
            " m</td><td class=\"num\" data-stat=\"reflectance\">" +
-           fmt("%.2f", room.reflectance.floor) + " / " + fmt("%.2f", room.reflectance.walls) +
-           " / " + fmt("%.2f", room.reflectance.ceiling) + "</td><td class=\"num\">" +
-           fmt("%.2f", scene->settings.maintenance_factor) + "</td></tr>";
+           format_double("%.2f", room.reflectance.floor) + " / " +
+           format_double("%.2f", room.reflectance.walls) + " / " +
+           format_double("%.2f", room.reflectance.ceiling) + "</td><td class=\"num\">" +
+           format_double("%.2f", scene->settings.maintenance_factor) + "</td></tr>";
     }
     h += "</table>\n";
     bool any_obstacle = false;
@@ -453,8 +454,9 @@ std::string html_report(const ReportInput& in) {
       for (const auto& room : scene->rooms)
         for (const auto& o : room.obstacles)
           h += "<tr><td>" + html_escape(room.name) + "</td><td>" + html_escape(o.name) +
-               "</td><td class=\"num\">" + fmt("%.2f", o.z0) + " / " + fmt("%.2f", o.z1) +
-               " m</td><td class=\"num\">" + fmt("%.2f", o.reflectance) + "</td></tr>";
+               "</td><td class=\"num\">" + format_double("%.2f", o.z0) + " / " +
+               format_double("%.2f", o.z1) + " m</td><td class=\"num\">" +
+               format_double("%.2f", o.reflectance) + "</td></tr>";
       h += "</table>\n";
     }
     h += "</div>\n";
@@ -496,13 +498,15 @@ std::string html_report(const ReportInput& in) {
       const auto na = std::string("&ndash;");
       h += "<tr><td>" + html_escape(e.room) + "</td><td class=\"num\">" +
            std::to_string(e.luminaires) + "</td><td class=\"num\" data-energy=\"power\">" +
-           (e.power_W ? fmt("%.1f", *e.power_W) + " W" : na) + "</td><td class=\"num\">" +
-           fmt("%.2f", e.area_m2) + " m&sup2;</td><td class=\"num\" data-energy=\"density\">" +
-           (e.W_per_m2() ? fmt("%.2f", *e.W_per_m2()) + " W/m&sup2;" : na) + "</td><td>" +
+           (e.power_W ? format_double("%.1f", *e.power_W) + " W" : na) + "</td><td class=\"num\">" +
+           format_double("%.2f", e.area_m2) +
+           " m&sup2;</td><td class=\"num\" data-energy=\"density\">" +
+           (e.W_per_m2() ? format_double("%.2f", *e.W_per_m2()) + " W/m&sup2;" : na) + "</td><td>" +
            html_escape(e.reference_surface) + "</td><td class=\"num\">" +
            (e.Eavg_lx ? format_lux_value(*e.Eavg_lx) + " lx" : na) +
            "</td><td class=\"num\" data-energy=\"per100lx\">" +
-           (e.W_per_m2_per_100lx() ? fmt("%.2f", *e.W_per_m2_per_100lx()) + " W/m&sup2;" : na) +
+           (e.W_per_m2_per_100lx() ? format_double("%.2f", *e.W_per_m2_per_100lx()) + " W/m&sup2;"
+                                   : na) +
            "</td></tr>";
     }
     h += "</table>\n<p class=\"caption\">Installed power: the sum of the power each luminaire's "
@@ -544,17 +548,17 @@ std::string html_report(const ReportInput& in) {
       for (const auto& l : in.cost->levels) {
         if (si >= l.surfaces.size()) continue;
         const auto& c = l.surfaces[si];
-        h += "<tr><td>" + l.quality + "</td><td class=\"num\">" + fmt("%.3f", l.time_s) +
+        h += "<tr><td>" + l.quality + "</td><td class=\"num\">" + format_double("%.3f", l.time_s) +
              " s</td><td class=\"num\">" + format_lux_value(c.stats.Eavg) +
              "</td><td class=\"num\">" + format_lux_value(c.stats.Emin) +
              "</td><td class=\"num\">" + format_ratio_value(c.stats.U0) +
-             "</td><td class=\"num\">" + fmt("%.3f", 100.0 * c.to_reference.max_rel) +
-             " %</td><td class=\"num\">" + fmt("%.3f", 100.0 * c.estimate) + " %" +
+             "</td><td class=\"num\">" + format_double("%.3f", 100.0 * c.to_reference.max_rel) +
+             " %</td><td class=\"num\">" + format_double("%.3f", 100.0 * c.estimate) + " %" +
              (l.promised_error > 0.0 && c.estimate > l.promised_error ? " (above the promise)"
                                                                       : "") +
-             "</td><td class=\"num\">" + fmt("%.3f", 100.0 * c.to_reference.mean_rel) +
+             "</td><td class=\"num\">" + format_double("%.3f", 100.0 * c.to_reference.mean_rel) +
              " %</td><td class=\"num\">" +
-             (l.promised_error > 0.0 ? fmt("%.3g", 100.0 * l.promised_error) + " %"
+             (l.promised_error > 0.0 ? format_double("%.3g", 100.0 * l.promised_error) + " %"
                                      : std::string("-")) +
              "</td></tr>";
       }

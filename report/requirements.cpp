@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "util/error.h"
+#include "util/format.h"
 
 namespace luxgrid::report {
 
@@ -172,12 +173,6 @@ void check_surface(const calc::Results& results, const calc::SurfaceResult& s,
   }
 }
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 }  // namespace
 
 std::string requirement_unit(const std::string& q) {
@@ -248,15 +243,16 @@ std::string format_checks(const std::vector<RequirementCheck>& checks) {
   for (const auto& c : checks) {
     const std::string unit = requirement_unit(c.quantity);
     const std::string required =
-        c.required_max ? fmt("%g", c.required) + " to " + fmt("%g", *c.required_max)
-                       : std::string(c.upper_limit ? "<= " : ">= ") + fmt("%g", c.required) + unit;
+        c.required_max
+            ? format_double("%g", c.required) + " to " + format_double("%g", *c.required_max)
+            : std::string(c.upper_limit ? "<= " : ">= ") + format_double("%g", c.required) + unit;
     if (!c.calculated) {
       std::snprintf(line, sizeof line, "%-20s %-9s required %s  NOT CALCULATED (%s)\n",
                     c.surface.c_str(), c.quantity.c_str(), required.c_str(), c.note.c_str());
     } else {
-      const std::string achieved =
-          c.achieved_max ? fmt("%.3g", c.achieved) + " to " + fmt("%.3g", *c.achieved_max)
-                         : fmt("%.4g", c.achieved) + unit;
+      const std::string achieved = c.achieved_max ? format_double("%.3g", c.achieved) + " to " +
+                                                        format_double("%.3g", *c.achieved_max)
+                                                  : format_double("%.4g", c.achieved) + unit;
       std::snprintf(line, sizeof line,
                     "%-20s %-9s required %s  achieved %s  %s (%+.4g%s, %+.1f %%)\n",
                     c.surface.c_str(), c.quantity.c_str(), required.c_str(), achieved.c_str(),

@@ -5,9 +5,9 @@
 
 #include "calc/direct.h"
 
-namespace luxgrid::cli {
+namespace luxgrid::app {
 
 calc::Progress make_progress(const std::string& label);
 void end_progress();
 
-}  // namespace luxgrid::cli
+}  // namespace luxgrid::app

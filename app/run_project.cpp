@@ -1,11 +1,11 @@
-#include "cli/run_project.h"
+#include "app/run_project.h"
 
 #include <chrono>
 
+#include "app/progress.h"
 #include "calc/emergency_scene.h"
 #include "calc/pipeline.h"
 #include "calc/plan_estimates.h"
-#include "cli/progress.h"
 #include "project/project_file.h"
 #include "report/colour_rendering.h"
 #include "report/output_folder.h"
@@ -15,7 +15,7 @@
 #include "util/output_names.h"
 #include "util/sha256.h"
 
-namespace luxgrid::cli {
+namespace luxgrid::app {
 
 std::filesystem::path default_output_dir(const std::filesystem::path& project) {
   std::filesystem::path out = project;
@@ -139,4 +139,4 @@ report::CostTable run_cost(const calc::Scene& base, bool show_progress) {
   return table;
 }
 
-}  // namespace luxgrid::cli
+}  // namespace luxgrid::app

@@ -13,7 +13,7 @@
 #include "report/diff.h"
 #include "report/requirements.h"
 
-namespace luxgrid::cli {
+namespace luxgrid::app {
 
 struct RunOptions {
   std::optional<calc::Quality> quality;      // overrides the project's setting
@@ -61,4 +61,4 @@ std::vector<std::filesystem::path> input_files(const calc::Scene& scene);
 // `<project without extension>.out`, beside the project file.
 std::filesystem::path default_output_dir(const std::filesystem::path& project);
 
-}  // namespace luxgrid::cli
+}  // namespace luxgrid::app

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace luxgrid::cli {
+namespace luxgrid::app {
 
 struct CheckRow {
   std::string case_name;
@@ -36,4 +36,4 @@ struct ValidationReport {
 ValidationReport run_validation(const std::filesystem::path& cases_dir,
                                 const std::filesystem::path& out_dir);
 
-}  // namespace luxgrid::cli
+}  // namespace luxgrid::app

@@ -1,4 +1,4 @@
-#include "cli/progress.h"
+#include "app/progress.h"
 
 #include <unistd.h>
 #include <chrono>
@@ -6,7 +6,7 @@
 #include <memory>
 #include <mutex>
 
-namespace luxgrid::cli {
+namespace luxgrid::app {
 
 namespace {
 bool& shown() {
@@ -38,4 +38,4 @@ void end_progress() {
   shown() = false;
 }
 
-}  // namespace luxgrid::cli
+}  // namespace luxgrid::app

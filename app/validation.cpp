@@ -1,4 +1,4 @@
-#include "cli/validation.h"
+#include "app/validation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,13 +6,13 @@
 #include <fstream>
 #include <optional>
 
+#include "app/run_project.h"
 #include "calc/statistics.h"
-#include "cli/run_project.h"
 #include "project/json_reader.h"
 #include "project/safe_json.h"
 #include "util/error.h"
 
-namespace luxgrid::cli {
+namespace luxgrid::app {
 
 namespace fs = std::filesystem;
 
@@ -243,4 +243,4 @@ ValidationReport run_validation(const fs::path& cases_dir, const fs::path& out_d
   return report;
 }
 
-}  // namespace luxgrid::cli
+}  // namespace luxgrid::app
