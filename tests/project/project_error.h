@@ -11,7 +11,7 @@ using namespace calc;
 
 inline std::string error_of(const nlohmann::json& doc) {
   try {
-    parse_project(doc, "p.json", ".").scene;
+    (void)parse_project(doc, "p.json", ".");
   } catch (const InputError& e) {
     return e.what();
   }
