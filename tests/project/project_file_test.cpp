@@ -86,7 +86,7 @@ TEST(ProjectFile, MaintenanceFactorFromItsCie97Parts) {
   // A missing factor is an error, not a silent 1.
   doc["settings"] = {{"maintenance", {{"LLMF", 0.9}, {"LSF", 0.98}, {"LMF", 0.95}}}};
   try {
-    parse_project(doc, "p.json", ".").scene;
+    (void)parse_project(doc, "p.json", ".");
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/settings/maintenance"), std::string::npos) << e.what();
@@ -415,7 +415,7 @@ TEST(ProjectFile, MalformedJsonNamesLineAndColumn) {
       dir.write("broken.json",
                 "{\n  \"format\": \"luxgrid-project/1\",\n  \"name\": \"x\"\n  \"rooms\": []\n}\n");
   try {
-    load_project(file).scene;
+    (void)load_project(file);
     FAIL() << "expected an error";
   } catch (const InputError& e) {
     const std::string msg = e.what();
@@ -529,7 +529,7 @@ TEST(ProjectFile, DeeplyNestedUnknownKeyFailsWithoutCrashing) {
   for (int i = 0; i < 100000; ++i) text += "{\"a\":";
   text += "1" + std::string(100000, '}') + "}";
   try {
-    parse_project_text(text, "p.json", ".").scene;
+    (void)parse_project_text(text, "p.json", ".");
     FAIL() << "expected an error";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
@@ -543,7 +543,7 @@ TEST(ProjectFile, DuplicateLuminairesKeyIsAnError) {
   std::string text = minimal().dump();
   text.insert(text.size() - 1, ",\n\"luminaires\": []");
   try {
-    parse_project_text(text, "p.json", ".").scene;
+    (void)parse_project_text(text, "p.json", ".");
     FAIL() << "expected an error";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
@@ -565,7 +565,7 @@ nlohmann::json with_file_photometry(const nlohmann::json& entry) {
 
 std::string error_in(const nlohmann::json& doc, const std::filesystem::path& base_dir) {
   try {
-    parse_project(doc, "p.json", base_dir).scene;
+    (void)parse_project(doc, "p.json", base_dir);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -644,7 +644,7 @@ TEST(ProjectFile, LoadProjectReadsThroughTheSafeParse) {
   text.insert(text.size() - 1, R"(,"name": "u")");
   const auto dup = dir.write("dup.json", text);
   try {
-    load_project(dup).scene;
+    (void)load_project(dup);
     FAIL() << "expected an error";
   } catch (const InputError& e) {
     const size_t closing_quote = text.rfind("\"name\"") + 5;
