@@ -8,20 +8,22 @@
 namespace luxgrid::calc::indirect {
 
 double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Polygon3& polygon) {
-  // The horizon clip into a stack buffer: this runs for every near patch of every receiver, so
-  // no heap allocation. A polygon of m corners clips to at most 2 m.
+  return point_polygon_form_factor(x, n, polygon.data(), static_cast<int>(polygon.size()));
+}
+
+double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Vec3* corners, int m) {
+  // The horizon clip into a stack buffer: this runs for every near patch (and cell) of every
+  // receiver, so no heap allocation. A polygon of m corners clips to at most 2 m.
   constexpr int kMaxStack = 16;
-  const int m = static_cast<int>(polygon.size());
   if (m < 3) return 0.0;
   double psa = 0.0;
   if (m > kMaxStack) {
-    const Polygon3 clipped = geometry::clip_to_half_space(polygon, x, n);
+    const Polygon3 clipped = geometry::clip_to_half_space(Polygon3(corners, corners + m), x, n);
     std::vector<Vec3> rel(clipped.size());
     for (size_t k = 0; k < clipped.size(); ++k) rel[k] = clipped[k] - x;
     psa = geometry::projected_solid_angle(rel.data(), rel.size(), n);
   } else {
-    const auto clipped =
-        geometry::clip_to_half_space_relative<2 * kMaxStack>(polygon.data(), m, x, n);
+    const auto clipped = geometry::clip_to_half_space_relative<2 * kMaxStack>(corners, m, x, n);
     psa = geometry::projected_solid_angle(clipped.v.data(), static_cast<size_t>(clipped.n), n);
   }
   return std::clamp(psa / kPi, 0.0, 1.0);

@@ -21,6 +21,8 @@ using geometry::Polygon3;
 // Exact for any planar polygon, in [0, 1], bounded however close x is to the polygon (no
 // singularity: no spikes near walls or corners).
 double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Polygon3& polygon);
+// The same for `count` corners at `corners` (no allocation for up to 16 corners).
+double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Vec3* corners, int count);
 
 // The point-to-point form-factor kernel of [Gadia2024, Eq. 3] (the differential-area form factor
 // cos_s cos_r dA / (pi d^2)) times pi, per unit source area, written with

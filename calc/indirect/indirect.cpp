@@ -16,7 +16,9 @@
 #include "calc/direct.h"
 #include "calc/indirect/emitter_cells.h"
 #include "calc/indirect/first_bounce.h"
+#include "calc/indirect/gather.h"
 #include "calc/indirect/radiosity.h"
+#include "calc/indirect/subcells.h"
 #include "calc/scaled_distribution.h"
 #include "calc/visibility.h"
 #include "geometry/box3.h"
@@ -27,10 +29,6 @@ namespace luxgrid::calc::indirect {
 
 namespace {
 
-// A receiver point closer than this to a patch's plane (or behind it) gets nothing from that
-// patch: it lies on the same face (coplanar, F = 0) or sees it edge-on. Also keeps grid points
-// lying exactly on a wall, at a floor-wall edge or in a corner finite.
-constexpr double kGatherPlaneDistance_m = 1e-7;
 // Points at most this far outside a room's outline still gather from it (surfaces on a wall).
 constexpr double kRoomTolerance_m = 1e-3;
 // Receiver points on a room face (a grid on the floor, at a floor-wall edge, in a corner) are
@@ -176,14 +174,7 @@ PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, double size,
   }
 }
 
-// The gather's visibility segments start this far in front of the receiver and end this far in
-// front of the patch (patches.h visible_fraction), so neither end's own face hides the other.
-constexpr double kGatherLift_m = 1e-6;
-
 using geometry::Box3;
-using geometry::box_distance2;
-using geometry::box_max_height;
-using geometry::box_min_height;
 
 // Axis-aligned bounding boxes of the obstacles, grown by kBoxMargin_m.
 // Obstacle boxes are grown by this much so that a segment ending on an obstacle face, or grazing
@@ -244,170 +235,6 @@ Vec3 inset_into_room(const Room& room, Vec3 x) {
     }
   }
   return x;
-}
-
-// The emitting patches of one room (exitant flux > 0) laid out for the final gather: in groups
-// of consecutive patches with the same normal (a face, or part of one), each cut into chunks of
-// nearby patches (tiles of kChunkTile x the largest diameter). A receiver skips a whole group
-// when it lies behind the group's plane (the floor, for a workplane point), and a whole chunk
-// when the chunk lies wholly behind the receiver's tangent plane (its own wall): exactly the
-// patches whose form factor is 0. A chunk wholly in front of the receiver and farther than every
-// one of its patches' near distances takes the far kernel for all its patches in one loop without
-// branches. Thirteen thousand points times a few thousand patches is the largest loop of
-// calc/indirect.
-constexpr double kChunkTile = 4.0;
-struct GatherSet {
-  // Entries (patches with flux), structure of arrays, ordered by group and chunk.
-  std::vector<double> cx, cy, cz, flux_lm;
-  std::vector<double>
-      near_d2;                // (far_ratio x diameter)^2: closer, the quarters or the exact formula
-  std::vector<size_t> patch;  // index into the mesh
-  struct Chunk {
-    size_t begin = 0, end = 0;  // entries
-    Vec3 lo{0.0}, hi{0.0};      // bounding box of the patches' vertices
-    Vec3 clo{0.0}, chi{0.0};    // bounding box of the centroids
-    double max_near_d2 = 0.0;
-  };
-  struct Group {
-    size_t begin = 0, end = 0;  // chunks
-    Vec3 normal{0.0};
-    double max_offset = 0.0;  // largest normal . centroid over the group
-  };
-  std::vector<Chunk> chunks;
-  std::vector<Group> groups;
-};
-
-GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
-                          const std::vector<double>& exitant_flux_lm, double far_ratio) {
-  GatherSet set;
-  // Runs of emitting patches with the same normal.
-  std::vector<std::pair<size_t, size_t>> runs;  // [first, last) into `emitting`
-  std::vector<size_t> emitting;
-  for (size_t j = begin; j < end; ++j) {
-    if (!(exitant_flux_lm[j] > 0.0)) continue;
-    if (emitting.empty() || mesh.patches[emitting.back()].normal != mesh.patches[j].normal)
-      runs.push_back({emitting.size(), emitting.size()});
-    emitting.push_back(j);
-    runs.back().second = emitting.size();
-  }
-  for (const auto& [first, last] : runs) {
-    GatherSet::Group g;
-    g.normal = mesh.patches[emitting[first]].normal;
-    g.max_offset = -std::numeric_limits<double>::infinity();
-    g.begin = set.chunks.size();
-    Vec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-    double dmax = 0.0;
-    for (size_t k = first; k < last; ++k) {
-      const Patch& p = mesh.patches[emitting[k]];
-      lo = glm::min(lo, p.centroid), hi = glm::max(hi, p.centroid);
-      dmax = std::max(dmax, p.diameter_m);
-      g.max_offset = std::max(g.max_offset, glm::dot(p.normal, p.centroid));
-    }
-    // Tiles of kChunkTile x the largest diameter: sort the run by tile (stable, so the order
-    // within a tile is the mesh's).
-    const double tile = std::max(kChunkTile * dmax, 1e-9);
-    auto key = [&](size_t j) {
-      const Vec3 t = glm::floor((mesh.patches[j].centroid - lo) / tile);
-      return std::array<double, 3>{t.x, t.y, t.z};
-    };
-    std::vector<size_t> order(emitting.begin() + first, emitting.begin() + last);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](size_t a, size_t b) { return key(a) < key(b); });
-    for (size_t k = 0; k < order.size(); ++k) {
-      if (k == 0 || key(order[k]) != key(order[k - 1])) {
-        GatherSet::Chunk c;
-        c.begin = c.end = set.patch.size();
-        c.lo = c.clo = Vec3(std::numeric_limits<double>::infinity());
-        c.hi = c.chi = Vec3(-std::numeric_limits<double>::infinity());
-        set.chunks.push_back(c);
-      }
-      const size_t j = order[k];
-      const Patch& p = mesh.patches[j];
-      GatherSet::Chunk& c = set.chunks.back();
-      const double limit = far_ratio * p.diameter_m;
-      set.cx.push_back(p.centroid.x);
-      set.cy.push_back(p.centroid.y);
-      set.cz.push_back(p.centroid.z);
-      set.flux_lm.push_back(exitant_flux_lm[j]);
-      set.near_d2.push_back(limit * limit);
-      set.patch.push_back(j);
-      c.end = set.patch.size();
-      c.clo = glm::min(c.clo, p.centroid), c.chi = glm::max(c.chi, p.centroid);
-      for (const auto& v : p.polygon) c.lo = glm::min(c.lo, v), c.hi = glm::max(c.hi, v);
-      c.max_near_d2 = std::max(c.max_near_d2, limit * limit);
-    }
-    g.end = set.chunks.size();
-    set.groups.push_back(g);
-  }
-  return set;
-}
-
-// Form factor from the point (x, n) to patch p in the final gather: the point kernel when the
-// patch is far (`far`: beyond far_ratio x its diameter), the kernel on its quarters between
-// far_ratio x D / 2 and far_ratio x D, Lambert's exact polygon formula closer (and whenever the
-// quarter rule declines: non-parallelogram patches, patches crossing the horizon).
-double gather_form_factor(const Vec3& x, const Vec3& n, const Patch& p, double far_ratio,
-                          bool far) {
-  if (far) return point_kernel_form_factor(x, n, p.centroid, p.normal, p.area_m2);
-  const double half = 0.5 * far_ratio * p.diameter_m;
-  const double f = p.has_quarters
-                       ? quarter_kernel_form_factor(x, n, p.polygon, p.centroid, p.quarter_centroid,
-                                                    p.normal, p.area_m2, p.diameter_m, half * half)
-                       : -1.0;
-  return f < 0.0 ? point_polygon_form_factor(x, n, p.polygon) : f;
-}
-
-double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3& x, const Vec3& n,
-                        double far_ratio, const geometry::Visibility* visibility) {
-  double near = 0.0, far = 0.0;
-  const double* cx = set.cx.data();
-  const double* cy = set.cy.data();
-  const double* cz = set.cz.data();
-  const double* flux = set.flux_lm.data();
-  for (const auto& g : set.groups) {
-    // x behind (or on) the plane of every patch of the group: each term is skipped below.
-    if (!(glm::dot(g.normal, x) - g.max_offset > kGatherPlaneDistance_m)) continue;
-    const Vec3 m = g.normal;
-    for (size_t c = g.begin; c < g.end; ++c) {
-      const GatherSet::Chunk& ch = set.chunks[c];
-      // Every vertex behind the receiver's tangent plane: so are the centroids and quarter
-      // centroids, and the kernel and the horizon-clipped polygon give 0.
-      if (box_max_height(n, x, ch.lo, ch.hi) < 0.0) continue;
-      if (!visibility && box_min_height(n, x, ch.clo, ch.chi) > 0.0 &&
-          box_distance2(x, ch.clo, ch.chi) > ch.max_near_d2) {
-        // Far kernel for the whole chunk: every centroid in front of the receiver (n . dx < 0),
-        // the receiver in front of every patch (group test), farther than its near distance.
-        double sum = 0.0;
-        for (size_t k = ch.begin; k < ch.end; ++k) {
-          const double dx = x.x - cx[k], dy = x.y - cy[k], dz = x.z - cz[k];
-          const double hm = m.x * dx + m.y * dy + m.z * dz;
-          const double hn = -(n.x * dx + n.y * dy + n.z * dz);
-          const double d2 = dx * dx + dy * dy + dz * dz;
-          sum += flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
-        }
-        far += sum;
-        continue;
-      }
-      for (size_t k = ch.begin; k < ch.end; ++k) {
-        const Vec3 dx = x - Vec3(cx[k], cy[k], cz[k]);
-        const double hm = glm::dot(m, dx);
-        if (!(hm > kGatherPlaneDistance_m)) continue;
-        const double d2 = glm::dot(dx, dx);
-        if (d2 > set.near_d2[k] && !visibility) {
-          // point_kernel_form_factor x exitance: flux x the kernel / pi (the pi once, below)
-          const double hn = -glm::dot(n, dx);
-          if (hn > 0.0) far += flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
-          continue;
-        }
-        const Patch& p = mesh.patches[set.patch[k]];
-        double f = gather_form_factor(x, n, p, far_ratio, d2 > set.near_d2[k]);
-        if (f > 0.0 && visibility)
-          f *= visible_fraction(visibility, x + n * kGatherLift_m, p, kGatherLift_m);
-        near += flux[k] / p.area_m2 * f;
-      }
-    }
-  }
-  return near + far / kPi;
 }
 
 }  // namespace
@@ -490,23 +317,85 @@ IndirectResult compute_indirect(const Scene& scene,
     for (size_t i = begin; i < end; ++i) exitant[i] = sol.exitant_flux_lm[i - begin];
   }
 
-  // Final gather.
-  std::vector<GatherSet> gather_sets;
-  for (size_t r = 0; r < scene.rooms.size(); ++r)
-    gather_sets.push_back(
-        make_gather_set(mesh, mesh.room_begin[r], mesh.room_begin[r + 1], exitant, far_ratio));
-  res.E_indirect_per_surface.resize(surfaces.size());
+  // Receivers: each active point's room and its position moved off the room's faces.
+  struct Receiver {
+    int room = -1;
+    Vec3 x{0.0};
+  };
+  std::vector<std::vector<Receiver>> receivers(surfaces.size());
   for (size_t s = 0; s < surfaces.size(); ++s) {
     const auto& grid = surfaces[s];
-    auto& out = res.E_indirect_per_surface[s];
-    out.assign(grid.points.size(), 0.0);
+    receivers[s].resize(grid.points.size());
     tbb::parallel_for(size_t(0), grid.points.size(), [&](size_t i) {
       if (!grid.active.empty() && !grid.active[i]) return;
       const int r = room_containing(scene, grid.points[i], kRoomTolerance_m);
       if (r < 0 || faces_out_of_room(scene.rooms[r], grid.points[i], grid.normals[i])) return;
-      const Vec3 x = inset_into_room(scene.rooms[r], grid.points[i]);
-      out[i] =
-          gather_set_point(mesh, gather_sets[r], x, grid.normals[i], far_ratio, room_visibility[r]);
+      receivers[s][i] = {r, inset_into_room(scene.rooms[r], grid.points[i])};
+    });
+  }
+  std::vector<GatherSet> gather_sets;
+  for (size_t r = 0; r < scene.rooms.size(); ++r)
+    gather_sets.push_back(
+        make_gather_set(mesh, mesh.room_begin[r], mesh.room_begin[r + 1], exitant, far_ratio));
+
+  // Patches a receiver comes close to, refined into cells (subcells.h); not at draft, which
+  // promises no accuracy.
+  if (options.refine_near_patches && options.quality != Quality::draft) {
+    std::vector<char> refine(mesh.patches.size(), 0);
+    for (size_t s = 0; s < surfaces.size(); ++s)
+      for (size_t i = 0; i < receivers[s].size(); ++i)
+        if (receivers[s][i].room >= 0)
+          mark_near_patches(mesh, gather_sets[receivers[s][i].room], receivers[s][i].x,
+                            surfaces[s].normals[i], refine);
+    const CellMesh cells = cell_mesh(mesh, refine);
+    if (!cells.mesh.patches.empty()) {
+      const FirstBounce cell_fb =
+          first_bounce(scene, cells.mesh, room_visibility, 0.08, &options.luminous_flux_lm);
+      std::vector<double> cell_indirect(cells.mesh.patches.size(), 0.0);
+      // Near patches cell by cell; the far ones, whose light varies smoothly over a patch, at
+      // the four corner cells of each patch, interpolated bilinearly to the others (subcells.h).
+      const GatherBand near_band{0.0, kCellNearGather * mesh.patch_size_m};
+      const GatherBand far_band{near_band.outer_m};
+      constexpr int kPerSide = kSubcellsPerSide, kCells = kPerSide * kPerSide;
+      tbb::parallel_for(size_t(0), cells.mesh.patches.size() / kCells, [&](size_t patch) {
+        const size_t c0 = patch * kCells;
+        const auto gather = [&](size_t c, const GatherBand& band) {
+          const Patch& q = cells.mesh.patches[c];
+          return gather_set_point(mesh, gather_sets[q.room],
+                                  q.centroid + q.normal * kReceiverInset_m, q.normal, far_ratio,
+                                  room_visibility[q.room], band);
+        };
+        const int last = kPerSide - 1;
+        const double f00 = gather(c0, far_band), f10 = gather(c0 + last * kPerSide, far_band);
+        const double f01 = gather(c0 + last, far_band);
+        const double f11 = gather(c0 + last * kPerSide + last, far_band);
+        for (int a = 0; a < kPerSide; ++a)
+          for (int b = 0; b < kPerSide; ++b) {
+            const double u = static_cast<double>(a) / last, v = static_cast<double>(b) / last;
+            const size_t c = c0 + static_cast<size_t>(a * kPerSide + b);
+            cell_indirect[c] = gather(c, near_band) + (1 - u) * (1 - v) * f00 + u * (1 - v) * f10 +
+                               (1 - u) * v * f01 + u * v * f11;
+          }
+      });
+      const SubcellExitance sub =
+          cell_exitance(mesh, cells, exitant, cell_fb.incident_flux_lm, cell_indirect);
+      res.refined_patches = sub.refined_patches;
+      for (size_t r = 0; r < scene.rooms.size(); ++r)
+        gather_sets[r] = make_gather_set(mesh, mesh.room_begin[r], mesh.room_begin[r + 1], exitant,
+                                         far_ratio, &sub);
+    }
+  }
+
+  // Final gather.
+  res.E_indirect_per_surface.resize(surfaces.size());
+  for (size_t s = 0; s < surfaces.size(); ++s) {
+    auto& out = res.E_indirect_per_surface[s];
+    out.assign(surfaces[s].points.size(), 0.0);
+    tbb::parallel_for(size_t(0), out.size(), [&](size_t i) {
+      const Receiver& rc = receivers[s][i];
+      if (rc.room < 0) return;
+      out[i] = gather_set_point(mesh, gather_sets[rc.room], rc.x, surfaces[s].normals[i], far_ratio,
+                                room_visibility[rc.room]);
     });
   }
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -520,6 +409,12 @@ IndirectResult compute_indirect(const Scene& scene,
       what + ": " + std::to_string(res.patches) + " patches of " +
       format_double("%.3g", res.patch_size_m) + " m, " + std::to_string(res.vpls) +
       " virtual point lights, residual " + format_double("%.2g", res.residual) +
+      (res.refined_patches
+           ? "; " + std::to_string(res.refined_patches) + " patches seen from closer than " +
+                 format_double("%.3g", kSubcellReach) + " diameters refined into " +
+                 std::to_string(kSubcellsPerSide) + " x " + std::to_string(kSubcellsPerSide) +
+                 " cells"
+           : std::string()) +
       "; direct flux on room faces " + format_double("%.6g", res.received_flux_lm) + " lm of " +
       format_double("%.6g", res.emitted_flux_lm) + " lm emitted into the rooms" +
       (res.emitted_flux_lm < res.luminaire_flux_lm * (1.0 - kOutsideFluxFraction)

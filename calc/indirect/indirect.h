@@ -10,7 +10,9 @@
 // then carried between patches with exact polygon form factors and solved to convergence, or for
 // exactly N reflections (radiosity.h); finally each grid point gathers from the patches with
 // Lambert's exact polygon form factor near a patch, the point kernel on its quarters extrapolated
-// (Richardson) at intermediate distances and the seed's point kernel far from it.
+// (Richardson) at intermediate distances and the seed's point kernel far from it (gather.h);
+// a patch seen from closer than a patch diameter is gathered cell by cell, each cell with the
+// exitance its own direct and reflected light give it (subcells.h).
 #include <map>
 #include <memory>
 #include <string>
@@ -36,6 +38,8 @@ struct IndirectOptions {
   size_t max_patches_per_room = kDefaultPatchesPerRoom;
   double far_ratio = 0.0;  // 0: the quality's (draft 3, standard 5, high 8, reference: never)
   double tolerance = 0.0;  // 0: the quality's (draft 1e-2, standard 1e-3, high 1e-4, ref 1e-6)
+  // Patches a receiver comes close to gathered cell by cell (subcells.h); draft does not.
+  bool refine_near_patches = true;
   // What blocks light between two points of the scene: the plan's visibility test (its AABB tree
   // of room and obstacle faces, calc/visibility.h). Null: nothing blocks (make_visibility's
   // verdict for a convex room without obstacles).
@@ -59,6 +63,7 @@ struct IndirectResult {
   bool tail_added = false;
   double residual = 0.0;  // largest over rooms, relative
   double patch_size_m = 0.0;
+  size_t refined_patches = 0;      // patches gathered cell by cell (subcells.h)
   double emitted_flux_lm = 0.0;    // entering the rooms (the parts of the openings inside them)
   double luminaire_flux_lm = 0.0;  // of the luminaires that reach a room, whole
   double received_flux_lm = 0.0;   // direct lumens landing on patches

@@ -1,0 +1,219 @@
+#include "calc/indirect/gather.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "calc/indirect/form_factor.h"
+#include "geometry/box3.h"
+
+namespace luxgrid::calc::indirect {
+
+using geometry::box_distance2;
+using geometry::box_max_height;
+using geometry::box_min_height;
+
+GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
+                          const std::vector<double>& exitant_flux_lm, double far_ratio,
+                          const SubcellExitance* cells) {
+  GatherSet set;
+  // Runs of emitting patches with the same normal.
+  std::vector<std::pair<size_t, size_t>> runs;  // [first, last) into `emitting`
+  std::vector<size_t> emitting;
+  for (size_t j = begin; j < end; ++j) {
+    if (!(exitant_flux_lm[j] > 0.0)) continue;
+    if (emitting.empty() || mesh.patches[emitting.back()].normal != mesh.patches[j].normal)
+      runs.push_back({emitting.size(), emitting.size()});
+    emitting.push_back(j);
+    runs.back().second = emitting.size();
+  }
+  for (const auto& [first, last] : runs) {
+    GatherSet::Group g;
+    g.normal = mesh.patches[emitting[first]].normal;
+    g.max_offset = -std::numeric_limits<double>::infinity();
+    g.begin = set.chunks.size();
+    Vec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    double dmax = 0.0;
+    for (size_t k = first; k < last; ++k) {
+      const Patch& p = mesh.patches[emitting[k]];
+      lo = glm::min(lo, p.centroid), hi = glm::max(hi, p.centroid);
+      dmax = std::max(dmax, p.diameter_m);
+      g.max_offset = std::max(g.max_offset, glm::dot(p.normal, p.centroid));
+    }
+    // Tiles of kChunkTile x the largest diameter: sort the run by tile (stable, so the order
+    // within a tile is the mesh's).
+    const double tile = std::max(kChunkTile * dmax, 1e-9);
+    auto key = [&](size_t j) {
+      const Vec3 t = glm::floor((mesh.patches[j].centroid - lo) / tile);
+      return std::array<double, 3>{t.x, t.y, t.z};
+    };
+    std::vector<size_t> order(emitting.begin() + first, emitting.begin() + last);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return key(a) < key(b); });
+    for (size_t k = 0; k < order.size(); ++k) {
+      if (k == 0 || key(order[k]) != key(order[k - 1])) {
+        GatherSet::Chunk c;
+        c.begin = c.end = set.patch.size();
+        c.lo = c.clo = Vec3(std::numeric_limits<double>::infinity());
+        c.hi = c.chi = Vec3(-std::numeric_limits<double>::infinity());
+        set.chunks.push_back(c);
+      }
+      const size_t j = order[k];
+      const Patch& p = mesh.patches[j];
+      GatherSet::Chunk& c = set.chunks.back();
+      const double limit = far_ratio * p.diameter_m;
+      set.cx.push_back(p.centroid.x);
+      set.cy.push_back(p.centroid.y);
+      set.cz.push_back(p.centroid.z);
+      set.flux_lm.push_back(exitant_flux_lm[j]);
+      set.near_d2.push_back(limit * limit);
+      set.patch.push_back(j);
+      const long first = cells && !cells->first.empty() ? cells->first[j] : -1;
+      set.first_cell.push_back(first < 0 ? -1 : static_cast<long>(set.cell_exitance_lm_m2.size()));
+      if (first >= 0) {
+        const auto* m = cells->exitance_lm_m2.data() + first;
+        set.cell_exitance_lm_m2.insert(set.cell_exitance_lm_m2.end(), m,
+                                       m + kSubcellsPerSide * kSubcellsPerSide);
+      }
+      c.end = set.patch.size();
+      c.clo = glm::min(c.clo, p.centroid), c.chi = glm::max(c.chi, p.centroid);
+      for (const auto& v : p.polygon) c.lo = glm::min(c.lo, v), c.hi = glm::max(c.hi, v);
+      c.max_near_d2 = std::max(c.max_near_d2, limit * limit);
+      c.max_diameter_m = std::max(c.max_diameter_m, p.diameter_m);
+    }
+    g.end = set.chunks.size();
+    set.groups.push_back(g);
+  }
+  return set;
+}
+
+namespace {
+
+// Form factor from the point (x, n) to patch p in the final gather: the point kernel when the
+// patch is far (`far`: beyond far_ratio x its diameter), the kernel on its quarters between
+// far_ratio x D / 2 and far_ratio x D, Lambert's exact polygon formula closer (and whenever the
+// quarter rule declines: non-parallelogram patches, patches crossing the horizon).
+double gather_form_factor(const Vec3& x, const Vec3& n, const Patch& p, double far_ratio,
+                          bool far) {
+  if (far) return point_kernel_form_factor(x, n, p.centroid, p.normal, p.area_m2);
+  const double half = 0.5 * far_ratio * p.diameter_m;
+  const double f = p.has_quarters
+                       ? quarter_kernel_form_factor(x, n, p.polygon, p.centroid, p.quarter_centroid,
+                                                    p.normal, p.area_m2, p.diameter_m, half * half)
+                       : -1.0;
+  return f < 0.0 ? point_polygon_form_factor(x, n, p.polygon) : f;
+}
+
+// E at (x, n) from the kSubcellsPerSide^2 cells of a refined patch, each with its own exitance:
+// per cell, its point kernel beyond far_ratio x its diameter, Lambert's polygon formula closer.
+double gather_cells(const Vec3& x, const Vec3& n, const Patch& p, const double* cell_exitance_lm_m2,
+                    double far_ratio) {
+  const double cell_diameter = p.diameter_m / kSubcellsPerSide;
+  const double cell_area = p.area_m2 / (kSubcellsPerSide * kSubcellsPerSide);
+  const double near_d2 = far_ratio * far_ratio * cell_diameter * cell_diameter;
+  double e = 0.0;
+  for (int a = 0; a < kSubcellsPerSide; ++a)
+    for (int b = 0; b < kSubcellsPerSide; ++b) {
+      const double m = cell_exitance_lm_m2[a * kSubcellsPerSide + b];
+      if (!(m > 0.0)) continue;
+      const SubcellCorners cell = subcell_corners(p, a, b);
+      const Vec3 centre = 0.25 * (cell[0] + cell[1] + cell[2] + cell[3]);
+      const Vec3 d = x - centre;
+      const double f = glm::dot(d, d) > near_d2
+                           ? point_kernel_form_factor(x, n, centre, p.normal, cell_area)
+                           : point_polygon_form_factor(x, n, cell.data(), 4);
+      e += m * f;
+    }
+  return e;
+}
+
+}  // namespace
+
+double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3& x, const Vec3& n,
+                        double far_ratio, const geometry::Visibility* visibility,
+                        const GatherBand& band) {
+  const double inner2 = band.inner_m * band.inner_m, outer2 = band.outer_m * band.outer_m;
+  double near = 0.0, far = 0.0;
+  const double* cx = set.cx.data();
+  const double* cy = set.cy.data();
+  const double* cz = set.cz.data();
+  const double* flux = set.flux_lm.data();
+  for (const auto& g : set.groups) {
+    // x behind (or on) the plane of every patch of the group: each term is skipped below.
+    if (!(glm::dot(g.normal, x) - g.max_offset > kGatherPlaneDistance_m)) continue;
+    const Vec3 m = g.normal;
+    for (size_t c = g.begin; c < g.end; ++c) {
+      const GatherSet::Chunk& ch = set.chunks[c];
+      // Every vertex behind the receiver's tangent plane: so are the centroids and quarter
+      // centroids, and the kernel and the horizon-clipped polygon give 0.
+      if (box_max_height(n, x, ch.lo, ch.hi) < 0.0) continue;
+      if (!(box_distance2(x, ch.clo, ch.chi) < outer2)) continue;
+      if (!visibility && box_min_height(n, x, ch.clo, ch.chi) > 0.0 &&
+          box_distance2(x, ch.clo, ch.chi) > ch.max_near_d2) {
+        // Far kernel for the whole chunk: every centroid in front of the receiver (n . dx < 0),
+        // the receiver in front of every patch (group test), farther than its near distance.
+        double sum = 0.0;
+        for (size_t k = ch.begin; k < ch.end; ++k) {
+          const double dx = x.x - cx[k], dy = x.y - cy[k], dz = x.z - cz[k];
+          const double hm = m.x * dx + m.y * dy + m.z * dz;
+          const double hn = -(n.x * dx + n.y * dy + n.z * dz);
+          const double d2 = dx * dx + dy * dy + dz * dz;
+          if (d2 >= inner2 && d2 < outer2) sum += flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
+        }
+        far += sum;
+        continue;
+      }
+      for (size_t k = ch.begin; k < ch.end; ++k) {
+        const Vec3 dx = x - Vec3(cx[k], cy[k], cz[k]);
+        const double hm = glm::dot(m, dx);
+        if (!(hm > kGatherPlaneDistance_m)) continue;
+        const double d2 = glm::dot(dx, dx);
+        if (d2 < inner2 || !(d2 < outer2)) continue;
+        if (d2 > set.near_d2[k] && !visibility) {
+          // point_kernel_form_factor x exitance: flux x the kernel / pi (the pi once, below)
+          const double hn = -glm::dot(n, dx);
+          if (hn > 0.0) far += flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
+          continue;
+        }
+        const Patch& p = mesh.patches[set.patch[k]];
+        if (set.first_cell[k] >= 0 &&
+            d2 < kSubcellReach * kSubcellReach * p.diameter_m * p.diameter_m) {
+          double e = gather_cells(x, n, p, &set.cell_exitance_lm_m2[set.first_cell[k]], far_ratio);
+          if (e > 0.0 && visibility)
+            e *= visible_fraction(visibility, x + n * kGatherLift_m, p, kGatherLift_m);
+          near += e;
+          continue;
+        }
+        double f = gather_form_factor(x, n, p, far_ratio, d2 > set.near_d2[k]);
+        if (f > 0.0 && visibility)
+          f *= visible_fraction(visibility, x + n * kGatherLift_m, p, kGatherLift_m);
+        near += flux[k] / p.area_m2 * f;
+      }
+    }
+  }
+  return near + far / kPi;
+}
+
+void mark_near_patches(const PatchMesh& mesh, const GatherSet& set, const Vec3& x, const Vec3& n,
+                       std::vector<char>& near) {
+  for (const auto& g : set.groups) {
+    if (!(glm::dot(g.normal, x) - g.max_offset > kGatherPlaneDistance_m)) continue;
+    for (size_t c = g.begin; c < g.end; ++c) {
+      const GatherSet::Chunk& ch = set.chunks[c];
+      const double reach = kSubcellReach * ch.max_diameter_m;
+      if (box_max_height(n, x, ch.lo, ch.hi) < 0.0 ||
+          box_distance2(x, ch.clo, ch.chi) > reach * reach)
+        continue;
+      for (size_t k = ch.begin; k < ch.end; ++k) {
+        const Patch& p = mesh.patches[set.patch[k]];
+        const Vec3 d = x - p.centroid;
+        if (glm::dot(g.normal, d) > kGatherPlaneDistance_m &&
+            glm::dot(d, d) < kSubcellReach * kSubcellReach * p.diameter_m * p.diameter_m)
+          near[set.patch[k]] = 1;
+      }
+    }
+  }
+}
+
+}  // namespace luxgrid::calc::indirect

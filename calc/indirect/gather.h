@@ -1,0 +1,84 @@
+#pragma once
+// The final gather of calc/indirect: E_indirect at a receiver point from the exitance of every
+// patch of its room (indirect.h). Near a patch (closer than far_ratio x its diameter) Lambert's
+// exact polygon formula or the point kernel on its quarters, far from it the seed's point kernel;
+// a patch refined into cells (subcells.h) is gathered cell by cell by a receiver closer than
+// kSubcellReach diameters.
+#include <limits>
+#include <vector>
+
+#include "calc/indirect/patches.h"
+#include "calc/indirect/subcells.h"
+#include "geometry/visibility.h"
+
+namespace luxgrid::calc::indirect {
+
+// A receiver point closer than this to a patch's plane (or behind it) gets nothing from that
+// patch: it lies on the same face (coplanar, F = 0) or sees it edge-on. Also keeps grid points
+// lying exactly on a wall, at a floor-wall edge or in a corner finite.
+inline constexpr double kGatherPlaneDistance_m = 1e-7;
+// The gather's visibility segments start this far in front of the receiver and end this far in
+// front of the patch (patches.h visible_fraction), so neither end's own face hides the other.
+inline constexpr double kGatherLift_m = 1e-6;
+
+// The emitting patches of one room (exitant flux > 0) laid out for the final gather: in groups
+// of consecutive patches with the same normal (a face, or part of one), each cut into chunks of
+// nearby patches (tiles of kChunkTile x the largest diameter). A receiver skips a whole group
+// when it lies behind the group's plane (the floor, for a workplane point), and a whole chunk
+// when the chunk lies wholly behind the receiver's tangent plane (its own wall): exactly the
+// patches whose form factor is 0. A chunk wholly in front of the receiver and farther than every
+// one of its patches' near distances takes the far kernel for all its patches in one loop without
+// branches. Thirteen thousand points times a few thousand patches is the largest loop of
+// calc/indirect.
+inline constexpr double kChunkTile = 4.0;
+struct GatherSet {
+  // Entries (patches with flux), structure of arrays, ordered by group and chunk.
+  std::vector<double> cx, cy, cz, flux_lm;
+  std::vector<double>
+      near_d2;                // (far_ratio x diameter)^2: closer, the quarters or the exact formula
+  std::vector<size_t> patch;  // index into the mesh
+  // Per entry: the index of its first cell in `cell_exitance_lm_m2` (subcells.h), or -1 when
+  // the patch has no cells (no receiver comes close to it, or it is not a parallelogram).
+  std::vector<long> first_cell;
+  std::vector<double> cell_exitance_lm_m2;
+  struct Chunk {
+    size_t begin = 0, end = 0;  // entries
+    Vec3 lo{0.0}, hi{0.0};      // bounding box of the patches' vertices
+    Vec3 clo{0.0}, chi{0.0};    // bounding box of the centroids
+    double max_near_d2 = 0.0;
+    double max_diameter_m = 0.0;
+  };
+  struct Group {
+    size_t begin = 0, end = 0;  // chunks
+    Vec3 normal{0.0};
+    double max_offset = 0.0;  // largest normal . centroid over the group
+  };
+  std::vector<Chunk> chunks;
+  std::vector<Group> groups;
+};
+
+// The patches [begin, end) of one room with exitant flux > 0; `cells` (may be null) gives the
+// cells of refined patches.
+GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
+                          const std::vector<double>& exitant_flux_lm, double far_ratio,
+                          const SubcellExitance* cells = nullptr);
+
+// The patches a gather takes: those whose centroids lie at a distance in [inner_m, outer_m) from
+// the receiver (all by default).
+struct GatherBand {
+  double inner_m = 0.0;
+  double outer_m = std::numeric_limits<double>::infinity();
+};
+
+// E_indirect (lx) at the receiver (x, n) from the patches of `set` in `band`; `visibility` may be
+// null (nothing blocks).
+double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3& x, const Vec3& n,
+                        double far_ratio, const geometry::Visibility* visibility,
+                        const GatherBand& band = {});
+
+// Sets near[j] for every patch j of `set` that the receiver (x, n) sees from closer than
+// kSubcellReach of its diameters: the patches whose cells the gather would use.
+void mark_near_patches(const PatchMesh& mesh, const GatherSet& set, const Vec3& x, const Vec3& n,
+                       std::vector<char>& near);
+
+}  // namespace luxgrid::calc::indirect
