@@ -10,8 +10,13 @@ namespace luxgrid::report {
 
 namespace {
 
+// round(v 255) to the nearest byte, halves away from zero, as std::lround does: v 255 + 0.5 is
+// exact in double for every float in [0, 255], so truncating it rounds the same way without
+// lround's call (this runs three times a pixel). NaN gives 0, as lround's result cast did.
 std::uint8_t to_byte(float v) {
-  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.f, 1.f) * 255.f));
+  const float scaled = std::clamp(v, 0.f, 1.f) * 255.f;
+  if (!(scaled >= 0.f)) return 0;
+  return static_cast<std::uint8_t>(static_cast<int>(static_cast<double>(scaled) + 0.5));
 }
 
 }  // namespace

@@ -26,7 +26,8 @@ Rgb viridis(double t) {
   if (!(t > 0.0)) return kKnots[0];
   if (t >= 1.0) return kKnots[16];
   const double s = t * 16.0;
-  const int k = std::min(15, static_cast<int>(std::floor(s)));
+  // s > 0 here, so truncation is floor (without a call into libm: this runs once a pixel).
+  const int k = std::min(15, static_cast<int>(s));
   const float f = static_cast<float>(s - k);
   const Rgb& a = kKnots[k];
   const Rgb& b = kKnots[k + 1];

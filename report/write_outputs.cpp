@@ -82,13 +82,17 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
     for (double e : s.E_indirect) indirect_ran = indirect_ran || e > 0.0;
   // Every file of every surface is independent of the others: they are written in parallel, one
   // task per file (a surface's plots are the largest share), and the warnings are gathered in
-  // surface order afterwards so the output does not depend on the schedule.
+  // surface order afterwards so the output does not depend on the schedule. The report's
+  // luminaire sections (polar diagrams, CIE 190 tables) are made by a task of their own
+  // meanwhile, the first one, so what is left after the plots is assembling text.
   struct Job {
     std::size_t surface;
-    enum class What { csv, npy, plot, direct_plot, indirect_plot } what;
+    enum class What { luminaires_html, csv, npy, plot, direct_plot, indirect_plot } what;
     std::string warning;
   };
   std::vector<Job> jobs;
+  if (options.report && options.scene && !options.scene->photometry.empty())
+    jobs.push_back({0, Job::What::luminaires_html, {}});
   for (std::size_t i = 0; i < results.surfaces.size(); ++i) {
     jobs.push_back({i, Job::What::csv, {}});
     if (options.arrays_npy) jobs.push_back({i, Job::What::npy, {}});
@@ -101,9 +105,14 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   }
   tbb::parallel_for(std::size_t{0}, jobs.size(), [&](std::size_t n) {
     Job& job = jobs[n];
+    if (job.what == Job::What::luminaires_html) {
+      report.luminaires_html = luminaire_sections_html(*options.scene);
+      return;
+    }
     const calc::SurfaceResult& s = results.surfaces[job.surface];
     const SurfaceOutputFiles names = surface_output_files(s.grid.name);
     switch (job.what) {
+      case Job::What::luminaires_html: return;
       case Job::What::csv: return write_text_file(folder.file(names.csv), surface_csv(s));
       case Job::What::npy: return write_text_file(folder.file(names.npy), surface_npy(s));
       case Job::What::plot: {
