@@ -8,19 +8,6 @@
 
 namespace luxgrid::report {
 
-namespace {
-
-// round(v 255) to the nearest byte, halves away from zero, as std::lround does: v 255 + 0.5 is
-// exact in double for every float in [0, 255], so truncating it rounds the same way without
-// lround's call (this runs three times a pixel). NaN gives 0, as lround's result cast did.
-std::uint8_t to_byte(float v) {
-  const float scaled = std::clamp(v, 0.f, 1.f) * 255.f;
-  if (!(scaled >= 0.f)) return 0;
-  return static_cast<std::uint8_t>(static_cast<int>(static_cast<double>(scaled) + 0.5));
-}
-
-}  // namespace
-
 Raster::Raster(int width, int height, Rgb background) : width_(width), height_(height) {
   if (width <= 0 || height <= 0) throw CalculationError("cannot make an empty picture");
   rgb_.resize(static_cast<std::size_t>(width) * height * 3);
@@ -33,12 +20,6 @@ Rgb Raster::at(int x, int y) const {
   if (x < 0 || y < 0 || x >= width_ || y >= height_) return {};
   const std::size_t k = (static_cast<std::size_t>(y) * width_ + x) * 3;
   return {rgb_[k] / 255.f, rgb_[k + 1] / 255.f, rgb_[k + 2] / 255.f};
-}
-
-void Raster::set(int x, int y, Rgb c) {
-  if (x < 0 || y < 0 || x >= width_ || y >= height_) return;
-  const std::size_t k = (static_cast<std::size_t>(y) * width_ + x) * 3;
-  rgb_[k] = to_byte(c.r), rgb_[k + 1] = to_byte(c.g), rgb_[k + 2] = to_byte(c.b);
 }
 
 void Raster::blend(int x, int y, Rgb c, float alpha) {
