@@ -168,21 +168,26 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
       const Vec3 w = frame_point(frame, (px + 0.5) / ppm, (map_h - py - 0.5) / ppm);
       const Vec3 rel = w - g.origin;
       const double u = glm::dot(rel, g.u_dir), v = glm::dot(rel, g.v_dir);
-      Rgb c = kOutsideRoom;
-      if (room_shown && inside(room.front(), w)) c = kNotCalculated;
+      // Inside the surface: its colour, or obstacle grey; outside it: the room's light grey or
+      // white. So a pixel is located in the obstacles or in the room outline, not in both.
       const bool in_rect = u >= 0 && u <= g.size_u && v >= 0 && v <= g.size_v;
       bool in_region = in_rect;
       if (in_rect && !region.empty()) {
         in_region = false;
         for (const auto& l : region) in_region = in_region || inside(l, w);
       }
-      bool in_obstacle = false;
-      for (const auto& l : obstacles) in_obstacle = in_obstacle || inside(l, w);
-      if (in_region && in_obstacle) {
-        c = kObstacle;
-      } else if (in_region) {
-        const double e = field.sample(u / su - 0.5, v / sv - 0.5, cut.empty());
-        c = std::isnan(e) ? kObstacle : viridis(std::clamp((e - scale.min) / span, 0.0, 1.0));
+      Rgb c = kOutsideRoom;
+      if (!in_region) {
+        if (room_shown && inside(room.front(), w)) c = kNotCalculated;
+      } else {
+        bool in_obstacle = false;
+        for (const auto& l : obstacles) in_obstacle = in_obstacle || inside(l, w);
+        if (in_obstacle) {
+          c = kObstacle;
+        } else {
+          const double e = field.sample(u / su - 0.5, v / sv - 0.5, cut.empty());
+          c = std::isnan(e) ? kObstacle : viridis(std::clamp((e - scale.min) / span, 0.0, 1.0));
+        }
       }
       canvas.set(kLeft + px, kTop + py, c);
     }
