@@ -10,10 +10,12 @@ namespace luxgrid::report {
 
 Raster::Raster(int width, int height, Rgb background) : width_(width), height_(height) {
   if (width <= 0 || height <= 0) throw CalculationError("cannot make an empty picture");
-  rgb_.resize(static_cast<std::size_t>(width) * height * 3);
   const std::uint8_t r = to_byte(background.r), g = to_byte(background.g),
                      b = to_byte(background.b);
-  for (std::size_t k = 0; k < rgb_.size(); k += 3) rgb_[k] = r, rgb_[k + 1] = g, rgb_[k + 2] = b;
+  // A grey background (white, for the plots) is one byte repeated: filled as such at once.
+  rgb_.assign(static_cast<std::size_t>(width) * height * 3, r);
+  if (g != r || b != r)
+    for (std::size_t k = 0; k < rgb_.size(); k += 3) rgb_[k + 1] = g, rgb_[k + 2] = b;
 }
 
 Rgb Raster::at(int x, int y) const {
