@@ -120,9 +120,6 @@ class Field {
     return value(stencil(fi, fj, nearest_must_be_on), E_);
   }
 
-  int nu() const { return nu_; }
-  int nv() const { return nv_; }
-
  private:
   bool on(int i, int j) const { return on_[static_cast<size_t>(j) * nu_ + i]; }
 
