@@ -10,6 +10,7 @@
 // lines up with the plan); vertical surfaces seen from the side their normal faces (a room's wall
 // from inside the room), up at the top; tilted surfaces along their own u (right) and v (up).
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,12 +33,22 @@ struct MapPixels {
   double px_per_m = 0.0;
 };
 
+// What each pixel of a grid's map shows (outside the room, off the surface, an obstacle, or
+// which grid points it is interpolated from with which weights): the same for every plot of one
+// grid and scene (the total and its direct and reflected parts), so it can be worked out once
+// for all of them. Made by map_samples, used by write_false_colour_png.
+struct MapSamples;
+std::shared_ptr<const MapSamples> map_samples(const calc::SurfaceResult& r,
+                                              const calc::Scene* scene);
+
 // Writes `path` (PNG). Returns "" on success or a warning (e.g. no font for labels: the image
 // is written without text, and the caller reports the warning). `where`, when given, receives
 // the map's place in the picture (its origin is map_frame(r.grid, overlay.scene).origin).
+// `samples`: map_samples(of a result on this grid, overlay.scene), else they are made here (as
+// they are when they were made for another grid size, other active points or another scene).
 std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourScale& scale,
                                    const std::filesystem::path& path, const PlotOverlay& overlay,
-                                   MapPixels* where = nullptr);
+                                   MapPixels* where = nullptr, const MapSamples* samples = nullptr);
 std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourScale& scale,
                                    const std::filesystem::path& path);
 

@@ -365,6 +365,8 @@ std::string base64(const std::string& bytes) {
   return out;
 }
 
+std::string luminaire_sections_html(const calc::Scene& scene) { return luminaire_sections(scene); }
+
 std::string html_report(const ReportInput& in) {
   const calc::Results& r = *in.results;
   const calc::Scene* scene = in.scene;
@@ -464,7 +466,7 @@ std::string html_report(const ReportInput& in) {
 
   // --- luminaires -----------------------------------------------------------------------------
   if (scene && !scene->photometry.empty()) {
-    h += luminaire_sections(*scene);
+    h += in.luminaires_html.empty() ? luminaire_sections(*scene) : in.luminaires_html;
   }
 
   // --- plan views -----------------------------------------------------------------------------

@@ -22,9 +22,16 @@ struct ReportInput {
   const CostTable* cost = nullptr;  // --with-cost
   std::string version;              // "0.1.0"
   std::string date;                 // "2024-05-01 14:03 UTC"
+  // luminaire_sections_html(*scene) when the caller made it already (write_outputs makes it
+  // while the plots are drawn); empty: html_report makes it.
+  std::string luminaires_html;
 };
 
 std::string html_report(const ReportInput& in);
+
+// The report's luminaire types (product data, flux, power, LOR, CIE 190 UGR, polar diagrams) and
+// positions: the part of the page that computes the most, so it can be made beforehand.
+std::string luminaire_sections_html(const calc::Scene& scene);
 
 // RFC 4648 base64 of `bytes`.
 std::string base64(const std::string& bytes);

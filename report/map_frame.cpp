@@ -38,10 +38,6 @@ std::string xy(const Vec3& p) {
 
 }  // namespace
 
-Vec3 frame_point(const MapFrame& f, double a_m, double b_m) {
-  return f.origin + f.right * a_m + f.up * b_m;
-}
-
 void frame_coords(const MapFrame& f, const Vec3& world, double& a_m, double& b_m) {
   a_m = glm::dot(world - f.origin, f.right);
   b_m = glm::dot(world - f.origin, f.up);

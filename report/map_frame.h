@@ -31,7 +31,9 @@ struct MapFrame {
 MapFrame map_frame(const geometry::SurfaceGrid& g, const calc::Scene* scene);
 
 // The world point at (a, b) metres right of and above the frame's origin, and back.
-Vec3 frame_point(const MapFrame& f, double a_m, double b_m);
+inline Vec3 frame_point(const MapFrame& f, double a_m, double b_m) {  // inline: once a pixel
+  return f.origin + f.right * a_m + f.up * b_m;
+}
 void frame_coords(const MapFrame& f, const Vec3& world, double& a_m, double& b_m);
 
 }  // namespace luxgrid::report

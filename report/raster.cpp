@@ -8,32 +8,20 @@
 
 namespace luxgrid::report {
 
-namespace {
-
-std::uint8_t to_byte(float v) {
-  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.f, 1.f) * 255.f));
-}
-
-}  // namespace
-
 Raster::Raster(int width, int height, Rgb background) : width_(width), height_(height) {
   if (width <= 0 || height <= 0) throw CalculationError("cannot make an empty picture");
-  rgb_.resize(static_cast<std::size_t>(width) * height * 3);
   const std::uint8_t r = to_byte(background.r), g = to_byte(background.g),
                      b = to_byte(background.b);
-  for (std::size_t k = 0; k < rgb_.size(); k += 3) rgb_[k] = r, rgb_[k + 1] = g, rgb_[k + 2] = b;
+  // A grey background (white, for the plots) is one byte repeated: filled as such at once.
+  rgb_.assign(static_cast<std::size_t>(width) * height * 3, r);
+  if (g != r || b != r)
+    for (std::size_t k = 0; k < rgb_.size(); k += 3) rgb_[k + 1] = g, rgb_[k + 2] = b;
 }
 
 Rgb Raster::at(int x, int y) const {
   if (x < 0 || y < 0 || x >= width_ || y >= height_) return {};
   const std::size_t k = (static_cast<std::size_t>(y) * width_ + x) * 3;
   return {rgb_[k] / 255.f, rgb_[k + 1] / 255.f, rgb_[k + 2] / 255.f};
-}
-
-void Raster::set(int x, int y, Rgb c) {
-  if (x < 0 || y < 0 || x >= width_ || y >= height_) return;
-  const std::size_t k = (static_cast<std::size_t>(y) * width_ + x) * 3;
-  rgb_[k] = to_byte(c.r), rgb_[k + 1] = to_byte(c.g), rgb_[k + 2] = to_byte(c.b);
 }
 
 void Raster::blend(int x, int y, Rgb c, float alpha) {

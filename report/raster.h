@@ -3,6 +3,8 @@
 // rectangles, lines, boxes and alpha blending (text is drawn by report/raster_text.h, the file
 // is written by report/png_file.h). Everything is clipped to the picture, so callers may draw
 // partly outside it.
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -23,7 +25,19 @@ class Raster {
   const std::vector<std::uint8_t>& pixels() const { return rgb_; }
   Rgb at(int x, int y) const;
 
-  void set(int x, int y, Rgb c);
+  void set(int x, int y, Rgb c) {  // inline: the plots set each of their pixels
+    if (x < 0 || y < 0 || x >= width_ || y >= height_) return;
+    const std::size_t k = (static_cast<std::size_t>(y) * width_ + x) * 3;
+    rgb_[k] = to_byte(c.r), rgb_[k + 1] = to_byte(c.g), rgb_[k + 2] = to_byte(c.b);
+  }
+  // round(v 255) to the nearest byte, halves away from zero, as std::lround does: v 255 + 0.5 is
+  // exact in double for every float in [0, 255], so truncating it rounds the same way without
+  // lround's call. NaN gives 0, as lround's result cast to a byte did.
+  static std::uint8_t to_byte(float v) {
+    const float scaled = std::clamp(v, 0.f, 1.f) * 255.f;
+    if (!(scaled >= 0.f)) return 0;
+    return static_cast<std::uint8_t>(static_cast<int>(static_cast<double>(scaled) + 0.5));
+  }
   // c over the pixel with coverage alpha in [0, 1] (anti-aliased text).
   void blend(int x, int y, Rgb c, float alpha);
   // The half-open rectangle [x0, x1) x [y0, y1).

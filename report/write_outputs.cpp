@@ -1,6 +1,7 @@
 #include "report/write_outputs.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdlib>
 #include <ctime>
@@ -81,60 +82,76 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   for (const auto& s : results.surfaces)
     for (double e : s.E_indirect) indirect_ran = indirect_ran || e > 0.0;
   // Every file of every surface is independent of the others: they are written in parallel, one
-  // task per file (a surface's plots are the largest share), and the warnings are gathered in
-  // surface order afterwards so the output does not depend on the schedule.
+  // task per CSV or array and one per surface's plots, which draws its two or three plots in
+  // parallel again after working out once what each pixel of its map shows (map_samples). The
+  // report's luminaire sections (polar diagrams, CIE 190 tables) are a task of their own, the
+  // first one, so what is left after the plots is assembling text. The warnings are gathered in
+  // surface order afterwards, so the output does not depend on the schedule.
   struct Job {
     std::size_t surface;
-    enum class What { csv, npy, plot, direct_plot, indirect_plot } what;
-    std::string warning;
+    enum class What { luminaires_html, csv, npy, plots } what;
+    std::array<std::string, 3> warnings;  // plots: the total's, the direct part's, the reflected's
   };
   std::vector<Job> jobs;
+  if (options.report && options.scene && !options.scene->photometry.empty())
+    jobs.push_back({0, Job::What::luminaires_html, {}});
   for (std::size_t i = 0; i < results.surfaces.size(); ++i) {
+    if (results.surfaces[i].grid.kind == geometry::SurfaceGrid::Kind::grid)
+      jobs.push_back({i, Job::What::plots, {}});
     jobs.push_back({i, Job::What::csv, {}});
     if (options.arrays_npy) jobs.push_back({i, Job::What::npy, {}});
-    if (results.surfaces[i].grid.kind != geometry::SurfaceGrid::Kind::grid) continue;
-    jobs.push_back({i, Job::What::plot, {}});
-    if (indirect_ran) {
-      jobs.push_back({i, Job::What::direct_plot, {}});
-      jobs.push_back({i, Job::What::indirect_plot, {}});
-    }
   }
+  // The direct (part 1) or reflected (part 2) light of a surface as a result of its own.
+  auto part_of = [](const calc::SurfaceResult& s, int part) {
+    const bool direct = part == 1;
+    calc::SurfaceResult p;
+    p.grid = s.grid;
+    p.grid.name = s.grid.name + (direct ? " (direct)" : " (indirect)");
+    p.E = direct ? s.E_direct : s.E_indirect;
+    p.E_direct = s.E_direct;
+    p.E_indirect = s.E_indirect;
+    p.stats = calc::compute_statistics(p.E, s.grid.active);
+    return p;
+  };
   tbb::parallel_for(std::size_t{0}, jobs.size(), [&](std::size_t n) {
     Job& job = jobs[n];
+    if (job.what == Job::What::luminaires_html) {
+      report.luminaires_html = luminaire_sections_html(*options.scene);
+      return;
+    }
     const calc::SurfaceResult& s = results.surfaces[job.surface];
     const SurfaceOutputFiles names = surface_output_files(s.grid.name);
     switch (job.what) {
+      case Job::What::luminaires_html: return;
       case Job::What::csv: return write_text_file(folder.file(names.csv), surface_csv(s));
       case Job::What::npy: return write_text_file(folder.file(names.npy), surface_npy(s));
-      case Job::What::plot: {
-        const ColourScale scale =
-            options.scale ? *options.scale : fit_scale(s.stats.Emin, s.stats.Emax);
-        job.warning = write_false_colour_png(s, scale, folder.file(names.png), overlay_for(s));
-        return;
-      }
-      case Job::What::direct_plot:
-      case Job::What::indirect_plot: {
-        const bool direct = job.what == Job::What::direct_plot;
-        calc::SurfaceResult part;
-        part.grid = s.grid;
-        part.grid.name = s.grid.name + (direct ? " (direct)" : " (indirect)");
-        part.E = direct ? s.E_direct : s.E_indirect;
-        part.E_direct = s.E_direct;
-        part.E_indirect = s.E_indirect;
-        part.stats = calc::compute_statistics(part.E, s.grid.active);
-        const ColourScale part_scale =
-            options.scale ? *options.scale : fit_scale(part.stats.Emin, part.stats.Emax);
-        job.warning = write_false_colour_png(
-            part, part_scale, folder.file(direct ? names.direct_png : names.indirect_png), overlay);
+      case Job::What::plots: {
+        const int parts = indirect_ran ? 3 : 1;
+        const auto samples = parts > 1 ? map_samples(s, options.scene) : nullptr;
+        tbb::parallel_for(0, parts, [&](int part) {
+          if (part == 0) {
+            const ColourScale scale =
+                options.scale ? *options.scale : fit_scale(s.stats.Emin, s.stats.Emax);
+            job.warnings[0] = write_false_colour_png(s, scale, folder.file(names.png),
+                                                     overlay_for(s), nullptr, samples.get());
+            return;
+          }
+          const calc::SurfaceResult p = part_of(s, part);
+          const ColourScale scale =
+              options.scale ? *options.scale : fit_scale(p.stats.Emin, p.stats.Emax);
+          job.warnings[part] = write_false_colour_png(
+              p, scale, folder.file(part == 1 ? names.direct_png : names.indirect_png), overlay,
+              nullptr, samples.get());
+        });
         return;
       }
     }
   });
   for (const Job& job : jobs) {
-    if (!job.warning.empty() &&
-        std::find(warnings.begin(), warnings.end(), job.warning) == warnings.end())
-      warnings.push_back(job.warning);
-    if (job.what == Job::What::plot && options.report) {
+    for (const std::string& w : job.warnings)
+      if (!w.empty() && std::find(warnings.begin(), warnings.end(), w) == warnings.end())
+        warnings.push_back(w);
+    if (job.what == Job::What::plots && options.report) {
       const calc::SurfaceResult& s = results.surfaces[job.surface];
       report.png[s.grid.name] = read_bytes(folder.file(surface_output_files(s.grid.name).png));
     }

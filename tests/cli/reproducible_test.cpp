@@ -39,4 +39,27 @@ TEST(Reproducible, TwoRunsOfTheOfficeWriteIdenticalFiles) {
   EXPECT_NE(read_file(dir / "a" / "report.html").find("2025-12-01 00:00 UTC"), std::string::npos);
 }
 
+TEST(Reproducible, OneThreadAndTwoWriteIdenticalFiles) {
+  // The outputs are written in parallel (each plot, CSV and the report's luminaire section a task
+  // of its own; every thread keeps its own font cache): with one thread they are written one
+  // after the other. Both must give the same bytes in every file but timing.json.
+  const fs::path dir = scratch("office_threads");
+  const fs::path project = fs::path(LUXGRID_SOURCE_DIR) / "examples/office/project.json";
+  for (const char* threads : {"1", "2"}) {
+    const auto r = luxgrid::test::shell("SOURCE_DATE_EPOCH=1764547200 " +
+                                        std::string(LUXGRID_BINARY) + " --threads " + threads +
+                                        " calc " + quote(project) + " -o " + quote(dir / threads));
+    ASSERT_EQ(r.code, 0) << r.output;
+  }
+  const auto files = entries(dir / "1");
+  ASSERT_EQ(files, entries(dir / "2"));
+  EXPECT_TRUE(files.count("report.html") && files.count("workplane_indirect.png"));
+  for (const auto& f : files) {
+    if (f == "timing.json") continue;
+    EXPECT_EQ(luxgrid::test::shell("cmp " + quote(dir / "1" / f) + " " + quote(dir / "2" / f)).code,
+              0)
+        << f;
+  }
+}
+
 }  // namespace

@@ -308,6 +308,58 @@ TEST(FalseColour, LShapedWorkplaneKeepsItsShapeInsideTheRoomOutline) {
   fs::remove_all(dir);
 }
 
+TEST(FalseColour, SharedSamplesDrawTheSamePictureAsSamplesOfItsOwn) {
+  // A surface's total, direct and reflected plots share one map_samples: each must be the file
+  // the plot writes on its own. An L-shaped room with a cabinet cutting the workplane, so the
+  // samples hold every kind of pixel: outside the room, off the surface, obstacle, interpolated.
+  calc::Scene scene;
+  calc::Room room;
+  room.name = "L";
+  room.outline = {{0, 0}, {8, 0}, {8, 4}, {4, 4}, {4, 8}, {0, 8}};
+  room.height = 3.0;
+  geometry::Obstacle cabinet;
+  cabinet.name = "cabinet";
+  cabinet.footprint = {{1.0, 1.0}, {2.3, 1.75}, {1.8, 2.6}, {0.5, 1.87}};
+  cabinet.z0 = 0.0, cabinet.z1 = 1.8;
+  room.obstacles.push_back(cabinet);
+  scene.rooms.push_back(room);
+  calc::SurfaceResult s;
+  s.grid = geometry::make_region_grid("wp", geometry::inset_outline(room.outline, 0.5), 0.8, 0.25,
+                                      {cabinet});
+  s.E_direct.resize(s.grid.points.size()), s.E_indirect.resize(s.grid.points.size());
+  for (size_t k = 0; k < s.grid.points.size(); ++k) {
+    s.E_direct[k] = 300.0 + 40.0 * std::sin(s.grid.points[k].x) * s.grid.points[k].y;
+    s.E_indirect[k] = 50.0 + 3.0 * s.grid.points[k].x;
+    s.E.push_back(s.E_direct[k] + s.E_indirect[k]);
+  }
+  s.stats = calc::compute_statistics(s.E, s.grid.active);
+  size_t active = 0;
+  for (bool a : s.grid.active) active += a;
+  ASSERT_LT(active, s.grid.points.size()) << "the cabinet and the L leave points out";
+  PlotOverlay overlay;
+  overlay.scene = &scene;
+  const auto samples = map_samples(s, &scene);
+  const fs::path dir = scratch();
+  for (const std::vector<double>* E : {&s.E, &s.E_direct, &s.E_indirect}) {
+    calc::SurfaceResult part = s;
+    part.E = *E;
+    part.stats = calc::compute_statistics(part.E, s.grid.active);
+    const ColourScale scale = fit_scale(part.stats.Emin, part.stats.Emax);
+    write_false_colour_png(part, scale, dir / "own.png", overlay);
+    write_false_colour_png(part, scale, dir / "shared.png", overlay, nullptr, samples.get());
+    const Decoded own = decode(dir / "own.png"), shared = decode(dir / "shared.png");
+    EXPECT_EQ(own.rgb, shared.rgb);
+  }
+  // Samples made for other active points are not used: that picture is still its own.
+  calc::SurfaceResult fewer = s;
+  fewer.grid.active.assign(fewer.grid.active.size(), true);
+  write_false_colour_png(fewer, fit_scale(s.stats.Emin, s.stats.Emax), dir / "own.png", overlay);
+  write_false_colour_png(fewer, fit_scale(s.stats.Emin, s.stats.Emax), dir / "shared.png", overlay,
+                         nullptr, samples.get());
+  EXPECT_EQ(decode(dir / "own.png").rgb, decode(dir / "shared.png").rgb);
+  fs::remove_all(dir);
+}
+
 TEST(FalseColour, TheRequiredValueGetsItsIsoluxLine) {
   // E rises from 400 to 600 lx across x; on a 0..1000 scale no tick lies strictly inside the
   // data, so the only line is the requirement's: 500 lx at the middle of the map, white (the dark
