@@ -10,6 +10,7 @@
 #include "calc/far_field_bounds.h"
 #include "calc/glare/ugr.h"
 #include "calc/indirect/indirect.h"
+#include "calc/indirect/patches.h"
 #include "calc/plan_estimates.h"
 #include "util/error.h"
 #include "util/format.h"
@@ -70,6 +71,84 @@ DirectEstimateInputs run_direct(const Scene& scene, Results& results, const Prog
   return estimates;
 }
 
+// The patch size chosen by the estimate: while a surface's patch-size estimate exceeds
+// kPatchShareOfPromise of the quality's promise, the rooms are meshed again at half the size, the
+// run before becoming the coarse one of the estimate (so each step costs one run at the finer
+// size), at most kMaxPatchRefinements times, never beyond the patch budget (limits.h) and never
+// beyond kRefineWorkLimit. The rest of the promise is left to the direct light's and the
+// bounces' estimates.
+constexpr double kPatchShareOfPromise = 0.5;
+constexpr int kMaxPatchRefinements = 2;
+// The work a finer mesh may cost: the form-factor pairs of its rooms (patches^2 per room, from
+// the rooms' areas), a pair counting kVisibilityPairCost times where the room needs visibility
+// tests (not convex, or with obstacles: each pair then traces rays). 1728 patches in the convex
+// office at 0.25 m are 3 million pairs, a tenth of a second; the L-shaped example's 3072 patches
+// at 0.25 m with visibility would be 75 million, tens of seconds.
+constexpr double kRefineWorkLimit = 1e7;
+constexpr double kVisibilityPairCost = 8.0;
+double refine_work(const Scene& scene, double patch_size_m) {
+  double work = 0.0;
+  for (const auto& room : scene.rooms) {
+    const double n = indirect::room_surface_area(room) / (patch_size_m * patch_size_m);
+    const bool traced = !indirect::outline_is_convex(room) || !room.obstacles.empty();
+    work += n * n * (traced ? kVisibilityPairCost : 1.0);
+  }
+  return work;
+}
+void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectOptions options,
+                       indirect::IndirectResult& r, IndirectEstimateInputs& est) {
+  const double promise = promised_error(scene.settings.quality);
+  // Not when the bounces not followed already break the promise (a fixed bounce count): a finer
+  // mesh cannot make up for them.
+  if (!(promise > 0.0) || r.residual > promise) return;
+  for (int step = 0; step < kMaxPatchRefinements; ++step) {
+    double worst = 0.0;
+    std::string worst_surface;
+    for (size_t s = 0; s < results.surfaces.size(); ++s) {
+      const SurfaceResult& sr = results.surfaces[s];
+      std::vector<double> E(sr.E_direct.size());
+      for (size_t i = 0; i < E.size(); ++i) E[i] = sr.E_direct[i] + r.E_indirect_per_surface[s][i];
+      const double e = patch_size_estimate(sr.grid, E, r.E_indirect_per_surface[s],
+                                           est.probe_index[s], est.coarse_lx[s]);
+      if (e > worst) worst = e, worst_surface = sr.grid.name;
+    }
+    if (!(worst > kPatchShareOfPromise * promise)) return;
+    const std::string why = "the patch-size estimate at " + format_double("%.3g", r.patch_size_m) +
+                            " m, " + format_double("%.2g", 100 * worst) + " % on surface '" +
+                            worst_surface + "', is above half of " +
+                            to_string(scene.settings.quality) + "'s promise";
+    options.patch_size_m = 0.5 * r.patch_size_m;
+    const double work = refine_work(scene, options.patch_size_m);
+    if (work > kRefineWorkLimit) {
+      results.plan.warnings.push_back(
+          "indirect: " + why + ", but a mesh at " + format_double("%.3g", options.patch_size_m) +
+          " m would cost " + format_double("%.2g", work) +
+          " form-factor pairs (rays counted 8 times), above the limit of " +
+          format_double("%.2g", kRefineWorkLimit) + "; the patch size stays " +
+          format_double("%.3g", r.patch_size_m) + " m");
+      return;
+    }
+    indirect::IndirectResult finer;
+    try {
+      finer = indirect::compute_indirect(scene, scene.surfaces, options);
+    } catch (const InputError& e) {
+      // The finer mesh is over the patch budget (checked before anything is meshed).
+      results.plan.warnings.push_back("indirect: " + why + ", but a mesh at " +
+                                      format_double("%.3g", options.patch_size_m) +
+                                      " m exceeds the patch budget (" + e.what() + ")");
+      return;
+    }
+    for (size_t s = 0; s < est.probe_index.size(); ++s)
+      for (size_t k = 0; k < est.probe_index[s].size(); ++k)
+        est.coarse_lx[s][k] = r.E_indirect_per_surface[s][est.probe_index[s][k]];
+    est.coarse_patch_size_m = r.patch_size_m;
+    results.plan.notes.push_back("indirect: patch size refined from " +
+                                 format_double("%.3g", r.patch_size_m) + " m to " +
+                                 format_double("%.3g", finer.patch_size_m) + " m: " + why);
+    r = std::move(finer);
+  }
+}
+
 // Reflected light, when the plan's decision says the scene needs it. Returns what the plan's
 // estimate needs: the same rooms meshed at twice the patch size, gathered at a few probe points
 // per surface (plan_estimates.h); not measured at draft, which promises nothing.
@@ -80,26 +159,27 @@ IndirectEstimateInputs run_indirect(const Scene& scene, Results& results) {
   indirect::IndirectOptions options = indirect::indirect_options(scene.settings);
   options.luminous_flux_lm = decision.luminous_flux_lm;
   options.visibility = results.plan.visibility_test;
-  const indirect::IndirectResult r = indirect::compute_indirect(scene, scene.surfaces, options);
-  for (size_t k = 0; k < results.surfaces.size(); ++k) {
-    results.surfaces[k].E_indirect = r.E_indirect_per_surface[k];
+  indirect::IndirectResult r = indirect::compute_indirect(scene, scene.surfaces, options);
+  est.ran = true;
+  if (scene.settings.quality != Quality::draft) {
+    std::vector<geometry::SurfaceGrid> probes;
+    for (const auto& grid : scene.surfaces) {
+      est.probe_index.push_back(probe_points(grid));
+      probes.push_back(probe_grid(grid, est.probe_index.back()));
+    }
+    indirect::IndirectOptions coarse = options;
+    coarse.patch_size_m = 2.0 * r.patch_size_m;
+    const indirect::IndirectResult c = indirect::compute_indirect(scene, probes, coarse);
+    est.coarse_patch_size_m = c.patch_size_m;
+    est.coarse_lx = c.E_indirect_per_surface;
+    refine_patch_size(scene, results, options, r, est);
   }
+  for (size_t k = 0; k < results.surfaces.size(); ++k)
+    results.surfaces[k].E_indirect = r.E_indirect_per_surface[k];
   results.plan.indirect = r.summary;
   for (const auto& n : r.notes) results.plan.notes.push_back(n);
-  est.ran = true;
   est.residual = r.residual;
   est.patch_size_m = r.patch_size_m;
-  if (scene.settings.quality == Quality::draft) return est;
-  std::vector<geometry::SurfaceGrid> probes;
-  for (const auto& grid : scene.surfaces) {
-    est.probe_index.push_back(probe_points(grid));
-    probes.push_back(probe_grid(grid, est.probe_index.back()));
-  }
-  indirect::IndirectOptions coarse = options;
-  coarse.patch_size_m = 2.0 * r.patch_size_m;
-  const indirect::IndirectResult c = indirect::compute_indirect(scene, probes, coarse);
-  est.coarse_patch_size_m = c.patch_size_m;
-  est.coarse_lx = c.E_indirect_per_surface;
   return est;
 }
 // "1.8e+308" / "inf" / "nan", for the messages below.

@@ -73,6 +73,27 @@ geometry::SurfaceGrid probe_grid(const geometry::SurfaceGrid& grid,
   return g;
 }
 
+double patch_size_estimate(const geometry::SurfaceGrid& grid, const std::vector<double>& E,
+                           const std::vector<double>& E_indirect,
+                           const std::vector<size_t>& probe_index,
+                           const std::vector<double>& coarse_lx, size_t* counted) {
+  const auto active = [&](size_t i) { return grid.active.empty() || grid.active[i]; };
+  double e_max = 0.0;
+  for (size_t i = 0; i < E.size(); ++i)
+    if (active(i)) e_max = std::max(e_max, E[i]);
+  const double floor_lx = kPromiseFloor * e_max;
+  double worst = 0.0;
+  size_t count = 0;
+  for (size_t k = 0; k < probe_index.size(); ++k) {
+    const size_t i = probe_index[k];
+    if (!active(i) || !(std::max(E[i], floor_lx) > 0.0)) continue;
+    ++count;
+    worst = std::max(worst, std::abs(E_indirect[i] - coarse_lx[k]) / std::max(E[i], floor_lx));
+  }
+  if (counted) *counted = count;
+  return worst;
+}
+
 void estimate_errors(Results& results, const DirectEstimateInputs& direct,
                      const IndirectEstimateInputs& indirect) {
   Plan& plan = results.plan;
@@ -103,16 +124,9 @@ void estimate_errors(Results& results, const DirectEstimateInputs& direct,
         if (counted(i))
           est.bounces = std::max(est.bounces, indirect.residual * r.E_indirect[i] / denom(i));
       est.patch_size = 0.0;
-      if (s < indirect.probe_index.size()) {
-        const auto& idx = indirect.probe_index[s];
-        for (size_t k = 0; k < idx.size(); ++k) {
-          const size_t i = idx[k];
-          if (!counted(i)) continue;
-          ++est.probe_points;
-          est.patch_size = std::max(
-              est.patch_size, std::abs(r.E_indirect[i] - indirect.coarse_lx[s][k]) / denom(i));
-        }
-      }
+      if (s < indirect.probe_index.size())
+        est.patch_size = patch_size_estimate(r.grid, r.E, r.E_indirect, indirect.probe_index[s],
+                                             indirect.coarse_lx[s], &est.probe_points);
       worst_patch = std::max(worst_patch, est.patch_size);
       worst_bounces = std::max(worst_bounces, est.bounces);
     }

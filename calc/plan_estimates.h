@@ -55,6 +55,15 @@ struct IndirectEstimateInputs {
   std::vector<std::vector<double>> coarse_lx;    // per surface: E_ind at 2h there, maintained lx
 };
 
+// The patch-size estimate of one surface: the largest |E_ind(h) - E_ind(2h)| over its probe
+// points, relative to the point's E (direct + indirect) but no less than 1 % of the surface's
+// largest E, as the promise counts it. `E` and `E_indirect` per point of `grid`, `coarse_lx`
+// per probe; `counted` (if not null) gets the number of probes that count.
+double patch_size_estimate(const geometry::SurfaceGrid& grid, const std::vector<double>& E,
+                           const std::vector<double>& E_indirect,
+                           const std::vector<size_t>& probe_index,
+                           const std::vector<double>& coarse_lx, size_t* counted = nullptr);
+
 // Fills results.plan.promise, .estimates, a note per surface, the estimates' sentence after
 // plan.indirect, and a warning per surface whose estimate exceeds the promise. Needs E,
 // E_direct and E_indirect of every surface (maintained).
