@@ -123,7 +123,7 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
       results.plan.warnings.push_back(
           "indirect: " + why + ", but a mesh at " + format_double("%.3g", options.patch_size_m) +
           " m would cost " + format_double("%.2g", work) +
-          " form-factor pairs (rays counted 8 times), above the limit of " +
+          " form-factor pairs (a pair counting 8 where rays are traced), above the limit of " +
           format_double("%.2g", kRefineWorkLimit) + "; the patch size stays " +
           format_double("%.3g", r.patch_size_m) + " m");
       return;
