@@ -149,5 +149,46 @@ TEST(Occlusion, NodesOnTheOpeningEdgeAreTestedSlightlyInside) {
   EXPECT_NEAR(illuminance(e, r, kUp, Model::standard(), &boundary), open, 1e-9 * open);
 }
 
+// A pair far from its emitter (15 D: the far field by distance) but in the penumbra of a screen:
+// the far field's one segment from the opening's centre would give the whole value or nothing,
+// the fixed rule's few nodes a fraction off by its steps. The hybrid must see the penumbra (the
+// centre and the corners disagree) and take the near rung: within standard's 1 % of Lambert on
+// the visible strip. A 0.2 m square Lambertian panel 3 m up; an opaque half-plane {z = 1.5,
+// x >= 0.05}: a receiver at R.x sees the strip P.x < 2 x 0.05 - R.x.
+TEST(Occlusion, APenumbraFarFromTheEmitterTakesTheNearRung) {
+  constexpr double kUpZ = 3.0, kHalf = 0.1, kScreen = 1.5, kEdge = 0.05;
+  class FarScreen final : public geometry::Visibility {
+   public:
+    bool visible(const Vec3& p, const Vec3& r) const override {
+      const double t = (kScreen - r.z) / (p.z - r.z);
+      if (!(t > 0.0 && t < 1.0)) return true;
+      return r.x + t * (p.x - r.x) < kEdge;
+    }
+  };
+  const auto square = [&](double x_max) {
+    return make_polygon_emitter({{x_max, kHalf, kUpZ},
+                                 {-kHalf, kHalf, kUpZ},
+                                 {-kHalf, -kHalf, kUpZ},
+                                 {x_max, -kHalf, kUpZ}},
+                                rotation_about_y(0.0), lambertian(kI0));
+  };
+  const Emitter e = square(kHalf);
+  const double luminance = kI0 / (4 * kHalf * kHalf);
+  const FarScreen screen;
+  for (double x : {0.02, 0.05, 0.08, 0.12, 0.15, 0.17}) {
+    const Vec3 r(x, 0.03, 0.0);
+    const double x_c = std::min(kHalf, 2 * kEdge - x);
+    const double exact = lambert_uniform_illuminance(square(x_c), r, kUp, luminance);
+    const double full = lambert_uniform_illuminance(e, r, kUp, luminance);
+    ASSERT_GT(exact, 0.1 * full) << x;
+    ASSERT_LT(exact, 0.95 * full) << x;  // really a partial shadow
+    SwitchWeights w;
+    const double got = hybrid_illuminance(e, r, Receiver::planar(kUp), Model::standard(),
+                                          NearFieldSwitch::automatic, &screen, &w);
+    EXPECT_NEAR(got, exact, kStandardTol * exact) << x;
+    EXPECT_EQ(w.far, 0.0) << x;  // the near rung, not the far field of 15 D
+  }
+}
+
 }  // namespace
 }  // namespace luxgrid::nearfield
