@@ -451,8 +451,8 @@ IndirectResult compute_indirect(const Scene& scene,
       room_visibility[r] = outline_is_convex(scene.rooms[r]) ? &*obstacles_only : vis;
   }
 
-  const FirstBounce fb =
-      first_bounce(scene, mesh, room_visibility, 0.08, &options.luminous_flux_lm);
+  const FirstBounce fb = first_bounce(scene, mesh, room_visibility, 0.08, &options.luminous_flux_lm,
+                                      &options.intensity_lookup);
   for (const auto& n : fb.notes) res.notes.push_back(n);
   res.vpls = fb.vpl_count;
   res.emitted_flux_lm = fb.emitted_flux_lm;
