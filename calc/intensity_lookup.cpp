@@ -150,7 +150,8 @@ IntensityLookup choose_intensity_lookup(const photometry::DistributionPtr& distr
   for (int raise = 0;; ++raise) {
     const std::string grid = std::to_string(nu) + "x" + std::to_string(nv);
     // Doubling the grid divides a smooth interpolant's error by 4 and a kink's by 2: a texture
-    // whose probe (a lower bound of its deviation) is beyond 4 x the limit is refused unbuilt,
+    // whose probe (a subset of the measurement's directions, its floor from the texels it
+    // reads) is beyond 4 x the limit is refused unbuilt,
     // and no finer one is tried; the finest one is refused unbuilt beyond the limit itself.
     const bool last = raise == kTextureRaises;
     const TextureDeviation probe =
@@ -198,11 +199,6 @@ IntensityLookup choose_intensity_lookup(const photometry::DistributionPtr& distr
     }
     nu *= 2, nv *= 2;
   }
-}
-
-photometry::DistributionPtr SceneLookups::lookup_for(const photometry::DistributionPtr& d) const {
-  const auto it = by_distribution.find(d.get());
-  return it == by_distribution.end() ? d : it->second.lookup;
 }
 
 namespace {

@@ -103,8 +103,6 @@ struct SceneLookups {
   std::map<const photometry::IntensityDistribution*, IntensityLookup> by_base;
   std::map<const photometry::IntensityDistribution*, LuminaireLookup> by_distribution;
   std::vector<std::string> plan_lines;
-  // The lookup for a luminaire's distribution: the chosen one, or the distribution itself.
-  photometry::DistributionPtr lookup_for(const photometry::DistributionPtr& d) const;
 };
 SceneLookups choose_intensity_lookups(const Scene& scene);
 
