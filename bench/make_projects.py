@@ -6,6 +6,8 @@ they are generated in seconds). Usage: make_projects.py OUT_DIR
   hall/project.json     a 100 x 50 x 6 m hall, 560 panels (28 x 20), workplane at 0.5 m spacing
   grid1m/project.json   a 100 x 100 m room, 25 panels, one 1000 x 1000 point workplane (10^6),
                         draft quality, no reflected light: the cost of the outputs themselves
+  far1000/project.json  a 100 x 50 m hall, 1000 panels (40 x 25), one 200 x 50 point plane (10^4),
+                        draft quality, no reflected light: 10^7 far-field pairs, the kernel's cost
 The photometric file is the open plan's (examples/openplan/photometry), copied beside each.
 """
 import json
@@ -63,6 +65,12 @@ def main():
           [panels("panels", [10.0, 10.0, 4.0], [5, 5], [20.0, 20.0])],
           [{"name": "grid", "plane": {"origin": [0, 0, 0.75], "u": [1, 0, 0], "v": [0, 1, 0],
                                       "size": [100, 100]}, "spacing": 0.1}])
+
+    write(out, "far1000", "Benchmark far field: 1000 panels x 10^4 points", draft,
+          [room("hall", 0, 0, 100.0, 50.0, 6.0)],
+          [panels("panels", [1.25, 1.0, 6.0], [40, 25], [2.5, 2.0])],
+          [{"name": "grid", "plane": {"origin": [0, 12.5, 0.75], "u": [1, 0, 0], "v": [0, 1, 0],
+                                      "size": [100, 25]}, "spacing": 0.5}])
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
 #include "calc/direct.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <mutex>
@@ -9,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "calc/nearfield/models.h"
+#include "photometry/distribution_texture.h"
 
 namespace luxgrid::calc {
 
@@ -22,6 +24,47 @@ nearfield::Receiver receiver_of(geometry::Quantity q, const Vec3& normal) {
     default: return nearfield::Receiver::planar(normal);
   }
 }
+// Points per run of the far-field loop below: the run's sums stay in L1 while every luminaire
+// passes over it, and neighbouring points read neighbouring texels of the luminaire's texture.
+constexpr size_t kFarFieldRun = 64;
+
+// E_direct of the points [begin, end) of one zone when every pair is the far-field point model
+// on a plane without a visibility test (near_field "never", draft): luminaires outside, points
+// inside, each point's sum over the luminaires in the zone's order (the same sums as the
+// general loop, added in the same order). A texture is looked up without the virtual call.
+void far_field_run(const std::vector<nearfield::Emitter>& emitters,
+                   const std::vector<uint32_t>& luminaires, const geometry::SurfaceGrid& grid,
+                   size_t begin, size_t end, std::vector<double>& E) {
+  // The run's active points packed once (the luminaires then read contiguous arrays).
+  Vec3 point[kFarFieldRun], normal[kFarFieldRun];
+  size_t index[kFarFieldRun];
+  size_t n = 0;
+  for (size_t i = begin; i < end; ++i) {
+    if (!grid.active.empty() && !grid.active[i]) continue;
+    point[n] = grid.points[i], normal[n] = grid.normals[i], index[n] = i;
+    ++n;
+  }
+  double sum[kFarFieldRun] = {};
+  const auto over_points = [&](const auto& lookup, const nearfield::Emitter& e) {
+    for (size_t k = 0; k < n; ++k)
+      sum[k] += nearfield::point_source_illuminance_with(
+          lookup, e.world_to_local, e.centroid, point[k], nearfield::Receiver::planar(normal[k]));
+  };
+  for (const uint32_t k : luminaires) {
+    const nearfield::Emitter& e = emitters[k];
+    if (e.far_texture) {
+      const photometry::DistributionTexture& texture = *e.far_texture;
+      const double factor = e.far_texture_factor;
+      over_points([&](const Vec3& local, double) { return factor * texture.bilinear(local); }, e);
+    } else {
+      const photometry::IntensityDistribution& d = e.far_lookup();
+      over_points(
+          [&](const Vec3& local, double inv_length) { return d.intensity(local * inv_length); }, e);
+    }
+  }
+  for (size_t k = 0; k < n; ++k) E[index[k]] = sum[k];
+}
+
 }  // namespace
 
 double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3& normal) {
@@ -72,9 +115,34 @@ std::vector<double> direct_illuminance(const Plan& plan,
       zones[z].luminaires = &zones[z].all;
     }
   }
+  // Far field everywhere on planes, nothing to occlude: the run loop (far_field_run).
+  const bool planar = grid.quantity != geometry::Quantity::cylindrical &&
+                      grid.quantity != geometry::Quantity::semi_cylindrical;
+  const bool far_runs = plan.near_switch == nearfield::NearFieldSwitch::never && planar &&
+                        std::all_of(zones.begin(), zones.end(),
+                                    [](const Zone& z) { return z.visibility == nullptr; });
   tbb::parallel_for(tbb::blocked_range<size_t>(0, total, 16), [&](const auto& range) {
     DirectCounts local;
-    for (size_t i = range.begin(); i != range.end(); ++i) {
+    if (far_runs) {
+      for (size_t begin = range.begin(); begin != range.end();) {
+        const uint32_t zone = reach ? reach->zone_of_point[begin] : 0;
+        size_t end = begin + 1;
+        while (end != range.end() && end - begin < kFarFieldRun &&
+               (!reach || reach->zone_of_point[end] == zone))
+          ++end;
+        const std::vector<uint32_t>& luminaires = *zones[zone].luminaires;
+        far_field_run(emitters, luminaires, grid, begin, end, E);
+        if (counts) {
+          size_t points = 0, active = 0;
+          for (const uint32_t k : luminaires) points += emitters[k].is_point() ? 1 : 0;
+          for (size_t i = begin; i < end; ++i) active += grid.active.empty() || grid.active[i];
+          local.point_sources += active * points;
+          local.far += active * (luminaires.size() - points);
+        }
+        begin = end;
+      }
+    }
+    for (size_t i = far_runs ? range.end() : range.begin(); i != range.end(); ++i) {
       if (!grid.active.empty() && !grid.active[i]) continue;
       double sum = 0.0, error_lx = 0.0;
       const nearfield::Receiver receiver = receiver_of(grid.quantity, grid.normals[i]);

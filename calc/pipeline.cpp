@@ -11,6 +11,7 @@
 #include "calc/glare/ugr.h"
 #include "calc/indirect/indirect.h"
 #include "calc/indirect/patches.h"
+#include "calc/intensity_lookup.h"
 #include "calc/plan_estimates.h"
 #include "util/error.h"
 #include "util/format.h"
@@ -25,12 +26,16 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 // Direct light on every surface; progress runs from 0 to 1 over all points. Each point tests
 // only the luminaires that can reach it (calc/direct_reach.h). Returns the plan's estimate of the
 // direct light's error at each point (lx, initial values).
-DirectEstimateInputs run_direct(const Scene& scene, Results& results, const Progress& progress) {
+DirectEstimateInputs run_direct(const Scene& scene, const SceneLookups& lookups, Results& results,
+                                const Progress& progress) {
   DirectEstimateInputs estimates;
   size_t total_points = 0;
   for (const auto& s : scene.surfaces) total_points += s.points.size();
   auto emitters = make_emitters(scene);
+  // The error-bound map measures the far-field model on the table; the texture's own deviation
+  // (calc/intensity_lookup.h) is within a tenth of the promise on top of it.
   results.plan.near_far_per_emitter = attach_far_field_bounds(scene, results.plan, emitters);
+  attach_intensity_lookups(lookups, emitters);
   DirectReach reach(scene, results.plan.visibility_test);
   DirectCounts counts;
   size_t points_before = 0;
@@ -152,13 +157,16 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
 // Reflected light, when the plan's decision says the scene needs it. Returns what the plan's
 // estimate needs: the same rooms meshed at twice the patch size, gathered at a few probe points
 // per surface (plan_estimates.h); not measured at draft, which promises nothing.
-IndirectEstimateInputs run_indirect(const Scene& scene, Results& results) {
+IndirectEstimateInputs run_indirect(const Scene& scene, const SceneLookups& lookups,
+                                    Results& results) {
   IndirectEstimateInputs est;
   const indirect::IndirectDecision& decision = results.plan.indirect_decision;
   if (!decision.run) return est;
   indirect::IndirectOptions options = indirect::indirect_options(scene.settings);
   options.luminous_flux_lm = decision.luminous_flux_lm;
   options.visibility = results.plan.visibility_test;
+  for (const auto& [distribution, lookup] : lookups.by_distribution)
+    options.intensity_lookup.emplace(distribution, lookup.lookup);
   indirect::IndirectResult r = indirect::compute_indirect(scene, scene.surfaces, options);
   est.ran = true;
   if (scene.settings.quality != Quality::draft) {
@@ -221,12 +229,19 @@ Results run_scene(const Scene& scene, const Progress& progress) {
   results.scene = scene.settings.scene;
   for (const auto& n : scene.notes) results.plan.notes.push_back(n);
 
+  // The intensity lookups of the far field and the first bounce, once per distribution (a
+  // texture is built and measured against its table here: its own phase in timing.json).
+  const auto t_lookup = std::chrono::steady_clock::now();
+  const SceneLookups lookups = choose_intensity_lookups(scene);
+  results.plan.intensity_lookup_per_distribution = lookups.plan_lines;
+  results.timing_s.emplace_back("intensity_lookup", seconds_since(t_lookup));
+
   const auto t_direct = std::chrono::steady_clock::now();
-  DirectEstimateInputs direct_estimate = run_direct(scene, results, progress);
+  DirectEstimateInputs direct_estimate = run_direct(scene, lookups, results, progress);
   results.timing_s.emplace_back("direct", seconds_since(t_direct));
 
   const auto t_indirect = std::chrono::steady_clock::now();
-  IndirectEstimateInputs indirect_estimate = run_indirect(scene, results);
+  IndirectEstimateInputs indirect_estimate = run_indirect(scene, lookups, results);
   if (scene.settings.scene == LightingScene::emergency) {
     // Not the project's "indirect" setting: the emergency scene switches reflections off [EN1838].
     results.plan.indirect = "off: the emergency scene counts direct light only (EN 1838)";

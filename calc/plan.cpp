@@ -84,6 +84,11 @@ std::string describe_direct(const Plan& plan, const DirectCounts& c) {
            " by the fixed rule, " + std::to_string(c.fixed_blended) +
            " blending it into the near-field model";
   for (const auto& line : plan.near_far_per_emitter) out += "; " + line;
+  if (!plan.intensity_lookup_per_distribution.empty()) {
+    out += "; far-field pairs and the first bounce look intensities up in:";
+    for (size_t k = 0; k < plan.intensity_lookup_per_distribution.size(); ++k)
+      out += (k == 0 ? " " : "; ") + plan.intensity_lookup_per_distribution[k];
+  }
   return out;
 }
 

@@ -41,6 +41,10 @@ struct Plan {
   // Per distinct emitter, the near-field distances the error bound chose and why
   // (calc/far_field_bounds.h); filled by the pipeline, quoted in `direct`.
   std::vector<std::string> near_far_per_emitter;
+  // Per distinct distribution, what far-field pairs and the first bounce look intensities up in
+  // and why (calc/intensity_lookup.h: the texture and its measured bound, or the table); filled
+  // by the pipeline, quoted in `direct`.
+  std::vector<std::string> intensity_lookup_per_distribution;
   // Reflected light: whether it runs and why (calc/indirect/decision.h); `indirect` starts as
   // the decision's reason and becomes the run's summary when it ran.
   indirect::IndirectDecision indirect_decision;

@@ -14,6 +14,8 @@ class ScaledDistribution final : public photometry::IntensityDistribution {
     v.scale *= factor_;
     return v;
   }
+  const photometry::DistributionPtr& inner() const { return inner_; }
+  double factor() const { return factor_; }
 
  private:
   photometry::DistributionPtr inner_;

@@ -19,25 +19,6 @@ inline void catmull_rom(double s, double w[4]) {
 }
 }  // namespace
 
-void DistributionTexture::diamond_angles(const Vec3& d, double& u, double& v) {
-  const double ax = std::abs(d.x), ay = std::abs(d.y);
-  const double sxy = ax + ay;
-  if (sxy > 0.0) {
-    const double t = d.y / sxy;  // in [-1, 1]
-    if (d.x >= 0.0)
-      u = t >= 0.0 ? t : 4.0 + t;  // quadrants 1 and 4
-    else
-      u = 2.0 - t;  // quadrants 2 and 3
-    if (u >= 4.0) u = 0.0;
-  } else {
-    u = 0.0;  // a pole: every column holds the same value there
-  }
-  const double h = std::sqrt(d.x * d.x + d.y * d.y);
-  const double a = -d.z;
-  const double s = h + std::abs(a);
-  v = s > 0.0 ? (a >= 0.0 ? h / s : 2.0 - h / s) : 1.0;
-}
-
 Vec3 DistributionTexture::direction_of_diamond(double u, double v) {
   // Inverse of diamond_angles: in each quadrant the diamond angle t maps to the point (1-t, t).
   double x, y;
@@ -60,41 +41,49 @@ Vec3 DistributionTexture::direction_of_diamond(double u, double v) {
   return {h * x / r, h * y / r, -a};
 }
 
+Vec3 DistributionTexture::texel_direction(int i, int j, int c_cells, int gamma_cells) {
+  if (j == 0 || j == gamma_cells) return {0.0, 0.0, j == 0 ? -1.0 : 1.0};  // a pole: one direction
+  return direction_of_diamond(4.0 * i / c_cells, 2.0 * j / gamma_cells);
+}
+
+namespace {
+void check_resolution(int nu, int nv) {
+  if (nu < 4 || nv < 2 || static_cast<long>(nu) * (nv + 1) > 50'000'000L)
+    throw CalculationError("DistributionTexture: resolution out of range");
+}
+}  // namespace
+
 DistributionTexture::DistributionTexture(const IntensityDistribution& source, int c_cells,
                                          int gamma_cells, Interpolation mode)
     : nu_(c_cells), nv_(gamma_cells), mode_(mode) {
-  if (nu_ < 4 || nv_ < 2 || static_cast<long>(nu_) * (nv_ + 1) > 50'000'000L)
-    throw CalculationError("DistributionTexture: resolution out of range");
+  check_resolution(nu_, nv_);
   data_.resize(static_cast<std::size_t>(nu_) * static_cast<std::size_t>(nv_ + 1));
-  for (int j = 0; j <= nv_; ++j) {
-    const double v = 2.0 * j / nv_;
-    for (int i = 0; i < nu_; ++i) {
-      const double u = 4.0 * i / nu_;
-      double value;
-      if (j == 0 || j == nv_)  // a pole is one direction
-        value = source.intensity({0.0, 0.0, j == 0 ? -1.0 : 1.0});
-      else
-        value = source.intensity(direction_of_diamond(u, v));
+  for (int j = 0; j <= nv_; ++j)
+    for (int i = 0; i < nu_; ++i)
       data_[static_cast<std::size_t>(j) * static_cast<std::size_t>(nu_) +
-            static_cast<std::size_t>(i)] = static_cast<float>(value);
-    }
-  }
+            static_cast<std::size_t>(i)] =
+          static_cast<float>(source.intensity(texel_direction(i, j, nu_, nv_)));
+}
+
+DistributionTexture::DistributionTexture(int c_cells, int gamma_cells, std::vector<float> texels,
+                                         Interpolation mode)
+    : nu_(c_cells), nv_(gamma_cells), mode_(mode), data_(std::move(texels)) {
+  check_resolution(nu_, nv_);
+  if (data_.size() != static_cast<std::size_t>(nu_) * static_cast<std::size_t>(nv_ + 1))
+    throw CalculationError("DistributionTexture: texel count does not match the resolution");
 }
 
 double DistributionTexture::intensity(const Vec3& d) const {
+  if (mode_ == Interpolation::bilinear) return bilinear(d);
   double u, v;
   diamond_angles(d, u, v);
-  const double fu = u * (nu_ / 4.0), fv = v * (nv_ / 2.0);
+  const double fu = std::min(std::max(0.0, u * (nu_ / 4.0)), static_cast<double>(nu_));
+  const double fv = std::min(std::max(0.0, v * (nv_ / 2.0)), static_cast<double>(nv_));
   int i = static_cast<int>(fu), j = static_cast<int>(fv);
   if (i >= nu_) i = nu_ - 1;
   if (j >= nv_) j = nv_ - 1;
   const double su = fu - i, sv = fv - j;
   const int i1 = i + 1 == nu_ ? 0 : i + 1;
-  if (mode_ == Interpolation::bilinear) {
-    const double a = texel(i, j) + su * (texel(i1, j) - texel(i, j));
-    const double b = texel(i, j + 1) + su * (texel(i1, j + 1) - texel(i, j + 1));
-    return a + sv * (b - a);
-  }
   double wu[4], wv[4];
   catmull_rom(su, wu);
   catmull_rom(sv, wv);

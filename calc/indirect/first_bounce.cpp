@@ -30,6 +30,7 @@ struct Source {
   Vec3 position{0.0};
   const Luminaire* lum = nullptr;
   double weight = 1.0;
+  const photometry::IntensityDistribution* intensity = nullptr;  // the luminaire's lookup
 };
 
 struct Sampler {
@@ -54,7 +55,7 @@ struct Sampler {
     const double omega = geometry::triangle_solid_angle_from(s, a, b, c);
     const Vec3 dir = glm::normalize(centre - s);
     const Vec3 local = glm::transpose(src.lum->pose.rotation) * dir;
-    return src.weight * src.lum->distribution->intensity(local) * omega;
+    return src.weight * src.intensity->intensity(local) * omega;
   }
 };
 
@@ -90,7 +91,9 @@ double patch_flux(const Source& src, const Patch& p, const geometry::Visibility*
 FirstBounce first_bounce(
     const Scene& scene, const PatchMesh& mesh,
     const std::vector<const geometry::Visibility*>& visibility, double max_angle_rad,
-    const std::map<const photometry::IntensityDistribution*, double>* known_flux_lm) {
+    const std::map<const photometry::IntensityDistribution*, double>* known_flux_lm,
+    const std::map<const photometry::IntensityDistribution*, photometry::DistributionPtr>*
+        intensity_lookup) {
   FirstBounce fb;
   const size_t n = mesh.patches.size();
   fb.incident_flux_lm.assign(n, 0.0);
@@ -111,10 +114,15 @@ FirstBounce first_bounce(
     auto [it, fresh] = flux_of.try_emplace(lum.distribution.get(), 0.0);
     if (fresh) it->second = luminous_flux(*lum.distribution);
     fb.luminaire_flux_lm += it->second;
+    const photometry::IntensityDistribution* intensity = lum.distribution.get();
+    if (intensity_lookup) {
+      const auto found = intensity_lookup->find(intensity);
+      if (found != intensity_lookup->end() && found->second) intensity = found->second.get();
+    }
     for (const RoomCells& part : parts) {
       fb.emitted_flux_lm += part.weight * it->second;
       for (const EmitterCell& cell : part.cells)
-        in_room[part.room].push_back({cell.position, &lum, cell.weight});
+        in_room[part.room].push_back({cell.position, &lum, cell.weight, intensity});
     }
     if (std::string note = outside_note(lum, parts, scene, it->second); !note.empty())
       fb.notes.push_back(std::move(note));

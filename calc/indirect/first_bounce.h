@@ -40,9 +40,14 @@ struct FirstBounce {
 // `max_angle_rad` is the largest angular size of one integration piece (0.08 rad by default:
 // I is sampled at least every ~4.6 degrees).
 // `known_flux_lm`: luminous_flux of distributions already integrated (others are computed).
+// `intensity_lookup`: what each luminaire's distribution is looked up in for the pieces'
+// intensities (calc/intensity_lookup.h: a texture, no atan2); missing or null: the distribution
+// itself. The luminous flux is always the distribution's own.
 FirstBounce first_bounce(
     const Scene& scene, const PatchMesh& mesh,
     const std::vector<const geometry::Visibility*>& visibility, double max_angle_rad = 0.08,
-    const std::map<const photometry::IntensityDistribution*, double>* known_flux_lm = nullptr);
+    const std::map<const photometry::IntensityDistribution*, double>* known_flux_lm = nullptr,
+    const std::map<const photometry::IntensityDistribution*, photometry::DistributionPtr>*
+        intensity_lookup = nullptr);
 
 }  // namespace luxgrid::calc::indirect

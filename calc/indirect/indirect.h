@@ -47,6 +47,9 @@ struct IndirectOptions {
   // Luminous flux per distribution already integrated (decide_indirect's), so the first bounce
   // does not integrate the same distributions again; missing ones are computed.
   std::map<const photometry::IntensityDistribution*, double> luminous_flux_lm;
+  // What the first bounce looks each luminaire's intensity up in (calc/intensity_lookup.h: the
+  // texture where the quality allows it); a distribution missing here is looked up itself.
+  std::map<const photometry::IntensityDistribution*, photometry::DistributionPtr> intensity_lookup;
 };
 
 // Options from the project's settings (quality, bounces).

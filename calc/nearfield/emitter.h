@@ -13,6 +13,10 @@
 #include "photometry/photometry.h"
 #include "util/robust_math.h"
 
+namespace luxgrid::photometry {
+class DistributionTexture;  // photometry/distribution_texture.h
+}
+
 namespace luxgrid::nearfield {
 
 struct FarFieldBound;  // far_field_bound.h
@@ -46,7 +50,18 @@ struct Emitter {
   // near-field pairs use where the error bound allows it. Empty for a point opening.
   std::vector<Vec3> rule_nodes;
   std::vector<double> rule_weights;
+  // What the far-field point model looks intensities up in (calc/intensity_lookup.h): the light
+  // distribution texture where its measured deviation from the table is within the quality's
+  // share, times the luminaire's factor; null: `distribution`. `far_texture` is that texture
+  // (kept alive by far_distribution) for loops that call its lookup directly, times
+  // `far_texture_factor`; null when the far field looks the table up.
+  photometry::DistributionPtr far_distribution;
+  const photometry::DistributionTexture* far_texture = nullptr;
+  double far_texture_factor = 1.0;
 
+  const photometry::IntensityDistribution& far_lookup() const {
+    return far_distribution ? *far_distribution : *distribution;
+  }
   bool is_point() const { return vertices.size() < 3 || area_m2 <= 0.0; }
   // Intensity (cd) sent along the world direction `dir_world` (unit, pointing away from the
   // emitter): the lookup turns it into the luminaire frame with R^T (R is a rotation).

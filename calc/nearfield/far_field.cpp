@@ -12,18 +12,17 @@ namespace luxgrid::nearfield {
 double point_source_illuminance(const photometry::IntensityDistribution& distribution,
                                 const glm::dmat3& world_to_local, const Vec3& source,
                                 const Vec3& point, const Receiver& receiver) {
-  const Vec3 r = source - point;
-  const double d2 = glm::dot(r, r);
-  if (!(d2 > 0.0)) return 0.0;
-  const Vec3 w = r / std::sqrt(d2);
-  const double weight = receiver_weight(receiver, w);
-  if (!(weight > 0.0)) return 0.0;
-  return sanitize_illuminance(distribution.intensity(world_to_local * -w) * weight / d2);
+  return point_source_illuminance_with(
+      [&](const Vec3& local, double inv_length) {
+        return distribution.intensity(local * inv_length);
+      },
+      world_to_local, source, point, receiver);
 }
 
-// The whole luminaire as a point at the centroid of its opening.
+// The whole luminaire as a point at the centroid of its opening, looked up in the emitter's
+// far-field lookup (the texture where calc/intensity_lookup.h chose it).
 double far_field_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver) {
-  return point_source_illuminance(*e.distribution, e.world_to_local, e.centroid, point, receiver);
+  return point_source_illuminance(e.far_lookup(), e.world_to_local, e.centroid, point, receiver);
 }
 
 double far_field_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal) {

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "calc/nearfield/emitter.h"
+#include "calc/nearfield/fan_sample.h"
 #include "calc/nearfield/receiver_kernel.h"
 #include "geometry/visibility.h"
 
@@ -21,6 +22,23 @@ namespace luxgrid::nearfield {
 double point_source_illuminance(const photometry::IntensityDistribution& distribution,
                                 const glm::dmat3& world_to_local, const Vec3& source,
                                 const Vec3& point, const Receiver& receiver);
+// The same formula with any lookup `intensity(local, inv_length) -> cd` of the direction
+// `local` in the luminaire frame, whose length is 1 / inv_length: a distribution needs the unit
+// vector local x inv_length (the function above passes it); the texture's coordinates do not
+// depend on the length (photometry/distribution_texture.h), so calc/direct.cpp's far-field loop
+// looks `local` up as it is, and the lookup does not wait for the square root and the division.
+template <class Lookup>
+inline double point_source_illuminance_with(const Lookup& intensity,
+                                            const glm::dmat3& world_to_local, const Vec3& source,
+                                            const Vec3& point, const Receiver& receiver) {
+  const Vec3 r = source - point;
+  const double d2 = glm::dot(r, r);
+  if (!(d2 > 0.0)) return 0.0;
+  const double inv_d = 1.0 / std::sqrt(d2);
+  const double weight = receiver_weight(receiver, r * inv_d);
+  if (!(weight > 0.0)) return 0.0;
+  return sanitize_illuminance(intensity(world_to_local * -r, inv_d) * weight / d2);
+}
 
 // Far-field point at the emitter centroid: E = I(-w) cos(theta_x) / d^2, finite and >= 0.
 double far_field_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal);
