@@ -75,15 +75,7 @@ DistributionTexture::DistributionTexture(int c_cells, int gamma_cells, std::vect
 
 double DistributionTexture::intensity(const Vec3& d) const {
   if (mode_ == Interpolation::bilinear) return bilinear(d);
-  double u, v;
-  diamond_angles(d, u, v);
-  const double fu = std::min(std::max(0.0, u * (nu_ / 4.0)), static_cast<double>(nu_));
-  const double fv = std::min(std::max(0.0, v * (nv_ / 2.0)), static_cast<double>(nv_));
-  int i = static_cast<int>(fu), j = static_cast<int>(fv);
-  if (i >= nu_) i = nu_ - 1;
-  if (j >= nv_) j = nv_ - 1;
-  const double su = fu - i, sv = fv - j;
-  const int i1 = i + 1 == nu_ ? 0 : i + 1;
+  const auto [i, j, i1, su, sv] = cell_of(d);
   double wu[4], wv[4];
   catmull_rom(su, wu);
   catmull_rom(sv, wv);

@@ -51,6 +51,13 @@ class DistributionTexture final : public IntensityDistribution {
   static Vec3 texel_direction(int i, int j, int c_cells, int gamma_cells);
 
  private:
+  // The texel cell a direction falls in: columns i and i1 (wrapping around), row j, and the
+  // fractions su, sv across the cell.
+  struct Cell {
+    int i, j, i1;
+    double su, sv;
+  };
+  inline Cell cell_of(const Vec3& direction) const;
   double texel(int i, int j) const {
     return data_[static_cast<std::size_t>(j) * static_cast<std::size_t>(nu_) +
                  static_cast<std::size_t>(i)];
@@ -80,18 +87,24 @@ void DistributionTexture::diamond_angles(const Vec3& d, double& u, double& v) {
   }
 }
 
-double DistributionTexture::bilinear(const Vec3& d) const {
+inline DistributionTexture::Cell DistributionTexture::cell_of(const Vec3& d) const {
   double u, v;
   diamond_angles(d, u, v);
   // max(0, NaN) is 0: a degenerate direction (a length near the underflow) reads a texel
   // instead of an index out of range.
   const double fu = std::min(std::max(0.0, u * (nu_ / 4.0)), static_cast<double>(nu_));
   const double fv = std::min(std::max(0.0, v * (nv_ / 2.0)), static_cast<double>(nv_));
-  int i = static_cast<int>(fu), j = static_cast<int>(fv);
-  if (i >= nu_) i = nu_ - 1;
-  if (j >= nv_) j = nv_ - 1;
-  const double su = fu - i, sv = fv - j;
-  const int i1 = i + 1 == nu_ ? 0 : i + 1;
+  Cell c;
+  c.i = static_cast<int>(fu), c.j = static_cast<int>(fv);
+  if (c.i >= nu_) c.i = nu_ - 1;
+  if (c.j >= nv_) c.j = nv_ - 1;
+  c.su = fu - c.i, c.sv = fv - c.j;
+  c.i1 = c.i + 1 == nu_ ? 0 : c.i + 1;
+  return c;
+}
+
+inline double DistributionTexture::bilinear(const Vec3& d) const {
+  const auto [i, j, i1, su, sv] = cell_of(d);
   const double a = texel(i, j) + su * (texel(i1, j) - texel(i, j));
   const double b = texel(i, j + 1) + su * (texel(i1, j + 1) - texel(i, j + 1));
   return a + sv * (b - a);
