@@ -272,6 +272,14 @@ TEST(ReportCli, CostOfTheExampleOffice) {
         EXPECT_EQ(c.max_diff, 0.0);
         EXPECT_EQ(c.mean_diff, 0.0);
       }
+      // The promises, direct and reflected light together, at every point of every surface
+      // (measured: at most 0.18 % at standard, on the walls' corners, and 0.092 % at high).
+      if (q == "standard") {
+        EXPECT_LE(c.max_diff, 1.0);
+      }
+      if (q == "high") {
+        EXPECT_LE(c.max_diff, 0.3);
+      }
     }
   }
   // Each level's time is the same for all of its rows. On the office standard's estimate halves
