@@ -196,7 +196,7 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
 }
 
 void mark_near_patches(const PatchMesh& mesh, const GatherSet& set, const Vec3& x, const Vec3& n,
-                       std::vector<char>& near) {
+                       std::vector<std::atomic<char>>& near) {
   for (const auto& g : set.groups) {
     if (!(glm::dot(g.normal, x) - g.max_offset > kGatherPlaneDistance_m)) continue;
     for (size_t c = g.begin; c < g.end; ++c) {
@@ -210,7 +210,7 @@ void mark_near_patches(const PatchMesh& mesh, const GatherSet& set, const Vec3& 
         const Vec3 d = x - p.centroid;
         if (glm::dot(g.normal, d) > kGatherPlaneDistance_m &&
             glm::dot(d, d) < kSubcellReach * kSubcellReach * p.diameter_m * p.diameter_m)
-          near[set.patch[k]] = 1;
+          near[set.patch[k]].store(1, std::memory_order_relaxed);
       }
     }
   }

@@ -4,6 +4,7 @@
 // exact polygon formula or the point kernel on its quarters, far from it the seed's point kernel;
 // a patch refined into cells (subcells.h) is gathered cell by cell by a receiver closer than
 // kSubcellReach diameters.
+#include <atomic>
 #include <limits>
 #include <vector>
 
@@ -77,8 +78,9 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
                         const GatherBand& band = {});
 
 // Sets near[j] for every patch j of `set` that the receiver (x, n) sees from closer than
-// kSubcellReach of its diameters: the patches whose cells the gather would use.
+// kSubcellReach of its diameters: the patches whose cells the gather would use. Atomic, so that
+// receivers are marked in parallel.
 void mark_near_patches(const PatchMesh& mesh, const GatherSet& set, const Vec3& x, const Vec3& n,
-                       std::vector<char>& near);
+                       std::vector<std::atomic<char>>& near);
 
 }  // namespace luxgrid::calc::indirect

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -341,12 +342,15 @@ IndirectResult compute_indirect(const Scene& scene,
   // Patches a receiver comes close to, refined into cells (subcells.h); not at draft, which
   // promises no accuracy.
   if (options.refine_near_patches && options.quality != Quality::draft) {
-    std::vector<char> refine(mesh.patches.size(), 0);
+    std::vector<std::atomic<char>> near(mesh.patches.size());
     for (size_t s = 0; s < surfaces.size(); ++s)
-      for (size_t i = 0; i < receivers[s].size(); ++i)
+      tbb::parallel_for(size_t(0), receivers[s].size(), [&](size_t i) {
         if (receivers[s][i].room >= 0)
           mark_near_patches(mesh, gather_sets[receivers[s][i].room], receivers[s][i].x,
-                            surfaces[s].normals[i], refine);
+                            surfaces[s].normals[i], near);
+      });
+    std::vector<char> refine(near.size());
+    for (size_t j = 0; j < near.size(); ++j) refine[j] = near[j].load(std::memory_order_relaxed);
     const CellMesh cells = cell_mesh(mesh, refine);
     if (!cells.mesh.patches.empty()) {
       const FirstBounce cell_fb =

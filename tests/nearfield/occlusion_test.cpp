@@ -22,13 +22,19 @@ constexpr double kHeight = 1.0;       // emitter plane, m
 constexpr double kScreenZ = 0.5;      // screen plane, m
 constexpr double kScreenEdgeX = 0.1;  // the screen covers x >= this, m
 
+// The opaque half-plane {z = z_m, x >= edge_x_m}.
 class HalfPlaneScreen final : public geometry::Visibility {
  public:
+  explicit HalfPlaneScreen(double z_m = kScreenZ, double edge_x_m = kScreenEdgeX)
+      : z_m_(z_m), edge_x_m_(edge_x_m) {}
   bool visible(const Vec3& p, const Vec3& r) const override {
-    const double t = (kScreenZ - r.z) / (p.z - r.z);
+    const double t = (z_m_ - r.z) / (p.z - r.z);
     if (!(t > 0.0 && t < 1.0)) return true;
-    return r.x + t * (p.x - r.x) < kScreenEdgeX;
+    return r.x + t * (p.x - r.x) < edge_x_m_;
   }
+
+ private:
+  double z_m_, edge_x_m_;
 };
 
 class Everything final : public geometry::Visibility {
@@ -157,14 +163,6 @@ TEST(Occlusion, NodesOnTheOpeningEdgeAreTestedSlightlyInside) {
 // x >= 0.05}: a receiver at R.x sees the strip P.x < 2 x 0.05 - R.x.
 TEST(Occlusion, APenumbraFarFromTheEmitterTakesTheNearRung) {
   constexpr double kUpZ = 3.0, kHalf = 0.1, kScreen = 1.5, kEdge = 0.05;
-  class FarScreen final : public geometry::Visibility {
-   public:
-    bool visible(const Vec3& p, const Vec3& r) const override {
-      const double t = (kScreen - r.z) / (p.z - r.z);
-      if (!(t > 0.0 && t < 1.0)) return true;
-      return r.x + t * (p.x - r.x) < kEdge;
-    }
-  };
   const auto square = [&](double x_max) {
     return make_polygon_emitter({{x_max, kHalf, kUpZ},
                                  {-kHalf, kHalf, kUpZ},
@@ -174,7 +172,7 @@ TEST(Occlusion, APenumbraFarFromTheEmitterTakesTheNearRung) {
   };
   const Emitter e = square(kHalf);
   const double luminance = kI0 / (4 * kHalf * kHalf);
-  const FarScreen screen;
+  const HalfPlaneScreen screen(kScreen, kEdge);
   for (double x : {0.02, 0.05, 0.08, 0.12, 0.15, 0.17}) {
     const Vec3 r(x, 0.03, 0.0);
     const double x_c = std::min(kHalf, 2 * kEdge - x);
