@@ -84,6 +84,7 @@ RunOutcome run_project(const std::filesystem::path& project_file,
   report::OutputOptions out;
   out.report = options.report;
   out.arrays_npy = options.arrays_npy;
+  out.part_plots = options.part_plots;
   out.scale = options.scale;
   out.scene = &scene;
   out.checks = outcome.checks;
@@ -96,8 +97,18 @@ RunOutcome run_project(const std::filesystem::path& project_file,
   for (const auto& w : outcome.results.plan.warnings) outcome.warnings.push_back(w);
   for (auto& w : report::write_outputs(outcome.results, folder, out))
     outcome.warnings.push_back(std::move(w));
-  // --no-report does not ask to delete the report of an earlier run into the same folder.
-  if (!options.report) folder.keep_from_previous({kReportFile});
+  // --no-report does not ask to delete the report of an earlier run into the same folder, nor
+  // does leaving out --part-plots ask to delete its part plots.
+  std::vector<std::string> keep;
+  if (!options.report) keep.push_back(kReportFile);
+  if (!options.part_plots) {
+    for (const auto& s : outcome.results.surfaces) {
+      const SurfaceOutputFiles names = surface_output_files(s.grid.name);
+      keep.push_back(names.direct_png);
+      keep.push_back(names.indirect_png);
+    }
+  }
+  folder.keep_from_previous(std::move(keep));
   folder.commit();
   outcome.kept = folder.kept();
   return outcome;

@@ -23,6 +23,7 @@ struct RunOptions {
   std::optional<report::ColourScale> scale;  // --scale MIN:MAX
   bool with_cost = false;                    // --with-cost: the cost table into the report
   bool arrays_npy = false;                   // --arrays npy: <surface>.npy per surface
+  bool part_plots = false;  // --part-plots: <surface>_direct.png, <surface>_indirect.png
   // Called with each of the scene's warnings as soon as the project is loaded (before a long
   // calculation, so a project in the wrong units says so at once); RunOutcome::warnings lists
   // them too.
@@ -35,8 +36,9 @@ struct RunOutcome {
   size_t scene_warnings = 0;          // how many of them are the scene's
   std::vector<report::RequirementCheck> checks;  // empty when the project states none
   std::optional<report::CostTable> cost;         // with_cost only
-  std::vector<std::string>
-      kept;  // files of the previous output carried over (report.html under --no-report)
+  // Files of the previous output carried over because this run's flags did not write them
+  // (report.html under --no-report, the part plots without --part-plots).
+  std::vector<std::string> kept;
 };
 
 // The emergency scene (settings.scene, or `scene` when given) replaces the loaded scene by its

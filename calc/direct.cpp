@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <map>
 #include <mutex>
 #include <vector>
 
@@ -77,9 +78,17 @@ double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3
 std::vector<nearfield::Emitter> make_emitters(const Scene& scene) {
   std::vector<nearfield::Emitter> out;
   out.reserve(scene.luminaires.size());
+  // The table rung's cells depend on the table alone: built for the first luminaire of each
+  // distribution and shared by the others (a hall's 1000 luminaires share one table).
+  std::map<const photometry::IntensityDistribution*,
+           std::shared_ptr<const nearfield::TableGammaCells>>
+      cells;
   for (const auto& l : scene.luminaires) {
-    out.push_back(
-        nearfield::make_emitter(l.opening, l.pose.position, l.pose.rotation, l.distribution));
+    const auto known = cells.find(l.distribution.get());
+    out.push_back(nearfield::make_emitter(l.opening, l.pose.position, l.pose.rotation,
+                                          l.distribution, nearfield::kDefaultDiskSegments,
+                                          known == cells.end() ? nullptr : known->second));
+    if (known == cells.end()) cells.emplace(l.distribution.get(), out.back().table_cells);
   }
   return out;
 }

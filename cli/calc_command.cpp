@@ -1,19 +1,19 @@
-// `luxgrid calc PROJECT [-o DIR] [--quality Q] [--scene normal|emergency] [--no-report] [--scale
-// MIN:MAX] [--check]
-//  [--with-cost] [--arrays npy]`
+// `luxgrid calc PROJECT [-o DIR] [--quality Q] [--scene normal|emergency] [--no-report]
+//  [--part-plots] [--scale MIN:MAX] [--check] [--with-cost] [--arrays npy]`
 #include <cstdio>
 #include <memory>
 
 #include "app/run_project.h"
 #include "cli/commands.h"
 #include "util/error.h"
+#include "util/output_names.h"
 
 namespace luxgrid::cli {
 
 void add_calc_command(CLI::App& app, Runner& run) {
   struct Options {
     std::string project, out, quality, scale, arrays, scene;
-    bool no_report = false, check = false, with_cost = false;
+    bool no_report = false, check = false, with_cost = false, part_plots = false;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
@@ -29,6 +29,9 @@ void add_calc_command(CLI::App& app, Runner& run) {
                   "emergency output, escape-route and open-area checks)")
       ->check(CLI::IsMember({"normal", "emergency"}));
   cmd->add_flag("--no-report", opt->no_report, "Do not write report.html");
+  cmd->add_flag("--part-plots", opt->part_plots,
+                "Also plot each grid's direct and reflected light: <surface>_direct.png and "
+                "<surface>_indirect.png (when reflected light was calculated)");
   cmd->add_option("--scale", opt->scale,
                   "Fix the colour scale of every plot to MIN:MAX lux (e.g. 0:1000)");
   cmd->add_option(
@@ -51,6 +54,7 @@ void add_calc_command(CLI::App& app, Runner& run) {
       options.report = !opt->no_report;
       options.with_cost = opt->with_cost;
       options.arrays_npy = opt->arrays == "npy";
+      options.part_plots = opt->part_plots;
       options.show_progress = true;
       const std::filesystem::path out = opt->out.empty() ? app::default_output_dir(opt->project)
                                                          : std::filesystem::path(opt->out);
@@ -73,8 +77,8 @@ void add_calc_command(CLI::App& app, Runner& run) {
         std::printf("cost of accuracy:\n%s", report::format_cost_table(*outcome.cost).c_str());
       std::printf("results written to %s\n", out.string().c_str());
       for (const auto& k : outcome.kept)
-        std::printf("%s kept from the previous run (this run did not write it: --no-report)\n",
-                    k.c_str());
+        std::printf("%s kept from the previous run (this run did not write it: %s)\n", k.c_str(),
+                    k == kReportFile ? "--no-report" : "no --part-plots");
       if (opt->check && !report::all_met(outcome.checks)) {
         std::fprintf(stderr, "luxgrid: requirements not met (--check)\n");
         return 3;

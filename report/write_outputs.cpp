@@ -74,13 +74,16 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   report.cost = options.cost;
   report.version = options.version;
   report.date = utc_now();
-  // Indirect light ran when any point received some: then each grid also gets its direct and
-  // indirect parts as <surface>_direct.png and <surface>_indirect.png (maintained values, like the
-  // CSV's E_direct_maintained_lx / E_indirect_maintained_lx columns; each on its own scale
-  // unless a scale was given, since the indirect part is often a small fraction of the total).
+  // Asked for (--part-plots) and when indirect light ran (any point received some), each grid
+  // also gets its direct and indirect parts as <surface>_direct.png and <surface>_indirect.png
+  // (maintained values, like the CSV's E_direct_maintained_lx / E_indirect_maintained_lx
+  // columns; each on its own scale unless a scale was given, since the indirect part is often a
+  // small fraction of the total). Not by default: they are two thirds of the plotting, and the
+  // CSV holds both parts at every point.
   bool indirect_ran = false;
   for (const auto& s : results.surfaces)
     for (double e : s.E_indirect) indirect_ran = indirect_ran || e > 0.0;
+  const bool parts_plotted = options.part_plots && indirect_ran;
   // Every file of every surface is independent of the others: they are written in parallel, one
   // task per CSV or array and one per surface's plots, which draws its two or three plots in
   // parallel again after working out once what each pixel of its map shows (map_samples). The
@@ -126,7 +129,7 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
       case Job::What::csv: return write_text_file(folder.file(names.csv), surface_csv(s));
       case Job::What::npy: return write_text_file(folder.file(names.npy), surface_npy(s));
       case Job::What::plots: {
-        const int parts = indirect_ran ? 3 : 1;
+        const int parts = parts_plotted ? 3 : 1;
         const auto samples = parts > 1 ? map_samples(s, options.scene) : nullptr;
         tbb::parallel_for(0, parts, [&](int part) {
           if (part == 0) {

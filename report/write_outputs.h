@@ -15,8 +15,11 @@
 namespace luxgrid::report {
 
 struct OutputOptions {
-  bool report = true;                    // report.html
-  bool arrays_npy = false;               // <surface>.npy per surface (report/surface_npy.h)
+  bool report = true;       // report.html
+  bool arrays_npy = false;  // <surface>.npy per surface (report/surface_npy.h)
+  // <surface>_direct.png and <surface>_indirect.png beside each grid's plot, when reflected light
+  // ran (--part-plots): two more plots a surface, asked for, not written by default.
+  bool part_plots = false;
   std::optional<ColourScale> scale;      // one fixed scale for every surface; default: per surface
   const calc::Scene* scene = nullptr;    // luminaire marks, plan view and schedule; null: left out
   std::vector<RequirementCheck> checks;  // also written into results.json per surface

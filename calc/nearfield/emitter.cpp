@@ -20,7 +20,8 @@ Vec3 vector_area2(const std::vector<Vec3>& v) {
 }  // namespace
 
 Emitter make_polygon_emitter(std::vector<Vec3> vertices, const glm::dmat3& rotation,
-                             photometry::DistributionPtr distribution) {
+                             photometry::DistributionPtr distribution,
+                             std::shared_ptr<const TableGammaCells> table_cells) {
   if (!distribution) throw InputError("near-field emitter: no intensity distribution");
   if (vertices.size() > static_cast<std::size_t>(kMaxPolygonVertices - 2))
     throw InputError("near-field emitter: " + std::to_string(vertices.size()) +
@@ -31,7 +32,7 @@ Emitter make_polygon_emitter(std::vector<Vec3> vertices, const glm::dmat3& rotat
   e.normal = glm::normalize(rotation * Vec3(0.0, 0.0, -1.0));
   e.distribution = std::move(distribution);
   if (const photometry::TableView view = e.distribution->table_view(); view.table)
-    e.table_cells = make_table_gamma_cells(*view.table);
+    e.table_cells = table_cells ? std::move(table_cells) : make_table_gamma_cells(*view.table);
   Vec3 c{0.0};
   for (const Vec3& v : vertices) c += v;
   if (!vertices.empty()) c /= static_cast<double>(vertices.size());
@@ -79,7 +80,7 @@ Emitter make_polygon_emitter(std::vector<Vec3> vertices, const glm::dmat3& rotat
 
 Emitter make_emitter(const photometry::LuminousOpening& opening, const Vec3& position,
                      const glm::dmat3& rotation, photometry::DistributionPtr distribution,
-                     int disk_segments) {
+                     int disk_segments, std::shared_ptr<const TableGammaCells> table_cells) {
   using Shape = photometry::LuminousOpening::Shape;
   if (opening.length < 0.0 || opening.width < 0.0)
     throw InputError("near-field emitter: negative opening size " + std::to_string(opening.length) +
@@ -120,7 +121,8 @@ Emitter make_emitter(const photometry::LuminousOpening& opening, const Vec3& pos
   std::vector<Vec3> world;
   world.reserve(local.size());
   for (const Vec3& l : local) world.push_back(position + rotation * l);
-  Emitter e = make_polygon_emitter(std::move(world), rotation, std::move(distribution));
+  Emitter e = make_polygon_emitter(std::move(world), rotation, std::move(distribution),
+                                   std::move(table_cells));
   if (e.is_point()) e.centroid = position;
   return e;
 }

@@ -74,16 +74,21 @@ struct Emitter {
 // turned by `rotation` (world = position + rotation * local). A disk becomes a regular
 // `disk_segments`-gon (3..kMaxDiskSegments) scaled so its area equals the disk's, so the flux
 // and the far field are unchanged. A box/cylinder `height` is ignored: the flat opening emits.
+// `table_cells`: the distribution's table cells when the caller already has them (they depend
+// on the table alone, and a scene's luminaires share a few tables: building them once per
+// table, not once per luminaire, spares 0.1 ms a luminaire); null: built here.
 // Throws InputError for negative sizes, a null distribution or a bad segment count.
 Emitter make_emitter(const photometry::LuminousOpening& opening, const Vec3& position,
                      const glm::dmat3& rotation, photometry::DistributionPtr distribution,
-                     int disk_segments = kDefaultDiskSegments);
+                     int disk_segments = kDefaultDiskSegments,
+                     std::shared_ptr<const TableGammaCells> table_cells = nullptr);
 
 // Builds an emitter from an explicit convex world polygon (tests, hard cases). The emitting
 // normal is `rotation * (0, 0, -1)`; the polygon must lie in the plane through its centroid with
 // that normal (checked to 1e-9 of its size).
 Emitter make_polygon_emitter(std::vector<Vec3> vertices, const glm::dmat3& rotation,
-                             photometry::DistributionPtr distribution);
+                             photometry::DistributionPtr distribution,
+                             std::shared_ptr<const TableGammaCells> table_cells = nullptr);
 
 // The five-times rule's "largest dimension" of the emitter (m): its diameter as a point set.
 double largest_dimension(const Emitter& emitter);

@@ -254,6 +254,39 @@ TEST(Outputs, InfoPrintsItsWarningsOnStderr) {
       << stderr_only.output;
 }
 
+TEST(Outputs, PartPlotsOnlyWhenAskedAndKeptByARerunWithout) {
+  // Reflected light runs (reflectances above 0): --part-plots adds each grid's direct and
+  // reflected plots; a run without it writes the total's plot alone and keeps the earlier
+  // run's part plots, saying so.
+  const fs::path dir = scratch("part_plots");
+  luxgrid::test::write_file(dir / "p.json", R"({
+    "format": "luxgrid-project/1", "name": "parts",
+    "photometry": { "iso": { "builtin": "lambertian", "intensity_cd": 1000 } },
+    "rooms": [ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3,
+                 "reflectance": { "floor": 0.2, "walls": 0.5, "ceiling": 0.7 } } ],
+    "luminaires": [ { "photometry": "iso", "position": [2, 2, 3] } ],
+    "surfaces": [ { "name": "floor", "workplane": { "room": "r", "height": 0, "border": 0 }, "spacing": 1 } ]
+  })");
+  const std::string calc = "calc " + quote(dir / "p.json") + " --quality draft --no-report -o ";
+  ASSERT_EQ(luxgrid::test::luxgrid(calc + quote(dir / "plain")).code, 0);
+  EXPECT_TRUE(fs::exists(dir / "plain/floor.png"));
+  EXPECT_FALSE(fs::exists(dir / "plain/floor_direct.png"));
+  EXPECT_FALSE(fs::exists(dir / "plain/floor_indirect.png"));
+  ASSERT_EQ(luxgrid::test::luxgrid(calc + quote(dir / "parts") + " --part-plots").code, 0);
+  const std::string direct = read_file(dir / "parts/floor_direct.png");
+  EXPECT_FALSE(direct.empty());
+  EXPECT_FALSE(read_file(dir / "parts/floor_indirect.png").empty());
+  // The total's plot does not depend on whether the parts were drawn too.
+  EXPECT_EQ(read_file(dir / "parts/floor.png"), read_file(dir / "plain/floor.png"));
+  const CommandResult r = luxgrid::test::luxgrid(calc + quote(dir / "parts"));
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("floor_direct.png kept from the previous run (this run did not write "
+                          "it: no --part-plots)"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(read_file(dir / "parts/floor_direct.png"), direct);
+}
+
 TEST(Outputs, ANoReportRerunKeepsTheEarlierReport) {
   const fs::path dir = scratch("rerun");
   luxgrid::test::write_file(dir / "p.json", R"({

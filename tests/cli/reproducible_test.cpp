@@ -46,9 +46,9 @@ TEST(Reproducible, OneThreadAndTwoWriteIdenticalFiles) {
   const fs::path dir = scratch("office_threads");
   const fs::path project = fs::path(LUXGRID_SOURCE_DIR) / "examples/office/project.json";
   for (const char* threads : {"1", "2"}) {
-    const auto r = luxgrid::test::shell("SOURCE_DATE_EPOCH=1764547200 " +
-                                        std::string(LUXGRID_BINARY) + " --threads " + threads +
-                                        " calc " + quote(project) + " -o " + quote(dir / threads));
+    const auto r = luxgrid::test::shell(
+        "SOURCE_DATE_EPOCH=1764547200 " + std::string(LUXGRID_BINARY) + " --threads " + threads +
+        " calc " + quote(project) + " --part-plots -o " + quote(dir / threads));
     ASSERT_EQ(r.code, 0) << r.output;
   }
   const auto files = entries(dir / "1");
