@@ -33,9 +33,9 @@ constexpr size_t kFarFieldRun = 64;
 // on a plane without a visibility test (near_field "never", draft): luminaires outside, points
 // inside, each point's sum over the luminaires in the zone's order (the same sums as the
 // general loop, added in the same order). A texture is looked up without the virtual call.
-void far_field_run(const std::vector<nearfield::Emitter>& emitters,
-                   const std::vector<uint32_t>& luminaires, const geometry::SurfaceGrid& grid,
-                   size_t begin, size_t end, std::vector<double>& E) {
+[[gnu::target_clones("avx2", "default")]] void far_field_run(
+    const std::vector<nearfield::Emitter>& emitters, const std::vector<uint32_t>& luminaires,
+    const geometry::SurfaceGrid& grid, size_t begin, size_t end, std::vector<double>& E) {
   // The run's active points packed once (the luminaires then read contiguous arrays).
   Vec3 point[kFarFieldRun], normal[kFarFieldRun];
   size_t index[kFarFieldRun];
@@ -51,12 +51,31 @@ void far_field_run(const std::vector<nearfield::Emitter>& emitters,
       sum[k] += nearfield::point_source_illuminance_with(
           lookup, e.world_to_local, e.centroid, point[k], nearfield::Receiver::planar(normal[k]));
   };
+  // The texture's lookups of a run at once (structure of arrays): the directions and the
+  // receiver factors first, then the batch lookup, then the sums; the same operations on the
+  // same values as point_source_illuminance_with, so the same sums to the last bit.
+  double lx[kFarFieldRun], ly[kFarFieldRun], lz[kFarFieldRun], weight[kFarFieldRun],
+      d2[kFarFieldRun], cd[kFarFieldRun];
   for (const uint32_t k : luminaires) {
     const nearfield::Emitter& e = emitters[k];
     if (e.far_texture) {
-      const photometry::DistributionTexture& texture = *e.far_texture;
+      for (size_t q = 0; q < n; ++q) {
+        const Vec3 r = e.centroid - point[q];
+        d2[q] = glm::dot(r, r);
+        const double inv_d = 1.0 / std::sqrt(d2[q]);
+        // At d2 = 0 the direction is NaN and the weight 0 (max(0, NaN)); the sum skips it.
+        weight[q] = nearfield::receiver_weight(nearfield::Receiver::planar(normal[q]), r * inv_d);
+        const Vec3 local = e.world_to_local * -r;
+        lx[q] = local.x, ly[q] = local.y, lz[q] = local.z;
+      }
+      e.far_texture->bilinear_batch(lx, ly, lz, static_cast<int>(n), cd);
       const double factor = e.far_texture_factor;
-      over_points([&](const Vec3& local, double) { return factor * texture.bilinear(local); }, e);
+      // Adding 0 where the pair gives nothing leaves the sum's bits as they are (it is >= +0),
+      // and keeps the loop free of branches.
+      for (size_t q = 0; q < n; ++q) {
+        const double pair = nearfield::sanitize_illuminance(factor * cd[q] * weight[q] / d2[q]);
+        sum[q] += d2[q] > 0.0 && weight[q] > 0.0 ? pair : 0.0;
+      }
     } else {
       const photometry::IntensityDistribution& d = e.far_lookup();
       over_points(

@@ -73,6 +73,50 @@ DistributionTexture::DistributionTexture(int c_cells, int gamma_cells, std::vect
     throw CalculationError("DistributionTexture: texel count does not match the resolution");
 }
 
+[[gnu::target_clones("avx2", "default")]] void DistributionTexture::bilinear_batch(
+    const double* x, const double* y, const double* z, int n, double* out) const {
+  // Chunks whose coordinates stay in L1 between the two loops.
+  constexpr int kChunk = 64;
+  double fu[kChunk], fv[kChunk];
+  const double u_scale = nu_ / 4.0, v_scale = nv_ / 2.0;
+  const double u_max = static_cast<double>(nu_), v_max = static_cast<double>(nv_);
+  for (int begin = 0; begin < n; begin += kChunk) {
+    const int m = std::min(kChunk, n - begin);
+    // diamond_angles and cell_of's clamps, every branch computed and selected: the same
+    // operations on the same operands, so the same values. At a pole (sxy = 0) the quotients
+    // are NaN and not selected.
+    for (int k = 0; k < m; ++k) {
+      const double dx = x[begin + k], dy = y[begin + k], a = -z[begin + k];
+      const double sxy = std::abs(dx) + std::abs(dy);
+      const double h = std::sqrt(dx * dx + dy * dy);
+      const double s = h + std::abs(a);
+      const double inv = 1.0 / (sxy * s);
+      const double t = dy * s * inv;
+      const double q = h * sxy * inv;
+      const bool pole = !(sxy > 0.0), up = a >= 0.0;
+      const double u_right = t >= 0.0 ? t : 4.0 + t;  // quadrants 1 and 4
+      const double u_any = dx >= 0.0 ? u_right : 2.0 - t;
+      const double u = pole ? 0.0 : u_any;
+      const double v_up = up ? q : 2.0 - q, v_pole = up ? 0.0 : 2.0;
+      const double v = pole ? v_pole : v_up;
+      // std::max(0.0, x) and std::min(x, m) spelled out: (0 < x ? x : 0) and (m < x ? m : x).
+      const double fu0 = u * u_scale, fv0 = v * v_scale;
+      const double fu1 = 0.0 < fu0 ? fu0 : 0.0, fv1 = 0.0 < fv0 ? fv0 : 0.0;
+      fu[k] = u_max < fu1 ? u_max : fu1;
+      fv[k] = v_max < fv1 ? v_max : fv1;
+    }
+    for (int k = 0; k < m; ++k) {
+      const int i = std::min(static_cast<int>(fu[k]), nu_ - 1);
+      const int j = std::min(static_cast<int>(fv[k]), nv_ - 1);
+      const double su = fu[k] - i, sv = fv[k] - j;
+      const int i1 = i + 1 == nu_ ? 0 : i + 1;
+      const double a = texel(i, j) + su * (texel(i1, j) - texel(i, j));
+      const double b = texel(i, j + 1) + su * (texel(i1, j + 1) - texel(i, j + 1));
+      out[begin + k] = a + sv * (b - a);
+    }
+  }
+}
+
 double DistributionTexture::intensity(const Vec3& d) const {
   if (mode_ == Interpolation::bilinear) return bilinear(d);
   const auto [i, j, i1, su, sv] = cell_of(d);

@@ -39,6 +39,11 @@ class DistributionTexture final : public IntensityDistribution {
   // The bilinear lookup without the virtual call, for the hot loops that know the texture they
   // hold (calc/direct.cpp); the same value as intensity() on a bilinear texture.
   inline double bilinear(const Vec3& direction) const;
+  // bilinear() of n directions given as three arrays (x[k], y[k], z[k]), into out[k]: the same
+  // values to the last bit. The coordinates of all n are worked out first, in a loop without
+  // branches that the compiler turns into vector instructions, then the texels are read: the
+  // far-field loop of calc/direct.cpp looks up a run of points at once.
+  void bilinear_batch(const double* x, const double* y, const double* z, int n, double* out) const;
   Interpolation interpolation() const { return mode_; }
   int c_cells() const { return nu_; }
   int gamma_cells() const { return nv_; }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <random>
 
@@ -281,6 +282,34 @@ TEST(Texture, AgreesWithTheTableAndIsContinuous) {
   // A constant distribution is reproduced exactly.
   const DistributionTexture iso(IsotropicDistribution(7.0), 64, 32, Interpolation::bicubic);
   EXPECT_NEAR(iso.intensity(glm::normalize(Vec3(0.3, -0.2, 0.5))), 7.0, 1e-6);
+}
+
+TEST(Texture, BatchLookupGivesTheSameBitsAsOneByOne) {
+  // The far-field loop looks a run of directions up at once (bilinear_batch, vectorised); its
+  // values must be bilinear()'s to the last bit, so that a run's sums do not depend on the path.
+  const Photometry p = load_photometry_file(std::filesystem::path(LUXGRID_SOURCE_DIR) /
+                                            "tests/data/photometry/ldt/zumtobel_mirel_isym4.ldt");
+  const DistributionTexture tex(*p.table, 1440, 720, Interpolation::bilinear);
+  std::vector<Vec3> d;
+  std::mt19937 rng(5);
+  std::normal_distribution<double> n;
+  // Unnormalised directions (the loop passes them so), the poles, the axes and the quadrant
+  // boundaries (signed zeros), a zero vector and lengths near the underflow.
+  for (int k = 0; k < 1000; ++k) d.push_back(Vec3(n(rng), n(rng), n(rng)) * (0.1 + k % 7));
+  for (double z : {-1.0, 0.0, 1.0, -0.0})
+    for (double x : {-1.0, -0.0, 0.0, 1.0})
+      for (double y : {-1.0, -0.0, 0.0, 1.0}) d.push_back(Vec3(x, y, z));
+  d.push_back(Vec3(1e-300, -1e-300, 1e-310));
+  d.push_back(Vec3(1e-170, 1e-170, -1.0));
+  std::vector<double> x, y, z;
+  for (const Vec3& v : d) x.push_back(v.x), y.push_back(v.y), z.push_back(v.z);
+  std::vector<double> batch(d.size());
+  tex.bilinear_batch(x.data(), y.data(), z.data(), static_cast<int>(d.size()), batch.data());
+  for (size_t k = 0; k < d.size(); ++k) {
+    const double one = tex.bilinear(d[k]);
+    EXPECT_EQ(std::memcmp(&one, &batch[k], sizeof one), 0)
+        << k << ": " << one << " against " << batch[k];
+  }
 }
 
 }  // namespace
