@@ -43,6 +43,7 @@ SurfaceGrid make_plane_grid(const std::string& name, const Vec3& origin, const V
   g.spacing_v = size_v / g.nv;
   const Vec3 normal = glm::normalize(glm::cross(g.u_dir, g.v_dir));
   g.points.reserve(static_cast<size_t>(g.nu) * g.nv);
+  g.normals.reserve(g.points.capacity());
   for (int j = 0; j < g.nv; ++j) {
     for (int i = 0; i < g.nu; ++i) {
       g.points.push_back(origin + g.u_dir * ((i + 0.5) * g.spacing_u) +

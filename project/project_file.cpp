@@ -31,6 +31,16 @@ using namespace calc;
 
 namespace {
 
+// Grids moved into a vector: a braced list would copy them (its elements are const), and a
+// grid of a million points is 60 MB.
+template <class... Grid>
+std::vector<geometry::SurfaceGrid> grids_of(Grid&&... grid) {
+  std::vector<geometry::SurfaceGrid> out;
+  out.reserve(sizeof...(grid));
+  (out.push_back(std::forward<Grid>(grid)), ...);
+  return out;
+}
+
 // A count computed in double (a 1e-300 m spacing gives 1e300 points per side): exact below
 // 1e15, then in exponent form; never converted to an integer type, where it would overflow.
 std::string count_text(double n) {
@@ -805,8 +815,8 @@ std::vector<geometry::SurfaceGrid> parse_emergency_surface(const JsonValue& s, c
     const double spacing = parse_spacing(s, s.find("spacing"), path_length(path));
     budget.spend(s, escape_route_point_count(path, width, spacing), "escape route");
     const EscapeRoutePoints points = escape_route_points(path, width, spacing);
-    return {floor_points_grid(name + " centre line", points.centre_line, z),
-            floor_points_grid(name + " band", points.band, z)};
+    return grids_of(floor_points_grid(name + " centre line", points.centre_line, z),
+                    floor_points_grid(name + " band", points.band, z));
   }
   const auto a = s.at("open_area");
   a.expect_object();
@@ -836,7 +846,7 @@ std::vector<geometry::SurfaceGrid> parse_emergency_surface(const JsonValue& s, c
     s.fail(
         "no grid point lies inside the open area's core and outside obstacles; use a smaller "
         "spacing");
-  return {std::move(g)};
+  return grids_of(std::move(g));
 }
 
 std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const Scene& scene,
@@ -863,7 +873,7 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
       s.fail(
           "no grid point lies inside the workplane and outside obstacles; use a smaller spacing");
     }
-    return {std::move(g)};
+    return grids_of(std::move(g));
   }
   if (auto rs = s.find("room_surfaces")) {
     rs->expect_object();
@@ -910,9 +920,9 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
     if (!(size.x > 0.0 && size.y > 0.0)) size_v.fail("expected two positive sizes in metres");
     const double spacing = parse_spacing(s, s.find("spacing"), std::max(size.x, size.y));
     budget.spend_cells(s, size.x, size.y, spacing);
-    return {geometry::make_plane_grid(name, origin, un, vn, size.x, size.y, spacing)};
+    return grids_of(geometry::make_plane_grid(name, origin, un, vn, size.x, size.y, spacing));
   }
-  if (auto obs = s.find("observers")) return {parse_observers(s, *obs, name, budget)};
+  if (auto obs = s.find("observers")) return grids_of(parse_observers(s, *obs, name, budget));
   if (s.has("escape_route") || s.has("open_area"))
     return parse_emergency_surface(s, scene, name, budget);
   const auto pts = s.at("points");
@@ -933,7 +943,7 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
   g.nu = static_cast<int>(g.points.size());
   g.nv = 1;
   g.active.assign(g.points.size(), true);
-  return {std::move(g)};
+  return grids_of(std::move(g));
 }
 
 // One surface entry gives one grid, or several for room_surfaces ("<name> floor", ...).

@@ -1,6 +1,8 @@
 #include "report/csv.h"
 
+#include <charconv>
 #include <cstdio>
+#include <string_view>
 
 namespace luxgrid::report {
 
@@ -35,25 +37,42 @@ std::string surface_csv(const calc::SurfaceResult& r) {
   // out of the calculation (outside an L-shaped workplane, inside an obstacle) says active =
   // false and leaves its E cells empty, so a spreadsheet's MIN and AVERAGE over a column skip
   // it, as the statistics do.
-  std::string out = std::string(kSurfaceCsvHeader) + "\n";
   const auto& g = r.grid;
-  const char* quantity = geometry::to_string(g.quantity);
-  char line[512];
+  const std::string quantity = std::string(",") + geometry::to_string(g.quantity) + "\n";
+  // Numbers as printf's "%.6g" writes them (std::to_chars with a precision is specified so),
+  // without printf's format parsing and locale: a large grid's CSV is a million rows.
+  constexpr size_t kRowBytes = 8 * 14 + 3 * 13 + 16;  // digits, signs, exponents, separators
+  std::string out;
+  out.reserve(std::string_view(kSurfaceCsvHeader).size() + 1 +
+              g.points.size() * (kRowBytes + quantity.size()));
+  out += kSurfaceCsvHeader;
+  out += '\n';
+  char buf[32];
+  const auto put_int = [&](int v) { out.append(buf, std::to_chars(buf, buf + sizeof buf, v).ptr); };
+  const auto put = [&](double v) {
+    out.append(buf, std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 6).ptr);
+  };
+  const int nu = g.nu > 0 ? g.nu : 1;
   for (size_t k = 0; k < g.points.size(); ++k) {
-    const int nu = g.nu > 0 ? g.nu : 1;
     const auto& p = g.points[k];
     const auto& n = g.normals[k];
-    const bool active = g.active.empty() || g.active[k];
-    std::snprintf(line, sizeof line, "%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,",
-                  static_cast<int>(k % nu), static_cast<int>(k / nu), p.x, p.y, p.z, n.x, n.y, n.z);
-    out += line;
-    if (active) {
-      std::snprintf(line, sizeof line, "true,%.6g,%.6g,%.6g,%s\n", r.E[k], r.E_direct[k],
-                    r.E_indirect[k], quantity);
-    } else {
-      std::snprintf(line, sizeof line, "false,,,,%s\n", quantity);
+    put_int(static_cast<int>(k % nu));
+    out += ',';
+    put_int(static_cast<int>(k / nu));
+    for (const double v : {p.x, p.y, p.z, n.x, n.y, n.z}) {
+      out += ',';
+      put(v);
     }
-    out += line;
+    if (g.active.empty() || g.active[k]) {
+      out += ",true";
+      for (const double v : {r.E[k], r.E_direct[k], r.E_indirect[k]}) {
+        out += ',';
+        put(v);
+      }
+    } else {
+      out += ",false,,,";
+    }
+    out += quantity;
   }
   return out;
 }
