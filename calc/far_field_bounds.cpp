@@ -1,5 +1,7 @@
 #include "calc/far_field_bounds.h"
 
+#include <tbb/global_control.h>
+
 #include "calc/nearfield/far_field_bound.h"
 
 namespace luxgrid::calc {
@@ -37,6 +39,10 @@ std::vector<std::string> attach_far_field_bounds(const Scene& scene, const Plan&
   std::vector<std::string> lines;
   if (plan.near_switch != nearfield::NearFieldSwitch::automatic) return lines;
   const double tolerance = nearfield::promised_tolerance(plan.near_model);
+  // The map's directions run on plain threads (the nearfield library has no TBB): as many as
+  // the calculation may use (luxgrid --threads, LUXGRID_THREADS; cli/threads.h).
+  const auto max_threads = static_cast<unsigned>(
+      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
   std::vector<Distinct> distinct;
   for (size_t i = 0; i < emitters.size(); ++i) {
     nearfield::Emitter& e = emitters[i];
@@ -47,11 +53,12 @@ std::vector<std::string> attach_far_field_bounds(const Scene& scene, const Plan&
              same_outline(d.outline, outline, e.largest_dimension_m);
     });
     if (it == distinct.end()) {
-      distinct.push_back({e.distribution.get(),
-                          std::move(outline),
-                          nearfield::build_far_field_bound(e, plan.near_model, tolerance),
-                          scene.luminaires[i].photometry,
-                          {}});
+      distinct.push_back(
+          {e.distribution.get(),
+           std::move(outline),
+           nearfield::build_far_field_bound(e, plan.near_model, tolerance, max_threads),
+           scene.luminaires[i].photometry,
+           {}});
       it = distinct.end() - 1;
     }
     it->members.push_back(i);

@@ -293,7 +293,7 @@ FarFieldBound::Weights FarFieldBound::weights(const Vec3& u, double distance_m) 
 
 std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
                                                            const Model& near_model,
-                                                           double tolerance) {
+                                                           double tolerance, unsigned threads) {
   auto bound = std::make_shared<FarFieldBound>();
   bound->tolerance = tolerance;
   bound->largest_dimension_m = e.largest_dimension_m;
@@ -313,7 +313,7 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
   const Probe probe{e, near_model, tolerance / kBoundSafetyFactor, peak};
   std::vector<Probe::Measured> measured(n);
   // Directions in parallel (the nearfield library has no TBB; the samples are independent).
-  const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  if (threads == 0) threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
   std::vector<std::thread> pool;
   for (unsigned t = 0; t < threads; ++t) {
     pool.emplace_back([&, t] {

@@ -106,10 +106,12 @@ struct FarFieldBound {
 
 // Builds the map for `emitter` (its own frame is read from emitter.rotation, so the map is the
 // same for every pose) against `near_model`, for the promise `tolerance`. Cost: about 2 x 10^5
-// near-field evaluations worst case, in parallel (tens to hundreds of ms per distinct emitter).
+// near-field evaluations worst case, in parallel (tens to hundreds of ms per distinct emitter) on
+// at most `threads` threads (0: the processor's, up to 8; the calculation passes its own limit,
+// `luxgrid --threads`).
 std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& emitter,
                                                            const Model& near_model,
-                                                           double tolerance);
+                                                           double tolerance, unsigned threads = 0);
 
 // The plan's line for one emitter: "near field out to 9.1 D (C 45, gamma 35), 2.0 D at least,
 // median 3.4 D (0.65 m opening), far field within 1 % beyond" with the reason.
