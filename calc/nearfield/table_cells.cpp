@@ -77,6 +77,30 @@ std::shared_ptr<const TableGammaCells> make_table_gamma_cells(
                          cells->nodes);
   }
   cells->first.back() = static_cast<int>(cells->nodes.size());
+
+  for (double g : L) {
+    cells->line_sin.push_back(g == kHalfPi ? 1.0 : std::sin(g));
+    cells->line_cos.push_back(g == kHalfPi ? 0.0 : std::cos(g));
+  }
+  const std::vector<double>& G = table.grid().gamma_rad;
+  cells->interval_row.assign(L.size(), -1);
+  cells->w_lo.assign(L.size(), 0.0);
+  cells->w_hi.assign(L.size(), 0.0);
+  for (std::size_t k = 0; k + 1 < L.size(); ++k) {
+    std::size_t j = 0;
+    double tg = 0.0;
+    if (!table.gamma_cell(0.5 * (L[k] + L[k + 1]), j, tg) || G.size() < 2) continue;
+    cells->interval_row[k] = static_cast<long>(j);
+    // The integral is linear in (I at row j, I at row j + 1): its weights are its values at
+    // (1, 0) and (0, 1).
+    const auto integral = [&](double i0, double i1) {
+      return linear_sin_integral(L[k], cells->line_sin[k], cells->line_cos[k], L[k + 1],
+                                 cells->line_sin[k + 1], cells->line_cos[k + 1], G[j], G[j + 1], i0,
+                                 i1);
+    };
+    cells->w_lo[k] = integral(1.0, 0.0);
+    cells->w_hi[k] = integral(0.0, 1.0);
+  }
   return cells;
 }
 

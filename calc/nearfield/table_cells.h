@@ -43,7 +43,27 @@ struct TableGammaCells {
   std::vector<int> first;  // the nodes of cell k (lines[k], lines[k + 1]) are
                            // nodes[first[k]] .. nodes[first[k + 1] - 1]
   std::vector<TableGammaNode> nodes;
+
+  // For the closed form along a ray (bilinear tables, receivers facing the opening's axis;
+  // table_cubature.cpp): sin and cos of each line's table angle, and per interval k
+  // (lines[k], lines[k + 1]) the table's gamma row j holding it (-1 outside the table's range:
+  // intensity zero) with the weights of the exact integral of I sin(gamma) over the whole interval:
+  //   integral = w_lo[k] I(C, row j, tg 0) + w_hi[k] I(C, row j, tg 1).
+  std::vector<double> line_sin, line_cos;
+  std::vector<long> interval_row;
+  std::vector<double> w_lo, w_hi;
 };
+
+// The exact integral over table angles [a, b] (one gamma row j of the table, rows at g0 < g1) of
+// I(gamma) sin(gamma) d gamma, I linear in gamma from i0 at g0 to i1 at g1: the closed form of the
+// table rung's gamma integral for a receiver facing the axis (docs/nearfield.md). sa, ca, sb, cb:
+// sin and cos of a and b.
+inline double linear_sin_integral(double a, double sa, double ca, double b, double sb, double cb,
+                                  double g0, double g1, double i0, double i1) {
+  // integral of sin = ca - cb; of (gamma - g0) sin(gamma): [sin(gamma) - (gamma - g0) cos(gamma)]
+  const double slope = (i1 - i0) / (g1 - g0);
+  return i0 * (ca - cb) + slope * ((sb - (b - g0) * cb) - (sa - (a - g0) * ca));
+}
 
 // Appends the 2-point Gauss-Legendre nodes of the table-angle interval [a, b] (on one side of
 // pi / 2), split by kTableMaxGammaCell and kTableTanRatio, each with its cell in `table`.

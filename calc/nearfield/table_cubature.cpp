@@ -48,6 +48,12 @@ constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kMaxPsiCell = 7.5 * kPi / 180.0;
 // Cells narrower than this (rad) are dropped: two breaks that coincide up to rounding.
 constexpr double kMinCell = 1e-12;
+// A plane receiver whose normal (unit, luminaire frame) leans off the emitter's axis by at most
+// this much in x and y is integrated in closed form along each ray with the radial term of cos_r
+// left out: it contributes at most this times sin(gamma') tan(gamma') of the integrand, a relative
+// 1e-12 x tan(gamma') (below 1e-9 for every gamma' short of 89.9 degrees). Rotations by multiples
+// of 90 degrees leave components of ~1e-16.
+constexpr double kAxialNormalTolerance = 1e-12;
 
 struct Polygon2 {
   std::array<glm::dvec2, kMaxPolygonVertices> v;
@@ -259,6 +265,55 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiv
     append_gamma_nodes(table, a, b, ta, tb, end_nodes);
     return node_sum(end_nodes.data(), end_nodes.data() + end_nodes.size(), c, ray);
   };
+  // A plane facing the axis (a workplane under a ceiling luminaire, the floor, the ceiling) on a
+  // bilinear table: cos_r = n_z cos(gamma'), so along a ray the integrand is n_z I(C, gamma)
+  // sin(gamma'), and I is linear in gamma inside each table cell: the gamma integral is exact in
+  // closed form (linear_sin_integral), no nodes, no trigonometry but the ray's end angles.
+  // Whole intervals read their weights from table_cells.h. Normals off the axis by more than
+  // kAxialNormalTolerance keep the nodes (the radial term sin^2 / cos has no elementary integral
+  // against a linear I).
+  const bool closed_form = planar && table.interpolation() == photometry::Interpolation::bilinear &&
+                           std::abs(n.x) <= kAxialNormalTolerance &&
+                           std::abs(n.y) <= kAxialNormalTolerance;
+  if (closed_form && !(n_z > 0.0)) return true;  // the receiver faces away: cos_r <= 0 everywhere
+  const std::vector<double>& gamma_rows = table.grid().gamma_rad;
+  // One ray in closed form: table angles [t_lo, t_hi] (the ray's in-plane reach rho_min, rho_max),
+  // the lines strictly inside are [k_lo, k_hi).
+  auto closed_ray = [&](double t_lo, double t_hi, double rho_min, double rho_max, std::size_t k_lo,
+                        std::size_t k_hi, const photometry::TabularDistribution::CPosition& c) {
+    // sin and cos of the table angle at in-plane distance rho: gamma' = atan(rho / |sigma|).
+    const auto end_trig = [&](double rho, double& s, double& co) {
+      const double r = std::sqrt(rho * rho + abs_sigma * abs_sigma);
+      s = rho / r;
+      co = (front ? abs_sigma : -abs_sigma) / r;
+    };
+    double s_lo, c_lo, s_hi, c_hi;
+    end_trig(front ? rho_min : rho_max, s_lo, c_lo);
+    end_trig(front ? rho_max : rho_min, s_hi, c_hi);
+    // The piece [a, b] of interval k (k < 0 or past the last line: outside the table).
+    const auto piece = [&](long k, double a, double sa, double ca, double b, double sb, double cb) {
+      if (k < 0 || static_cast<std::size_t>(k) >= lines.size()) return 0.0;
+      const long row = cells.interval_row[static_cast<std::size_t>(k)];
+      if (row < 0) return 0.0;
+      const std::size_t j = static_cast<std::size_t>(row);
+      return linear_sin_integral(a, sa, ca, b, sb, cb, gamma_rows[j], gamma_rows[j + 1],
+                                 table.intensity_at(c, j, 0.0), table.intensity_at(c, j, 1.0));
+    };
+    const long first = static_cast<long>(k_lo) - 1;
+    if (k_lo >= k_hi) return n_z * piece(first, t_lo, s_lo, c_lo, t_hi, s_hi, c_hi);
+    double v =
+        piece(first, t_lo, s_lo, c_lo, lines[k_lo], cells.line_sin[k_lo], cells.line_cos[k_lo]) +
+        piece(static_cast<long>(k_hi) - 1, lines[k_hi - 1], cells.line_sin[k_hi - 1],
+              cells.line_cos[k_hi - 1], t_hi, s_hi, c_hi);
+    for (std::size_t k = k_lo; k + 1 < k_hi; ++k) {
+      const long row = cells.interval_row[k];
+      if (row < 0) continue;
+      const std::size_t j = static_cast<std::size_t>(row);
+      v += cells.w_lo[k] * table.intensity_at(c, j, 0.0) +
+           cells.w_hi[k] * table.intensity_at(c, j, 1.0);
+    }
+    return n_z * v;
+  };
   for (std::size_t k = 0; k + 1 < psi_breaks.size(); ++k) {
     const double pa = psi_breaks[k], pw = psi_breaks[k + 1] - pa;
     for (double xp : {kGauss2Node, 1.0 - kGauss2Node}) {
@@ -281,7 +336,9 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiv
       const std::size_t k_hi = static_cast<std::size_t>(
           std::lower_bound(lines.begin(), lines.end(), t_hi) - lines.begin());
       double ray = 0.0;
-      if (k_lo >= k_hi) {
+      if (closed_form) {
+        ray = closed_ray(t_lo, t_hi, rho_min, rho_max, k_lo, k_hi, cpos);
+      } else if (k_lo >= k_hi) {
         ray = end_cell(t_lo, t_hi, tan_lo, tan_hi, cpos, dir);
       } else {
         ray = end_cell(t_lo, lines[k_lo], tan_lo, cells.line_tan[k_lo], cpos, dir) +
