@@ -106,6 +106,10 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& 
 // node; a cylinder has no horizon, so its polygon is the whole opening.
 bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
                                double& lux);
+// True when the table rung integrates a plane receiver with this normal (world) in closed form
+// along each ray: a bilinear table and a normal along the opening's axis (a workplane under a
+// ceiling luminaire, a floor, a ceiling). There it costs about what the fixed rule does.
+bool table_rung_in_closed_form(const Emitter& e, const Vec3& normal);
 
 // Exact illuminance from a uniform (Lambertian) emitter of luminance `luminance_cd_m2`:
 // Lambert's polygon formula E = L/2 |n . sum_edges theta g| on the horizon-clipped polygon.

@@ -187,7 +187,23 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
   return true;
 }
 
+// The closed form along rays (below): a bilinear table and a plane normal (unit, luminaire frame)
+// along the axis.
+bool closed_form_applies(const photometry::TabularDistribution& table, const Vec3& n_local) {
+  return table.interpolation() == photometry::Interpolation::bilinear &&
+         std::abs(n_local.x) <= kAxialNormalTolerance &&
+         std::abs(n_local.y) <= kAxialNormalTolerance;
+}
+
 }  // namespace
+
+bool table_rung_in_closed_form(const Emitter& e, const Vec3& normal) {
+  const photometry::TableView view =
+      e.distribution ? e.distribution->table_view() : photometry::TableView{};
+  if (!view.table || e.is_point() || !e.table_cells || e.table_cells->table != view.table)
+    return false;
+  return closed_form_applies(*view.table, e.world_to_local * normal);
+}
 
 bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                                double& lux) {
@@ -272,9 +288,7 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiv
   // Whole intervals read their weights from table_cells.h. Normals off the axis by more than
   // kAxialNormalTolerance keep the nodes (the radial term sin^2 / cos has no elementary integral
   // against a linear I).
-  const bool closed_form = planar && table.interpolation() == photometry::Interpolation::bilinear &&
-                           std::abs(n.x) <= kAxialNormalTolerance &&
-                           std::abs(n.y) <= kAxialNormalTolerance;
+  const bool closed_form = planar && closed_form_applies(table, n);
   if (closed_form && !(n_z > 0.0)) return true;  // the receiver faces away: cos_r <= 0 everywhere
   const std::vector<double>& gamma_rows = table.grid().gamma_rad;
   // One ray in closed form: table angles [t_lo, t_hi] (the ray's in-plane reach rho_min, rho_max),
