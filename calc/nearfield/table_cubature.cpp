@@ -210,15 +210,21 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& 
   return table_aligned_illuminance(e, point, Receiver::planar(normal), lux);
 }
 
-bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
-                               double& lux) {
+namespace {
+
+// The rung for one receiver (light_vector null: `lux`), or the light vector of the whole opening
+// in the luminaire frame, unscaled (light_vector set: the receiver is not used).
+bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, double& lux,
+                Vec3* light_vector) {
   const photometry::TableView view =
       e.distribution ? e.distribution->table_view() : photometry::TableView{};
   if (!view.table || e.is_point() || !e.table_cells || e.table_cells->table != view.table)
     return false;
   lux = 0.0;
+  if (light_vector) *light_vector = Vec3(0.0);
   const ShiftedReceiver shifted = shift_off_emitter_plane(e, point, horizon_shift_m(e));
-  const OpeningPolygon clipped = clip_to_horizon(e, shifted.point, receiver.horizon_normal());
+  const OpeningPolygon clipped =
+      clip_to_horizon(e, shifted.point, light_vector ? Vec3(0.0) : receiver.horizon_normal());
   if (clipped.n < 3) return true;
 
   // Luminaire frame, origin at the (shifted) receiver: a vertex's x, y are its offset from F,
@@ -288,7 +294,7 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiv
   // Whole intervals read their weights from table_cells.h. Normals off the axis by more than
   // kAxialNormalTolerance keep the nodes (the radial term sin^2 / cos has no elementary integral
   // against a linear I).
-  const bool closed_form = planar && closed_form_applies(table, n);
+  const bool closed_form = !light_vector && planar && closed_form_applies(table, n);
   if (closed_form && !(n_z > 0.0)) return true;  // the receiver faces away: cos_r <= 0 everywhere
   const std::vector<double>& gamma_rows = table.grid().gamma_rad;
   // One ray in closed form: table angles [t_lo, t_hi] (the ray's in-plane reach rho_min, rho_max),
@@ -328,6 +334,28 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiv
     }
     return n_z * v;
   };
+  // The light vector: per ray the nodes' moments sum_j w_j I_j (sin, cos) of gamma', no receiver
+  // weight and no clamp (the caller's plane sees the whole opening, so cos_r > 0 at every node).
+  struct Moments {
+    double radial = 0.0, axial = 0.0;
+  };
+  auto add_moments = [&](const TableGammaNode* q, const TableGammaNode* end,
+                         const photometry::TabularDistribution::CPosition& c, Moments& m) {
+    for (; q != end; ++q) {
+      if (q->row < 0) continue;
+      const double wi =
+          q->weight_tan * table.intensity_at(c, static_cast<std::size_t>(q->row), q->tg);
+      m.radial += wi * q->sin_g;
+      m.axial += wi * q->abs_cos_g;
+    }
+  };
+  auto end_moments = [&](double a, double b, double ta, double tb,
+                         const photometry::TabularDistribution::CPosition& c, Moments& m) {
+    end_nodes.clear();
+    append_gamma_nodes(table, a, b, ta, tb, end_nodes);
+    add_moments(end_nodes.data(), end_nodes.data() + end_nodes.size(), c, m);
+  };
+  Vec3 moments_sum(0.0);
   for (std::size_t k = 0; k + 1 < psi_breaks.size(); ++k) {
     const double pa = psi_breaks[k], pw = psi_breaks[k + 1] - pa;
     for (double xp : {kGauss2Node, 1.0 - kGauss2Node}) {
@@ -349,6 +377,19 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiv
           std::upper_bound(lines.begin(), lines.end(), t_lo) - lines.begin());
       const std::size_t k_hi = static_cast<std::size_t>(
           std::lower_bound(lines.begin(), lines.end(), t_hi) - lines.begin());
+      if (light_vector) {
+        Moments m;
+        if (k_lo >= k_hi) {
+          end_moments(t_lo, t_hi, tan_lo, tan_hi, cpos, m);
+        } else {
+          end_moments(t_lo, lines[k_lo], tan_lo, cells.line_tan[k_lo], cpos, m);
+          end_moments(lines[k_hi - 1], t_hi, cells.line_tan[k_hi - 1], tan_hi, cpos, m);
+          const TableGammaNode* base = cells.nodes.data();
+          add_moments(base + cells.first[k_lo], base + cells.first[k_hi - 1], cpos, m);
+        }
+        moments_sum += 0.5 * pw * Vec3(m.radial * cp, m.radial * sp, front ? m.axial : -m.axial);
+        continue;
+      }
       double ray = 0.0;
       if (closed_form) {
         ray = closed_ray(t_lo, t_hi, rho_min, rho_max, k_lo, k_hi, cpos);
@@ -364,7 +405,23 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiv
       sum += 0.5 * pw * ray;
     }
   }
+  if (light_vector) *light_vector = (view.scale / e.area_m2) * moments_sum;
   lux = sanitize_illuminance(view.scale * sum / e.area_m2);
+  return true;
+}
+
+}  // namespace
+
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
+                               double& lux) {
+  return table_rung(e, point, receiver, lux, nullptr);
+}
+
+bool table_light_vector(const Emitter& e, const Vec3& point, Vec3& light_vector_lx) {
+  double unused = 0.0;
+  Vec3 local(0.0);
+  if (!table_rung(e, point, Receiver::planar(Vec3(0, 0, 1)), unused, &local)) return false;
+  light_vector_lx = e.rotation * local;
   return true;
 }
 

@@ -288,6 +288,41 @@ TEST(TableRung, ClosedFormAgreesWithABruteForceIntegralOnSteepRamps) {
   }
 }
 
+TEST(TableRung, LightVectorGivesTheRungForEveryPlaneThatSeesTheWholeOpening) {
+  // The near/far map reads five receivers per point from one light vector: n . vector must be
+  // the rung's own value for each plane that sees the whole opening (the same nodes, summed in
+  // another order: 1e-12 relative), on tables of every symmetry, in front of and behind the
+  // opening. A plane that cuts the opening is clipped by the rung and not by the vector: there
+  // the two differ (checked once, so the test would see a vector that ignored its premise).
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int compared = 0;
+  for (const FileCase& f : files()) {
+    const Emitter e = testing::paper_emitter(0.0, 3 * kPi / 4, f.distribution, 1.2, 0.3);
+    for (int k = 0; k < 40; ++k) {
+      const Vec3 p = e.centroid + (1.5 + 3.0 * std::abs(unit(rng))) * random_unit(rng);
+      Vec3 vector(0.0);
+      ASSERT_TRUE(table_light_vector(e, p, vector));
+      for (int m = 0; m < 5; ++m) {
+        const Vec3 n = glm::normalize(glm::normalize(e.centroid - p) + 0.6 * random_unit(rng));
+        bool whole = true;
+        for (const Vec3& v : e.vertices) whole = whole && glm::dot(v - p, n) > 0.0;
+        if (!whole) continue;
+        const double rung = table_rung(e, p, n);
+        EXPECT_NEAR(std::max(0.0, glm::dot(n, vector)), rung, 1e-12 * rung + 1e-12) << f.name;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 500);
+  // A plane through the opening's centre, tilted: half the opening is behind it.
+  const Emitter e = testing::paper_emitter(0.0, kPi, files()[0].distribution, 1.2, 0.3);
+  const Vec3 p = e.centroid + Vec3(0.0, 0.0, -0.5), n = glm::normalize(Vec3(1.0, 0.0, 0.5));
+  Vec3 vector(0.0);
+  ASSERT_TRUE(table_light_vector(e, p, vector));
+  EXPECT_GT(std::abs(glm::dot(n, vector) - table_rung(e, p, n)), 1e-3 * table_rung(e, p, n));
+}
+
 TEST(TableRung, HardCasesStayFiniteAndContinuous) {
   // Receivers in the emitter's plane and 1e-12 to 1e-2 m off it on either side, at the centre, on
   // an edge, on a corner and beyond the outline, for a file that emits on both sides.
