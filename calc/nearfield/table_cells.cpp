@@ -13,9 +13,10 @@ constexpr double kHalfPi = 0.5 * kPi;
 void append_piece(const photometry::TabularDistribution& table, double p0, double p1, bool back,
                   std::vector<TableGammaNode>& out) {
   const double w = 0.5 * (p1 - p0);
-  for (double x : {kGauss2Node, 1.0 - kGauss2Node}) {
-    const double gp = p0 + (p1 - p0) * x;
-    const double s = std::sin(gp), c = std::cos(gp);
+  const GaussPair g = gauss_pair(p0, p1);
+  for (int k = 0; k < 2; ++k) {
+    const double gp = k == 0 ? g.x_lo : g.x_hi, s = k == 0 ? g.s_lo : g.s_hi,
+                 c = k == 0 ? g.c_lo : g.c_hi;
     TableGammaNode node{back ? kPi - gp : gp, s, c, w * s / c};
     std::size_t j = 0;
     if (table.gamma_cell(node.gamma, j, node.tg)) node.row = static_cast<long>(j);

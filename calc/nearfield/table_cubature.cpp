@@ -358,9 +358,11 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
   Vec3 moments_sum(0.0);
   for (std::size_t k = 0; k + 1 < psi_breaks.size(); ++k) {
     const double pa = psi_breaks[k], pw = psi_breaks[k + 1] - pa;
-    for (double xp : {kGauss2Node, 1.0 - kGauss2Node}) {
-      const double psi = pa + pw * xp;
-      const double cp = std::cos(psi), sp = std::sin(psi);
+    const GaussPair nodes = gauss_pair(pa, pa + pw);
+    for (int node = 0; node < 2; ++node) {
+      const double psi = node == 0 ? nodes.x_lo : nodes.x_hi;
+      const double cp = node == 0 ? nodes.c_lo : nodes.c_hi,
+                   sp = node == 0 ? nodes.s_lo : nodes.s_hi;
       double rho_min, rho_max;
       if (!ray_interval(poly, cp, sp, inside, rho_min, rho_max)) continue;
       // The ray's range of table angles.
