@@ -177,11 +177,23 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
     add_periodic_break(std::atan2(poly.v[i].y, poly.v[i].x), psi_lo, psi_hi, out);
   if (c_lines.size() > 1)
     for (double c : c_lines) add_periodic_break(c - kPi, psi_lo, psi_hi, out);
+  // A circle crosses the outline only between the outline's nearest point and its farthest
+  // vertex (reach): the circles inside the nearest distance are skipped without solving for their
+  // crossings (a margin of 1e-9 keeps a circle through the nearest point).
+  double nearest2 = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < poly.n; ++i) {
+    const glm::dvec2 a = poly.v[i], e = poly.v[(i + 1) % poly.n] - a;
+    const double ee = glm::dot(e, e);
+    const double u = ee > 0.0 ? std::clamp(-glm::dot(a, e) / ee, 0.0, 1.0) : 0.0;
+    const glm::dvec2 q = a + u * e;
+    nearest2 = std::min(nearest2, glm::dot(q, q));
+  }
+  const double nearest = std::sqrt(nearest2) * (1.0 - 1e-9);
   for (std::size_t k = 0; k < cells.lines.size(); ++k) {
     const double gp = front ? cells.lines[k] : kPi - cells.lines[k];
     if (!(gp > 0.0 && gp < 0.5 * kPi)) continue;
     const double r = abs_sigma * cells.line_tan[k];
-    if (r < reach) add_circle_crossings(poly, r, psi_lo, psi_hi, out);
+    if (r < reach && r >= nearest) add_circle_crossings(poly, r, psi_lo, psi_hi, out);
   }
   finish_breaks(out, scratch, psi_lo, psi_hi, kMaxPsiCell);
   return true;
