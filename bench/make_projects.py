@@ -8,7 +8,12 @@ they are generated in seconds). Usage: make_projects.py OUT_DIR
                         draft quality, no reflected light: the cost of the outputs themselves
   far1000/project.json  a 100 x 50 m hall, 1000 panels (40 x 25), one 200 x 50 point plane (10^4),
                         draft quality, no reflected light: 10^7 far-field pairs, the kernel's cost
-The photometric file is the open plan's (examples/openplan/photometry), copied beside each.
+  panel40k/project.json a 4 x 4 x 3 m black room (reflectances 0), one 0.6 x 0.6 m panel from an
+                        IES table (tests/data/photometry/ies/indoor_full360_lm02.ies, 37 x 9,
+                        its opening given as the panel's), a 200 x 200 point workplane (0.02 m):
+                        every point in the near field, the cost of the table rung
+Except panel40k, the photometric file is the open plan's (examples/openplan/photometry), copied
+beside each.
 """
 import json
 import pathlib
@@ -17,6 +22,7 @@ import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 LDT = ROOT / "examples" / "openplan" / "photometry" / "zumtobel_mirel_isym4.ldt"
+PANEL_IES = ROOT / "tests" / "data" / "photometry" / "ies" / "indoor_full360_lm02.ies"
 
 
 def room(name, x0, y0, w, d, h):
@@ -28,12 +34,13 @@ def panels(name, origin, count, spacing):
     return {"name": name, "photometry": "mirel", "array": {"origin": origin, "count": count, "spacing": spacing}}
 
 
-def write(out, sub, title, settings, rooms, luminaires, surfaces):
+def write(out, sub, title, settings, rooms, luminaires, surfaces, photometry=("mirel", LDT)):
     folder = out / sub
     (folder / "photometry").mkdir(parents=True, exist_ok=True)
-    shutil.copy(LDT, folder / "photometry" / LDT.name)
+    key, path = photometry
+    shutil.copy(path, folder / "photometry" / path.name)
     project = {"format": "luxgrid-project/1", "name": title, "settings": settings,
-               "photometry": {"mirel": "photometry/" + LDT.name},
+               "photometry": {key: "photometry/" + path.name},
                "rooms": rooms, "luminaires": luminaires, "surfaces": surfaces}
     (folder / "project.json").write_text(json.dumps(project, indent=1) + "\n")
 
@@ -71,6 +78,16 @@ def main():
           [panels("panels", [1.25, 1.0, 6.0], [40, 25], [2.5, 2.0])],
           [{"name": "grid", "plane": {"origin": [0, 12.5, 0.75], "u": [1, 0, 0], "v": [0, 1, 0],
                                       "size": [100, 25]}, "spacing": 0.5}])
+
+    black = {"floor": 0.0, "walls": 0.0, "ceiling": 0.0}
+    write(out, "panel40k", "Benchmark near field: one 0.6 m panel over 40 000 points",
+          dict(standard, indirect="auto"),
+          [dict(room("room", 0, 0, 4.0, 4.0, 3.0), reflectance=black)],
+          [{"name": "panel", "photometry": "panel", "position": [2.0, 2.0, 3.0],
+            "emitter": {"shape": "rectangle", "size": [0.6, 0.6]}}],
+          [{"name": "workplane", "workplane": {"room": "room", "height": 0.75, "border": 0.0},
+            "spacing": 0.02}],
+          photometry=("panel", PANEL_IES))
 
 
 if __name__ == "__main__":

@@ -2,6 +2,9 @@
 // paper's protocol points (Luksch et al. 2020 Sec. 6: 1 x 1 emitter at heights 0.1 / 1 / 2.5,
 // five orientations, a +-2.5 region on a 21 x 21 grid), for an analytic batwing profile and a
 // tabulated (bilinear C-gamma) profile whose lookup costs what a photometric file's does.
+// The panel benchmarks: one 0.6 m panel (an IES table, 45-degree C planes, 5-degree gamma lines)
+// 2.25 m above a 4 x 4 m workplane of 200 x 200 points facing up (bench/make_projects.py,
+// panel40k): the standard rung against the far field per pair, the points in grid order.
 // Run: build/bench/nearfield_bench --benchmark_min_time=0.2
 #include <benchmark/benchmark.h>
 
@@ -15,6 +18,7 @@
 #include "calc/nearfield/illuminance.h"
 #include "calc/nearfield/models.h"
 #include "photometry/builtin.h"
+#include "photometry/photometry.h"
 #include "photometry/tabular_distribution.h"
 #include "study/accuracy_study.h"
 
@@ -106,5 +110,37 @@ LUXGRID_MODEL_BENCH(Standard, luxgrid::study::AccuracyModel::rung(Model::standar
 LUXGRID_MODEL_BENCH(Adaptive1e2, luxgrid::study::AccuracyModel::rung(Model::adaptive(1e-2)))
 LUXGRID_MODEL_BENCH(MonteCarlo64, luxgrid::study::AccuracyModel::monte_carlo(64))
 LUXGRID_MODEL_BENCH(Reference1e4, luxgrid::study::AccuracyModel::rung(Model::reference(1e-4)))
+
+const Emitter& panel() {
+  static const Emitter e = [] {
+    photometry::Photometry ph =
+        photometry::load_photometry_file(std::string(LUXGRID_BENCH_SOURCE_DIR) +
+                                         "/tests/data/photometry/ies/indoor_full360_lm02.ies");
+    ph.opening.shape = photometry::LuminousOpening::Shape::rectangle;
+    ph.opening.length = ph.opening.width = 0.6;
+    return make_emitter(ph.opening, Vec3(2, 2, 3), glm::dmat3(1.0), ph.distribution);
+  }();
+  return e;
+}
+
+void run_panel(benchmark::State& state, const Model& model) {
+  std::vector<Vec3> pts;
+  for (int j = 0; j < 200; ++j)
+    for (int i = 0; i < 200; ++i) pts.push_back(Vec3(0.01 + 0.02 * i, 0.01 + 0.02 * j, 0.75));
+  const Vec3 up(0, 0, 1);
+  std::size_t i = 0;
+  double sink = 0.0;
+  for (auto _ : state) {
+    sink += illuminance(panel(), pts[i], up, model);
+    if (++i == pts.size()) i = 0;
+  }
+  benchmark::DoNotOptimize(sink);
+  state.SetItemsProcessed(state.iterations());
+}
+
+void PanelWorkplane_FarField(benchmark::State& s) { run_panel(s, Model::far_field()); }
+void PanelWorkplane_Standard(benchmark::State& s) { run_panel(s, Model::standard()); }
+BENCHMARK(PanelWorkplane_FarField);
+BENCHMARK(PanelWorkplane_Standard);
 
 }  // namespace

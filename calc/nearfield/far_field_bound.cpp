@@ -52,6 +52,16 @@ struct Probe {
   const Model& model;
   double tolerance;  // already divided by the safety factor
   double peak_cd;
+  // The near rung is the table rung (standard and high without an occluder; table_light_vector
+  // says whether the distribution has a table).
+  bool uses_table;
+
+  // Every vertex of the opening strictly in front of the receiver's plane: no horizon clip.
+  bool sees_whole_opening(const Vec3& point, const Vec3& normal) const {
+    for (const Vec3& v : e.vertices)
+      if (!(glm::dot(v - point, normal) > 0.0)) return false;
+    return !e.vertices.empty();
+  }
 
   // The receiver normals tried at rung k along u (luminaire frame): facing the opening and
   // tilted towards four sides; and the receiver point.
@@ -99,6 +109,20 @@ struct Probe {
     std::array<float, kLadderRungs> far_err{}, fixed_err{};      // worst error of a passing rung
     far_seen.fill(-1);
     fixed_seen.fill(-1);
+    // The table rung's light vector per rung (computed once, then n . vector for every normal
+    // that sees the whole opening: docs/nearfield.md, "Cost of the map").
+    std::array<Vec3, kLadderRungs> light_vector;
+    std::array<signed char, kLadderRungs> has_vector;  // -1 not tried, 0 no table, 1 computed
+    has_vector.fill(-1);
+    auto near_value = [&](int k, const Rung& r, int i) {
+      if (uses_table && sees_whole_opening(r.point, r.normals[i])) {
+        if (has_vector[k] < 0)
+          has_vector[k] = table_light_vector(e, r.point, light_vector[k]) ? 1 : 0;
+        if (has_vector[k] == 1)
+          return sanitize_illuminance(glm::dot(r.normals[i], light_vector[k]));
+      }
+      return illuminance(e, r.point, r.normals[i], model);
+    };
     auto verdict = [&](int k, bool fixed) {
       signed char& seen = (fixed ? fixed_seen : far_seen)[k];
       if (seen >= 0) return seen == 1;
@@ -106,7 +130,7 @@ struct Probe {
       seen = 1;
       double worst = 0.0;
       for (int i = 0; i < 5 && seen; ++i) {
-        if (near[k][i] < 0.0) near[k][i] = illuminance(e, r.point, r.normals[i], model);
+        if (near[k][i] < 0.0) near[k][i] = near_value(k, r, i);
         const double model_lx =
             fixed ? fixed_rule_illuminance(e, r.point, Receiver::planar(r.normals[i]))
                   : far_field_illuminance(e, r.point, r.normals[i]);
@@ -310,7 +334,8 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
   for (int i = 0; i < n; ++i)
     peak = std::max(peak,
                     e.distribution->intensity(direction_of_sample(i / kCSamples, i % kCSamples)));
-  const Probe probe{e, near_model, tolerance / kBoundSafetyFactor, peak};
+  const Probe probe{e, near_model, tolerance / kBoundSafetyFactor, peak,
+                    near_model.kind == ModelKind::standard || near_model.kind == ModelKind::high};
   std::vector<Probe::Measured> measured(n);
   // Directions in parallel (the nearfield library has no TBB; the samples are independent).
   if (threads == 0) threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));

@@ -106,6 +106,16 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& 
 // node; a cylinder has no horizon, so its polygon is the whole opening.
 bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
                                double& lux);
+// True when the table rung integrates a plane receiver with this normal (world) in closed form
+// along each ray: a bilinear table and a normal along the opening's axis (a workplane under a
+// ceiling luminaire, a floor, a ceiling). There it costs about what the fixed rule does.
+bool table_rung_in_closed_form(const Emitter& e, const Vec3& normal);
+// The table rung's light vector at `point` (world, lux): its nodes over the whole opening, each
+// weighted by the unit direction to it instead of a receiver's cos_r. For a plane that sees the
+// whole opening in front of it (no horizon clip) the rung's value is n . vector up to rounding,
+// so one pass serves every such normal (the near/far map's five receivers). False as
+// table_aligned_illuminance.
+bool table_light_vector(const Emitter& e, const Vec3& point, Vec3& light_vector_lx);
 
 // Exact illuminance from a uniform (Lambertian) emitter of luminance `luminance_cd_m2`:
 // Lambert's polygon formula E = L/2 |n . sum_edges theta g| on the horizon-clipped polygon.

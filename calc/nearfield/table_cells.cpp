@@ -13,9 +13,10 @@ constexpr double kHalfPi = 0.5 * kPi;
 void append_piece(const photometry::TabularDistribution& table, double p0, double p1, bool back,
                   std::vector<TableGammaNode>& out) {
   const double w = 0.5 * (p1 - p0);
-  for (double x : {kGauss2Node, 1.0 - kGauss2Node}) {
-    const double gp = p0 + (p1 - p0) * x;
-    const double s = std::sin(gp), c = std::cos(gp);
+  const GaussPair g = gauss_pair(p0, p1);
+  for (int k = 0; k < 2; ++k) {
+    const double gp = k == 0 ? g.x_lo : g.x_hi, s = k == 0 ? g.s_lo : g.s_hi,
+                 c = k == 0 ? g.c_lo : g.c_hi;
     TableGammaNode node{back ? kPi - gp : gp, s, c, w * s / c};
     std::size_t j = 0;
     if (table.gamma_cell(node.gamma, j, node.tg)) node.row = static_cast<long>(j);
@@ -77,6 +78,30 @@ std::shared_ptr<const TableGammaCells> make_table_gamma_cells(
                          cells->nodes);
   }
   cells->first.back() = static_cast<int>(cells->nodes.size());
+
+  for (double g : L) {
+    cells->line_sin.push_back(g == kHalfPi ? 1.0 : std::sin(g));
+    cells->line_cos.push_back(g == kHalfPi ? 0.0 : std::cos(g));
+  }
+  const std::vector<double>& G = table.grid().gamma_rad;
+  cells->interval_row.assign(L.size(), -1);
+  cells->w_lo.assign(L.size(), 0.0);
+  cells->w_hi.assign(L.size(), 0.0);
+  for (std::size_t k = 0; k + 1 < L.size(); ++k) {
+    std::size_t j = 0;
+    double tg = 0.0;
+    if (!table.gamma_cell(0.5 * (L[k] + L[k + 1]), j, tg) || G.size() < 2) continue;
+    cells->interval_row[k] = static_cast<long>(j);
+    // The integral is linear in (I at row j, I at row j + 1): its weights are its values at
+    // (1, 0) and (0, 1).
+    const auto integral = [&](double i0, double i1) {
+      return linear_sin_integral(L[k], cells->line_sin[k], cells->line_cos[k], L[k + 1],
+                                 cells->line_sin[k + 1], cells->line_cos[k + 1], G[j], G[j + 1], i0,
+                                 i1);
+    };
+    cells->w_lo[k] = integral(1.0, 0.0);
+    cells->w_hi[k] = integral(0.0, 1.0);
+  }
   return cells;
 }
 

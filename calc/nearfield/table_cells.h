@@ -3,6 +3,7 @@
 // emitter: every cell between two gamma lines of a table, split where it is wide or where
 // tan(gamma') grows fast, with its Gauss-Legendre nodes and their sines and cosines. They do not
 // depend on the receiver, so a ray of the rung only computes trigonometry for its two end cells.
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -24,6 +25,33 @@ inline constexpr double kTableTanRatio = 1.25;
 // weight the error is the weight's fourth derivative times the cell size^4 / 4320.
 inline constexpr double kGauss2Node = 0.21132486540518711775;  // (1 - 1/sqrt(3)) / 2
 
+// The angles, sines and cosines of the two Gauss nodes a + (b - a) kGauss2Node and
+// a + (b - a) (1 - kGauss2Node) = m -+ delta (m the midpoint): one sin and cos of m, and delta's
+// by their Taylor series where |delta| <= kGaussPairSeriesMax (the table rung's cells: at most
+// 7.5 degrees wide in psi, 5 in gamma, so |delta| <= 0.038), exact to rounding: the first omitted
+// terms, delta^9 / 9! and delta^10 / 10!, are below 1e-16 of the kept ones. Wider: the library.
+inline constexpr double kGaussPairSeriesMax = 0.05;
+struct GaussPair {
+  double x_lo, s_lo, c_lo;  // node towards a: angle, sin, cos
+  double x_hi, s_hi, c_hi;  // node towards b
+};
+inline GaussPair gauss_pair(double a, double b) {
+  const double m = a + 0.5 * (b - a), delta = (b - a) * (0.5 - kGauss2Node);
+  GaussPair g{m - delta, 0.0, 0.0, m + delta, 0.0, 0.0};
+  if (!(std::abs(delta) <= kGaussPairSeriesMax)) {
+    g.s_lo = std::sin(g.x_lo), g.c_lo = std::cos(g.x_lo);
+    g.s_hi = std::sin(g.x_hi), g.c_hi = std::cos(g.x_hi);
+    return g;
+  }
+  const double d2 = delta * delta;
+  const double sd = delta * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0 * (1.0 - d2 / 42.0)));
+  const double cd = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0 * (1.0 - d2 / 30.0 * (1.0 - d2 / 56.0)));
+  const double sm = std::sin(m), cm = std::cos(m);
+  g.s_lo = sm * cd - cm * sd, g.c_lo = cm * cd + sm * sd;
+  g.s_hi = sm * cd + cm * sd, g.c_hi = cm * cd - sm * sd;
+  return g;
+}
+
 struct TableGammaNode {
   double gamma;       // table angle, rad
   double sin_g;       // sin(gamma) = sin(gamma')
@@ -43,7 +71,27 @@ struct TableGammaCells {
   std::vector<int> first;  // the nodes of cell k (lines[k], lines[k + 1]) are
                            // nodes[first[k]] .. nodes[first[k + 1] - 1]
   std::vector<TableGammaNode> nodes;
+
+  // For the closed form along a ray (bilinear tables, receivers facing the opening's axis;
+  // table_cubature.cpp): sin and cos of each line's table angle, and per interval k
+  // (lines[k], lines[k + 1]) the table's gamma row j holding it (-1 outside the table's range:
+  // intensity zero) with the weights of the exact integral of I sin(gamma) over the whole interval:
+  //   integral = w_lo[k] I(C, row j, tg 0) + w_hi[k] I(C, row j, tg 1).
+  std::vector<double> line_sin, line_cos;
+  std::vector<long> interval_row;
+  std::vector<double> w_lo, w_hi;
 };
+
+// The exact integral over table angles [a, b] (one gamma row j of the table, rows at g0 < g1) of
+// I(gamma) sin(gamma) d gamma, I linear in gamma from i0 at g0 to i1 at g1: the closed form of the
+// table rung's gamma integral for a receiver facing the axis (docs/nearfield.md). sa, ca, sb, cb:
+// sin and cos of a and b.
+inline double linear_sin_integral(double a, double sa, double ca, double b, double sb, double cb,
+                                  double g0, double g1, double i0, double i1) {
+  // integral of sin = ca - cb; of (gamma - g0) sin(gamma): [sin(gamma) - (gamma - g0) cos(gamma)]
+  const double slope = (i1 - i0) / (g1 - g0);
+  return i0 * (ca - cb) + slope * ((sb - (b - g0) * cb) - (sa - (a - g0) * ca));
+}
 
 // Appends the 2-point Gauss-Legendre nodes of the table-angle interval [a, b] (on one side of
 // pi / 2), split by kTableMaxGammaCell and kTableTanRatio, each with its cell in `table`.

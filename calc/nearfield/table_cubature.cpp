@@ -48,6 +48,12 @@ constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kMaxPsiCell = 7.5 * kPi / 180.0;
 // Cells narrower than this (rad) are dropped: two breaks that coincide up to rounding.
 constexpr double kMinCell = 1e-12;
+// A plane receiver whose normal (unit, luminaire frame) leans off the emitter's axis by at most
+// this much in x and y is integrated in closed form along each ray with the radial term of cos_r
+// left out: it contributes at most this times sin(gamma') tan(gamma') of the integrand, a relative
+// 1e-12 x tan(gamma') (below 1e-9 for every gamma' short of 89.9 degrees). Rotations by multiples
+// of 90 degrees leave components of ~1e-16.
+constexpr double kAxialNormalTolerance = 1e-12;
 
 struct Polygon2 {
   std::array<glm::dvec2, kMaxPolygonVertices> v;
@@ -171,32 +177,66 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
     add_periodic_break(std::atan2(poly.v[i].y, poly.v[i].x), psi_lo, psi_hi, out);
   if (c_lines.size() > 1)
     for (double c : c_lines) add_periodic_break(c - kPi, psi_lo, psi_hi, out);
+  // A circle crosses the outline only between the outline's nearest point and its farthest
+  // vertex (reach): the circles inside the nearest distance are skipped without solving for their
+  // crossings (a margin of 1e-9 keeps a circle through the nearest point).
+  double nearest2 = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < poly.n; ++i) {
+    const glm::dvec2 a = poly.v[i], e = poly.v[(i + 1) % poly.n] - a;
+    const double ee = glm::dot(e, e);
+    const double u = ee > 0.0 ? std::clamp(-glm::dot(a, e) / ee, 0.0, 1.0) : 0.0;
+    const glm::dvec2 q = a + u * e;
+    nearest2 = std::min(nearest2, glm::dot(q, q));
+  }
+  const double nearest = std::sqrt(nearest2) * (1.0 - 1e-9);
   for (std::size_t k = 0; k < cells.lines.size(); ++k) {
     const double gp = front ? cells.lines[k] : kPi - cells.lines[k];
     if (!(gp > 0.0 && gp < 0.5 * kPi)) continue;
     const double r = abs_sigma * cells.line_tan[k];
-    if (r < reach) add_circle_crossings(poly, r, psi_lo, psi_hi, out);
+    if (r < reach && r >= nearest) add_circle_crossings(poly, r, psi_lo, psi_hi, out);
   }
   finish_breaks(out, scratch, psi_lo, psi_hi, kMaxPsiCell);
   return true;
 }
 
+// The closed form along rays (below): a bilinear table and a plane normal (unit, luminaire frame)
+// along the axis.
+bool closed_form_applies(const photometry::TabularDistribution& table, const Vec3& n_local) {
+  return table.interpolation() == photometry::Interpolation::bilinear &&
+         std::abs(n_local.x) <= kAxialNormalTolerance &&
+         std::abs(n_local.y) <= kAxialNormalTolerance;
+}
+
 }  // namespace
+
+bool table_rung_in_closed_form(const Emitter& e, const Vec3& normal) {
+  const photometry::TableView view =
+      e.distribution ? e.distribution->table_view() : photometry::TableView{};
+  if (!view.table || e.is_point() || !e.table_cells || e.table_cells->table != view.table)
+    return false;
+  return closed_form_applies(*view.table, e.world_to_local * normal);
+}
 
 bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                                double& lux) {
   return table_aligned_illuminance(e, point, Receiver::planar(normal), lux);
 }
 
-bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
-                               double& lux) {
+namespace {
+
+// The rung for one receiver (light_vector null: `lux`), or the light vector of the whole opening
+// in the luminaire frame, unscaled (light_vector set: the receiver is not used).
+bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, double& lux,
+                Vec3* light_vector) {
   const photometry::TableView view =
       e.distribution ? e.distribution->table_view() : photometry::TableView{};
   if (!view.table || e.is_point() || !e.table_cells || e.table_cells->table != view.table)
     return false;
   lux = 0.0;
+  if (light_vector) *light_vector = Vec3(0.0);
   const ShiftedReceiver shifted = shift_off_emitter_plane(e, point, horizon_shift_m(e));
-  const OpeningPolygon clipped = clip_to_horizon(e, shifted.point, receiver.horizon_normal());
+  const OpeningPolygon clipped =
+      clip_to_horizon(e, shifted.point, light_vector ? Vec3(0.0) : receiver.horizon_normal());
   if (clipped.n < 3) return true;
 
   // Luminaire frame, origin at the (shifted) receiver: a vertex's x, y are its offset from F,
@@ -259,11 +299,82 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiv
     append_gamma_nodes(table, a, b, ta, tb, end_nodes);
     return node_sum(end_nodes.data(), end_nodes.data() + end_nodes.size(), c, ray);
   };
+  // A plane facing the axis (a workplane under a ceiling luminaire, the floor, the ceiling) on a
+  // bilinear table: cos_r = n_z cos(gamma'), so along a ray the integrand is n_z I(C, gamma)
+  // sin(gamma'), and I is linear in gamma inside each table cell: the gamma integral is exact in
+  // closed form (linear_sin_integral), no nodes, no trigonometry but the ray's end angles.
+  // Whole intervals read their weights from table_cells.h. Normals off the axis by more than
+  // kAxialNormalTolerance keep the nodes (the radial term sin^2 / cos has no elementary integral
+  // against a linear I).
+  const bool closed_form = !light_vector && planar && closed_form_applies(table, n);
+  if (closed_form && !(n_z > 0.0)) return true;  // the receiver faces away: cos_r <= 0 everywhere
+  const std::vector<double>& gamma_rows = table.grid().gamma_rad;
+  // One ray in closed form: table angles [t_lo, t_hi] (the ray's in-plane reach rho_min, rho_max),
+  // the lines strictly inside are [k_lo, k_hi).
+  auto closed_ray = [&](double t_lo, double t_hi, double rho_min, double rho_max, std::size_t k_lo,
+                        std::size_t k_hi, const photometry::TabularDistribution::CPosition& c) {
+    // sin and cos of the table angle at in-plane distance rho: gamma' = atan(rho / |sigma|).
+    const auto end_trig = [&](double rho, double& s, double& co) {
+      const double r = std::sqrt(rho * rho + abs_sigma * abs_sigma);
+      s = rho / r;
+      co = (front ? abs_sigma : -abs_sigma) / r;
+    };
+    double s_lo, c_lo, s_hi, c_hi;
+    end_trig(front ? rho_min : rho_max, s_lo, c_lo);
+    end_trig(front ? rho_max : rho_min, s_hi, c_hi);
+    // The piece [a, b] of interval k (k < 0 or past the last line: outside the table).
+    const auto piece = [&](long k, double a, double sa, double ca, double b, double sb, double cb) {
+      if (k < 0 || static_cast<std::size_t>(k) >= lines.size()) return 0.0;
+      const long row = cells.interval_row[static_cast<std::size_t>(k)];
+      if (row < 0) return 0.0;
+      const std::size_t j = static_cast<std::size_t>(row);
+      return linear_sin_integral(a, sa, ca, b, sb, cb, gamma_rows[j], gamma_rows[j + 1],
+                                 table.intensity_at(c, j, 0.0), table.intensity_at(c, j, 1.0));
+    };
+    const long first = static_cast<long>(k_lo) - 1;
+    if (k_lo >= k_hi) return n_z * piece(first, t_lo, s_lo, c_lo, t_hi, s_hi, c_hi);
+    double v =
+        piece(first, t_lo, s_lo, c_lo, lines[k_lo], cells.line_sin[k_lo], cells.line_cos[k_lo]) +
+        piece(static_cast<long>(k_hi) - 1, lines[k_hi - 1], cells.line_sin[k_hi - 1],
+              cells.line_cos[k_hi - 1], t_hi, s_hi, c_hi);
+    for (std::size_t k = k_lo; k + 1 < k_hi; ++k) {
+      const long row = cells.interval_row[k];
+      if (row < 0) continue;
+      const std::size_t j = static_cast<std::size_t>(row);
+      v += cells.w_lo[k] * table.intensity_at(c, j, 0.0) +
+           cells.w_hi[k] * table.intensity_at(c, j, 1.0);
+    }
+    return n_z * v;
+  };
+  // The light vector: per ray the nodes' moments sum_j w_j I_j (sin, cos) of gamma', no receiver
+  // weight and no clamp (the caller's plane sees the whole opening, so cos_r > 0 at every node).
+  struct Moments {
+    double radial = 0.0, axial = 0.0;
+  };
+  auto add_moments = [&](const TableGammaNode* q, const TableGammaNode* end,
+                         const photometry::TabularDistribution::CPosition& c, Moments& m) {
+    for (; q != end; ++q) {
+      if (q->row < 0) continue;
+      const double wi =
+          q->weight_tan * table.intensity_at(c, static_cast<std::size_t>(q->row), q->tg);
+      m.radial += wi * q->sin_g;
+      m.axial += wi * q->abs_cos_g;
+    }
+  };
+  auto end_moments = [&](double a, double b, double ta, double tb,
+                         const photometry::TabularDistribution::CPosition& c, Moments& m) {
+    end_nodes.clear();
+    append_gamma_nodes(table, a, b, ta, tb, end_nodes);
+    add_moments(end_nodes.data(), end_nodes.data() + end_nodes.size(), c, m);
+  };
+  Vec3 moments_sum(0.0);
   for (std::size_t k = 0; k + 1 < psi_breaks.size(); ++k) {
     const double pa = psi_breaks[k], pw = psi_breaks[k + 1] - pa;
-    for (double xp : {kGauss2Node, 1.0 - kGauss2Node}) {
-      const double psi = pa + pw * xp;
-      const double cp = std::cos(psi), sp = std::sin(psi);
+    const GaussPair nodes = gauss_pair(pa, pa + pw);
+    for (int node = 0; node < 2; ++node) {
+      const double psi = node == 0 ? nodes.x_lo : nodes.x_hi;
+      const double cp = node == 0 ? nodes.c_lo : nodes.c_hi,
+                   sp = node == 0 ? nodes.s_lo : nodes.s_hi;
       double rho_min, rho_max;
       if (!ray_interval(poly, cp, sp, inside, rho_min, rho_max)) continue;
       // The ray's range of table angles.
@@ -280,8 +391,23 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiv
           std::upper_bound(lines.begin(), lines.end(), t_lo) - lines.begin());
       const std::size_t k_hi = static_cast<std::size_t>(
           std::lower_bound(lines.begin(), lines.end(), t_hi) - lines.begin());
+      if (light_vector) {
+        Moments m;
+        if (k_lo >= k_hi) {
+          end_moments(t_lo, t_hi, tan_lo, tan_hi, cpos, m);
+        } else {
+          end_moments(t_lo, lines[k_lo], tan_lo, cells.line_tan[k_lo], cpos, m);
+          end_moments(lines[k_hi - 1], t_hi, cells.line_tan[k_hi - 1], tan_hi, cpos, m);
+          const TableGammaNode* base = cells.nodes.data();
+          add_moments(base + cells.first[k_lo], base + cells.first[k_hi - 1], cpos, m);
+        }
+        moments_sum += 0.5 * pw * Vec3(m.radial * cp, m.radial * sp, front ? m.axial : -m.axial);
+        continue;
+      }
       double ray = 0.0;
-      if (k_lo >= k_hi) {
+      if (closed_form) {
+        ray = closed_ray(t_lo, t_hi, rho_min, rho_max, k_lo, k_hi, cpos);
+      } else if (k_lo >= k_hi) {
         ray = end_cell(t_lo, t_hi, tan_lo, tan_hi, cpos, dir);
       } else {
         ray = end_cell(t_lo, lines[k_lo], tan_lo, cells.line_tan[k_lo], cpos, dir) +
@@ -293,7 +419,23 @@ bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiv
       sum += 0.5 * pw * ray;
     }
   }
+  if (light_vector) *light_vector = (view.scale / e.area_m2) * moments_sum;
   lux = sanitize_illuminance(view.scale * sum / e.area_m2);
+  return true;
+}
+
+}  // namespace
+
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
+                               double& lux) {
+  return table_rung(e, point, receiver, lux, nullptr);
+}
+
+bool table_light_vector(const Emitter& e, const Vec3& point, Vec3& light_vector_lx) {
+  double unused = 0.0;
+  Vec3 local(0.0);
+  if (!table_rung(e, point, Receiver::planar(Vec3(0, 0, 1)), unused, &local)) return false;
+  light_vector_lx = e.rotation * local;
   return true;
 }
 

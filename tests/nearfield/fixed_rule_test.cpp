@@ -89,5 +89,41 @@ TEST(FixedRule, MirelKinkFarOutWithinThePromiseWhereTheFarFieldIsNot) {
   EXPECT_LT(std::abs(fixed / near - 1.0), std::abs(far / near - 1.0));
 }
 
+TEST(FixedRule, LeftToTheTableRungWhereThatIsInClosedForm) {
+  // A 0.6 m panel (an IES table of 45-degree C planes, 5-degree gamma lines) 2.25 m above a
+  // workplane: the map lets the fixed rule serve the pairs near the axis (2.6 D), where it is
+  // 0.25 % off (within the promise). A workplane facing the axis takes the table rung in closed
+  // form there, at about the fixed rule's cost: the pair is the table rung's alone and within
+  // 1e-4 of the reference (the rung's psi rule: 4.1e-5 at worst on the constant table of
+  // table_cubature_test). A receiver tilted off the
+  // axis keeps the fixed rule, as before.
+  auto ph = load("ies/indoor_full360_lm02.ies");
+  ph.opening.shape = photometry::LuminousOpening::Shape::rectangle;
+  ph.opening.length = ph.opening.width = 0.6;
+  Emitter e = make_emitter(ph.opening, Vec3(2, 2, 3), glm::dmat3(1.0), ph.distribution);
+  e.far_bound = build_far_field_bound(e, Model::standard(), kStandardPromise);
+  const Vec3 up(0, 0, 1), tilted = glm::normalize(Vec3(0.3, 0, 1));
+  int served = 0;
+  for (double x : {1.99, 2.15, 2.3})
+    for (double y : {2.01, 2.2}) {
+      const Vec3 p(x, y, 0.75);
+      if (!(switch_weights(e, p).fixed > 0.0)) continue;
+      ++served;
+      SwitchWeights used;
+      const double lux = hybrid_illuminance(e, p, Receiver::planar(up), Model::standard(),
+                                            NearFieldSwitch::automatic, nullptr, &used);
+      EXPECT_EQ(used.fixed, 0.0);
+      double rung = 0.0;
+      ASSERT_TRUE(table_aligned_illuminance(e, p, up, rung));
+      EXPECT_EQ(lux, rung);
+      const double truth = illuminance(e, p, up, Model::reference(1e-7));
+      EXPECT_NEAR(lux, truth, 1e-4 * truth) << "at " << x << ", " << y;
+      hybrid_illuminance(e, p, Receiver::planar(tilted), Model::standard(),
+                         NearFieldSwitch::automatic, nullptr, &used);
+      EXPECT_GT(used.fixed, 0.0) << "at " << x << ", " << y;
+    }
+  EXPECT_GT(served, 0);  // the set-up reaches the fixed rule's range
+}
+
 }  // namespace
 }  // namespace luxgrid::nearfield
