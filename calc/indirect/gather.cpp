@@ -16,8 +16,9 @@ using geometry::box_min_height;
 
 GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
                           const std::vector<double>& exitant_flux_lm, double far_ratio,
-                          const SubcellExitance* cells) {
+                          const SubcellExitance* cells, double cluster_opening) {
   GatherSet set;
+  set.cluster_opening = cluster_opening;
   // Runs of emitting patches with the same normal.
   std::vector<std::pair<size_t, size_t>> runs;  // [first, last) into `emitting`
   std::vector<size_t> emitting;
@@ -81,6 +82,13 @@ GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
       for (const auto& v : p.polygon) c.lo = glm::min(c.lo, v), c.hi = glm::max(c.hi, v);
       c.max_near_d2 = std::max(c.max_near_d2, limit * limit);
       c.max_diameter_m = std::max(c.max_diameter_m, p.diameter_m);
+      c.flux_lm += exitant_flux_lm[j];
+      c.flux_centroid += exitant_flux_lm[j] * p.centroid;
+    }
+    for (size_t c = g.begin; c < set.chunks.size(); ++c) {
+      GatherSet::Chunk& ch = set.chunks[c];
+      ch.flux_centroid /= ch.flux_lm;  // every entry has flux > 0
+      ch.diagonal2_m2 = glm::dot(ch.hi - ch.lo, ch.hi - ch.lo);
     }
     g.end = set.chunks.size();
     set.groups.push_back(g);
@@ -139,6 +147,7 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
   const double* cy = set.cy.data();
   const double* cz = set.cz.data();
   const double* flux = set.flux_lm.data();
+  const double opening2 = set.cluster_opening * set.cluster_opening;
   for (const auto& g : set.groups) {
     // x behind (or on) the plane of every patch of the group: each term is skipped below.
     if (!(glm::dot(g.normal, x) - g.max_offset > kGatherPlaneDistance_m)) continue;
@@ -153,6 +162,18 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
           box_distance2(x, ch.clo, ch.chi) > ch.max_near_d2) {
         // Far kernel for the whole chunk: every centroid in front of the receiver (n . dx < 0),
         // the receiver in front of every patch (group test), farther than its near distance.
+        if (opening2 > 0.0 && ch.diagonal2_m2 < opening2 * box_distance2(x, ch.lo, ch.hi)) {
+          // Seen under less than the opening ratio: the chunk as one source, when the whole
+          // chunk lies inside the band.
+          const Vec3 far_corner = glm::max(glm::abs(x - ch.clo), glm::abs(x - ch.chi));
+          if (box_distance2(x, ch.clo, ch.chi) >= inner2 &&
+              glm::dot(far_corner, far_corner) < outer2) {
+            const Vec3 dx = x - ch.flux_centroid;
+            far += ch.flux_lm *
+                   point_kernel_pi_per_m2(glm::dot(m, dx), -glm::dot(n, dx), glm::dot(dx, dx));
+            continue;
+          }
+        }
         double sum = 0.0;
         for (size_t k = ch.begin; k < ch.end; ++k) {
           const double dx = x.x - cx[k], dy = x.y - cy[k], dz = x.z - cz[k];
