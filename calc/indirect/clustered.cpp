@@ -90,7 +90,8 @@ bool use_clustered_transfer(const Room& room, double patch_size_m) {
 }
 
 double cluster_opening(double far_ratio) {
-  return 1.0 / (std::isfinite(far_ratio) ? far_ratio : kClusteredReferenceFarRatio);
+  return kClusterOpeningScale /
+         (std::isfinite(far_ratio) ? far_ratio : kClusteredReferenceFarRatio);
 }
 
 double patch_pair_form_factor(const Patch& source, const Patch& receiver, double far_ratio) {
@@ -138,74 +139,64 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
   }
   const size_t node_count = T.nodes.size();
 
-  // Receiver tasks: subtrees of at most kTaskPatches patches (their ancestors receive no links).
-  std::vector<uint32_t> count(node_count, 0);  // patches under each node
-  for (size_t b = node_count; b-- > 0;) {
-    const ClusterNode& c = T.nodes[b];
-    count[b] = is_leaf(c) ? 1 : count[c.child[0]] + count[c.child[1]];
-  }
-  std::vector<std::pair<uint32_t, size_t>> tasks;  // receiver subtree root, its face
+  // Which face each patch lies on, and its leaf.
+  std::vector<uint32_t> face_of(n), leaf_of(n);
   for (size_t f = 0; f < T.roots.size(); ++f) {
-    std::vector<uint32_t> stack{T.roots[f]};
-    while (!stack.empty()) {
-      const uint32_t b = stack.back();
-      stack.pop_back();
-      if (count[b] <= kTaskPatches) {
-        tasks.push_back({b, f});
-        continue;
-      }
-      stack.push_back(T.nodes[b].child[0]);
-      stack.push_back(T.nodes[b].child[1]);
-    }
+    const uint32_t end = f + 1 < T.roots.size() ? T.roots[f + 1] : uint32_t(node_count);
+    for (uint32_t a = T.roots[f]; a < end; ++a)
+      if (is_leaf(T.nodes[a]))
+        face_of[T.nodes[a].patch] = uint32_t(f), leaf_of[T.nodes[a].patch] = a;
   }
 
+  // The interaction list of each receiving patch, blocks of kTaskPatches patches in parallel.
   const double opening2 = T.opening * T.opening;
-  std::vector<std::vector<Link>> task_links(tasks.size());
+  const size_t blocks = (n + kTaskPatches - 1) / kTaskPatches;
+  std::vector<std::vector<Link>> block_links(blocks);
   std::atomic<size_t> total_links{0};
   std::atomic<bool> over{false};
   constexpr size_t kLinkBytes = sizeof(uint32_t) + sizeof(float);
-  tbb::parallel_for(size_t(0), tasks.size(), [&](size_t t) {
+  tbb::parallel_for(size_t(0), blocks, [&](size_t blk) {
     if (over.load(std::memory_order_relaxed)) return;
-    std::vector<Link>& out = task_links[t];
-    std::vector<std::pair<uint32_t, uint32_t>> stack;
-    for (size_t f = 0; f < T.roots.size(); ++f) {
-      if (f == tasks[t].second) continue;  // a face does not light itself
-      stack.push_back({T.roots[f], tasks[t].first});
-      while (!stack.empty()) {
-        const auto [a_id, b_id] = stack.back();
-        stack.pop_back();
-        const ClusterNode& a = T.nodes[a_id];
-        const ClusterNode& b = T.nodes[b_id];
-        // One node wholly on or behind the other's plane: every factor between them is 0.
-        if (!(box_max_height(a.normal, a.centroid, b.lo, b.hi) > kMinPlaneDistance_m) ||
-            !(box_max_height(b.normal, b.centroid, a.lo, a.hi) > kMinPlaneDistance_m))
-          continue;
-        const bool a_leaf = is_leaf(a), b_leaf = is_leaf(b);
-        if (a_leaf && b_leaf) {
-          const double f = patch_pair_form_factor(mesh.patches[T.begin + a.patch],
-                                                  mesh.patches[T.begin + b.patch], far);
-          if (f > 0.0) out.push_back({b_id, a_id, static_cast<float>(f)});
-          continue;
-        }
-        const Vec3 d = b.centroid - a.centroid;
-        const double d2 = glm::dot(d, d);
-        const double dm = std::max(a.diameter_m, b.diameter_m);
-        if (dm * dm < opening2 * d2 &&
-            box_min_height(a.normal, a.centroid, b.lo, b.hi) > -kFrontTolerance_m &&
-            box_min_height(b.normal, b.centroid, a.lo, a.hi) > -kFrontTolerance_m) {
-          const double h_src = glm::dot(a.normal, d), h_dst = -glm::dot(b.normal, d);
-          if (h_src > 0.0 && h_dst > 0.0) {
-            const double f = b.area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi;
-            out.push_back({b_id, a_id, static_cast<float>(f)});
+    std::vector<Link>& out = block_links[blk];
+    std::vector<uint32_t> stack;
+    for (size_t i = blk * kTaskPatches, i_end = std::min(n, i + kTaskPatches); i < i_end; ++i) {
+      const ClusterNode& b = T.nodes[leaf_of[i]];
+      const Patch& dst = mesh.patches[T.begin + i];
+      for (size_t f = 0; f < T.roots.size(); ++f) {
+        if (f == face_of[i]) continue;  // a face does not light itself
+        stack.push_back(T.roots[f]);
+        while (!stack.empty()) {
+          const uint32_t a_id = stack.back();
+          stack.pop_back();
+          const ClusterNode& a = T.nodes[a_id];
+          // One wholly on or behind the other's plane: every factor between them is 0.
+          if (!(box_max_height(a.normal, a.centroid, b.lo, b.hi) > kMinPlaneDistance_m) ||
+              !(box_max_height(b.normal, b.centroid, a.lo, a.hi) > kMinPlaneDistance_m))
+            continue;
+          if (is_leaf(a)) {
+            const double f = patch_pair_form_factor(mesh.patches[T.begin + a.patch], dst, far);
+            if (f > 0.0) out.push_back({uint32_t(i), a_id, static_cast<float>(f)});
+            continue;
           }
-          continue;
-        }
-        if (!a_leaf && (b_leaf || a.diameter_m >= b.diameter_m)) {
-          stack.push_back({a.child[0], b_id});
-          stack.push_back({a.child[1], b_id});
-        } else {
-          stack.push_back({a_id, b.child[0]});
-          stack.push_back({a_id, b.child[1]});
+          // A source node is taken whole when it and the receiver are small against their
+          // distance and each lies wholly in front of the other: the point kernel's error is
+          // then of second order in the opening ratio (the first-order terms vanish at the
+          // area-weighted centroid, for a node of uniform exitance).
+          const Vec3 d = b.centroid - a.centroid;
+          const double d2 = glm::dot(d, d);
+          const double dm = std::max(a.diameter_m, b.diameter_m);
+          if (dm * dm < opening2 * d2 &&
+              box_min_height(a.normal, a.centroid, b.lo, b.hi) > -kFrontTolerance_m &&
+              box_min_height(b.normal, b.centroid, a.lo, a.hi) > -kFrontTolerance_m) {
+            const double h_src = glm::dot(a.normal, d), h_dst = -glm::dot(b.normal, d);
+            if (h_src > 0.0 && h_dst > 0.0) {
+              const double f = b.area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi;
+              out.push_back({uint32_t(i), a_id, static_cast<float>(f)});
+            }
+            continue;
+          }
+          stack.push_back(a.child[0]);
+          stack.push_back(a.child[1]);
         }
       }
     }
@@ -218,23 +209,17 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
                            std::to_string(kMaxClusteredLinkBytes / kBytesPerMegabyte) +
                            " MB of links (limit)");
 
-  // Compressed rows by receiver node.
-  T.link_begin.assign(node_count + 1, 0);
-  for (const auto& links : task_links)
+  // Compressed rows by receiving patch (the blocks are in patch order).
+  T.link_begin.assign(n + 1, 0);
+  for (const auto& links : block_links)
     for (const Link& l : links) ++T.link_begin[l.receiver + 1];
-  for (size_t b = 0; b < node_count; ++b) T.link_begin[b + 1] += T.link_begin[b];
-  T.link_source.resize(T.link_begin[node_count]);
-  T.link_factor.resize(T.link_begin[node_count]);
-  {
-    std::vector<uint64_t> fill(T.link_begin.begin(), T.link_begin.end() - 1);
-    for (auto& links : task_links) {
-      for (const Link& l : links) {
-        const uint64_t k = fill[l.receiver]++;
-        T.link_source[k] = l.source;
-        T.link_factor[k] = l.factor;
-      }
-      std::vector<Link>().swap(links);
-    }
+  for (size_t i = 0; i < n; ++i) T.link_begin[i + 1] += T.link_begin[i];
+  T.link_source.reserve(T.link_begin[n]);
+  T.link_factor.reserve(T.link_begin[n]);
+  for (auto& links : block_links) {
+    for (const Link& l : links)
+      T.link_source.push_back(l.source), T.link_factor.push_back(l.factor);
+    std::vector<Link>().swap(links);
   }
 
   // Total factor per patch: its own links' and its ancestors' (the stored floats, in double).
@@ -260,17 +245,16 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
 void apply_clustered(const ClusteredTransfer& T, const std::vector<double>& shot,
                      std::vector<double>& received, std::vector<double>& work) {
   const size_t m = T.nodes.size();
-  work.assign(2 * m, 0.0);
-  double* flux = work.data();     // per node: the scaled shot of its patches
-  double* irr = work.data() + m;  // per node: incident flux / area, then pushed down
+  work.resize(m);
+  double* flux = work.data();  // per node: the scaled shot of its patches
   for (size_t a = m; a-- > 0;) {
     const ClusterNode& c = T.nodes[a];
     flux[a] =
         is_leaf(c) ? shot[c.patch] * T.source_scale[c.patch] : flux[c.child[0]] + flux[c.child[1]];
   }
-  tbb::parallel_for(size_t(0), m, [&](size_t b) {
-    const uint64_t k0 = T.link_begin[b], k1 = T.link_begin[b + 1];
-    if (k0 == k1) return;
+  received.resize(T.n);
+  tbb::parallel_for(size_t(0), T.n, [&](size_t i) {
+    const uint64_t k0 = T.link_begin[i], k1 = T.link_begin[i + 1];
     double s0 = 0.0, s1 = 0.0;
     uint64_t k = k0;
     for (; k + 2 <= k1; k += 2) {
@@ -278,18 +262,8 @@ void apply_clustered(const ClusteredTransfer& T, const std::vector<double>& shot
       s1 += static_cast<double>(T.link_factor[k + 1]) * flux[T.link_source[k + 1]];
     }
     if (k < k1) s0 += static_cast<double>(T.link_factor[k]) * flux[T.link_source[k]];
-    irr[b] = (s0 + s1) / T.nodes[b].area_m2;
+    received[i] = s0 + s1;
   });
-  received.assign(T.n, 0.0);
-  for (size_t a = 0; a < m; ++a) {
-    const ClusterNode& c = T.nodes[a];
-    if (is_leaf(c)) {
-      received[c.patch] = irr[a] * c.area_m2;
-      continue;
-    }
-    irr[c.child[0]] += irr[a];
-    irr[c.child[1]] += irr[a];
-  }
 }
 
 }  // namespace luxgrid::calc::indirect

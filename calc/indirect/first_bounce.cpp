@@ -1,5 +1,6 @@
 #include "calc/indirect/first_bounce.h"
 
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -59,8 +60,37 @@ struct Sampler {
   }
 };
 
+// Solid angle (sr) of a convex planar polygon seen from s, in front of it: the fan of triangles
+// from its first corner, each by Van Oosterom-Strackee (tan(omega / 2) = numerator /
+// denominator), added as the arguments of the complex numbers denominator + i numerator, so one
+// atan2 serves the whole polygon. The sum of the half angles is below pi (a polygon seen from
+// one side spans less than 2 pi), so the product's argument is the sum.
+double convex_polygon_solid_angle_from(const Vec3& s, const Polygon3& polygon) {
+  const size_t n = polygon.size();
+  if (n < 3) return 0.0;
+  std::array<Vec3, 16> u_small;
+  std::vector<Vec3> u_large;
+  Vec3* u = u_small.data();
+  if (n > u_small.size()) u_large.resize(n), u = u_large.data();
+  for (size_t k = 0; k < n; ++k) {
+    const Vec3 r = polygon[k] - s;
+    const double len = glm::length(r);
+    if (!(len > 0.0)) return 0.0;
+    u[k] = r / len;
+  }
+  double re = 1.0, im = 0.0;
+  for (size_t k = 1; k + 1 < n; ++k) {
+    const Vec3 &a = u[0], &b = u[k], &c = u[k + 1];
+    const double num = std::abs(glm::dot(a, glm::cross(b, c)));
+    const double den = 1.0 + glm::dot(a, b) + glm::dot(a, c) + glm::dot(b, c);
+    const double r2 = re * den - im * num, i2 = re * num + im * den;
+    re = r2, im = i2;
+  }
+  return 2.0 * std::atan2(im, re);
+}
+
 double patch_flux(const Source& src, const Patch& p, const geometry::Visibility* visibility,
-                  double max_angle_rad) {
+                  double max_angle_rad, bool one_piece) {
   const Vec3 s = src.position;
   const double h = glm::dot(p.normal, s - p.centroid);
   if (!(h > kMinPlaneDistance_m)) return 0.0;
@@ -71,6 +101,16 @@ double patch_flux(const Source& src, const Patch& p, const geometry::Visibility*
   int level = 0;
   // Each fan triangle spans about half the patch; each level halves a piece.
   while (level < kMaxLevel && 0.5 * angle / std::ldexp(1.0, level) > max_angle_rad) ++level;
+  if (one_piece && level == 0 && !visibility) {
+    // The whole patch as one piece: its exact solid angle times I towards its centroid (the
+    // midpoint rule of the integral of I over the patch's solid angle, whose pieces here span
+    // at most 2 max_angle_rad). The solid angles stay exact, so a closed room still receives the
+    // emitted flux to the quadrature error of I alone.
+    const Vec3 dir = glm::normalize(p.centroid - s);
+    const Vec3 local = glm::transpose(src.lum->pose.rotation) * dir;
+    return src.weight * src.intensity->intensity(local) *
+           convex_polygon_solid_angle_from(s, p.polygon);
+  }
   Sampler sampler{src, visibility, p.normal};
   auto integrate = [&](int lv) {
     double flux = 0.0;
@@ -93,7 +133,8 @@ FirstBounce first_bounce(
     const std::vector<const geometry::Visibility*>& visibility, double max_angle_rad,
     const std::map<const photometry::IntensityDistribution*, double>* known_flux_lm,
     const std::map<const photometry::IntensityDistribution*, photometry::DistributionPtr>*
-        intensity_lookup) {
+        intensity_lookup,
+    const std::vector<char>* one_piece_rooms) {
   FirstBounce fb;
   const size_t n = mesh.patches.size();
   fb.incident_flux_lm.assign(n, 0.0);
@@ -132,10 +173,11 @@ FirstBounce first_bounce(
   for (size_t r = 0; r < scene.rooms.size(); ++r) {
     if (in_room[r].empty()) continue;
     const geometry::Visibility* room_visibility = visibility[r];
+    const bool one_piece = one_piece_rooms && (*one_piece_rooms)[r];
     tbb::parallel_for(mesh.room_begin[r], mesh.room_begin[r + 1], [&](size_t i) {
       double sum = 0.0;
       for (const Source& src : in_room[r])
-        sum += patch_flux(src, mesh.patches[i], room_visibility, max_angle_rad);
+        sum += patch_flux(src, mesh.patches[i], room_visibility, max_angle_rad, one_piece);
       fb.incident_flux_lm[i] = sum;
     });
   }

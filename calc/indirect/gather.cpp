@@ -163,14 +163,17 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
         // Far kernel for the whole chunk: every centroid in front of the receiver (n . dx < 0),
         // the receiver in front of every patch (group test), farther than its near distance.
         if (opening2 > 0.0 && ch.diagonal2_m2 < opening2 * box_distance2(x, ch.lo, ch.hi)) {
-          // Seen under less than the opening ratio: the chunk as one source, when the whole
-          // chunk lies inside the band.
+          // Seen under less than the opening ratio, and its height over the receiver's plane
+          // varying by less than that ratio (a wall chunk seen from a workplane point): the
+          // chunk as one source, when the whole chunk lies inside the band.
           const Vec3 far_corner = glm::max(glm::abs(x - ch.clo), glm::abs(x - ch.chi));
-          if (box_distance2(x, ch.clo, ch.chi) >= inner2 &&
+          const Vec3 dx = x - ch.flux_centroid;
+          const double hn = -glm::dot(n, dx);
+          if (box_max_height(n, x, ch.lo, ch.hi) - box_min_height(n, x, ch.lo, ch.hi) <
+                  set.cluster_opening * hn &&
+              box_distance2(x, ch.clo, ch.chi) >= inner2 &&
               glm::dot(far_corner, far_corner) < outer2) {
-            const Vec3 dx = x - ch.flux_centroid;
-            far += ch.flux_lm *
-                   point_kernel_pi_per_m2(glm::dot(m, dx), -glm::dot(n, dx), glm::dot(dx, dx));
+            far += ch.flux_lm * point_kernel_pi_per_m2(glm::dot(m, dx), hn, glm::dot(dx, dx));
             continue;
           }
         }

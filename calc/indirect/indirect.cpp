@@ -332,7 +332,7 @@ IndirectResult compute_indirect(const Scene& scene,
     }
 
   const FirstBounce fb = first_bounce(scene, mesh, room_visibility, 0.08, &options.luminous_flux_lm,
-                                      &options.intensity_lookup);
+                                      &options.intensity_lookup, &budgets.clustered);
   for (const auto& n : fb.notes) res.notes.push_back(n);
   res.vpls = fb.vpl_count;
   res.emitted_flux_lm = fb.emitted_flux_lm;
@@ -415,7 +415,7 @@ IndirectResult compute_indirect(const Scene& scene,
     if (!cells.mesh.patches.empty()) {
       const FirstBounce cell_fb =
           first_bounce(scene, cells.mesh, room_visibility, 0.08, &options.luminous_flux_lm,
-                       &options.intensity_lookup);
+                       &options.intensity_lookup, &budgets.clustered);
       std::vector<double> cell_indirect(cells.mesh.patches.size(), 0.0);
       // Near patches cell by cell; the far ones, whose light varies smoothly over a patch, at
       // the four corner cells of each patch, interpolated bilinearly to the others (subcells.h).
