@@ -28,6 +28,11 @@ constexpr double kFrontTolerance_m = 1e-9;
 // Receiver subtrees of at most this many patches are refined as one parallel task: enough tasks
 // to balance two to a few dozen threads, each large enough to amortise its start.
 constexpr size_t kTaskPatches = 256;
+// Blocks refined at a time before their links are appended (64 x 256 patches).
+constexpr size_t kWaveBlocks = 64;
+// Links per patch times opening^2, measured on the 100 x 50 x 6 m hall (300 links per patch at
+// opening 0.4, 760 at 0.25): the count reserved before the lists are built.
+constexpr double kLinksPerPatchOpening2 = 48.0;
 
 struct Link {
   uint32_t receiver, source;
@@ -151,75 +156,83 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
   // The interaction list of each receiving patch, blocks of kTaskPatches patches in parallel.
   const double opening2 = T.opening * T.opening;
   const size_t blocks = (n + kTaskPatches - 1) / kTaskPatches;
-  std::vector<std::vector<Link>> block_links(blocks);
-  std::atomic<size_t> total_links{0};
-  std::atomic<bool> over{false};
+  std::vector<std::vector<Link>> block_links(kWaveBlocks);
   constexpr size_t kLinkBytes = sizeof(uint32_t) + sizeof(float);
-  tbb::parallel_for(size_t(0), blocks, [&](size_t blk) {
-    if (over.load(std::memory_order_relaxed)) return;
-    std::vector<Link>& out = block_links[blk];
-    std::vector<uint32_t> stack;
-    for (size_t i = blk * kTaskPatches, i_end = std::min(n, i + kTaskPatches); i < i_end; ++i) {
-      const ClusterNode& b = T.nodes[leaf_of[i]];
-      const Patch& dst = mesh.patches[T.begin + i];
-      for (size_t f = 0; f < T.roots.size(); ++f) {
-        if (f == face_of[i]) continue;  // a face does not light itself
-        stack.push_back(T.roots[f]);
-        while (!stack.empty()) {
-          const uint32_t a_id = stack.back();
-          stack.pop_back();
-          const ClusterNode& a = T.nodes[a_id];
-          // One wholly on or behind the other's plane: every factor between them is 0.
-          if (!(box_max_height(a.normal, a.centroid, b.lo, b.hi) > kMinPlaneDistance_m) ||
-              !(box_max_height(b.normal, b.centroid, a.lo, a.hi) > kMinPlaneDistance_m))
-            continue;
-          if (is_leaf(a)) {
-            const double f = patch_pair_form_factor(mesh.patches[T.begin + a.patch], dst, far);
-            if (f > 0.0) out.push_back({uint32_t(i), a_id, static_cast<float>(f)});
-            continue;
-          }
-          // A source node is taken whole when it and the receiver are small against their
-          // distance and each lies wholly in front of the other: the point kernel's error is
-          // then of second order in the opening ratio (the first-order terms vanish at the
-          // area-weighted centroid, for a node of uniform exitance).
-          const Vec3 d = b.centroid - a.centroid;
-          const double d2 = glm::dot(d, d);
-          const double dm = std::max(a.diameter_m, b.diameter_m);
-          if (dm * dm < opening2 * d2 &&
-              box_min_height(a.normal, a.centroid, b.lo, b.hi) > -kFrontTolerance_m &&
-              box_min_height(b.normal, b.centroid, a.lo, a.hi) > -kFrontTolerance_m) {
-            const double h_src = glm::dot(a.normal, d), h_dst = -glm::dot(b.normal, d);
-            if (h_src > 0.0 && h_dst > 0.0) {
-              const double f = b.area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi;
-              out.push_back({uint32_t(i), a_id, static_cast<float>(f)});
+  T.link_begin.assign(n + 1, 0);
+  // Reserved at the expected count (kLinksPerPatchOpening2 / opening^2 per patch, plus a tenth):
+  // growing by doubling copied the links several times (a tenth of the hall's run, with the page
+  // faults of each new block).
+  const size_t expected = static_cast<size_t>(1.1 * kLinksPerPatchOpening2 / opening2 * n);
+  T.link_source.reserve(expected);
+  T.link_factor.reserve(expected);
+  // In waves of kWaveBlocks blocks, appended in patch order after each wave: the links are held
+  // twice (per block and compressed) for one wave only.
+  for (size_t wave = 0; wave < blocks; wave += kWaveBlocks) {
+    const size_t wave_end = std::min(blocks, wave + kWaveBlocks);
+    tbb::parallel_for(wave, wave_end, [&](size_t blk) {
+      std::vector<Link>& out = block_links[blk - wave];
+      std::vector<uint32_t> stack;
+      for (size_t i = blk * kTaskPatches, i_end = std::min(n, i + kTaskPatches); i < i_end; ++i) {
+        const ClusterNode& b = T.nodes[leaf_of[i]];
+        const Patch& dst = mesh.patches[T.begin + i];
+        for (size_t f = 0; f < T.roots.size(); ++f) {
+          if (f == face_of[i]) continue;  // a face does not light itself
+          stack.push_back(T.roots[f]);
+          while (!stack.empty()) {
+            const uint32_t a_id = stack.back();
+            stack.pop_back();
+            const ClusterNode& a = T.nodes[a_id];
+            // One wholly on or behind the other's plane: every factor between them is 0.
+            if (!(box_max_height(a.normal, a.centroid, b.lo, b.hi) > kMinPlaneDistance_m) ||
+                !(box_max_height(b.normal, b.centroid, a.lo, a.hi) > kMinPlaneDistance_m))
+              continue;
+            if (is_leaf(a)) {
+              const double f = patch_pair_form_factor(mesh.patches[T.begin + a.patch], dst, far);
+              if (f > 0.0) out.push_back({uint32_t(i), a_id, static_cast<float>(f)});
+              continue;
             }
-            continue;
+            // A source node is taken whole when it and the receiver are small against their
+            // distance and each lies wholly in front of the other: the point kernel's error is
+            // then of second order in the opening ratio (the first-order terms vanish at the
+            // area-weighted centroid, for a node of uniform exitance).
+            const Vec3 d = b.centroid - a.centroid;
+            const double d2 = glm::dot(d, d);
+            const double dm = std::max(a.diameter_m, b.diameter_m);
+            if (dm * dm < opening2 * d2 &&
+                box_min_height(a.normal, a.centroid, b.lo, b.hi) > -kFrontTolerance_m &&
+                box_min_height(b.normal, b.centroid, a.lo, a.hi) > -kFrontTolerance_m) {
+              const double h_src = glm::dot(a.normal, d), h_dst = -glm::dot(b.normal, d);
+              if (h_src > 0.0 && h_dst > 0.0) {
+                const double f = b.area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi;
+                out.push_back({uint32_t(i), a_id, static_cast<float>(f)});
+              }
+              continue;
+            }
+            stack.push_back(a.child[0]);
+            stack.push_back(a.child[1]);
           }
-          stack.push_back(a.child[0]);
-          stack.push_back(a.child[1]);
         }
       }
+    });
+    for (size_t blk = wave; blk < wave_end; ++blk) {
+      std::vector<Link>& links = block_links[blk - wave];
+      for (const Link& l : links) {
+        ++T.link_begin[l.receiver + 1];
+        T.link_source.push_back(l.source);
+        T.link_factor.push_back(l.factor);
+      }
+      std::vector<Link>().swap(links);
     }
-    const size_t total = total_links.fetch_add(out.size()) + out.size();
-    if (total * kLinkBytes > kMaxClusteredLinkBytes) over.store(true);
-  });
-  if (over.load())
-    throw CalculationError("indirect: room " + std::to_string(room) + " (" + std::to_string(n) +
-                           " patches): the clustered transfer needs more than " +
-                           std::to_string(kMaxClusteredLinkBytes / kBytesPerMegabyte) +
-                           " MB of links (limit)");
-
-  // Compressed rows by receiving patch (the blocks are in patch order).
-  T.link_begin.assign(n + 1, 0);
-  for (const auto& links : block_links)
-    for (const Link& l : links) ++T.link_begin[l.receiver + 1];
+    if (T.link_source.size() * kLinkBytes > kMaxClusteredLinkBytes)
+      throw CalculationError("indirect: room " + std::to_string(room) + " (" + std::to_string(n) +
+                             " patches): the clustered transfer needs more than " +
+                             std::to_string(kMaxClusteredLinkBytes / kBytesPerMegabyte) +
+                             " MB of links (limit)");
+  }
   for (size_t i = 0; i < n; ++i) T.link_begin[i + 1] += T.link_begin[i];
-  T.link_source.reserve(T.link_begin[n]);
-  T.link_factor.reserve(T.link_begin[n]);
-  for (auto& links : block_links) {
-    for (const Link& l : links)
-      T.link_source.push_back(l.source), T.link_factor.push_back(l.factor);
-    std::vector<Link>().swap(links);
+  if (T.link_source.capacity() > T.link_source.size() + T.link_source.size() / 4) {
+    T.link_source.shrink_to_fit();
+    T.link_factor.shrink_to_fit();
   }
 
   // Total factor per patch: its own links' and its ancestors' (the stored floats, in double).

@@ -82,6 +82,10 @@ bool use_clustered_transfer(const Room& room, double patch_size_m);
 // (1.6 million instead of 16.8 million) and a fifth of the time.
 inline constexpr double kClusterOpeningScale = 2.0;
 double cluster_opening(double far_ratio);
+// Links per patch of a clustered room, for estimates of its cost before it is meshed
+// (calc/pipeline.cpp): measured on the 100 x 50 x 6 m hall, 300 at standard's opening 0.4 and 760
+// at high's 0.25 (about 48 / opening^2); high's figure, the larger.
+inline constexpr double kClusteredLinksPerPatch = 760.0;
 // The far ratio a clustered room uses at `reference` quality, where the dense path is always
 // exact: 16 patch (or cluster) diameters, a point-kernel error of (1/16)^2 / (2 pi) = 0.06 %
 // per term, twice as strict as `high`'s 8.
