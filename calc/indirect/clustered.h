@@ -54,10 +54,10 @@ struct ClusteredTransfer {
   // Nodes of all faces, each face's tree in pre-order (a parent before its children).
   std::vector<ClusterNode> nodes;
   std::vector<uint32_t> roots;  // per face
-  // Interaction lists by receiving patch (compressed rows): the links of patch i are
-  // [link_begin[i], link_begin[i + 1]), each a source node link_source[k] and its factor
-  // link_factor[k] (F per unit flux leaving the source node).
-  std::vector<uint64_t> link_begin;
+  // Interaction lists by receiving patch: the links of patch i are [link_begin[i], link_end[i]),
+  // each a source node link_source[k] and its factor link_factor[k] (F per unit flux leaving the
+  // source node).
+  std::vector<uint64_t> link_begin, link_end;
   std::vector<uint32_t> link_source;
   std::vector<float> link_factor;
   std::vector<double> source_scale;  // per patch: 1 / its total factor (1 if not renormalised)
