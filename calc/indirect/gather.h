@@ -32,6 +32,7 @@ inline constexpr double kGatherLift_m = 1e-6;
 // branches. Thirteen thousand points times a few thousand patches is the largest loop of
 // calc/indirect.
 inline constexpr double kChunkTile = 4.0;
+inline constexpr double kBlockChunks = 4.0;
 struct GatherSet {
   // Entries (patches with flux), structure of arrays, ordered by group and chunk.
   std::vector<double> cx, cy, cz, flux_lm;
@@ -59,9 +60,13 @@ struct GatherSet {
   struct Group {
     size_t begin = 0, end = 0;  // chunks
     Vec3 normal{0.0};
-    double max_offset = 0.0;  // largest normal . centroid over the group
+    double max_offset = 0.0;                // largest normal . centroid over the group
+    size_t block_begin = 0, block_end = 0;  // blocks (clustered rooms; none otherwise)
   };
   std::vector<Chunk> chunks;
+  // Clustered rooms: the chunks of a group in blocks of kBlockChunks x kBlockChunks tiles (a
+  // Chunk whose begin, end are chunks), each with its aggregate, a second level of far sources.
+  std::vector<Chunk> blocks;
   std::vector<Group> groups;
   double cluster_opening = 0.0;  // 0: every patch is gathered by itself
 };
