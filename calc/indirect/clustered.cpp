@@ -124,7 +124,13 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
   ClusteredTransfer T;
   T.begin = mesh.room_begin[room];
   T.n = mesh.room_begin[room + 1] - T.begin;
-  T.opening = cluster_opening(far_ratio);
+  // The quality's opening, or a wider one where its links would not fit kMaxClusteredLinkBytes
+  // (about kLinksPerPatchOpening2 / opening^2 links per patch, with a fifth to spare): reference
+  // on a hall of 250 000 patches would need ~3 000 links per patch at its 0.125.
+  const double fit =
+      std::sqrt(1.2 * kLinksPerPatchOpening2 * static_cast<double>(T.n) *
+                (sizeof(uint32_t) + sizeof(float)) / static_cast<double>(kMaxClusteredLinkBytes));
+  T.opening = std::max(cluster_opening(far_ratio), fit);
   const double far = std::isfinite(far_ratio) ? far_ratio : kClusteredReferenceFarRatio;
   const size_t n = T.n;
   // Faces: runs of consecutive coplanar patches (the mesh lays each face out in one run).

@@ -62,7 +62,9 @@ struct ClusteredTransfer {
   std::vector<float> link_factor;
   std::vector<double> source_scale;  // per patch: 1 / its total factor (1 if not renormalised)
   double max_row_correction = 0.0;   // largest |1 - total factor| before renormalisation
-  double opening = 0.0;              // the acceptance ratio the links were built with
+  // The acceptance ratio the links were built with: cluster_opening(far_ratio), or wider where
+  // that many links would not fit kMaxClusteredLinkBytes (a note says so).
+  double opening = 0.0;
   size_t links() const { return link_source.size(); }
   size_t bytes() const;  // memory of the nodes and links
 };

@@ -28,9 +28,11 @@ inline constexpr size_t kMaxTotalPatches = 100000;
 // instead of a coarser dense mesh. Below it the dense path holds the room at most
 // sqrt(10 000 / 4 000) = 1.6 times coarser than asked, and its results stay exactly as they were.
 inline constexpr size_t kClusteredAbovePatches = kMaxPatchesPerRoom;
-// Patches per clustered room at most: 174 000 patches mesh a 200 x 100 x 6 m hall at 0.5 m; a
-// patch with its tree node, gather entry and ~60 links takes about 1.3 kB, so 250 000 take about
-// 330 MB. Above it the patch size grows to fit, as for the dense budget.
+// Patches per clustered room at most: 174 400 patches mesh a 200 x 100 x 6 m hall at 0.5 m; a
+// patch with its polygon, tree node and gather entry takes about 0.7 kB, and its links 8 bytes
+// each, about 300 at standard (2.4 kB) and 760 at high (6 kB), so 250 000 patches take about
+// 0.8 GB at standard; at high or reference the links' own limit below widens the opening ratio
+// (clustered.h). Above it the patch size grows to fit, as for the dense budget.
 inline constexpr size_t kMaxClusteredPatchesPerRoom = 250000;
 // The links of one clustered room at most (8 bytes each): rooms are solved one after the other
 // and each room's links are freed before the next, as the dense matrices are.
