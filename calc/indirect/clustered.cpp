@@ -1,9 +1,10 @@
 #include "calc/indirect/clustered.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include <tbb/parallel_for.h>
 
