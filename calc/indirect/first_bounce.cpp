@@ -134,6 +134,9 @@ double patch_flux(const Source& src, const Patch& p, const geometry::Visibility*
 // cut into squares of kTile x the run's largest diameter, in the face's own coordinates
 // (origin, u, v), with each patch's coordinates.
 constexpr double kTile = 4.0;
+// A patch whose diameter over its distance from the source is below 0.03 (squared here) takes
+// the point form of its solid angle in tiled_first_bounce.
+constexpr double kPointSolidAngle2 = 0.03 * 0.03;
 struct Tile {
   std::vector<size_t> patches;
   std::vector<double> pu, pv;  // the patches' centroids in (u, v)
@@ -182,9 +185,10 @@ std::vector<Tile> face_tiles(const PatchMesh& mesh, size_t begin, size_t end) {
 // plane sends it nothing (the ceiling, for ceiling-mounted luminaires: no patch is visited). A
 // tile seen under at most 2 max_angle_rad takes the source's intensity at its four corners (in
 // the face's coordinates) and each patch the bilinear interpolation at its centroid, times the
-// patch's exact solid angle: four intensity look-ups for the tile's 16 patches, with an error of
-// second order in the tile's angular size (the interpolation's), as the one-piece rule of
-// patch_flux has in the patch's. Other tiles: patch_flux per patch (one piece where it is far).
+// patch's solid angle (exact, or A h / d^3 for a patch seen under less than 0.03 rad): four
+// intensity look-ups for the tile's 16 patches, with an error of second order in the tile's
+// angular size (the interpolation's), as the one-piece rule of patch_flux has in the patch's.
+// Other tiles: patch_flux per patch (one piece where it is far).
 void tiled_first_bounce(const std::vector<Source>& sources, const PatchMesh& mesh, size_t begin,
                         size_t end, double max_angle_rad, std::vector<double>& incident_flux_lm) {
   const std::vector<Tile> tiles = face_tiles(mesh, begin, end);
@@ -212,12 +216,20 @@ void tiled_first_bounce(const std::vector<Source>& sources, const PatchMesh& mes
       const double du = tile.u1 - tile.u0, dv = tile.v1 - tile.v0;
       for (size_t k = 0; k < count; ++k) {
         const Patch& p = mesh.patches[tile.patches[k]];
-        if (!(glm::dot(p.normal, s - p.centroid) > kMinPlaneDistance_m)) continue;
+        const double h = glm::dot(p.normal, s - p.centroid);
+        if (!(h > kMinPlaneDistance_m)) continue;
         const double a = du > 0.0 ? (tile.pu[k] - tile.u0) / du : 0.0;
         const double b = dv > 0.0 ? (tile.pv[k] - tile.v0) / dv : 0.0;
         const double i =
             (1 - a) * (1 - b) * i00 + a * (1 - b) * i10 + (1 - a) * b * i01 + a * b * i11;
-        sum[k] += i * convex_polygon_solid_angle_from(s, p.polygon);
+        const Vec3 r = p.centroid - s;
+        const double d2 = glm::dot(r, r);
+        // Seen under less than kPointSolidAngle: the solid angle A h / d^3 (no atan2), whose
+        // relative error is about (D / d)^2 / 8, 1.1e-4 at the switch; closer, the exact one.
+        const double omega = p.diameter_m * p.diameter_m < kPointSolidAngle2 * d2
+                                 ? p.area_m2 * h / (d2 * std::sqrt(d2))
+                                 : convex_polygon_solid_angle_from(s, p.polygon);
+        sum[k] += i * omega;
       }
     }
     for (size_t k = 0; k < count; ++k) incident_flux_lm[tile.patches[k]] = sum[k];
