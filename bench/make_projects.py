@@ -6,6 +6,7 @@ they are generated in seconds). Usage: make_projects.py OUT_DIR
   hall/project.json     a 100 x 50 x 6 m hall, 560 panels (28 x 20), workplane at 0.5 m spacing
   grid1m/project.json   a 100 x 100 m room, 25 panels, one 1000 x 1000 point workplane (10^6),
                         draft quality, no reflected light: the cost of the outputs themselves
+  hall200/project.json  a 200 x 100 x 6 m hall, 2240 panels (56 x 40), workplane at 0.5 m spacing
   far1000/project.json  a 100 x 50 m hall, 1000 panels (40 x 25), one 200 x 50 point plane (10^4),
                         draft quality, no reflected light: 10^7 far-field pairs, the kernel's cost
   panel40k/project.json a 4 x 4 x 3 m black room (reflectances 0), one 0.6 x 0.6 m panel from an
@@ -64,6 +65,11 @@ def main():
     write(out, "hall", "Benchmark hall 100 x 50 x 6 m, 560 panels", standard,
           [room("hall", 0, 0, 100.0, 50.0, 6.0)],
           [panels("panels", [100 / 56, 50 / 40, 6.0], [28, 20], [100 / 28, 50 / 20])],
+          [{"name": "workplane", "workplane": {"room": "hall", "height": 0.75, "border": 0.5}, "spacing": 0.5}])
+
+    write(out, "hall200", "Benchmark hall 200 x 100 x 6 m, 2240 panels", standard,
+          [room("hall", 0, 0, 200.0, 100.0, 6.0)],
+          [panels("panels", [100 / 56, 50 / 40, 6.0], [56, 40], [100 / 28, 50 / 20])],
           [{"name": "workplane", "workplane": {"room": "hall", "height": 0.75, "border": 0.5}, "spacing": 0.5}])
 
     draft = dict(standard, quality="draft", indirect="off")

@@ -9,6 +9,7 @@
 #include "calc/direct_reach.h"
 #include "calc/far_field_bounds.h"
 #include "calc/glare/ugr.h"
+#include "calc/indirect/clustered.h"
 #include "calc/indirect/indirect.h"
 #include "calc/indirect/patches.h"
 #include "calc/intensity_lookup.h"
@@ -88,13 +89,19 @@ constexpr int kMaxPatchRefinements = 2;
 // the rooms' areas), a pair counting kVisibilityPairCost times where the room needs visibility
 // tests (not convex, or with obstacles: each pair then traces rays). 1728 patches in the convex
 // office at 0.25 m are 3 million pairs, a tenth of a second; the L-shaped example's 3072 patches
-// at 0.25 m with visibility would be 75 million, tens of seconds.
+// at 0.25 m with visibility would be 75 million, tens of seconds. A room with the clustered
+// transfer (calc/indirect/clustered.h) counts its links instead.
 constexpr double kRefineWorkLimit = 1e7;
 constexpr double kVisibilityPairCost = 8.0;
 double refine_work(const Scene& scene, double patch_size_m) {
   double work = 0.0;
   for (const auto& room : scene.rooms) {
     const double n = indirect::room_surface_area(room) / (patch_size_m * patch_size_m);
+    if (indirect::use_clustered_transfer(room, patch_size_m)) {
+      // A room with the clustered transfer: its links, not n^2 pairs.
+      work += n * indirect::kClusteredLinksPerPatch;
+      continue;
+    }
     const bool traced = !indirect::outline_is_convex(room) || !room.obstacles.empty();
     work += n * n * (traced ? kVisibilityPairCost : 1.0);
   }

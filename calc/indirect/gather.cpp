@@ -16,8 +16,9 @@ using geometry::box_min_height;
 
 GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
                           const std::vector<double>& exitant_flux_lm, double far_ratio,
-                          const SubcellExitance* cells) {
+                          const SubcellExitance* cells, double cluster_opening) {
   GatherSet set;
+  set.cluster_opening = cluster_opening;
   // Runs of emitting patches with the same normal.
   std::vector<std::pair<size_t, size_t>> runs;  // [first, last) into `emitting`
   std::vector<size_t> emitting;
@@ -44,9 +45,13 @@ GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
     // Tiles of kChunkTile x the largest diameter: sort the run by tile (stable, so the order
     // within a tile is the mesh's).
     const double tile = std::max(kChunkTile * dmax, 1e-9);
+    // Clustered rooms: the tiles ordered by block (kBlockChunks tiles a side) first, so that a
+    // block's chunks are consecutive; otherwise the block key is 0 and the order the tiles'.
+    const double block = cluster_opening > 0.0 ? kBlockChunks * tile : 0.0;
     auto key = [&](size_t j) {
       const Vec3 t = glm::floor((mesh.patches[j].centroid - lo) / tile);
-      return std::array<double, 3>{t.x, t.y, t.z};
+      const Vec3 b = block > 0.0 ? glm::floor((mesh.patches[j].centroid - lo) / block) : Vec3(0.0);
+      return std::array<double, 6>{b.x, b.y, b.z, t.x, t.y, t.z};
     };
     std::vector<size_t> order(emitting.begin() + first, emitting.begin() + last);
     std::stable_sort(order.begin(), order.end(),
@@ -81,6 +86,43 @@ GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
       for (const auto& v : p.polygon) c.lo = glm::min(c.lo, v), c.hi = glm::max(c.hi, v);
       c.max_near_d2 = std::max(c.max_near_d2, limit * limit);
       c.max_diameter_m = std::max(c.max_diameter_m, p.diameter_m);
+      c.flux_lm += exitant_flux_lm[j];
+      c.flux_centroid += exitant_flux_lm[j] * p.centroid;
+    }
+    for (size_t c = g.begin; c < set.chunks.size(); ++c) {
+      GatherSet::Chunk& ch = set.chunks[c];
+      ch.flux_centroid /= ch.flux_lm;  // every entry has flux > 0
+      ch.diagonal2_m2 = glm::dot(ch.hi - ch.lo, ch.hi - ch.lo);
+    }
+    g.block_begin = g.block_end = set.blocks.size();
+    if (block > 0.0) {
+      std::array<double, 6> previous{};
+      for (size_t c = g.begin; c < set.chunks.size(); ++c) {
+        const GatherSet::Chunk& ch = set.chunks[c];
+        const auto k = key(set.patch[ch.begin]);
+        if (c == g.begin || k[0] != previous[0] || k[1] != previous[1] || k[2] != previous[2]) {
+          GatherSet::Chunk b;
+          b.begin = b.end = c;
+          b.lo = b.clo = Vec3(std::numeric_limits<double>::infinity());
+          b.hi = b.chi = Vec3(-std::numeric_limits<double>::infinity());
+          set.blocks.push_back(b);
+        }
+        previous = k;
+        GatherSet::Chunk& b = set.blocks.back();
+        b.end = c + 1;
+        b.lo = glm::min(b.lo, ch.lo), b.hi = glm::max(b.hi, ch.hi);
+        b.clo = glm::min(b.clo, ch.clo), b.chi = glm::max(b.chi, ch.chi);
+        b.max_near_d2 = std::max(b.max_near_d2, ch.max_near_d2);
+        b.max_diameter_m = std::max(b.max_diameter_m, ch.max_diameter_m);
+        b.flux_lm += ch.flux_lm;
+        b.flux_centroid += ch.flux_lm * ch.flux_centroid;
+      }
+      for (size_t b = g.block_begin; b < set.blocks.size(); ++b) {
+        GatherSet::Chunk& bl = set.blocks[b];
+        bl.flux_centroid /= bl.flux_lm;
+        bl.diagonal2_m2 = glm::dot(bl.hi - bl.lo, bl.hi - bl.lo);
+      }
+      g.block_end = set.blocks.size();
     }
     g.end = set.chunks.size();
     set.groups.push_back(g);
@@ -139,56 +181,98 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
   const double* cy = set.cy.data();
   const double* cz = set.cz.data();
   const double* flux = set.flux_lm.data();
+  const double opening2 = set.cluster_opening * set.cluster_opening;
   for (const auto& g : set.groups) {
     // x behind (or on) the plane of every patch of the group: each term is skipped below.
     if (!(glm::dot(g.normal, x) - g.max_offset > kGatherPlaneDistance_m)) continue;
     const Vec3 m = g.normal;
-    for (size_t c = g.begin; c < g.end; ++c) {
-      const GatherSet::Chunk& ch = set.chunks[c];
-      // Every vertex behind the receiver's tangent plane: so are the centroids and quarter
-      // centroids, and the kernel and the horizon-clipped polygon give 0.
-      if (box_max_height(n, x, ch.lo, ch.hi) < 0.0) continue;
-      if (!(box_distance2(x, ch.clo, ch.chi) < outer2)) continue;
-      if (!visibility && box_min_height(n, x, ch.clo, ch.chi) > 0.0 &&
-          box_distance2(x, ch.clo, ch.chi) > ch.max_near_d2) {
-        // Far kernel for the whole chunk: every centroid in front of the receiver (n . dx < 0),
-        // the receiver in front of every patch (group test), farther than its near distance.
-        double sum = 0.0;
-        for (size_t k = ch.begin; k < ch.end; ++k) {
-          const double dx = x.x - cx[k], dy = x.y - cy[k], dz = x.z - cz[k];
-          const double hm = m.x * dx + m.y * dy + m.z * dz;
-          const double hn = -(n.x * dx + n.y * dy + n.z * dz);
-          const double d2 = dx * dx + dy * dy + dz * dz;
-          if (d2 >= inner2 && d2 < outer2) sum += flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
-        }
-        far += sum;
-        continue;
-      }
-      for (size_t k = ch.begin; k < ch.end; ++k) {
-        const Vec3 dx = x - Vec3(cx[k], cy[k], cz[k]);
-        const double hm = glm::dot(m, dx);
-        if (!(hm > kGatherPlaneDistance_m)) continue;
-        const double d2 = glm::dot(dx, dx);
-        if (d2 < inner2 || !(d2 < outer2)) continue;
-        if (d2 > set.near_d2[k] && !visibility) {
-          // point_kernel_form_factor x exitance: flux x the kernel / pi (the pi once, below)
+    // Blocks of chunks (clustered rooms): a far block seen under less than the opening ratio is
+    // one source; otherwise its chunks, as below. Without blocks: one range, every chunk.
+    const bool by_block = g.block_end > g.block_begin;
+    for (size_t b = g.block_begin; b < (by_block ? g.block_end : g.block_begin + 1); ++b) {
+      size_t c_begin = g.begin, c_end = g.end;
+      if (by_block) {
+        const GatherSet::Chunk& bl = set.blocks[b];
+        c_begin = bl.begin, c_end = bl.end;
+        if (box_max_height(n, x, bl.lo, bl.hi) < 0.0) continue;
+        if (!visibility && box_min_height(n, x, bl.clo, bl.chi) > 0.0 &&
+            box_distance2(x, bl.clo, bl.chi) > bl.max_near_d2 &&
+            bl.diagonal2_m2 < opening2 * box_distance2(x, bl.lo, bl.hi)) {
+          const Vec3 far_corner = glm::max(glm::abs(x - bl.clo), glm::abs(x - bl.chi));
+          const Vec3 dx = x - bl.flux_centroid;
           const double hn = -glm::dot(n, dx);
-          if (hn > 0.0) far += flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
+          if (box_max_height(n, x, bl.lo, bl.hi) - box_min_height(n, x, bl.lo, bl.hi) <
+                  set.cluster_opening * hn &&
+              box_distance2(x, bl.clo, bl.chi) >= inner2 &&
+              glm::dot(far_corner, far_corner) < outer2) {
+            far += bl.flux_lm * point_kernel_pi_per_m2(glm::dot(m, dx), hn, glm::dot(dx, dx));
+            continue;
+          }
+        }
+      }
+      for (size_t c = c_begin; c < c_end; ++c) {
+        const GatherSet::Chunk& ch = set.chunks[c];
+        // Every vertex behind the receiver's tangent plane: so are the centroids and quarter
+        // centroids, and the kernel and the horizon-clipped polygon give 0.
+        if (box_max_height(n, x, ch.lo, ch.hi) < 0.0) continue;
+        if (!(box_distance2(x, ch.clo, ch.chi) < outer2)) continue;
+        if (!visibility && box_min_height(n, x, ch.clo, ch.chi) > 0.0 &&
+            box_distance2(x, ch.clo, ch.chi) > ch.max_near_d2) {
+          // Far kernel for the whole chunk: every centroid in front of the receiver (n . dx < 0),
+          // the receiver in front of every patch (group test), farther than its near distance.
+          if (opening2 > 0.0 && ch.diagonal2_m2 < opening2 * box_distance2(x, ch.lo, ch.hi)) {
+            // Seen under less than the opening ratio, and its height over the receiver's plane
+            // varying by less than that ratio (a wall chunk seen from a workplane point): the
+            // chunk as one source, when the whole chunk lies inside the band.
+            const Vec3 far_corner = glm::max(glm::abs(x - ch.clo), glm::abs(x - ch.chi));
+            const Vec3 dx = x - ch.flux_centroid;
+            const double hn = -glm::dot(n, dx);
+            if (box_max_height(n, x, ch.lo, ch.hi) - box_min_height(n, x, ch.lo, ch.hi) <
+                    set.cluster_opening * hn &&
+                box_distance2(x, ch.clo, ch.chi) >= inner2 &&
+                glm::dot(far_corner, far_corner) < outer2) {
+              far += ch.flux_lm * point_kernel_pi_per_m2(glm::dot(m, dx), hn, glm::dot(dx, dx));
+              continue;
+            }
+          }
+          double sum = 0.0;
+          for (size_t k = ch.begin; k < ch.end; ++k) {
+            const double dx = x.x - cx[k], dy = x.y - cy[k], dz = x.z - cz[k];
+            const double hm = m.x * dx + m.y * dy + m.z * dz;
+            const double hn = -(n.x * dx + n.y * dy + n.z * dz);
+            const double d2 = dx * dx + dy * dy + dz * dz;
+            if (d2 >= inner2 && d2 < outer2) sum += flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
+          }
+          far += sum;
           continue;
         }
-        const Patch& p = mesh.patches[set.patch[k]];
-        if (set.first_cell[k] >= 0 &&
-            d2 < kSubcellReach * kSubcellReach * p.diameter_m * p.diameter_m) {
-          double e = gather_cells(x, n, p, &set.cell_exitance_lm_m2[set.first_cell[k]], far_ratio);
-          if (e > 0.0 && visibility)
-            e *= visible_fraction(visibility, x + n * kGatherLift_m, p, kGatherLift_m);
-          near += e;
-          continue;
+        for (size_t k = ch.begin; k < ch.end; ++k) {
+          const Vec3 dx = x - Vec3(cx[k], cy[k], cz[k]);
+          const double hm = glm::dot(m, dx);
+          if (!(hm > kGatherPlaneDistance_m)) continue;
+          const double d2 = glm::dot(dx, dx);
+          if (d2 < inner2 || !(d2 < outer2)) continue;
+          if (d2 > set.near_d2[k] && !visibility) {
+            // point_kernel_form_factor x exitance: flux x the kernel / pi (the pi once, below)
+            const double hn = -glm::dot(n, dx);
+            if (hn > 0.0) far += flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
+            continue;
+          }
+          const Patch& p = mesh.patches[set.patch[k]];
+          if (set.first_cell[k] >= 0 &&
+              d2 < kSubcellReach * kSubcellReach * p.diameter_m * p.diameter_m) {
+            double e =
+                gather_cells(x, n, p, &set.cell_exitance_lm_m2[set.first_cell[k]], far_ratio);
+            if (e > 0.0 && visibility)
+              e *= visible_fraction(visibility, x + n * kGatherLift_m, p, kGatherLift_m);
+            near += e;
+            continue;
+          }
+          double f = gather_form_factor(x, n, p, far_ratio, d2 > set.near_d2[k]);
+          if (f > 0.0 && visibility)
+            f *= visible_fraction(visibility, x + n * kGatherLift_m, p, kGatherLift_m);
+          near += flux[k] / p.area_m2 * f;
         }
-        double f = gather_form_factor(x, n, p, far_ratio, d2 > set.near_d2[k]);
-        if (f > 0.0 && visibility)
-          f *= visible_fraction(visibility, x + n * kGatherLift_m, p, kGatherLift_m);
-        near += flux[k] / p.area_m2 * f;
       }
     }
   }

@@ -32,6 +32,7 @@ inline constexpr double kGatherLift_m = 1e-6;
 // branches. Thirteen thousand points times a few thousand patches is the largest loop of
 // calc/indirect.
 inline constexpr double kChunkTile = 4.0;
+inline constexpr double kBlockChunks = 4.0;
 struct GatherSet {
   // Entries (patches with flux), structure of arrays, ordered by group and chunk.
   std::vector<double> cx, cy, cz, flux_lm;
@@ -48,21 +49,34 @@ struct GatherSet {
     Vec3 clo{0.0}, chi{0.0};    // bounding box of the centroids
     double max_near_d2 = 0.0;
     double max_diameter_m = 0.0;
+    // The chunk as one source (clustered rooms, cluster_opening > 0): its flux at its
+    // flux-weighted centroid, taken when the chunk's diagonal is below cluster_opening x its
+    // distance from the receiver. The flux-weighted centroid makes the first-order term of the
+    // kernel's expansion vanish, so the error is of second order, as for one far patch.
+    double flux_lm = 0.0;
+    Vec3 flux_centroid{0.0};
+    double diagonal2_m2 = 0.0;  // squared diagonal of the vertex box
   };
   struct Group {
     size_t begin = 0, end = 0;  // chunks
     Vec3 normal{0.0};
-    double max_offset = 0.0;  // largest normal . centroid over the group
+    double max_offset = 0.0;                // largest normal . centroid over the group
+    size_t block_begin = 0, block_end = 0;  // blocks (clustered rooms; none otherwise)
   };
   std::vector<Chunk> chunks;
+  // Clustered rooms: the chunks of a group in blocks of kBlockChunks x kBlockChunks tiles (a
+  // Chunk whose begin, end are chunks), each with its aggregate, a second level of far sources.
+  std::vector<Chunk> blocks;
   std::vector<Group> groups;
+  double cluster_opening = 0.0;  // 0: every patch is gathered by itself
 };
 
 // The patches [begin, end) of one room with exitant flux > 0; `cells` (may be null) gives the
-// cells of refined patches.
+// cells of refined patches. `cluster_opening` > 0 (rooms with the clustered transfer,
+// clustered.h): a far chunk seen under less than this ratio is gathered as one source.
 GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
                           const std::vector<double>& exitant_flux_lm, double far_ratio,
-                          const SubcellExitance* cells = nullptr);
+                          const SubcellExitance* cells = nullptr, double cluster_opening = 0.0);
 
 // The patches a gather takes: those whose centroids lie at a distance in [inner_m, outer_m) from
 // the receiver (all by default).

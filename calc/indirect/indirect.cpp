@@ -15,6 +15,7 @@
 #include <tbb/parallel_for.h>
 
 #include "calc/direct.h"
+#include "calc/indirect/clustered.h"
 #include "calc/indirect/emitter_cells.h"
 #include "calc/indirect/first_bounce.h"
 #include "calc/indirect/gather.h"
@@ -70,52 +71,91 @@ double quality_tolerance(Quality q) {
   return 1e-3;
 }
 
+// Per room: whether it is solved with the clustered transfer (clustered.h), decided once at the
+// requested size, and its patch budget.
+struct RoomBudgets {
+  std::vector<char> clustered;
+  std::vector<size_t> budget;
+};
+RoomBudgets room_budgets(const Scene& scene, const IndirectOptions& o, double size) {
+  RoomBudgets b;
+  for (const auto& room : scene.rooms) {
+    const bool c = use_clustered_transfer(room, size);
+    b.clustered.push_back(c);
+    b.budget.push_back(c ? kMaxClusteredPatchesPerRoom : o.max_patches_per_room);
+  }
+  return b;
+}
+
+// The room farthest over its budget and the totals of the dense and the clustered rooms against
+// their limits (kMaxTotalPatches, kMaxClusteredTotalPatches), from per-room patch counts.
+struct BudgetUse {
+  double worst_ratio = 0.0, worst = 0.0;  // count / budget, count of the worst room
+  int worst_room = 0;
+  double total_ratio = 0.0, total = 0.0;  // the class of rooms farther over its limit
+  size_t limit = kMaxTotalPatches;
+};
+BudgetUse budget_use(const RoomBudgets& b, const std::vector<double>& count) {
+  BudgetUse u;
+  double dense = 0.0, clustered = 0.0;
+  for (size_t r = 0; r < count.size(); ++r) {
+    const double ratio = count[r] / static_cast<double>(b.budget[r]);
+    if (ratio > u.worst_ratio) u.worst_ratio = ratio, u.worst = count[r], u.worst_room = int(r);
+    (b.clustered[r] ? clustered : dense) += count[r];
+  }
+  const double dense_ratio = dense / static_cast<double>(kMaxTotalPatches);
+  const double clustered_ratio = clustered / static_cast<double>(kMaxClusteredTotalPatches);
+  if (clustered_ratio > dense_ratio) {
+    u.total_ratio = clustered_ratio, u.total = clustered, u.limit = kMaxClusteredTotalPatches;
+  } else {
+    u.total_ratio = dense_ratio, u.total = dense, u.limit = kMaxTotalPatches;
+  }
+  return u;
+}
+std::string total_limit_text(size_t limit) {
+  return std::to_string(limit) + " patches in all " +
+         (limit == kMaxTotalPatches ? "rooms" : "clustered rooms");
+}
+
 // The patch size at which the rooms' patch counts are estimated (surface area / size^2, the
 // count of a box room) to fit the per-room budget and kMaxTotalPatches: checked before the mesh
 // is built, so that a huge room is never meshed at a fine size first (1 km^2 at 0.5 m would be
 // 8 million patches, gigabytes, before the budget is checked). With an explicit size an excess
 // is an error naming the room or the total.
-double size_within_limits(const Scene& scene, const IndirectOptions& o, double size,
-                          std::vector<std::string>& notes) {
-  double total_area = 0.0, worst_area = 0.0;
-  int worst_room = 0;
-  for (size_t r = 0; r < scene.rooms.size(); ++r) {
-    const double a = room_surface_area(scene.rooms[r]);
-    total_area += a;
-    if (a > worst_area) worst_area = a, worst_room = static_cast<int>(r);
-  }
-  const double worst = worst_area / (size * size), total = total_area / (size * size);
-  const double budget = static_cast<double>(o.max_patches_per_room);
-  const double limit = static_cast<double>(kMaxTotalPatches);
-  if (!(worst > budget) && !(total > limit)) return size;
+double size_within_limits(const Scene& scene, const IndirectOptions& o, const RoomBudgets& b,
+                          double size, std::vector<std::string>& notes) {
+  std::vector<double> count;
+  for (const auto& room : scene.rooms) count.push_back(room_surface_area(room) / (size * size));
+  const BudgetUse u = budget_use(b, count);
+  if (!(u.worst_ratio > 1.0) && !(u.total_ratio > 1.0)) return size;
+  const size_t budget = b.budget[u.worst_room];
   if (o.patch_size_m > 0.0) {
-    if (worst > budget)
-      throw InputError("room '" + scene.rooms[worst_room].name + "': " +
-                       std::to_string(std::llround(worst)) + " patches at a patch size of " +
-                       format_double("%.3g", size) + " m exceed the budget of " +
-                       std::to_string(o.max_patches_per_room) + " patches per room");
-    throw InputError(std::to_string(std::llround(total)) + " patches in " +
+    if (u.worst_ratio > 1.0)
+      throw InputError("room '" + scene.rooms[u.worst_room].name +
+                       "': " + std::to_string(std::llround(u.worst)) +
+                       " patches at a patch size of " + format_double("%.3g", size) +
+                       " m exceed the budget of " + std::to_string(budget) + " patches per room");
+    throw InputError(std::to_string(std::llround(u.total)) + " patches in " +
                      std::to_string(scene.rooms.size()) + " rooms at a patch size of " +
                      format_double("%.3g", size) + " m exceed the limit of " +
-                     std::to_string(kMaxTotalPatches) + " patches in all rooms");
+                     total_limit_text(u.limit));
   }
-  const double grow = std::sqrt(std::max(worst / budget, total / limit));
+  const double grow = std::sqrt(std::max(u.worst_ratio, u.total_ratio));
   notes.push_back(
-      (worst / budget >= total / limit
-           ? "room '" + scene.rooms[worst_room].name + "': patch size raised from "
+      (u.worst_ratio >= u.total_ratio
+           ? "room '" + scene.rooms[u.worst_room].name + "': patch size raised from "
            : "all " + std::to_string(scene.rooms.size()) + " rooms: patch size raised from ") +
       format_double("%.3g", size) + " m to " + format_double("%.3g", size * grow) +
       " m to stay within " +
-      (worst / budget >= total / limit
-           ? std::to_string(o.max_patches_per_room) + " patches per room"
-           : std::to_string(kMaxTotalPatches) + " patches in all rooms"));
+      (u.worst_ratio >= u.total_ratio ? std::to_string(budget) + " patches per room"
+                                      : total_limit_text(u.limit)));
   return size * grow;
 }
 
 // Rooms' patch mesh at the requested size, coarsened to fit the budget when the size was not
 // given explicitly.
-PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, double size,
-                             std::vector<std::string>& notes) {
+PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, const RoomBudgets& budgets_in,
+                             double size, std::vector<std::string>& notes) {
   if (o.max_patches_per_room > kMaxPatchesPerRoom) {
     notes.push_back("indirect: the budget of " + std::to_string(o.max_patches_per_room) +
                     " patches per room is above the limit of " +
@@ -124,53 +164,55 @@ PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, double size,
                     std::to_string(kMaxPatchesPerRoom) + " used");
     o.max_patches_per_room = kMaxPatchesPerRoom;
   }
-  size = size_within_limits(scene, o, size, notes);
-  size_t previous_worst = 0;
+  RoomBudgets b = budgets_in;
+  for (size_t r = 0; r < b.budget.size(); ++r)
+    if (!b.clustered[r]) b.budget[r] = o.max_patches_per_room;
+  size = size_within_limits(scene, o, b, size, notes);
+  double previous_worst = 0;
   for (int attempt = 0;; ++attempt) {
     PatchMesh mesh = build_patch_mesh(scene, size);
-    size_t worst = 0;
-    int worst_room = 0;
-    for (size_t r = 0; r + 1 < mesh.room_begin.size(); ++r) {
-      const size_t c = mesh.room_begin[r + 1] - mesh.room_begin[r];
-      if (c > worst) worst = c, worst_room = static_cast<int>(r);
-    }
-    const size_t total = mesh.patches.size();
-    if (worst <= o.max_patches_per_room && total <= kMaxTotalPatches) return mesh;
+    std::vector<double> count;
+    for (size_t r = 0; r + 1 < mesh.room_begin.size(); ++r)
+      count.push_back(static_cast<double>(mesh.room_begin[r + 1] - mesh.room_begin[r]));
+    const BudgetUse u = budget_use(b, count);
+    const size_t worst = static_cast<size_t>(u.worst);
+    const int worst_room = u.worst_room;
+    const size_t budget = b.budget[worst_room];
+    if (!(u.worst_ratio > 1.0) && !(u.total_ratio > 1.0)) return mesh;
     // Every face is at least one patch: once larger patches no longer lower the count, the
     // room's faces alone exceed the budget (thousands of small obstacles).
-    if (attempt > 0 && worst > o.max_patches_per_room && worst >= previous_worst) {
+    if (attempt > 0 && u.worst_ratio > 1.0 && u.worst >= previous_worst) {
       const Room& room = scene.rooms[worst_room];
-      throw InputError("room \"" + room.name + "\": its walls and " +
-                       std::to_string(room.obstacles.size()) + " obstacles have " +
-                       std::to_string(worst) +
-                       " faces, each at least one patch, more than the budget of " +
-                       std::to_string(o.max_patches_per_room) +
-                       " patches per room; use fewer obstacles, or \"indirect\": \"off\"");
+      throw InputError(
+          "room \"" + room.name + "\": its walls and " + std::to_string(room.obstacles.size()) +
+          " obstacles have " + std::to_string(worst) +
+          " faces, each at least one patch, more than the budget of " + std::to_string(budget) +
+          " patches per room; use fewer obstacles, or \"indirect\": \"off\"");
     }
-    previous_worst = worst;
-    if (worst <= o.max_patches_per_room) {
+    previous_worst = u.worst;
+    if (!(u.worst_ratio > 1.0)) {
       // Obstacles and clipped boundary cells beyond the estimate of size_within_limits.
+      const size_t total = static_cast<size_t>(u.total);
       if (o.patch_size_m > 0.0 || attempt > 20)
         throw InputError(std::to_string(total) + " patches in " +
                          std::to_string(scene.rooms.size()) + " rooms at a patch size of " +
                          format_double("%.3g", size) + " m exceed the limit of " +
-                         std::to_string(kMaxTotalPatches) + " patches in all rooms");
-      const double grow = std::sqrt(static_cast<double>(total) / kMaxTotalPatches) * 1.05;
+                         total_limit_text(u.limit));
+      const double grow = std::sqrt(u.total_ratio) * 1.05;
       notes.push_back("all rooms: patch size raised from " + format_double("%.3g", size) +
                       " m to " + format_double("%.3g", size * grow) + " m to stay within " +
-                      std::to_string(kMaxTotalPatches) + " patches in all rooms");
+                      total_limit_text(u.limit));
       size *= grow;
       continue;
     }
     if (o.patch_size_m > 0.0 || attempt > 20)
       throw InputError("room '" + scene.rooms[worst_room].name + "': " + std::to_string(worst) +
                        " patches at a patch size of " + format_double("%.3g", size) +
-                       " m exceed the budget of " + std::to_string(o.max_patches_per_room) +
-                       " patches per room");
-    const double grow = std::sqrt(static_cast<double>(worst) / o.max_patches_per_room) * 1.05;
+                       " m exceed the budget of " + std::to_string(budget) + " patches per room");
+    const double grow = std::sqrt(u.worst_ratio) * 1.05;
     notes.push_back("room '" + scene.rooms[worst_room].name + "': patch size raised from " +
                     format_double("%.3g", size) + " m to " + format_double("%.3g", size * grow) +
-                    " m to stay within " + std::to_string(o.max_patches_per_room) + " patches");
+                    " m to stay within " + std::to_string(budget) + " patches");
     size *= grow;
   }
 }
@@ -262,7 +304,8 @@ IndirectResult compute_indirect(const Scene& scene,
                       : options.quality == Quality::draft ? 1
                                                           : 0;
 
-  const PatchMesh mesh = mesh_within_budget(scene, options, size, res.notes);
+  const RoomBudgets budgets = room_budgets(scene, options, size);
+  const PatchMesh mesh = mesh_within_budget(scene, options, budgets, size, res.notes);
   res.patches = mesh.patches.size();
   res.patch_size_m = mesh.patch_size_m;
 
@@ -278,9 +321,18 @@ IndirectResult compute_indirect(const Scene& scene,
     for (size_t r = 0; r < scene.rooms.size(); ++r)
       room_visibility[r] = outline_is_convex(scene.rooms[r]) ? &*obstacles_only : vis;
   }
+  // A clustered room is convex without obstacles: nothing blocks light inside it. Its far ratio
+  // is the quality's, or kClusteredReferenceFarRatio where that is infinite (reference): an
+  // always-exact gather or transfer over 10^5 patches is what clustering avoids.
+  std::vector<double> room_far(scene.rooms.size(), far_ratio);
+  for (size_t r = 0; r < scene.rooms.size(); ++r)
+    if (budgets.clustered[r]) {
+      room_visibility[r] = nullptr;
+      if (!std::isfinite(far_ratio)) room_far[r] = kClusteredReferenceFarRatio;
+    }
 
   const FirstBounce fb = first_bounce(scene, mesh, room_visibility, 0.08, &options.luminous_flux_lm,
-                                      &options.intensity_lookup);
+                                      &options.intensity_lookup, &budgets.clustered);
   for (const auto& n : fb.notes) res.notes.push_back(n);
   res.vpls = fb.vpl_count;
   res.emitted_flux_lm = fb.emitted_flux_lm;
@@ -306,6 +358,20 @@ IndirectResult compute_indirect(const Scene& scene,
       FormFactorMatrix none;
       none.n = end - begin;
       sol = solve_radiosity(none, rho, incident, 1, tol);
+    } else if (budgets.clustered[r]) {
+      const ClusteredTransfer T = clustered_transfer(mesh, static_cast<int>(r), room_far[r]);
+      res.max_row_correction = std::max(res.max_row_correction, T.max_row_correction);
+      if (T.opening > cluster_opening(room_far[r]))
+        res.notes.push_back("room '" + scene.rooms[r].name + "': clustered transfer with the " +
+                            "opening ratio " + format_double("%.3g", T.opening) + " instead of " +
+                            format_double("%.3g", cluster_opening(room_far[r])) +
+                            ": the links of " + std::to_string(T.n) +
+                            " patches at the quality's ratio would exceed " +
+                            std::to_string(kMaxClusteredLinkBytes / kBytesPerMegabyte) + " MB");
+      res.clustered_rooms += 1;
+      res.clustered_links += T.links();
+      res.clustered_bytes = std::max(res.clustered_bytes, T.bytes());
+      sol = solve_radiosity(T, rho, incident, bounces, tol);
     } else {
       const FormFactorMatrix F =
           form_factors(mesh, static_cast<int>(r), room_visibility[r], far_ratio);
@@ -337,7 +403,8 @@ IndirectResult compute_indirect(const Scene& scene,
   std::vector<GatherSet> gather_sets;
   for (size_t r = 0; r < scene.rooms.size(); ++r)
     gather_sets.push_back(
-        make_gather_set(mesh, mesh.room_begin[r], mesh.room_begin[r + 1], exitant, far_ratio));
+        make_gather_set(mesh, mesh.room_begin[r], mesh.room_begin[r + 1], exitant, room_far[r],
+                        nullptr, budgets.clustered[r] ? cluster_opening(room_far[r]) : 0.0));
 
   // Patches a receiver comes close to, refined into cells (subcells.h); not at draft, which
   // promises no accuracy.
@@ -355,7 +422,7 @@ IndirectResult compute_indirect(const Scene& scene,
     if (!cells.mesh.patches.empty()) {
       const FirstBounce cell_fb =
           first_bounce(scene, cells.mesh, room_visibility, 0.08, &options.luminous_flux_lm,
-                       &options.intensity_lookup);
+                       &options.intensity_lookup, &budgets.clustered);
       std::vector<double> cell_indirect(cells.mesh.patches.size(), 0.0);
       // Near patches cell by cell; the far ones, whose light varies smoothly over a patch, at
       // the four corner cells of each patch, interpolated bilinearly to the others (subcells.h).
@@ -367,8 +434,8 @@ IndirectResult compute_indirect(const Scene& scene,
         const auto gather = [&](size_t c, const GatherBand& band) {
           const Patch& q = cells.mesh.patches[c];
           return gather_set_point(mesh, gather_sets[q.room],
-                                  q.centroid + q.normal * kReceiverInset_m, q.normal, far_ratio,
-                                  room_visibility[q.room], band);
+                                  q.centroid + q.normal * kReceiverInset_m, q.normal,
+                                  room_far[q.room], room_visibility[q.room], band);
         };
         const int last = kPerSide - 1;
         const double f00 = gather(c0, far_band), f10 = gather(c0 + last * kPerSide, far_band);
@@ -386,8 +453,9 @@ IndirectResult compute_indirect(const Scene& scene,
           cell_exitance(mesh, cells, exitant, cell_fb.incident_flux_lm, cell_indirect);
       res.refined_patches = sub.refined_patches;
       for (size_t r = 0; r < scene.rooms.size(); ++r)
-        gather_sets[r] = make_gather_set(mesh, mesh.room_begin[r], mesh.room_begin[r + 1], exitant,
-                                         far_ratio, &sub);
+        gather_sets[r] =
+            make_gather_set(mesh, mesh.room_begin[r], mesh.room_begin[r + 1], exitant, room_far[r],
+                            &sub, budgets.clustered[r] ? cluster_opening(room_far[r]) : 0.0);
     }
   }
 
@@ -399,8 +467,8 @@ IndirectResult compute_indirect(const Scene& scene,
     tbb::parallel_for(size_t(0), out.size(), [&](size_t i) {
       const Receiver& rc = receivers[s][i];
       if (rc.room < 0) return;
-      out[i] = gather_set_point(mesh, gather_sets[rc.room], rc.x, surfaces[s].normals[i], far_ratio,
-                                room_visibility[rc.room]);
+      out[i] = gather_set_point(mesh, gather_sets[rc.room], rc.x, surfaces[s].normals[i],
+                                room_far[rc.room], room_visibility[rc.room]);
     });
   }
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -425,6 +493,10 @@ IndirectResult compute_indirect(const Scene& scene,
       (res.emitted_flux_lm < res.luminaire_flux_lm * (1.0 - kOutsideFluxFraction)
            ? " (of " + format_double("%.6g", res.luminaire_flux_lm) + " lm from the whole openings)"
            : std::string()) +
+      (res.clustered_rooms ? "; clustered transfer (" + std::to_string(res.clustered_rooms) +
+                                 " room" + (res.clustered_rooms == 1 ? "" : "s") + ", " +
+                                 std::to_string(res.clustered_links) + " links)"
+                           : std::string()) +
       (options.visibility ? "; visibility: AABB tree of room and obstacle faces" : "") +
       (obstacle_count ? "; " + std::to_string(obstacle_count) + " obstacle" +
                             (obstacle_count == 1 ? "" : "s") + " reflect and shade"

@@ -72,6 +72,9 @@ struct IndirectResult {
   double received_flux_lm = 0.0;   // direct lumens landing on patches
   double vpl_flux_lm = 0.0;        // sum over VPLs (= sum rho x received)
   double max_row_correction = 0.0;
+  // Rooms solved with the clustered transfer (clustered.h), their links in all and the largest
+  // one's memory (nodes and links).
+  size_t clustered_rooms = 0, clustered_links = 0, clustered_bytes = 0;
   double seconds = 0.0;
 };
 

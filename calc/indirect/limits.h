@@ -22,6 +22,24 @@ inline constexpr size_t kBytesPerMegabyte = 1000000;
 // entries takes about 0.5 kB, so 100 000 patches (25 rooms at the full per-room budget) take
 // about 50 MB beside the one matrix; and the final gather visits every patch of a point's room.
 inline constexpr size_t kMaxTotalPatches = 100000;
+// Rooms where nothing blocks light between patches (a convex outline without obstacles) whose
+// mesh at the requested patch size has more patches than this (the most a dense matrix may ever
+// hold, kMaxPatchesPerRoom) are solved with the clustered transfer (clustered.h) at that size
+// instead of a coarser dense mesh. Below it the dense path holds the room at most
+// sqrt(10 000 / 4 000) = 1.6 times coarser than asked, and its results stay exactly as they were.
+inline constexpr size_t kClusteredAbovePatches = kMaxPatchesPerRoom;
+// Patches per clustered room at most: 174 400 patches mesh a 200 x 100 x 6 m hall at 0.5 m; a
+// patch with its polygon, tree node and gather entry takes about 0.7 kB, and its links 8 bytes
+// each, about 300 at standard (2.4 kB) and 760 at high (6 kB), so 250 000 patches take about
+// 0.8 GB at standard; at high or reference the links' own limit below widens the opening ratio
+// (clustered.h). Above it the patch size grows to fit, as for the dense budget.
+inline constexpr size_t kMaxClusteredPatchesPerRoom = 250000;
+// The links of one clustered room at most (8 bytes each): rooms are solved one after the other
+// and each room's links are freed before the next, as the dense matrices are.
+inline constexpr size_t kMaxClusteredLinkBytes = size_t(1500) * 1000000;
+// Patches in all clustered rooms together at most (the dense rooms count against
+// kMaxTotalPatches): 300 000 patches, about 150 MB with their polygons and gather entries.
+inline constexpr size_t kMaxClusteredTotalPatches = 300000;
 // Reflections at most, explicit (`bounces: N`, also checked by the project loader) or auto: a
 // room of reflectance 1 absorbs nothing and the series never converges, so auto mode stops here
 // and reports the remainder as its residual. 1000 sweeps of the largest matrix take ~5 s.

@@ -241,6 +241,37 @@ RadiosityResult solve_radiosity(const FormFactorMatrix& F, const std::vector<dou
                                 const std::vector<double>& incident_flux_lm, int bounces,
                                 double tolerance, int max_bounces) {
   const size_t n = F.n;
+  std::vector<double> shot(n);  // delta x the per-source renormalisation
+  const auto transfer = [&](const std::vector<double>& delta, std::vector<double>& received) {
+    for (size_t j = 0; j < n; ++j)
+      shot[j] = F.source_scale.empty() ? delta[j] : delta[j] * F.source_scale[j];
+    tbb::parallel_for(size_t(0), n, [&](size_t i) {
+      const float* row = F.gather.data() + i * n;
+      // Entries [zero_begin, zero_end) are 0 (coplanar patches): skipped.
+      const size_t zb = F.zero_begin.empty() ? n : F.zero_begin[i];
+      const size_t ze = F.zero_begin.empty() ? n : F.zero_end[i];
+      received[i] = dot(row, shot.data(), 0, zb) + dot(row, shot.data(), ze, n);
+    });
+  };
+  return solve_bounce_series(n, transfer, reflectance, incident_flux_lm, bounces, tolerance,
+                             max_bounces);
+}
+
+RadiosityResult solve_radiosity(const ClusteredTransfer& T, const std::vector<double>& reflectance,
+                                const std::vector<double>& incident_flux_lm, int bounces,
+                                double tolerance, int max_bounces) {
+  std::vector<double> work;
+  const auto transfer = [&](const std::vector<double>& delta, std::vector<double>& received) {
+    apply_clustered(T, delta, received, work);
+  };
+  return solve_bounce_series(T.n, transfer, reflectance, incident_flux_lm, bounces, tolerance,
+                             max_bounces);
+}
+
+RadiosityResult solve_bounce_series(size_t n, const BounceTransfer& transfer,
+                                    const std::vector<double>& reflectance,
+                                    const std::vector<double>& incident_flux_lm, int bounces,
+                                    double tolerance, int max_bounces) {
   if (bounces > kMaxBounces || max_bounces > kMaxBounces)
     throw CalculationError("indirect: " + std::to_string(std::max(bounces, max_bounces)) +
                            " bounces requested, at most " + std::to_string(kMaxBounces));
@@ -254,18 +285,10 @@ RadiosityResult solve_radiosity(const FormFactorMatrix& F, const std::vector<dou
   double total = delta_norm;
   if (n == 0 || total == 0.0) return res;
 
-  std::vector<double> shot(n);  // delta x the per-source renormalisation
+  std::vector<double> received(n);
   auto sweep = [&]() {
-    for (size_t j = 0; j < n; ++j)
-      shot[j] = F.source_scale.empty() ? delta[j] : delta[j] * F.source_scale[j];
-    tbb::parallel_for(size_t(0), n, [&](size_t i) {
-      const float* row = F.gather.data() + i * n;
-      // Entries [zero_begin, zero_end) are 0 (coplanar patches): skipped.
-      const size_t zb = F.zero_begin.empty() ? n : F.zero_begin[i];
-      const size_t ze = F.zero_begin.empty() ? n : F.zero_end[i];
-      const double s = dot(row, shot.data(), 0, zb) + dot(row, shot.data(), ze, n);
-      next[i] = reflectance[i] * s;
-    });
+    transfer(delta, received);
+    for (size_t i = 0; i < n; ++i) next[i] = reflectance[i] * received[i];
     delta.swap(next);
     for (size_t i = 0; i < n; ++i) res.exitant_flux_lm[i] += delta[i];
     const double prev_norm = delta_norm;

@@ -23,10 +23,12 @@
 // r) is added (the "ambient" tail of Cohen et al. 1988), so rho = 0.95 converges in tens of sweeps,
 // not hundreds.
 #include <cstdlib>
+#include <functional>
 #include <new>
 #include <utility>
 #include <vector>
 
+#include "calc/indirect/clustered.h"
 #include "calc/indirect/form_factor.h"
 #include "calc/indirect/limits.h"
 #include "calc/indirect/patches.h"
@@ -114,5 +116,20 @@ struct RadiosityResult {
 RadiosityResult solve_radiosity(const FormFactorMatrix& F, const std::vector<double>& reflectance,
                                 const std::vector<double>& incident_flux_lm, int bounces,
                                 double tolerance, int max_bounces = kMaxBounces);
+// The same series over the clustered transfer of a large unobstructed room (clustered.h).
+RadiosityResult solve_radiosity(const ClusteredTransfer& T, const std::vector<double>& reflectance,
+                                const std::vector<double>& incident_flux_lm, int bounces,
+                                double tolerance, int max_bounces = kMaxBounces);
+
+// The bounce series itself, over any transfer: transfer(delta, received) sets received[i] to the
+// flux landing on patch i when each patch j sends out delta[j] (renormalised). Both
+// solve_radiosity overloads are this with their operator, so the series, the stopping rule and
+// the tail exist once.
+using BounceTransfer =
+    std::function<void(const std::vector<double>& delta, std::vector<double>& received)>;
+RadiosityResult solve_bounce_series(size_t n, const BounceTransfer& transfer,
+                                    const std::vector<double>& reflectance,
+                                    const std::vector<double>& incident_flux_lm, int bounces,
+                                    double tolerance, int max_bounces = kMaxBounces);
 
 }  // namespace luxgrid::calc::indirect

@@ -702,8 +702,20 @@ TEST(Decision, SkipsWhenNotNeeded) {
   EXPECT_TRUE(decide_indirect(s).run);
 }
 
+// A cabinet, so that light is blocked inside the room and the dense budget applies (a convex room
+// without obstacles this large takes the clustered transfer and its own budget: below).
+geometry::Obstacle cabinet() {
+  geometry::Obstacle o;
+  o.name = "cabinet";
+  o.footprint = {{1, 1}, {2, 1}, {2, 1.5}, {1, 1.5}};
+  o.z0 = 0.0, o.z1 = 1.8;
+  o.reflectance = 0.5;
+  return o;
+}
+
 TEST(Decision, PatchBudgetIsEnforced) {
-  const Scene s = scene_of(box_room(40, 20, 3, 0.2, 0.5, 0.7), {isotropic_at({20, 10, 2}, 1e5)});
+  Scene s = scene_of(box_room(40, 20, 3, 0.2, 0.5, 0.7), {isotropic_at({20, 10, 2}, 1e5)});
+  s.rooms[0].obstacles = {cabinet()};
   IndirectOptions o;
   o.patch_size_m = 0.1;
   try {
@@ -919,6 +931,11 @@ TEST(BadInput, LeakingRoomAndBadObstacleAndBudgetNameTheObject) {
             "room 'box', obstacle 'table': reflectance is 1.200000, expected a number in [0, 1]");
   s = scene_of(box_room(40, 20, 3, 0.2, 0.5, 0.7), {isotropic_at({20, 10, 2}, 1e5)});
   IndirectOptions o;
+  o.patch_size_m = 0.05;  // convex, no obstacles: the clustered transfer's budget
+  EXPECT_EQ(message(s, o),
+            "room 'box': 784000 patches at a patch size of 0.05 m exceed the budget of 250000 "
+            "patches per room");
+  s.rooms[0].obstacles = {cabinet()};
   o.patch_size_m = 0.1;
   EXPECT_EQ(message(s, o),
             "room 'box': 196000 patches at a patch size of 0.1 m exceed the budget of 4000 "

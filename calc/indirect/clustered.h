@@ -1,0 +1,113 @@
+#pragma once
+// The clustered transfer operator of calc/indirect: the light carried between the patches of one
+// room without a dense form-factor matrix, for rooms where nothing blocks light between patches
+// (a convex room without obstacles: the plan's visibility is null) and whose patches the dense
+// matrix cannot hold (docs/indirect.md, "Large rooms").
+//
+// Method: a Barnes-Hut clustering of the sources [BarnesHut1986], as in hierarchical radiosity
+// with clusters [Hanrahan1991], [Sillion1995], with the receivers kept at single patches. Each
+// planar face (a coplanar run of the mesh) gets a binary tree of clusters, split at the median of
+// the longest axis of the patch centroids; a node has its area, area-weighted centroid, the
+// face's normal and the bounding box of its patches' vertices. Each receiving patch gets an
+// interaction list, built once by descending the trees of the other faces: a node is taken whole
+// (the point kernel between its centroid and the patch's) when both are smaller than `opening`
+// x their distance and each lies wholly in front of the other (the point kernel's error is then
+// of second order in that ratio: the first-order terms vanish at the area-weighted centroid for
+// a node of uniform exitance); otherwise its children are tried; a single source patch takes the
+// dense path's factor (patch_pair_form_factor: exact, quarter rule or point kernel by far_ratio). A
+// link stores F[node -> patch] per unit flux leaving the node: A_i x kernel / pi.
+//
+// Receivers are not clustered: a receiving cluster spreads what it gathers uniformly over its
+// patches, an error of first order in its size (the irradiance from a nearby wall falls across
+// it), measured at 25 % of the transferred light on single patches of a 12 x 8 x 3 m room.
+//
+// One transfer (a sweep): the shot flux of each patch is pulled up the trees (a node's flux is its
+// patches' sum) and every patch sums its list.
+//
+// Flux conservation: the factor a patch j shoots with in all is the sum over j and its ancestors
+// of their links' factors (the light of a node leaves from each of its patches). Each patch's
+// shot is scaled by 1 / that sum (source_scale), the equivalent of the dense matrix's per-source
+// renormalisation, so a closed room neither creates nor loses light (tests/indirect,
+// Clustered.*).
+#include <cstdint>
+#include <vector>
+
+#include "calc/indirect/patches.h"
+#include "calc/scene.h"
+
+namespace luxgrid::calc::indirect {
+
+struct ClusterNode {
+  Vec3 centroid{0.0};     // area-weighted, m
+  Vec3 normal{0.0};       // the face's
+  Vec3 lo{0.0}, hi{0.0};  // bounding box of the patches' vertices
+  double area_m2 = 0.0;
+  double diameter_m = 0.0;  // bounding-box diagonal
+  // Children (both or neither); a leaf is one patch, `patch` (room-local index).
+  uint32_t child[2] = {kNone, kNone};
+  uint32_t patch = kNone;
+  static constexpr uint32_t kNone = UINT32_MAX;
+};
+
+struct ClusteredTransfer {
+  size_t begin = 0, n = 0;  // patches [begin, begin + n) of the mesh
+  // Nodes of all faces, each face's tree in pre-order (a parent before its children).
+  std::vector<ClusterNode> nodes;
+  std::vector<uint32_t> roots;  // per face
+  // Interaction lists by receiving patch: the links of patch i are [link_begin[i], link_end[i]),
+  // each a source node link_source[k] and its factor link_factor[k] (F per unit flux leaving the
+  // source node).
+  std::vector<uint64_t> link_begin, link_end;
+  std::vector<uint32_t> link_source;
+  std::vector<float> link_factor;
+  std::vector<double> source_scale;  // per patch: 1 / its total factor (1 if not renormalised)
+  double max_row_correction = 0.0;   // largest |1 - total factor| before renormalisation
+  // The acceptance ratio the links were built with: cluster_opening(far_ratio), or wider where
+  // that many links would not fit kMaxClusteredLinkBytes (a note says so).
+  double opening = 0.0;
+  size_t links() const { return link_source.size(); }
+  size_t bytes() const;  // memory of the nodes and links
+};
+
+// True when `room` is solved with the clustered transfer at `patch_size_m`: its outline is convex,
+// it has no obstacles (nothing blocks light inside it) and its surface area / size^2 exceeds
+// kClusteredAbovePatches (limits.h), the most a dense matrix may hold.
+bool use_clustered_transfer(const Room& room, double patch_size_m);
+
+// The opening ratio of the clustered links and of the gather's chunk clusters for a far ratio
+// (quality): kClusterOpeningScale / far_ratio; reference (far_ratio infinite) uses
+// kClusteredReferenceFarRatio. A link's point kernel errs by about opening^2 / (2 pi) (4 % at
+// standard's 0.4), but the errors are of both signs over the many links a patch receives
+// through, the renormalisation keeps every source's total, and the transfer carries only the
+// second and later bounces; measured on the 100 x 50 x 6 m hall (docs/indirect.md), the
+// workplane moves by at most 0.14 % between openings 0.2 and 0.4 for a tenth of the links
+// (1.6 million instead of 16.8 million) and a fifth of the time.
+inline constexpr double kClusterOpeningScale = 2.0;
+double cluster_opening(double far_ratio);
+// Links per patch of a clustered room, for estimates of its cost before it is meshed
+// (calc/pipeline.cpp): measured on the 100 x 50 x 6 m hall, 300 at standard's opening 0.4 and 760
+// at high's 0.25 (about 48 / opening^2); high's figure, the larger.
+inline constexpr double kClusteredLinksPerPatch = 760.0;
+// The far ratio a clustered room uses at `reference` quality, where the dense path is always
+// exact: 16 patch (or cluster) diameters, a point-kernel error of (1/16)^2 / (2 pi) = 0.06 %
+// per term, twice as strict as `high`'s 8.
+inline constexpr double kClusteredReferenceFarRatio = 16.0;
+
+// The operator of room `room` (its visibility must be null: nothing blocks). `renormalise`:
+// scale each patch's shot to a total factor of 1 (closed rooms). Parallel. Throws
+// CalculationError when the links would exceed kMaxClusteredLinkBytes (limits.h).
+ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far_ratio,
+                                     bool renormalise = true);
+
+// received[i] = sum over sources j of F[j -> i] x shot[j] x source_scale[j] (room-local
+// indices): one sweep of the bounce series. `work` is scratch of nodes.size() doubles x 2.
+void apply_clustered(const ClusteredTransfer& T, const std::vector<double>& shot,
+                     std::vector<double>& received, std::vector<double>& work);
+
+// The form factor F[j -> i] between two patches as the dense matrix computes it (radiosity.h):
+// 0 when j lies on or behind i's plane, else the point kernel beyond far_ratio x D_i, the
+// quarter rule between half that and far_ratio x D_i, Lambert's exact formula closer; no
+// visibility.
+double patch_pair_form_factor(const Patch& source, const Patch& receiver, double far_ratio);
+
+}  // namespace luxgrid::calc::indirect
