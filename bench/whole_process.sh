@@ -7,8 +7,8 @@
 #   bash bench/whole_process.sh [BINARY]          (default: build/luxgrid)
 #   LUXGRID_BENCH_ARGS="--threads 1" bash bench/whole_process.sh
 #
-# The large projects (50-room floor, 100 x 50 m hall, 10^6-point grid) are generated into a
-# temporary folder by bench/make_projects.py and removed afterwards, with every output.
+# The large projects (50-room floor, the two halls, 10^6-point grid, far1000, panel40k) are
+# generated into a temporary folder by bench/make_projects.py and removed afterwards, with every output.
 # docs/performance.md keeps the table and the machine it was measured on.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,7 +18,9 @@ trap 'rm -rf "$work"' EXIT
 python3 bench/make_projects.py "$work"
 cases=("office:examples/office/project.json" "open plan:examples/openplan/project.json"
        "50-room floor:$work/floor50/project.json" "100 x 50 m hall:$work/hall/project.json"
-       "10^6-point grid:$work/grid1m/project.json")
+       "200 x 100 m hall:$work/hall200/project.json" "10^6-point grid:$work/grid1m/project.json"
+       "far field 1000 x 10^4:$work/far1000/project.json"
+       "near-field panel 40 000:$work/panel40k/project.json")
 echo "machine: $(nproc) CPUs, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), load average $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "binary: $bin ${LUXGRID_BENCH_ARGS:-}"
 echo
