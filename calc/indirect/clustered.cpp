@@ -19,10 +19,6 @@ using geometry::box_max_height;
 using geometry::box_min_height;
 
 namespace {
-// As in radiosity.cpp: a receiver whose plane passes within this distance of the source point
-// sees it edge-on; patches whose planes are this close (same normal) are coplanar.
-constexpr double kMinPlaneDistance_m = 1e-9;
-constexpr double kCoplanar_m = 1e-11;
 // A node lies "wholly in front" of a plane when no vertex of its box is farther behind it than
 // this (adjacent faces share an edge, at height 0 up to rounding).
 constexpr double kFrontTolerance_m = 1e-9;
@@ -103,7 +99,7 @@ double cluster_opening(double far_ratio) {
 double patch_pair_form_factor(const Patch& source, const Patch& receiver, double far_ratio) {
   const Vec3 d = receiver.centroid - source.centroid;  // source -> receiver
   const double h_dst = -glm::dot(receiver.normal, d);
-  if (!(h_dst > kMinPlaneDistance_m)) return 0.0;
+  if (!(h_dst > kEdgeOnDistance_m)) return 0.0;
   const double h_src = glm::dot(source.normal, d);
   if (!(h_src > -receiver.diameter_m)) return 0.0;
   const double d2 = glm::dot(d, d);
@@ -144,7 +140,7 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
     size_t e = k + 1;
     while (e < n && mesh.patches[T.begin + e].normal == first.normal &&
            std::abs(glm::dot(first.normal, mesh.patches[T.begin + e].centroid) - offset) <=
-               kCoplanar_m)
+               kCoplanarDistance_m)
       ++e;
     T.roots.push_back(build_tree(mesh, T.begin, idx, k, e, T.nodes));
     k = e;
@@ -233,8 +229,8 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
           const uint32_t a_id = stack.back();
           stack.pop_back();
           const ClusterNode& a = T.nodes[a_id];
-          if (!(box_max_height(a.normal, a.centroid, R.lo, R.hi) > kMinPlaneDistance_m) ||
-              !(box_max_height(R.normal, R.centroid, a.lo, a.hi) > kMinPlaneDistance_m))
+          if (!(box_max_height(a.normal, a.centroid, R.lo, R.hi) > kEdgeOnDistance_m) ||
+              !(box_max_height(R.normal, R.centroid, a.lo, a.hi) > kEdgeOnDistance_m))
             continue;
           if (is_leaf(a)) {
             candidates.push_back(a_id);
@@ -263,7 +259,7 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
           std::vector<Link>& mine = per_patch[k];
           for (const uint32_t a_id : accepted) {
             const ClusterNode& a = T.nodes[a_id];
-            if (!(box_max_height(a.normal, a.centroid, b.lo, b.hi) > kMinPlaneDistance_m)) continue;
+            if (!(box_max_height(a.normal, a.centroid, b.lo, b.hi) > kEdgeOnDistance_m)) continue;
             const Vec3 d = b.centroid - a.centroid;
             const double h_src = glm::dot(a.normal, d), h_dst = -glm::dot(b.normal, d);
             if (h_src > 0.0 && h_dst > 0.0) {
@@ -279,8 +275,8 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
               stack.pop_back();
               const ClusterNode& a = T.nodes[a_id];
               // One wholly on or behind the other's plane: every factor between them is 0.
-              if (!(box_max_height(a.normal, a.centroid, b.lo, b.hi) > kMinPlaneDistance_m) ||
-                  !(box_max_height(b.normal, b.centroid, a.lo, a.hi) > kMinPlaneDistance_m))
+              if (!(box_max_height(a.normal, a.centroid, b.lo, b.hi) > kEdgeOnDistance_m) ||
+                  !(box_max_height(b.normal, b.centroid, a.lo, a.hi) > kEdgeOnDistance_m))
                 continue;
               if (is_leaf(a)) {
                 const double f = patch_pair_form_factor(mesh.patches[T.begin + a.patch], dst, far);

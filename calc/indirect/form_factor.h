@@ -11,6 +11,14 @@
 
 namespace luxgrid::calc::indirect {
 
+// Patch-to-patch transfer (the dense matrix, radiosity.cpp, and the clustered links,
+// clustered.cpp): a receiver whose plane passes within kEdgeOnDistance_m of a source point sees
+// it edge-on (factor 0); patches whose planes are within kCoplanarDistance_m (same normal) are
+// coplanar, far below the edge-on distance, so the plane test would give their mutual factors 0
+// anyway.
+inline constexpr double kEdgeOnDistance_m = 1e-9;
+inline constexpr double kCoplanarDistance_m = 1e-11;
+
 using geometry::Polygon2;
 using geometry::Polygon3;
 

@@ -186,6 +186,24 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
     // x behind (or on) the plane of every patch of the group: each term is skipped below.
     if (!(glm::dot(g.normal, x) - g.max_offset > kGatherPlaneDistance_m)) continue;
     const Vec3 m = g.normal;
+    // A chunk, or a block of chunks, as one source at its flux centroid: when it is seen under
+    // less than the opening ratio, its height over the receiver's plane varies by less than that
+    // ratio (a wall chunk seen from a workplane point) and it lies wholly inside the band. Adds
+    // its light to `far` and says so. The caller has checked that nothing occludes, that the
+    // receiver is in front of it and that it is beyond its near distance.
+    const auto as_one_source = [&](const GatherSet::Chunk& c) {
+      if (!(opening2 > 0.0 && c.diagonal2_m2 < opening2 * box_distance2(x, c.lo, c.hi)))
+        return false;
+      const Vec3 far_corner = glm::max(glm::abs(x - c.clo), glm::abs(x - c.chi));
+      const Vec3 dx = x - c.flux_centroid;
+      const double hn = -glm::dot(n, dx);
+      if (!(box_max_height(n, x, c.lo, c.hi) - box_min_height(n, x, c.lo, c.hi) <
+                set.cluster_opening * hn &&
+            box_distance2(x, c.clo, c.chi) >= inner2 && glm::dot(far_corner, far_corner) < outer2))
+        return false;
+      far += c.flux_lm * point_kernel_pi_per_m2(glm::dot(m, dx), hn, glm::dot(dx, dx));
+      return true;
+    };
     // Blocks of chunks (clustered rooms): a far block seen under less than the opening ratio is
     // one source; otherwise its chunks, as below. Without blocks: one range, every chunk.
     const bool by_block = g.block_end > g.block_begin;
@@ -196,19 +214,8 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
         c_begin = bl.begin, c_end = bl.end;
         if (box_max_height(n, x, bl.lo, bl.hi) < 0.0) continue;
         if (!visibility && box_min_height(n, x, bl.clo, bl.chi) > 0.0 &&
-            box_distance2(x, bl.clo, bl.chi) > bl.max_near_d2 &&
-            bl.diagonal2_m2 < opening2 * box_distance2(x, bl.lo, bl.hi)) {
-          const Vec3 far_corner = glm::max(glm::abs(x - bl.clo), glm::abs(x - bl.chi));
-          const Vec3 dx = x - bl.flux_centroid;
-          const double hn = -glm::dot(n, dx);
-          if (box_max_height(n, x, bl.lo, bl.hi) - box_min_height(n, x, bl.lo, bl.hi) <
-                  set.cluster_opening * hn &&
-              box_distance2(x, bl.clo, bl.chi) >= inner2 &&
-              glm::dot(far_corner, far_corner) < outer2) {
-            far += bl.flux_lm * point_kernel_pi_per_m2(glm::dot(m, dx), hn, glm::dot(dx, dx));
-            continue;
-          }
-        }
+            box_distance2(x, bl.clo, bl.chi) > bl.max_near_d2 && as_one_source(bl))
+          continue;
       }
       for (size_t c = c_begin; c < c_end; ++c) {
         const GatherSet::Chunk& ch = set.chunks[c];
@@ -220,21 +227,7 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
             box_distance2(x, ch.clo, ch.chi) > ch.max_near_d2) {
           // Far kernel for the whole chunk: every centroid in front of the receiver (n . dx < 0),
           // the receiver in front of every patch (group test), farther than its near distance.
-          if (opening2 > 0.0 && ch.diagonal2_m2 < opening2 * box_distance2(x, ch.lo, ch.hi)) {
-            // Seen under less than the opening ratio, and its height over the receiver's plane
-            // varying by less than that ratio (a wall chunk seen from a workplane point): the
-            // chunk as one source, when the whole chunk lies inside the band.
-            const Vec3 far_corner = glm::max(glm::abs(x - ch.clo), glm::abs(x - ch.chi));
-            const Vec3 dx = x - ch.flux_centroid;
-            const double hn = -glm::dot(n, dx);
-            if (box_max_height(n, x, ch.lo, ch.hi) - box_min_height(n, x, ch.lo, ch.hi) <
-                    set.cluster_opening * hn &&
-                box_distance2(x, ch.clo, ch.chi) >= inner2 &&
-                glm::dot(far_corner, far_corner) < outer2) {
-              far += ch.flux_lm * point_kernel_pi_per_m2(glm::dot(m, dx), hn, glm::dot(dx, dx));
-              continue;
-            }
-          }
+          if (as_one_source(ch)) continue;
           double sum = 0.0;
           for (size_t k = ch.begin; k < ch.end; ++k) {
             const double dx = x.x - cx[k], dy = x.y - cy[k], dz = x.z - cz[k];

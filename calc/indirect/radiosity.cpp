@@ -25,15 +25,10 @@ namespace {
 // Shooting points sit this far in front of their patch, so that visibility tests from a wall
 // patch do not start on the wall.
 constexpr double kShootLift_m = 1e-6;
-// A receiver whose plane passes within this distance of the shooting point sees it edge-on.
-constexpr double kMinPlaneDistance_m = 1e-9;
 // The geometric tail is added once the bounce ratio has changed by less than this (relative)
 // over the last sweep; below it the tail's shape error is negligible against the tolerances.
 constexpr double kRatioStability = 1e-4;
 constexpr int kMinSweepsBeforeTail = 4;
-// Patches whose planes are this close (same normal) are coplanar: far below kMinPlaneDistance_m,
-// so the plane test would give their mutual form factors 0 anyway.
-constexpr double kCoplanar_m = 1e-11;
 
 double l1(const std::vector<double>& v) {
   double s = 0.0;
@@ -104,7 +99,7 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
     size_t e = k + 1;
     const double offset = glm::dot(normal[k], centroid[k]);
     while (e < n && normal[e] == normal[k] &&
-           std::abs(glm::dot(normal[e], centroid[e]) - offset) <= kCoplanar_m)
+           std::abs(glm::dot(normal[e], centroid[e]) - offset) <= kCoplanarDistance_m)
       ++e;
     for (size_t q = k; q < e; ++q) F.zero_begin[q] = k, F.zero_end[q] = e;
     k = e;
@@ -178,12 +173,12 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
       std::fill(row, row + n, 0.0f);
       for (const Chunk& c : chunks) {
         if (c.run == F.zero_begin[i]) continue;  // coplanar with i: zeros
-        // Every source's height over the receiver's plane at most kMinPlaneDistance_m: all 0.
-        if (!(box_max_height(dn, dc, c.lo, c.hi) > kMinPlaneDistance_m)) continue;
+        // Every source's height over the receiver's plane at most kEdgeOnDistance_m: all 0.
+        if (!(box_max_height(dn, dc, c.lo, c.hi) > kEdgeOnDistance_m)) continue;
         const Vec3 sn = c.normal;
-        if (!visibility && box_min_height(dn, dc, c.lo, c.hi) > kMinPlaneDistance_m &&
+        if (!visibility && box_min_height(dn, dc, c.lo, c.hi) > kEdgeOnDistance_m &&
             glm::dot(sn, dc) - c.max_offset > 0.0 && box_distance2(dc, c.lo, c.hi) > near_d2) {
-          // All far, h_dst > kMinPlaneDistance_m and h_src > 0: the kernel for every source.
+          // All far, h_dst > kEdgeOnDistance_m and h_src > 0: the kernel for every source.
           for (size_t k = c.begin; k < c.end; ++k) {
             const double dx = dc.x - ox[k], dy = dc.y - oy[k], dz = dc.z - oz[k];
             const double h_dst = -(dn.x * dx + dn.y * dy + dn.z * dz);
@@ -200,7 +195,7 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
           const Vec3 sc = centroid[j];
           const Vec3 d = dc - sc;                 // source -> receiver
           const double h_dst = -glm::dot(dn, d);  // source's height over the receiver's plane
-          if (!(h_dst > kMinPlaneDistance_m)) continue;
+          if (!(h_dst > kEdgeOnDistance_m)) continue;
           const double h_src = glm::dot(sn, d);
           if (!(h_src > -dst.diameter_m)) continue;
           const double d2 = glm::dot(d, d);
