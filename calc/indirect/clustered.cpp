@@ -96,24 +96,31 @@ double cluster_opening(double far_ratio) {
          (std::isfinite(far_ratio) ? far_ratio : kClusteredReferenceFarRatio);
 }
 
-double patch_pair_form_factor(const Patch& source, const Patch& receiver, double far_ratio) {
-  const Vec3 d = receiver.centroid - source.centroid;  // source -> receiver
-  const double h_dst = -glm::dot(receiver.normal, d);
+double patch_pair_form_factor(const Vec3& source_centroid, const Vec3& source_normal,
+                              const Patch& receiver, double near_d2) {
+  const Vec3 d = receiver.centroid - source_centroid;  // source -> receiver
+  const double h_dst = -glm::dot(receiver.normal, d);  // source's height over the receiver's plane
   if (!(h_dst > kEdgeOnDistance_m)) return 0.0;
-  const double h_src = glm::dot(source.normal, d);
+  const double h_src = glm::dot(source_normal, d);
   if (!(h_src > -receiver.diameter_m)) return 0.0;
   const double d2 = glm::dot(d, d);
-  const double near_d2 = far_ratio * receiver.diameter_m * far_ratio * receiver.diameter_m;
+  // Far: point_kernel_form_factor(source, receiver) without its tests (done above).
   if (d2 > near_d2)
     return h_src > 0.0 ? receiver.area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi : 0.0;
+  // Between far_ratio x D / 2 and far_ratio x D: the kernel on the quarters; closer: exact.
   double f = receiver.has_quarters
-                 ? quarter_kernel_form_factor(source.centroid, source.normal, receiver.polygon,
+                 ? quarter_kernel_form_factor(source_centroid, source_normal, receiver.polygon,
                                               receiver.centroid, receiver.quarter_centroid,
                                               receiver.normal, receiver.area_m2,
                                               receiver.diameter_m, 0.25 * near_d2)
                  : -1.0;
-  if (f < 0.0) f = point_polygon_form_factor(source.centroid, source.normal, receiver.polygon);
+  if (f < 0.0) f = point_polygon_form_factor(source_centroid, source_normal, receiver.polygon);
   return f;
+}
+
+double patch_pair_form_factor(const Patch& source, const Patch& receiver, double far_ratio) {
+  return patch_pair_form_factor(source.centroid, source.normal, receiver,
+                                far_ratio * receiver.diameter_m * far_ratio * receiver.diameter_m);
 }
 
 ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far_ratio,

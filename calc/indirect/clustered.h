@@ -109,5 +109,9 @@ void apply_clustered(const ClusteredTransfer& T, const std::vector<double>& shot
 // quarter rule between half that and far_ratio x D_i, Lambert's exact formula closer; no
 // visibility.
 double patch_pair_form_factor(const Patch& source, const Patch& receiver, double far_ratio);
+// The same from a source point and normal (the dense matrix passes its chunk's normal), with
+// near_d2 = (far_ratio x the receiver's diameter)^2.
+double patch_pair_form_factor(const Vec3& source_centroid, const Vec3& source_normal,
+                              const Patch& receiver, double near_d2);
 
 }  // namespace luxgrid::calc::indirect

@@ -193,25 +193,7 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
           const size_t j = order[k];
           if (i == j) continue;
           const Vec3 sc = centroid[j];
-          const Vec3 d = dc - sc;                 // source -> receiver
-          const double h_dst = -glm::dot(dn, d);  // source's height over the receiver's plane
-          if (!(h_dst > kEdgeOnDistance_m)) continue;
-          const double h_src = glm::dot(sn, d);
-          if (!(h_src > -dst.diameter_m)) continue;
-          const double d2 = glm::dot(d, d);
-          // Far: point_kernel_form_factor(sc, sn, dc, dn, A) without its tests (done above).
-          double f;
-          if (d2 > near_d2) {
-            f = h_src > 0.0 ? dst.area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi : 0.0;
-          } else {
-            // Between far_ratio x D / 2 and far_ratio x D: the kernel on the quarters; closer:
-            // exact.
-            f = dst.has_quarters
-                    ? quarter_kernel_form_factor(sc, sn, dst.polygon, dc, dst.quarter_centroid, dn,
-                                                 dst.area_m2, dst.diameter_m, 0.25 * near_d2)
-                    : -1.0;
-            if (f < 0.0) f = point_polygon_form_factor(sc, sn, dst.polygon);
-          }
+          double f = patch_pair_form_factor(sc, sn, dst, near_d2);
           if (f > 0.0 && visibility)
             f *= visible_fraction(visibility, sc + sn * kShootLift_m, dst, kShootLift_m);
           row[j] = static_cast<float>(f);
