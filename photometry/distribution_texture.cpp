@@ -73,13 +73,25 @@ DistributionTexture::DistributionTexture(int c_cells, int gamma_cells, std::vect
     throw CalculationError("DistributionTexture: texel count does not match the resolution");
 }
 
-[[gnu::target_clones("avx2", "default")]] void DistributionTexture::bilinear_batch(
-    const double* x, const double* y, const double* z, int n, double* out) const {
+namespace {
+// DistributionTexture::bilinear_batch on the texels (row-major by gamma row, nu per row): a
+// function of this file alone, so that it is compiled twice (AVX2 and the baseline) and the one
+// for the processor is picked when the program is loaded, while callers see one ordinary symbol
+// (a multiversioned member function would need the attribute on every declaration in clang).
+[[gnu::target_clones("avx2", "default")]] void bilinear_batch_texels(const float* texels, int nu,
+                                                                     int nv, const double* x,
+                                                                     const double* y,
+                                                                     const double* z, int n,
+                                                                     double* out) {
+  const auto texel = [&](int i, int j) {
+    return static_cast<double>(texels[static_cast<std::size_t>(j) * static_cast<std::size_t>(nu) +
+                                      static_cast<std::size_t>(i)]);
+  };
   // Chunks whose coordinates stay in L1 between the two loops.
   constexpr int kChunk = 64;
   double fu[kChunk], fv[kChunk];
-  const double u_scale = nu_ / 4.0, v_scale = nv_ / 2.0;
-  const double u_max = static_cast<double>(nu_), v_max = static_cast<double>(nv_);
+  const double u_scale = nu / 4.0, v_scale = nv / 2.0;
+  const double u_max = static_cast<double>(nu), v_max = static_cast<double>(nv);
   for (int begin = 0; begin < n; begin += kChunk) {
     const int m = std::min(kChunk, n - begin);
     // diamond_angles and cell_of's clamps, every branch computed and selected: the same
@@ -106,15 +118,21 @@ DistributionTexture::DistributionTexture(int c_cells, int gamma_cells, std::vect
       fv[k] = v_max < fv1 ? v_max : fv1;
     }
     for (int k = 0; k < m; ++k) {
-      const int i = std::min(static_cast<int>(fu[k]), nu_ - 1);
-      const int j = std::min(static_cast<int>(fv[k]), nv_ - 1);
+      const int i = std::min(static_cast<int>(fu[k]), nu - 1);
+      const int j = std::min(static_cast<int>(fv[k]), nv - 1);
       const double su = fu[k] - i, sv = fv[k] - j;
-      const int i1 = i + 1 == nu_ ? 0 : i + 1;
+      const int i1 = i + 1 == nu ? 0 : i + 1;
       const double a = texel(i, j) + su * (texel(i1, j) - texel(i, j));
       const double b = texel(i, j + 1) + su * (texel(i1, j + 1) - texel(i, j + 1));
       out[begin + k] = a + sv * (b - a);
     }
   }
+}
+}  // namespace
+
+void DistributionTexture::bilinear_batch(const double* x, const double* y, const double* z, int n,
+                                         double* out) const {
+  bilinear_batch_texels(data_.data(), nu_, nv_, x, y, z, n, out);
 }
 
 double DistributionTexture::intensity(const Vec3& d) const {
