@@ -78,6 +78,13 @@ uint32_t build_tree(const PatchMesh& mesh, size_t begin, std::vector<uint32_t>& 
 
 bool is_leaf(const ClusterNode& c) { return c.child[0] == ClusterNode::kNone; }
 
+// Some part of each of the two clusters lies in front of the other's plane. If not, one is wholly
+// on or behind the other's plane and every factor between their patches is 0.
+bool face_each_other(const ClusterNode& a, const ClusterNode& b) {
+  return box_max_height(a.normal, a.centroid, b.lo, b.hi) > kEdgeOnDistance_m &&
+         box_max_height(b.normal, b.centroid, a.lo, a.hi) > kEdgeOnDistance_m;
+}
+
 }  // namespace
 
 size_t ClusteredTransfer::bytes() const {
@@ -236,9 +243,7 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
           const uint32_t a_id = stack.back();
           stack.pop_back();
           const ClusterNode& a = T.nodes[a_id];
-          if (!(box_max_height(a.normal, a.centroid, R.lo, R.hi) > kEdgeOnDistance_m) ||
-              !(box_max_height(R.normal, R.centroid, a.lo, a.hi) > kEdgeOnDistance_m))
-            continue;
+          if (!face_each_other(a, R)) continue;
           if (is_leaf(a)) {
             candidates.push_back(a_id);
             continue;
@@ -281,10 +286,7 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
               const uint32_t a_id = stack.back();
               stack.pop_back();
               const ClusterNode& a = T.nodes[a_id];
-              // One wholly on or behind the other's plane: every factor between them is 0.
-              if (!(box_max_height(a.normal, a.centroid, b.lo, b.hi) > kEdgeOnDistance_m) ||
-                  !(box_max_height(b.normal, b.centroid, a.lo, a.hi) > kEdgeOnDistance_m))
-                continue;
+              if (!face_each_other(a, b)) continue;
               if (is_leaf(a)) {
                 const double f = patch_pair_form_factor(mesh.patches[T.begin + a.patch], dst, far);
                 if (f > 0.0) mine.push_back({i, a_id, static_cast<float>(f)});

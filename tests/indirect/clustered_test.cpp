@@ -17,18 +17,10 @@
 #include "calc/indirect/patches.h"
 #include "calc/indirect/radiosity.h"
 #include "photometry/builtin.h"
+#include "tests/indirect/box_room.h"
 
 namespace luxgrid::calc::indirect {
 namespace {
-
-Room box_room(double w, double d, double h, double rf, double rw, double rc) {
-  Room r;
-  r.name = "box";
-  r.outline = {{0, 0}, {w, 0}, {w, d}, {0, d}};
-  r.height = h;
-  r.reflectance = {rf, rw, rc};
-  return r;
-}
 
 Scene scene_of(const Room& room, const Vec3& source, double flux_lm) {
   Scene s;

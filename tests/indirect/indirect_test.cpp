@@ -23,20 +23,12 @@
 #include "calc/scaled_distribution.h"
 #include "calc/visibility.h"
 #include "photometry/builtin.h"
+#include "tests/indirect/box_room.h"
 
 namespace luxgrid::calc::indirect {
 namespace {
 
 using geometry::SurfaceGrid;
-
-Room box_room(double w, double d, double h, double rf, double rw, double rc) {
-  Room r;
-  r.name = "box";
-  r.outline = {{0, 0}, {w, 0}, {w, d}, {0, d}};
-  r.height = h;
-  r.reflectance = {rf, rw, rc};
-  return r;
-}
 
 // L-shape: 6 x 4 minus the 3 x 2 top-right corner (area 18 m^2).
 Room l_room(double h, double rho) {
