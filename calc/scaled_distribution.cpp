@@ -2,8 +2,11 @@
 
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include <tbb/parallel_for.h>
+
+#include "photometry/tabular_distribution.h"
 
 namespace luxgrid::calc {
 
@@ -15,6 +18,15 @@ double luminous_flux(const photometry::IntensityDistribution& d) {
   static constexpr std::array<double, 4> kWeights = {0.3626837833783620, 0.3137066458778873,
                                                      0.2223810344533745, 0.1012285362903763};
   constexpr int kBands = 90, kCSteps = 360;
+  // A type C table is read at the nodes' own angles (C = phi, gamma from the node), its C
+  // positions found once: no trigonometry per lookup, the same values to rounding.
+  const photometry::TableView view = d.table_view();
+  std::vector<photometry::TabularDistribution::CPosition> c_of_step;
+  if (view.table) {
+    c_of_step.resize(kCSteps);
+    for (int c = 0; c < kCSteps; ++c)
+      c_of_step[c] = view.table->c_position((c + 0.5) * 2.0 * kPi / kCSteps);
+  }
   // Bands in parallel, summed in order afterwards (the same total on any number of threads).
   std::array<double, kBands> band_total{};
   tbb::parallel_for(0, kBands, [&](int band) {
@@ -26,9 +38,16 @@ double luminous_flux(const photometry::IntensityDistribution& d) {
       const double w = kWeights[k % 4] * half;
       const double s = std::sqrt(std::max(0.0, 1.0 - x * x));
       double ring = 0.0;
-      for (int c = 0; c < kCSteps; ++c) {
-        const double phi = (c + 0.5) * 2.0 * kPi / kCSteps;
-        ring += d.intensity(Vec3(s * std::cos(phi), s * std::sin(phi), x));
+      std::size_t j = 0;
+      double tg = 0.0;
+      if (!view.table) {
+        for (int c = 0; c < kCSteps; ++c) {
+          const double phi = (c + 0.5) * 2.0 * kPi / kCSteps;
+          ring += d.intensity(Vec3(s * std::cos(phi), s * std::sin(phi), x));
+        }
+      } else if (view.table->gamma_cell(std::atan2(s, -x), j, tg)) {  // gamma: 0 at nadir
+        for (int c = 0; c < kCSteps; ++c)
+          ring += view.scale * view.table->intensity_at(c_of_step[c], j, tg);
       }
       total += w * ring * (2.0 * kPi / kCSteps);
     }

@@ -86,7 +86,9 @@ std::string stat_cell(const std::string& surface, const char* key, const std::st
 
 // The luminaire types (one row per photometry entry: the product as the file names it, count,
 // flux and power) with their polar diagrams, then every luminaire's position.
-std::string luminaire_sections(const calc::Scene& scene) {
+std::string luminaire_sections(
+    const calc::Scene& scene,
+    const std::map<const photometry::IntensityDistribution*, double>& known_flux_lm) {
   std::string h =
       "<h2>Luminaires</h2>\n<table class=\"types\"><tr><th>Type</th><th>Luminaire (from the "
       "file)</th>"
@@ -117,7 +119,11 @@ std::string luminaire_sections(const calc::Scene& scene) {
     if (product.empty())
       product = "<span class=\"muted\">" + html_escape(p.format) + ", no product data</span>";
     const bool have_flux = dist != nullptr;
-    const double flux_lm = have_flux ? calc::luminous_flux(*dist) : 0.0;
+    double flux_lm = 0.0;
+    if (have_flux) {
+      const auto known = known_flux_lm.find(dist);
+      flux_lm = known != known_flux_lm.end() ? known->second : calc::luminous_flux(*dist);
+    }
     const auto d = photometry::derive(p);
     const auto lor = d.lor ? d.lor : p.stated_lor;
     // CIE 190's 4H x 8H value at 0.7/0.5/0.2 (crosswise / endwise) for the luminaire as used:
@@ -125,11 +131,8 @@ std::string luminaire_sections(const calc::Scene& scene) {
     std::string ugr = "&ndash;";
     if (dist && opening->shape != photometry::LuminousOpening::Shape::point) {
       const calc::glare::TableRoom room{4, 8};
-      const auto c =
-          calc::glare::table_ugr(*dist, *opening, room, calc::glare::kTableReflectances[0],
-                                 calc::glare::Viewing::crosswise);
-      const auto e = calc::glare::table_ugr(
-          *dist, *opening, room, calc::glare::kTableReflectances[0], calc::glare::Viewing::endwise);
+      const auto [c, e] =
+          calc::glare::table_ugrs(*dist, *opening, room, calc::glare::kTableReflectances[0]);
       if (c && e) ugr = format_double("%.1f", *c) + " / " + format_double("%.1f", *e);
     }
     h += "<tr data-type=\"" + html_escape(key) + "\"><td>" + html_escape(key) + "</td><td>" +
@@ -365,7 +368,11 @@ std::string base64(const std::string& bytes) {
   return out;
 }
 
-std::string luminaire_sections_html(const calc::Scene& scene) { return luminaire_sections(scene); }
+std::string luminaire_sections_html(
+    const calc::Scene& scene,
+    const std::map<const photometry::IntensityDistribution*, double>& known_flux_lm) {
+  return luminaire_sections(scene, known_flux_lm);
+}
 
 std::string html_report(const ReportInput& in) {
   const calc::Results& r = *in.results;
@@ -466,7 +473,7 @@ std::string html_report(const ReportInput& in) {
 
   // --- luminaires -----------------------------------------------------------------------------
   if (scene && !scene->photometry.empty()) {
-    h += in.luminaires_html.empty() ? luminaire_sections(*scene) : in.luminaires_html;
+    h += in.luminaires_html.empty() ? luminaire_sections(*scene, {}) : in.luminaires_html;
   }
 
   // --- plan views -----------------------------------------------------------------------------

@@ -31,7 +31,11 @@ std::string html_report(const ReportInput& in);
 
 // The report's luminaire types (product data, flux, power, LOR, CIE 190 UGR, polar diagrams) and
 // positions: the part of the page that computes the most, so it can be made beforehand.
-std::string luminaire_sections_html(const calc::Scene& scene);
+// `known_flux_lm`: the luminous flux of distributions the calculation integrated already
+// (calc::luminous_flux, by distribution), so the report does not integrate them again.
+std::string luminaire_sections_html(
+    const calc::Scene& scene,
+    const std::map<const photometry::IntensityDistribution*, double>& known_flux_lm = {});
 
 // RFC 4648 base64 of `bytes`.
 std::string base64(const std::string& bytes);

@@ -119,7 +119,8 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   tbb::parallel_for(std::size_t{0}, jobs.size(), [&](std::size_t n) {
     Job& job = jobs[n];
     if (job.what == Job::What::luminaires_html) {
-      report.luminaires_html = luminaire_sections_html(*options.scene);
+      report.luminaires_html =
+          luminaire_sections_html(*options.scene, results.plan.indirect_decision.luminous_flux_lm);
       return;
     }
     const calc::SurfaceResult& s = results.surfaces[job.surface];

@@ -1,5 +1,6 @@
 #include "calc/glare/ugr_table.h"
 
+#include <array>
 #include <cmath>
 
 #include "calc/glare/flux_transfer.h"
@@ -7,6 +8,7 @@
 #include "calc/scaled_distribution.h"
 #include "calc/scene.h"
 #include "photometry/opening.h"
+#include "photometry/tabular_distribution.h"
 #include "util/error.h"
 
 namespace luxgrid::calc::glare {
@@ -25,42 +27,119 @@ glm::dmat3 table_rotation(Viewing v) {
 // nadir and in azimuth, in the room frame): per cell its flux and where its ray, leaving a
 // luminaire at height H, lands on the floor relative to the luminaire. 0.25 x 1 degree cells:
 // the floor's share of a luminaire's flux then converges to ~1e-4 (docs/glare.md).
-struct FluxCell {
-  double flux_lm, dx_m, dy_m;
-};
 constexpr int kNadirSteps = 360, kAzimuthSteps = 360;
+constexpr double kNadirStep_rad = kPi / (2 * kNadirSteps),
+                 kAzimuthStep_rad = 2.0 * kPi / kAzimuthSteps;
+
+// Where each lower cell's central ray lands (H = kTableH_m), nadir step by azimuth step: the
+// same for every distribution and viewing, so made once.
+struct Landing {
+  double dx_m, dy_m;
+};
+const std::vector<Landing>& landings() {
+  static const std::vector<Landing> made = [] {
+    std::vector<Landing> l;
+    l.reserve(static_cast<size_t>(kNadirSteps) * kAzimuthSteps);
+    for (int i = 0; i < kNadirSteps; ++i) {
+      const double reach = kTableH_m * std::tan((i + 0.5) * kNadirStep_rad);
+      for (int k = 0; k < kAzimuthSteps; ++k) {
+        const double p = (k + 0.5) * kAzimuthStep_rad;
+        l.push_back({reach * std::cos(p), reach * std::sin(p)});
+      }
+    }
+    return l;
+  }();
+  return made;
+}
 
 struct Fluxes {
   double down_lm = 0.0, up_lm = 0.0;
-  std::vector<FluxCell> down;
+  std::vector<double> down_cell_lm;  // per lower cell, in the order of landings()
 };
 
-Fluxes flux_cells(const photometry::IntensityDistribution& d, const glm::dmat3& rotation,
-                  double H) {
+// `intensity_cd(hemisphere, i, k, world)`: the intensity of cell i (angle from nadir, or from
+// zenith in the upper hemisphere 1) and k (azimuth) towards `world`, the cell centre's direction
+// in the room frame.
+template <class IntensityOfCell>
+Fluxes flux_cells(const IntensityOfCell& intensity_cd) {
   Fluxes f;
-  f.down.reserve(static_cast<size_t>(kNadirSteps) * kAzimuthSteps);
-  const double dt = kPi / (2 * kNadirSteps), dp = 2.0 * kPi / kAzimuthSteps;
+  f.down_cell_lm.resize(static_cast<size_t>(kNadirSteps) * kAzimuthSteps);
+  std::array<double, kAzimuthSteps> cos_p, sin_p;
+  for (int k = 0; k < kAzimuthSteps; ++k) {
+    const double p = (k + 0.5) * kAzimuthStep_rad;
+    cos_p[k] = std::cos(p), sin_p[k] = std::sin(p);
+  }
   for (int hemisphere = 0; hemisphere < 2; ++hemisphere) {
     for (int i = 0; i < kNadirSteps; ++i) {
-      const double t = (i + 0.5) * dt;  // from nadir (down) or from zenith (up)
-      const double dw = std::sin(t) * dt * dp;
+      const double t = (i + 0.5) * kNadirStep_rad;  // from nadir (down) or from zenith (up)
+      const double sin_t = std::sin(t), cos_t = std::cos(t);
+      const double dw = sin_t * kNadirStep_rad * kAzimuthStep_rad;
+      const double z = hemisphere == 0 ? -cos_t : cos_t;
+      double* down = &f.down_cell_lm[static_cast<size_t>(i) * kAzimuthSteps];
       for (int k = 0; k < kAzimuthSteps; ++k) {
-        const double p = (k + 0.5) * dp;
-        const double z = hemisphere == 0 ? -std::cos(t) : std::cos(t);
-        const Vec3 world(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), z);
-        const double flux = d.intensity(world * rotation) * dw;
+        const Vec3 world(sin_t * cos_p[k], sin_t * sin_p[k], z);
+        const double flux = intensity_cd(hemisphere, i, k, world) * dw;
         if (hemisphere == 1) {
           f.up_lm += flux;
           continue;
         }
         f.down_lm += flux;
-        const double reach = H * std::tan(t);
-        f.down.push_back({flux, reach * std::cos(p), reach * std::sin(p)});
+        down[k] = flux;
       }
     }
   }
   return f;
 }
+
+// The two viewings turn the luminaire about the vertical by a quarter turn (crosswise: room
+// azimuth p is the luminaire's C = p + 90 degrees) or a half turn (endwise: C = p + 180 degrees),
+// so a cell of the room's quadrature is a cell of the same ring in the luminaire frame, 90 or 180
+// azimuth steps on. A type C table is therefore read once, at the cells' own angles (gamma = the
+// angle from nadir, C = the azimuth; no trigonometry per lookup), for both viewings; any other
+// distribution is asked per direction.
+int azimuth_offset(Viewing v) {
+  return v == Viewing::crosswise ? kAzimuthSteps / 4 : kAzimuthSteps / 2;
+}
+
+class CellIntensities {
+ public:
+  explicit CellIntensities(const photometry::IntensityDistribution& d) : d_(d) {
+    const photometry::TableView view = d.table_view();
+    if (!view.table) return;
+    std::vector<photometry::TabularDistribution::CPosition> c(kAzimuthSteps);
+    for (int k = 0; k < kAzimuthSteps; ++k)
+      c[k] = view.table->c_position((k + 0.5) * kAzimuthStep_rad);
+    cd_.assign(static_cast<size_t>(2) * kNadirSteps * kAzimuthSteps, 0.0);
+    for (int hemisphere = 0; hemisphere < 2; ++hemisphere)
+      for (int i = 0; i < kNadirSteps; ++i) {
+        const double t = (i + 0.5) * kNadirStep_rad;
+        std::size_t j = 0;
+        double tg = 0.0;
+        if (!view.table->gamma_cell(hemisphere == 0 ? t : kPi - t, j, tg)) continue;
+        double* row = &cd_[(static_cast<size_t>(hemisphere) * kNadirSteps + i) * kAzimuthSteps];
+        for (int k = 0; k < kAzimuthSteps; ++k)
+          row[k] = view.scale * view.table->intensity_at(c[k], j, tg);
+      }
+  }
+
+  Fluxes fluxes(Viewing v) const {
+    if (cd_.empty()) {
+      const glm::dmat3 rotation = table_rotation(v);
+      return flux_cells(
+          [&](int, int, int, const Vec3& world) { return d_.intensity(world * rotation); });
+    }
+    const int offset = azimuth_offset(v);
+    return flux_cells([&](int hemisphere, int i, int k, const Vec3&) {
+      return cd_[(static_cast<size_t>(hemisphere) * kNadirSteps + i) * kAzimuthSteps +
+                 (k + offset) % kAzimuthSteps];
+    });
+  }
+
+ private:
+  const photometry::IntensityDistribution& d_;
+  std::vector<double>
+      cd_;  // [hemisphere][nadir step][azimuth step], luminaire frame; empty: ask d_
+};
 
 // Luminaire centres along one side: n = L / S of them, S/2 from each end.
 std::vector<double> grid_line(double from, double length, double S) {
@@ -97,9 +176,11 @@ std::optional<double> room_ugr(const photometry::IntensityDistribution& d,
   // Direct flux of all luminaires onto the floor (the plane at eye level), walls and ceiling.
   const double n = static_cast<double>(xs.size() * ys.size());
   double floor_lm = 0.0;
-  for (const auto& c : fluxes.down) {
-    floor_lm += c.flux_lm * static_cast<double>(count_inside(xs, c.dx_m, -0.5 * X, 0.5 * X) *
-                                                count_inside(ys, c.dy_m, 0.0, Y));
+  const std::vector<Landing>& land = landings();
+  for (size_t c = 0; c < land.size(); ++c) {
+    floor_lm += fluxes.down_cell_lm[c] *
+                static_cast<double>(count_inside(xs, land[c].dx_m, -0.5 * X, 0.5 * X) *
+                                    count_inside(ys, land[c].dy_m, 0.0, Y));
   }
   const ThreeSurfaces direct{floor_lm, n * fluxes.down_lm - floor_lm, n * fluxes.up_lm};
   const ThreeSurfaces in = indirect_flux(X, Y, H, {refl.floor, refl.walls, refl.ceiling}, direct);
@@ -123,8 +204,16 @@ std::optional<double> table_ugr(const photometry::IntensityDistribution& d,
                                 const photometry::LuminousOpening& o, const TableRoom& room,
                                 const TableReflectances& refl, Viewing viewing) {
   require_area(o);
-  const Fluxes f = flux_cells(d, table_rotation(viewing), kTableH_m);
-  return room_ugr(d, o, room, refl, viewing, f);
+  return room_ugr(d, o, room, refl, viewing, CellIntensities(d).fluxes(viewing));
+}
+
+TableUgrs table_ugrs(const photometry::IntensityDistribution& d,
+                     const photometry::LuminousOpening& o, const TableRoom& room,
+                     const TableReflectances& refl) {
+  require_area(o);
+  const CellIntensities cells(d);
+  return {room_ugr(d, o, room, refl, Viewing::crosswise, cells.fluxes(Viewing::crosswise)),
+          room_ugr(d, o, room, refl, Viewing::endwise, cells.fluxes(Viewing::endwise))};
 }
 
 UgrTable ugr_table(const photometry::DistributionPtr& distribution,
@@ -138,8 +227,9 @@ UgrTable ugr_table(const photometry::DistributionPtr& distribution,
   t.lamp_flux_lm = lamp_flux_lm;
   t.correction = 8.0 * std::log10(lamp_flux_lm / kTableFluxLm);
   const ScaledDistribution d(distribution, kTableFluxLm / lamp_flux_lm);
+  const CellIntensities cells(d);
   for (const Viewing v : {Viewing::crosswise, Viewing::endwise}) {
-    const Fluxes f = flux_cells(d, table_rotation(v), kTableH_m);
+    const Fluxes f = cells.fluxes(v);
     auto& rows = v == Viewing::crosswise ? t.crosswise : t.endwise;
     for (const auto& room : kTableRooms) {
       std::array<std::optional<double>, 5> row;

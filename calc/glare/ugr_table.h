@@ -59,6 +59,14 @@ std::optional<double> table_ugr(const photometry::IntensityDistribution& distrib
                                 const photometry::LuminousOpening& opening, const TableRoom& room,
                                 const TableReflectances& reflectance, Viewing viewing);
 
+// Both viewings of one room: the same values as two table_ugr calls, for half the lookups.
+struct TableUgrs {
+  std::optional<double> crosswise, endwise;
+};
+TableUgrs table_ugrs(const photometry::IntensityDistribution& distribution,
+                     const photometry::LuminousOpening& opening, const TableRoom& room,
+                     const TableReflectances& reflectance);
+
 struct UgrTable {
   double lamp_flux_lm = 0.0;  // F: stated lamp flux, or the luminaire flux for absolute photometry
   double correction = 0.0;    // 8 log10(F / 1000)

@@ -3,8 +3,10 @@
 // endwise for a rotationally symmetric file, and the flux correction.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <utility>
 
 #include "calc/glare/flux_transfer.h"
 #include "calc/glare/guth_position_index.h"
@@ -12,6 +14,7 @@
 #include "calc/scaled_distribution.h"
 #include "photometry/builtin.h"
 #include "photometry/photometry.h"
+#include "tests/calc/opaque_distribution.h"
 
 namespace luxgrid::calc::glare {
 namespace {
@@ -131,6 +134,36 @@ TEST(UgrTable, FluxCorrection) {
   EXPECT_NEAR(at_3000.correction, 8.0 * std::log10(3.0), 1e-12);
   EXPECT_NEAR(*at_3000.crosswise[10][0], *at_1000.crosswise[10][0], 1e-9);  // row 10: 4H x 8H
   EXPECT_NEAR(*at_1000.crosswise[10][0], *a, 1e-9);
+}
+
+// A type C table is read once at the quadrature cells' own angles and serves both viewings by
+// shifting the azimuth a quarter or half turn; the general path turns every direction by the
+// viewing's rotation and asks the distribution. On asymmetric files (a floodlight with one
+// lopsided side, a bilateral roadway optic) both give the same UGR in every room: only the
+// angles' rounding differs (~1e-15 in a cell's position), so 1e-9 UGR. The viewings themselves
+// differ by far more than that on these files, so a wrong shift cannot pass.
+TEST(UgrTable, TableReadAtTheCellsAnglesEqualsTheTurnedDirections) {
+  // The files, and how far apart their two viewings are at least (measured: 3.3 and 0.026 UGR).
+  const std::pair<const char*, double> files[] = {{"ldt/ledvance_flmax_asym_isym0.ldt", 1.0},
+                                                  {"ies/rab_roadway_bilateral_lm02.ies", 0.01}};
+  for (const auto& [name, viewings_apart] : files) {
+    const photometry::Photometry p = photometry::load_photometry_file(
+        std::filesystem::path(LUXGRID_SOURCE_DIR) / "tests/data/photometry" / name);
+    ASSERT_NE(p.distribution->table_view().table, nullptr) << name;
+    double largest_difference = 0.0;
+    for (const TableRoom room : {TableRoom{2, 2}, TableRoom{4, 8}, TableRoom{12, 4}}) {
+      const TableUgrs both = table_ugrs(*p.distribution, p.opening, room, kTableReflectances[0]);
+      const Opaque opaque(*p.distribution);
+      const auto c = table_ugr(opaque, p.opening, room, kTableReflectances[0], Viewing::crosswise);
+      const auto e = table_ugr(opaque, p.opening, room, kTableReflectances[0], Viewing::endwise);
+      ASSERT_TRUE(both.crosswise && both.endwise && c && e) << name;
+      EXPECT_NEAR(*both.crosswise, *c, 1e-9)
+          << name << " " << room.x_H << "H x " << room.y_H << "H";
+      EXPECT_NEAR(*both.endwise, *e, 1e-9) << name << " " << room.x_H << "H x " << room.y_H << "H";
+      largest_difference = std::max(largest_difference, std::abs(*c - *e));
+    }
+    EXPECT_GT(largest_difference, viewings_apart) << name;
+  }
 }
 
 }  // namespace
