@@ -184,6 +184,7 @@ IndirectEstimateInputs run_indirect(const Scene& scene, const SceneLookups& look
     }
     indirect::IndirectOptions coarse = options;
     coarse.patch_size_m = 2.0 * r.patch_size_m;
+    coarse.clustered = r.clustered;  // each room by the same method as the run it estimates
     const indirect::IndirectResult c = indirect::compute_indirect(scene, probes, coarse);
     est.coarse_patch_size_m = c.patch_size_m;
     est.coarse_lx = c.E_indirect_per_surface;

@@ -79,8 +79,9 @@ struct RoomBudgets {
 };
 RoomBudgets room_budgets(const Scene& scene, const IndirectOptions& o, double size) {
   RoomBudgets b;
-  for (const auto& room : scene.rooms) {
-    const bool c = use_clustered_transfer(room, size);
+  for (size_t r = 0; r < scene.rooms.size(); ++r) {
+    const bool c =
+        o.clustered.empty() ? use_clustered_transfer(scene.rooms[r], size) : o.clustered.at(r) != 0;
     b.clustered.push_back(c);
     b.budget.push_back(c ? kMaxClusteredPatchesPerRoom : o.max_patches_per_room);
   }
@@ -306,6 +307,7 @@ IndirectResult compute_indirect(const Scene& scene,
 
   const RoomBudgets budgets = room_budgets(scene, options, size);
   const PatchMesh mesh = mesh_within_budget(scene, options, budgets, size, res.notes);
+  res.clustered = budgets.clustered;
   res.patches = mesh.patches.size();
   res.patch_size_m = mesh.patch_size_m;
 

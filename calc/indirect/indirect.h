@@ -50,6 +50,11 @@ struct IndirectOptions {
   // What the first bounce looks each luminaire's intensity up in (calc/intensity_lookup.h: the
   // texture where the quality allows it); a distribution missing here is looked up itself.
   std::map<const photometry::IntensityDistribution*, photometry::DistributionPtr> intensity_lookup;
+  // Per room, whether it is solved with the clustered transfer (clustered.h). Empty: decided at
+  // the requested patch size (use_clustered_transfer). The plan's estimate meshes the rooms again
+  // at twice the size and must compare like with like: it passes the main run's decisions
+  // (IndirectResult::clustered), and a room clustered there keeps the clustered budget.
+  std::vector<char> clustered;
 };
 
 // Options from the project's settings (quality, bounces).
@@ -75,6 +80,7 @@ struct IndirectResult {
   // Rooms solved with the clustered transfer (clustered.h), their links in all and the largest
   // one's memory (nodes and links).
   size_t clustered_rooms = 0, clustered_links = 0, clustered_bytes = 0;
+  std::vector<char> clustered;  // per room: solved with the clustered transfer
   double seconds = 0.0;
 };
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 
+#include "calc/indirect/clustered.h"
 #include "calc/indirect/indirect.h"
 #include "calc/nearfield/far_field_bound.h"
 #include "calc/pipeline.h"
@@ -127,6 +128,34 @@ TEST(PlanEstimates, EstimateAbovePromiseIsAWarning) {
   for (const auto& n : r.plan.notes)
     noted = noted || n.find("estimated error at surface") != std::string::npos;
   EXPECT_TRUE(noted);
+}
+
+// A convex room clustered at standard's 0.5 m (5 600 m^2: 22 400 patches) has 5 600 patches at
+// the estimate's 1 m: more than the dense budget of 4 000 and fewer than the clustered rooms'
+// threshold. The estimate meshes it by the same method as the run it estimates, so the run
+// neither fails on the dense budget nor compares the clustered transfer with a dense one.
+TEST(PlanEstimates, AClusteredRoomIsEstimatedByTheClusteredTransfer) {
+  const std::string text = R"({"format": "luxgrid-project/1", "name": "hall",
+    "settings": {"quality": "standard", "indirect": "on", "allow_files_outside_project": true},
+    "photometry": {"p": ")" +
+                           std::string(LUXGRID_SOURCE_DIR) +
+                           R"(/examples/office/photometry/zumtobel_mirel_isym4.ldt"},
+    "rooms": [{"name": "hall", "outline": [[0, 0], [60, 0], [60, 40], [0, 40]], "height": 4,
+               "reflectance": {"floor": 0.2, "walls": 0.5, "ceiling": 0.7}}],
+    "luminaires": [{"name": "a", "photometry": "p", "position": [30, 20, 4]}],
+    "surfaces": [{"name": "points", "points": [{"at": [30, 20, 0.75], "normal": [0, 0, 1]},
+                                               {"at": [5, 5, 0.75], "normal": [0, 0, 1]}]}]})";
+  const Scene scene =
+      project::parse_project_text(text, "hall.json", std::string(LUXGRID_SOURCE_DIR)).scene;
+  ASSERT_TRUE(indirect::use_clustered_transfer(scene.rooms[0], 0.5));
+  ASSERT_FALSE(indirect::use_clustered_transfer(scene.rooms[0], 1.0));
+  const Results r = run_scene(scene);
+  EXPECT_NE(r.plan.indirect.find("clustered transfer (1 room"), std::string::npos)
+      << r.plan.indirect;
+  ASSERT_EQ(r.plan.estimates.size(), 1u);
+  EXPECT_EQ(r.plan.estimates[0].probe_points, 2u);
+  EXPECT_GE(r.plan.estimates[0].patch_size, 0.0);
+  for (const auto& n : r.plan.notes) EXPECT_EQ(n.find("raised"), std::string::npos) << n;
 }
 
 }  // namespace
