@@ -194,6 +194,7 @@ IndirectEstimateInputs run_indirect(const Scene& scene, const SceneLookups& look
     results.surfaces[k].E_indirect = r.E_indirect_per_surface[k];
   results.plan.indirect = r.summary;
   for (const auto& n : r.notes) results.plan.notes.push_back(n);
+  for (const auto& w : r.warnings) results.plan.warnings.push_back(w);
   est.residual = r.residual;
   est.patch_size_m = r.patch_size_m;
   return est;

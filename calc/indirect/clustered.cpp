@@ -28,8 +28,8 @@ constexpr double kFrontTolerance_m = 1e-9;
 constexpr size_t kBlockPatches = 32;
 constexpr size_t kWaveBlocks = 512;
 // Links per patch times opening^2, measured on the 100 x 50 x 6 m hall (300 links per patch at
-// opening 0.4, 760 at 0.25): the count reserved before the lists are built.
-constexpr double kLinksPerPatchOpening2 = 48.0;
+// opening 0.4, 760 at 0.25, 1 260 at 0.2): the count reserved before the lists are built.
+constexpr double kLinksPerPatchOpening2 = 50.0;
 
 struct Link {
   uint32_t receiver, source;
@@ -137,7 +137,7 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
   T.n = mesh.room_begin[room + 1] - T.begin;
   // The quality's opening, or a wider one where its links would not fit kMaxClusteredLinkBytes
   // (about kLinksPerPatchOpening2 / opening^2 links per patch, with a fifth to spare): reference
-  // on a hall of 250 000 patches would need ~3 000 links per patch at its 0.125.
+  // on a hall of 250 000 patches would need ~3 200 links per patch at its 0.125.
   const double fit =
       std::sqrt(1.2 * kLinksPerPatchOpening2 * static_cast<double>(T.n) *
                 (sizeof(uint32_t) + sizeof(float)) / static_cast<double>(kMaxClusteredLinkBytes));

@@ -76,22 +76,24 @@ bool use_clustered_transfer(const Room& room, double patch_size_m);
 
 // The opening ratio of the clustered links and of the gather's chunk clusters for a far ratio
 // (quality): kClusterOpeningScale / far_ratio; reference (far_ratio infinite) uses
-// kClusteredReferenceFarRatio. A link's point kernel errs by about opening^2 / (2 pi) (4 % at
-// standard's 0.4), but the errors are of both signs over the many links a patch receives
-// through, the renormalisation keeps every source's total, and the transfer carries only the
-// second and later bounces; measured on the 100 x 50 x 6 m hall (docs/indirect.md), the
-// workplane moves by at most 0.14 % between openings 0.2 and 0.4 for a tenth of the links
-// (1.6 million instead of 16.8 million) and a fifth of the time.
-inline constexpr double kClusterOpeningScale = 2.0;
+// kClusteredReferenceFarRatio. A node is then taken whole only where the dense path would take a
+// single patch of that size by the point kernel (patch_pair_form_factor: beyond far_ratio
+// diameters), so the clustered room is no coarser than the dense one. A wider ratio is not an
+// error bound: the point kernel over a node errs by a few times (opening / 2)^2 per term, and the
+// terms do not cancel where a patch sees a whole face at grazing angles (a wall's top row under
+// the ceiling). Measured on a 60 x 40 x 3 m room (21 600 patches at 0.5 m, walls and ceiling
+// gridded), against the ratio 0.1: 1.23 % at a wall's top corner with the ratio 0.4, 0.23 % with
+// standard's 0.2, for 2.1 times the time and 2.8 times the memory (docs/indirect.md).
+inline constexpr double kClusterOpeningScale = 1.0;
 double cluster_opening(double far_ratio);
 // Links per patch of a clustered room, for estimates of its cost before it is meshed
-// (calc/pipeline.cpp): measured on the 100 x 50 x 6 m hall, 300 at standard's opening 0.4 and 760
-// at high's 0.25 (about 48 / opening^2); high's figure, the larger.
-inline constexpr double kClusteredLinksPerPatch = 760.0;
+// (calc/pipeline.cpp): measured on the 100 x 50 x 6 m hall, 1 260 at standard's opening 0.2
+// (about 50 / opening^2).
+inline constexpr double kClusteredLinksPerPatch = 1260.0;
 // The far ratio a clustered room uses at `reference` quality, where the dense path is always
-// exact: 16 patch (or cluster) diameters, a point-kernel error of (1/16)^2 / (2 pi) = 0.06 %
-// per term, twice as strict as `high`'s 8.
-inline constexpr double kClusteredReferenceFarRatio = 16.0;
+// exact: 8 patch (or cluster) diameters, the opening ratio 0.125 (as `high`; the links of a finer
+// one would not fit kMaxClusteredLinkBytes on a large hall, where the ratio is widened anyway).
+inline constexpr double kClusteredReferenceFarRatio = 8.0;
 
 // The operator of room `room` (its visibility must be null: nothing blocks). `renormalise`:
 // scale each patch's shot to a total factor of 1 (closed rooms). Parallel. Throws

@@ -363,13 +363,17 @@ IndirectResult compute_indirect(const Scene& scene,
     } else if (budgets.clustered[r]) {
       const ClusteredTransfer T = clustered_transfer(mesh, static_cast<int>(r), room_far[r]);
       res.max_row_correction = std::max(res.max_row_correction, T.max_row_correction);
+      // A wider ratio than the quality's is not what the quality's accuracy was measured with
+      // (docs/indirect.md, "Large rooms"): a warning, not a note.
       if (T.opening > cluster_opening(room_far[r]))
-        res.notes.push_back("room '" + scene.rooms[r].name + "': clustered transfer with the " +
-                            "opening ratio " + format_double("%.3g", T.opening) + " instead of " +
-                            format_double("%.3g", cluster_opening(room_far[r])) +
-                            ": the links of " + std::to_string(T.n) +
-                            " patches at the quality's ratio would exceed " +
-                            std::to_string(kMaxClusteredLinkBytes / kBytesPerMegabyte) + " MB");
+        res.warnings.push_back(
+            "indirect: room '" + scene.rooms[r].name + "': clustered transfer with the " +
+            "opening ratio " + format_double("%.3g", T.opening) + " instead of " +
+            format_double("%.3g", cluster_opening(room_far[r])) + ": the links of " +
+            std::to_string(T.n) + " patches at the quality's ratio would exceed " +
+            std::to_string(kMaxClusteredLinkBytes / kBytesPerMegabyte) +
+            " MB; the reflected light near the room's edges may then be off by more than the "
+            "quality's figures");
       res.clustered_rooms += 1;
       res.clustered_links += T.links();
       res.clustered_bytes = std::max(res.clustered_bytes, T.bytes());

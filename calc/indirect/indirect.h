@@ -65,6 +65,7 @@ struct IndirectResult {
       E_indirect_per_surface;  // lx, same order as the surfaces' points
   std::string summary;         // one line for Plan::indirect
   std::vector<std::string> notes;
+  std::vector<std::string> warnings;  // for Plan::warnings: what may break the quality's promise
   size_t patches = 0;
   size_t vpls = 0;
   int bounces_run = 0;  // largest over rooms
