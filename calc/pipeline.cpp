@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "calc/direct_reach.h"
@@ -107,29 +109,79 @@ double refine_work(const Scene& scene, double patch_size_m) {
   }
   return work;
 }
+// An upper bound of the reflected light anywhere in the solution's rooms, for the estimate's
+// floor (plan_estimates.h): a point gathers at most the largest exitance it sees over a
+// hemisphere (E = integral of L cos over the solid angle <= pi L_max = M_max, form factors
+// summing to at most 1). Cells (subcells.h) may be brighter than their patch's mean and the far
+// kernel is not exact, hence the margin.
+constexpr double kIndirectBoundMargin = 8.0;
+double indirect_upper_bound_lx(const indirect::IndirectSolution& solution) {
+  double m_max = 0.0;
+  for (size_t i = 0; i < solution.mesh.patches.size(); ++i) {
+    const double area = solution.mesh.patches[i].area_m2;
+    if (area > 0.0) m_max = std::max(m_max, solution.exitant_flux_lm[i] / area);
+  }
+  return kIndirectBoundMargin * m_max;
+}
+
+// The worst patch-size estimate over the surfaces for a solution, and the surface it is on;
+// `probe_lx` gets each surface's E_indirect at its probes. Gathered at the probe points only
+// (their values are the whole grid's there, indirect.h); at every point only where a probe may
+// be darker than the estimate's floor, which needs the surface's largest E: that gather is
+// kept in `everywhere`, the solution's results.
+struct WorstPatchEstimate {
+  double worst = 0.0;
+  std::string surface;
+  std::optional<indirect::IndirectResult> everywhere;
+};
+WorstPatchEstimate worst_patch_estimate(const Scene& scene, const Results& results,
+                                        const indirect::IndirectSolution& solution,
+                                        const std::vector<geometry::SurfaceGrid>& probes,
+                                        const IndirectEstimateInputs& est,
+                                        std::vector<std::vector<double>>& probe_lx) {
+  const indirect::IndirectResult at_probes = indirect::gather_indirect(solution, scene, probes);
+  probe_lx = at_probes.E_indirect_per_surface;
+  const double bound_lx = indirect_upper_bound_lx(solution);
+  WorstPatchEstimate w;
+  std::optional<indirect::IndirectResult>& everywhere = w.everywhere;
+  for (size_t s = 0; s < results.surfaces.size(); ++s) {
+    const SurfaceResult& sr = results.surfaces[s];
+    double e = patch_size_estimate_at_probes(sr.grid, sr.E_direct, est.probe_index[s], probe_lx[s],
+                                             est.coarse_lx[s], bound_lx);
+    if (e < 0.0) {
+      if (!everywhere) everywhere = indirect::gather_indirect(solution, scene, scene.surfaces);
+      const std::vector<double>& E_ind = everywhere->E_indirect_per_surface[s];
+      std::vector<double> E(sr.E_direct.size());
+      for (size_t i = 0; i < E.size(); ++i) E[i] = sr.E_direct[i] + E_ind[i];
+      e = patch_size_estimate(sr.grid, E, E_ind, est.probe_index[s], est.coarse_lx[s]);
+    }
+    if (e > w.worst) w.worst = e, w.surface = sr.grid.name;
+  }
+  return w;
+}
+
+// Replaces `solution` by the finer ones it chooses; `gathered` gets the last solution's results
+// at every point where the estimate needed them.
 void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectOptions options,
-                       indirect::IndirectResult& r, IndirectEstimateInputs& est) {
+                       std::unique_ptr<const indirect::IndirectSolution>& solution,
+                       const std::vector<geometry::SurfaceGrid>& probes,
+                       IndirectEstimateInputs& est,
+                       std::optional<indirect::IndirectResult>& gathered) {
   const double promise = promised_error(scene.settings.quality);
   // Not when the bounces not followed already break the promise (a fixed bounce count): a finer
   // mesh cannot make up for them.
-  if (!(promise > 0.0) || r.residual > promise) return;
+  if (!(promise > 0.0) || solution->result.residual > promise) return;
   for (int step = 0; step < kMaxPatchRefinements; ++step) {
-    double worst = 0.0;
-    std::string worst_surface;
-    for (size_t s = 0; s < results.surfaces.size(); ++s) {
-      const SurfaceResult& sr = results.surfaces[s];
-      std::vector<double> E(sr.E_direct.size());
-      for (size_t i = 0; i < E.size(); ++i) E[i] = sr.E_direct[i] + r.E_indirect_per_surface[s][i];
-      const double e = patch_size_estimate(sr.grid, E, r.E_indirect_per_surface[s],
-                                           est.probe_index[s], est.coarse_lx[s]);
-      if (e > worst) worst = e, worst_surface = sr.grid.name;
-    }
-    if (!(worst > kPatchShareOfPromise * promise)) return;
-    const std::string why = "the patch-size estimate at " + format_double("%.3g", r.patch_size_m) +
-                            " m, " + format_double("%.2g", 100 * worst) + " % on surface '" +
-                            worst_surface + "', is above half of " +
-                            to_string(scene.settings.quality) + "'s promise";
-    options.patch_size_m = 0.5 * r.patch_size_m;
+    std::vector<std::vector<double>> probe_lx;
+    WorstPatchEstimate w = worst_patch_estimate(scene, results, *solution, probes, est, probe_lx);
+    gathered = std::move(w.everywhere);
+    if (!(w.worst > kPatchShareOfPromise * promise)) return;
+    const double size_m = solution->result.patch_size_m;
+    const std::string why = "the patch-size estimate at " + format_double("%.3g", size_m) + " m, " +
+                            format_double("%.2g", 100 * w.worst) + " % on surface '" + w.surface +
+                            "', is above half of " + to_string(scene.settings.quality) +
+                            "'s promise";
+    options.patch_size_m = 0.5 * size_m;
     const double work = refine_work(scene, options.patch_size_m);
     if (work > kRefineWorkLimit) {
       results.plan.warnings.push_back(
@@ -137,12 +189,12 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
           " m would cost " + format_double("%.2g", work) +
           " form-factor pairs (a pair counting 8 where rays are traced), above the limit of " +
           format_double("%.2g", kRefineWorkLimit) + "; the patch size stays " +
-          format_double("%.3g", r.patch_size_m) + " m");
+          format_double("%.3g", size_m) + " m");
       return;
     }
-    indirect::IndirectResult finer;
+    std::unique_ptr<const indirect::IndirectSolution> finer;
     try {
-      finer = indirect::compute_indirect(scene, scene.surfaces, options);
+      finer = indirect::solve_indirect(scene, options);
     } catch (const InputError& e) {
       // The finer mesh is over the patch budget (checked before anything is meshed).
       results.plan.warnings.push_back("indirect: " + why + ", but a mesh at " +
@@ -150,14 +202,13 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
                                       " m exceeds the patch budget (" + e.what() + ")");
       return;
     }
-    for (size_t s = 0; s < est.probe_index.size(); ++s)
-      for (size_t k = 0; k < est.probe_index[s].size(); ++k)
-        est.coarse_lx[s][k] = r.E_indirect_per_surface[s][est.probe_index[s][k]];
-    est.coarse_patch_size_m = r.patch_size_m;
+    est.coarse_lx = std::move(probe_lx);
+    est.coarse_patch_size_m = size_m;
     results.plan.notes.push_back("indirect: patch size refined from " +
-                                 format_double("%.3g", r.patch_size_m) + " m to " +
-                                 format_double("%.3g", finer.patch_size_m) + " m: " + why);
-    r = std::move(finer);
+                                 format_double("%.3g", size_m) + " m to " +
+                                 format_double("%.3g", finer->result.patch_size_m) + " m: " + why);
+    solution = std::move(finer);
+    gathered.reset();
   }
 }
 
@@ -174,7 +225,11 @@ IndirectEstimateInputs run_indirect(const Scene& scene, const SceneLookups& look
   options.visibility = results.plan.visibility_test;
   for (const auto& [distribution, lookup] : lookups.by_distribution)
     options.intensity_lookup.emplace(distribution, lookup.lookup);
-  indirect::IndirectResult r = indirect::compute_indirect(scene, scene.surfaces, options);
+  // Solved once per mesh; gathered at every point only for the mesh that gives the results (the
+  // estimate's meshes are gathered at its probe points).
+  std::unique_ptr<const indirect::IndirectSolution> solution =
+      indirect::solve_indirect(scene, options);
+  std::optional<indirect::IndirectResult> gathered;  // at every point, where already done
   est.ran = true;
   if (scene.settings.quality != Quality::draft) {
     std::vector<geometry::SurfaceGrid> probes;
@@ -183,13 +238,16 @@ IndirectEstimateInputs run_indirect(const Scene& scene, const SceneLookups& look
       probes.push_back(probe_grid(grid, est.probe_index.back()));
     }
     indirect::IndirectOptions coarse = options;
-    coarse.patch_size_m = 2.0 * r.patch_size_m;
-    coarse.clustered = r.clustered;  // each room by the same method as the run it estimates
+    coarse.patch_size_m = 2.0 * solution->result.patch_size_m;
+    // Each room by the same method as the run it estimates.
+    coarse.clustered = solution->result.clustered;
     const indirect::IndirectResult c = indirect::compute_indirect(scene, probes, coarse);
     est.coarse_patch_size_m = c.patch_size_m;
     est.coarse_lx = c.E_indirect_per_surface;
-    refine_patch_size(scene, results, options, r, est);
+    refine_patch_size(scene, results, options, solution, probes, est, gathered);
   }
+  const indirect::IndirectResult r =
+      gathered ? std::move(*gathered) : indirect::gather_indirect(*solution, scene, scene.surfaces);
   for (size_t k = 0; k < results.surfaces.size(); ++k)
     results.surfaces[k].E_indirect = r.E_indirect_per_surface[k];
   results.plan.indirect = r.summary;

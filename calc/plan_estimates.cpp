@@ -94,6 +94,28 @@ double patch_size_estimate(const geometry::SurfaceGrid& grid, const std::vector<
   return worst;
 }
 
+double patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
+                                     const std::vector<double>& E_direct,
+                                     const std::vector<size_t>& probe_index,
+                                     const std::vector<double>& E_indirect_probe,
+                                     const std::vector<double>& coarse_lx, double max_indirect_lx) {
+  const auto active = [&](size_t i) { return grid.active.empty() || grid.active[i]; };
+  double direct_max = 0.0;
+  for (size_t i = 0; i < E_direct.size(); ++i)
+    if (active(i)) direct_max = std::max(direct_max, E_direct[i]);
+  const double floor_bound_lx = kPromiseFloor * (direct_max + max_indirect_lx);
+  double worst = 0.0;
+  for (size_t k = 0; k < probe_index.size(); ++k) {
+    const size_t i = probe_index[k];
+    if (!active(i)) continue;
+    // The sum patch_size_estimate forms, in the same order.
+    const double E = E_direct[i] + E_indirect_probe[k];
+    if (!(E >= floor_bound_lx && E > 0.0)) return -1.0;
+    worst = std::max(worst, std::abs(E_indirect_probe[k] - coarse_lx[k]) / E);
+  }
+  return worst;
+}
+
 void estimate_errors(Results& results, const DirectEstimateInputs& direct,
                      const IndirectEstimateInputs& indirect) {
   Plan& plan = results.plan;

@@ -64,6 +64,18 @@ double patch_size_estimate(const geometry::SurfaceGrid& grid, const std::vector<
                            const std::vector<size_t>& probe_index,
                            const std::vector<double>& coarse_lx, size_t* counted = nullptr);
 
+// The same figure from the probes' own reflected light, without the reflected light at every
+// other point of the grid: `E_direct` per point of `grid`, `E_indirect_probe` and `coarse_lx` per
+// probe, `max_indirect_lx` an upper bound of E_indirect anywhere on the grid. The surface's
+// largest E is then at most the largest E_direct plus that bound; where every counted probe's E
+// is at least 1 % of it, the floor cannot apply and the figure is patch_size_estimate's, to the
+// bit. Returns -1 where a probe is darker (the floor may apply: the caller needs every point).
+double patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
+                                     const std::vector<double>& E_direct,
+                                     const std::vector<size_t>& probe_index,
+                                     const std::vector<double>& E_indirect_probe,
+                                     const std::vector<double>& coarse_lx, double max_indirect_lx);
+
 // Fills results.plan.promise, .estimates, a note per surface, the estimates' sentence after
 // plan.indirect, and a warning per surface whose estimate exceeds the promise. Needs E,
 // E_direct and E_indirect of every surface (maintained).

@@ -290,11 +290,14 @@ IndirectOptions indirect_options(const Settings& settings) {
   return o;
 }
 
-IndirectResult compute_indirect(const Scene& scene,
-                                const std::vector<geometry::SurfaceGrid>& surfaces,
-                                const IndirectOptions& options) {
+std::unique_ptr<const IndirectSolution> solve_indirect(const Scene& scene,
+                                                       const IndirectOptions& options_in) {
   const auto t0 = std::chrono::steady_clock::now();
-  IndirectResult res;
+  auto solution = std::make_unique<IndirectSolution>();
+  IndirectSolution& sol_out = *solution;
+  sol_out.options = options_in;
+  const IndirectOptions& options = sol_out.options;
+  IndirectResult& res = sol_out.result;
   const double size =
       options.patch_size_m > 0.0 ? options.patch_size_m : quality_patch_size(options.quality);
   const double far_ratio =
@@ -306,7 +309,8 @@ IndirectResult compute_indirect(const Scene& scene,
                                                           : 0;
 
   const RoomBudgets budgets = room_budgets(scene, options, size);
-  const PatchMesh mesh = mesh_within_budget(scene, options, budgets, size, res.notes);
+  sol_out.mesh = mesh_within_budget(scene, options, budgets, size, res.notes);
+  const PatchMesh& mesh = sol_out.mesh;
   res.clustered = budgets.clustered;
   res.patches = mesh.patches.size();
   res.patch_size_m = mesh.patch_size_m;
@@ -314,8 +318,10 @@ IndirectResult compute_indirect(const Scene& scene,
   // Visibility: the plan's (the scene's AABB tree, calc/visibility), or nothing blocks.
   size_t obstacle_count = 0;
   for (const auto& room : scene.rooms) obstacle_count += room.obstacles.size();
-  std::vector<const geometry::Visibility*> room_visibility(scene.rooms.size(), nullptr);
-  std::optional<geometry::BoxFilteredVisibility> obstacles_only;
+  sol_out.obstacle_count = obstacle_count;
+  auto& room_visibility = sol_out.room_visibility;
+  room_visibility.assign(scene.rooms.size(), nullptr);
+  auto& obstacles_only = sol_out.obstacles_only;
   if (const geometry::Visibility* vis = options.visibility.get()) {
     // In a convex room only obstacles can block a segment between two of its points: skip the
     // tree for segments that miss every obstacle's box (most of them), an exact filter.
@@ -326,7 +332,8 @@ IndirectResult compute_indirect(const Scene& scene,
   // A clustered room is convex without obstacles: nothing blocks light inside it. Its far ratio
   // is the quality's, or kClusteredReferenceFarRatio where that is infinite (reference): an
   // always-exact gather or transfer over 10^5 patches is what clustering avoids.
-  std::vector<double> room_far(scene.rooms.size(), far_ratio);
+  auto& room_far = sol_out.room_far;
+  room_far.assign(scene.rooms.size(), far_ratio);
   for (size_t r = 0; r < scene.rooms.size(); ++r)
     if (budgets.clustered[r]) {
       room_visibility[r] = nullptr;
@@ -343,7 +350,8 @@ IndirectResult compute_indirect(const Scene& scene,
   for (double f : fb.vpl_flux_lm) res.vpl_flux_lm += f;
 
   // Exitant flux per patch, room by room (rooms are closed: no light passes between them).
-  std::vector<double> exitant(mesh.patches.size(), 0.0);
+  auto& exitant = sol_out.exitant_flux_lm;
+  exitant.assign(mesh.patches.size(), 0.0);
   for (size_t r = 0; r < scene.rooms.size(); ++r) {
     const size_t begin = mesh.room_begin[r], end = mesh.room_begin[r + 1];
     std::vector<double> rho(end - begin), incident(end - begin);
@@ -390,6 +398,23 @@ IndirectResult compute_indirect(const Scene& scene,
     for (size_t i = begin; i < end; ++i) exitant[i] = sol.exitant_flux_lm[i - begin];
   }
 
+  sol_out.bounces = bounces;
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return solution;
+}
+
+IndirectResult gather_indirect(const IndirectSolution& solution, const Scene& scene,
+                               const std::vector<geometry::SurfaceGrid>& surfaces) {
+  const auto t0 = std::chrono::steady_clock::now();
+  IndirectResult res = solution.result;
+  const IndirectOptions& options = solution.options;
+  const PatchMesh& mesh = solution.mesh;
+  const std::vector<double>& exitant = solution.exitant_flux_lm;
+  const std::vector<double>& room_far = solution.room_far;
+  const auto& room_visibility = solution.room_visibility;
+  const std::vector<char>& clustered = solution.result.clustered;
+  const int bounces = solution.bounces;
+  const size_t obstacle_count = solution.obstacle_count;
   // Receivers: each active point's room and its position moved off the room's faces.
   struct Receiver {
     int room = -1;
@@ -408,9 +433,9 @@ IndirectResult compute_indirect(const Scene& scene,
   }
   std::vector<GatherSet> gather_sets;
   for (size_t r = 0; r < scene.rooms.size(); ++r)
-    gather_sets.push_back(
-        make_gather_set(mesh, mesh.room_begin[r], mesh.room_begin[r + 1], exitant, room_far[r],
-                        nullptr, budgets.clustered[r] ? cluster_opening(room_far[r]) : 0.0));
+    gather_sets.push_back(make_gather_set(mesh, mesh.room_begin[r], mesh.room_begin[r + 1], exitant,
+                                          room_far[r], nullptr,
+                                          clustered[r] ? cluster_opening(room_far[r]) : 0.0));
 
   // Patches a receiver comes close to, refined into cells (subcells.h); not at draft, which
   // promises no accuracy.
@@ -428,7 +453,7 @@ IndirectResult compute_indirect(const Scene& scene,
     if (!cells.mesh.patches.empty()) {
       const FirstBounce cell_fb =
           first_bounce(scene, cells.mesh, room_visibility, 0.08, &options.luminous_flux_lm,
-                       &options.intensity_lookup, &budgets.clustered);
+                       &options.intensity_lookup, &clustered);
       std::vector<double> cell_indirect(cells.mesh.patches.size(), 0.0);
       // Near patches cell by cell; the far ones, whose light varies smoothly over a patch, at
       // the four corner cells of each patch, interpolated bilinearly to the others (subcells.h).
@@ -461,7 +486,7 @@ IndirectResult compute_indirect(const Scene& scene,
       for (size_t r = 0; r < scene.rooms.size(); ++r)
         gather_sets[r] =
             make_gather_set(mesh, mesh.room_begin[r], mesh.room_begin[r + 1], exitant, room_far[r],
-                            &sub, budgets.clustered[r] ? cluster_opening(room_far[r]) : 0.0);
+                            &sub, clustered[r] ? cluster_opening(room_far[r]) : 0.0);
     }
   }
 
@@ -477,7 +502,7 @@ IndirectResult compute_indirect(const Scene& scene,
                                 room_far[rc.room], room_visibility[rc.room]);
     });
   }
-  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  res.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   std::string what = bounces == 1 ? "one bounce (RSM-style)"
                      : bounces > 1
@@ -508,6 +533,12 @@ IndirectResult compute_indirect(const Scene& scene,
                             (obstacle_count == 1 ? "" : "s") + " reflect and shade"
                       : std::string());
   return res;
+}
+
+IndirectResult compute_indirect(const Scene& scene,
+                                const std::vector<geometry::SurfaceGrid>& surfaces,
+                                const IndirectOptions& options) {
+  return gather_indirect(*solve_indirect(scene, options), scene, surfaces);
 }
 
 }  // namespace luxgrid::calc::indirect

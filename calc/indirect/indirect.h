@@ -3,6 +3,8 @@
 //
 //   decide_indirect(scene)                 -> run it or not, and why (decision.h; make_plan calls
 //   it) compute_indirect(scene, surfaces, opt) -> E_indirect per point of every surface + a summary
+//   = gather_indirect(*solve_indirect(scene, opt), scene, surfaces): the rooms solved once, then
+//   gathered at any set of points (the plan's estimate gathers at its probe points only)
 //
 // Method (docs/indirect.md): rooms are meshed into patches (patches.h); the first bounce
 // integrates every luminaire's intensity over each patch's solid angle and makes each lit patch a
@@ -15,6 +17,7 @@
 // exitance its own direct and reflected light give it (subcells.h).
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +28,7 @@
 #include "calc/scene.h"
 #include "calc/visibility.h"
 #include "geometry/surface_grid.h"
+#include "geometry/visibility.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -84,6 +88,35 @@ struct IndirectResult {
   std::vector<char> clustered;  // per room: solved with the clustered transfer
   double seconds = 0.0;
 };
+
+// The rooms solved: the mesh and every patch's exitant flux, all the gather needs. Not copied or
+// moved: room_visibility may point into obstacles_only.
+struct IndirectSolution {
+  IndirectOptions options;  // as solved (its visibility kept alive here)
+  PatchMesh mesh;
+  std::vector<double> exitant_flux_lm;  // per patch of the mesh
+  std::vector<double> room_far;         // the far ratio each room is gathered with
+  std::vector<const geometry::Visibility*> room_visibility;  // per room; null: nothing blocks
+  std::optional<geometry::BoxFilteredVisibility> obstacles_only;
+  int bounces = 0;  // as asked (0: converged)
+  size_t obstacle_count = 0;
+  // What the solve found (patches, bounces, residual, fluxes, notes, warnings, clustered
+  // rooms); gather_indirect adds the values, the refined patches and the summary.
+  IndirectResult result;
+  IndirectSolution() = default;
+  IndirectSolution(const IndirectSolution&) = delete;
+  IndirectSolution& operator=(const IndirectSolution&) = delete;
+};
+
+// Meshes and solves every room (throws as compute_indirect).
+std::unique_ptr<const IndirectSolution> solve_indirect(const Scene& scene,
+                                                       const IndirectOptions& options);
+// E_indirect at every point of `surfaces` from a solution. A point's value does not depend on
+// which other points are gathered with it (a patch is refined into cells for the receivers that
+// come close to it, and only those receivers gather its cells), so the values at a subset of a
+// grid's points are those of the whole grid at the same points, to the bit.
+IndirectResult gather_indirect(const IndirectSolution& solution, const Scene& scene,
+                               const std::vector<geometry::SurfaceGrid>& surfaces);
 
 // E_indirect at every point of every surface (inactive points get 0). Throws
 // InputError naming the room for a bad room or a patch budget the scene exceeds (with an

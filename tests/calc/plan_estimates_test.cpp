@@ -27,6 +27,39 @@ Scene office() {
   return scene;
 }
 
+// The estimate from the probes' own values (what the plan computes without gathering every
+// point) is patch_size_estimate's to the bit where no probe is darker than 1 % of the bound on
+// the surface's largest E, and declines (-1) where one is, since the floor may then apply.
+TEST(PlanEstimates, PatchSizeEstimateAtTheProbesIsTheWholeGridsOrDeclines) {
+  geometry::SurfaceGrid grid =
+      geometry::make_plane_grid("g", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2.0, 2.0, 0.25);
+  const size_t n = grid.points.size();
+  std::vector<double> E_direct(n), E_ind(n), E(n);
+  for (size_t i = 0; i < n; ++i) {
+    E_direct[i] = 300.0 + 37.0 * std::sin(0.7 * static_cast<double>(i));
+    E_ind[i] = 80.0 + 11.0 * std::cos(0.3 * static_cast<double>(i));
+    E[i] = E_direct[i] + E_ind[i];
+  }
+  const std::vector<size_t> probes = probe_points(grid);
+  std::vector<double> E_ind_probe, coarse;
+  for (size_t k = 0; k < probes.size(); ++k) {
+    E_ind_probe.push_back(E_ind[probes[k]]);
+    coarse.push_back(E_ind[probes[k]] * (1.0 + 0.01 * std::sin(static_cast<double>(k))));
+  }
+  const double whole = patch_size_estimate(grid, E, E_ind, probes, coarse);
+  ASSERT_GT(whole, 0.0);
+  // A bound of the reflected light well above its largest value (91 lx): the floor is then at
+  // most 1 % of 337 + 400 lx, below every probe's 300 lx and more.
+  EXPECT_EQ(patch_size_estimate_at_probes(grid, E_direct, probes, E_ind_probe, coarse, 400.0),
+            whole);
+  // A dark probe (2 lx, below 1 % of the bound): the floor may apply, so it declines.
+  std::vector<double> dark_direct = E_direct, dark_probe = E_ind_probe;
+  dark_direct[probes[5]] = 1.0;
+  dark_probe[5] = 1.0;
+  EXPECT_EQ(patch_size_estimate_at_probes(grid, dark_direct, probes, dark_probe, coarse, 400.0),
+            -1.0);
+}
+
 TEST(PlanEstimates, PatchSizeEstimateIsNotBelowTheMeshErrorSeenAtHalfTheSize) {
   // The estimate at patch size h is |E_ind(h) - E_ind(2h)| (first-order convergence in h). The
   // mesh's true error at h is at least |E_ind(h) - E_ind(h / 2)| when the indirect light

@@ -641,6 +641,48 @@ TEST(Gather, CellsNearCornersMeetTheStandardPromise) {
   EXPECT_GT(worst(without), 0.05);  // the test sees the effect it guards
 }
 
+// The plan's estimate gathers its meshes at the probe points only and relies on the values there
+// being the whole grid's, to the bit (indirect.h, gather_indirect): a point's cells are those of
+// the patches it comes close to itself. Checked on every face of a box (points at corners and
+// edges, where cells are made) and a workplane, against the whole grids gathered together.
+TEST(Gather, ASubsetOfPointsGetsTheWholeGridsValuesToTheBit) {
+  std::vector<Luminaire> lums;
+  for (double x : {1.25, 3.75})
+    for (double y : {1.0, 3.0}) lums.push_back(lambertian_at({x, y, 2.7}, 1000.0));
+  const Scene s = scene_of(box_room(5, 4, 2.8, 0.2, 0.5, 0.7), lums);
+  auto grids = box_face_grids(5, 4, 2.8, 0.25);
+  grids.push_back(geometry::make_plane_grid("workplane", {0.5, 0.5, 0.75}, {1, 0, 0}, {0, 1, 0},
+                                            4.0, 3.0, 0.25));
+  const auto solution = solve_indirect(s, IndirectOptions{});
+  const IndirectResult whole = gather_indirect(*solution, s, grids);
+  ASSERT_GT(whole.refined_patches, 0u);  // cells are made, so the property is tested
+  // Every 7th point of each grid, so the subset's neighbours are not gathered with it.
+  std::vector<SurfaceGrid> subsets;
+  std::vector<std::vector<size_t>> picked(grids.size());
+  for (size_t k = 0; k < grids.size(); ++k) {
+    SurfaceGrid g;
+    g.name = grids[k].name;
+    g.kind = SurfaceGrid::Kind::points;
+    for (size_t i = 3; i < grids[k].points.size(); i += 7) {
+      picked[k].push_back(i);
+      g.points.push_back(grids[k].points[i]);
+      g.normals.push_back(grids[k].normals[i]);
+    }
+    g.nu = static_cast<int>(g.points.size());
+    g.nv = 1;
+    subsets.push_back(g);
+  }
+  const IndirectResult part = gather_indirect(*solution, s, subsets);
+  EXPECT_LT(part.refined_patches, whole.refined_patches);  // fewer cells made for fewer points
+  for (size_t k = 0; k < grids.size(); ++k)
+    for (size_t j = 0; j < picked[k].size(); ++j)
+      EXPECT_EQ(part.E_indirect_per_surface[k][j], whole.E_indirect_per_surface[k][picked[k][j]])
+          << grids[k].name << " point " << picked[k][j];
+  // compute_indirect is the solve and the gather in one.
+  EXPECT_EQ(compute_indirect(s, grids, IndirectOptions{}).E_indirect_per_surface,
+            whole.E_indirect_per_surface);
+}
+
 // Cells only redistribute a patch's flux: their exitances average to the patch's (subcells.h).
 TEST(Subcells, CellsKeepEachPatchsFlux) {
   const Scene s = scene_of(box_room(3, 2, 2.5, 0.3, 0.6, 0.8), {});
