@@ -4,6 +4,9 @@
 #include <cstdio>
 #include <string_view>
 
+#include "report/chunked_text.h"
+#include "report/number_text_memo.h"
+
 namespace luxgrid::report {
 
 namespace {
@@ -29,8 +32,19 @@ std::string observers_csv(const calc::SurfaceResult& r) {
 }
 }  // namespace
 
-std::string surface_csv(const calc::SurfaceResult& r) {
-  if (r.grid.kind == geometry::SurfaceGrid::Kind::observers) return observers_csv(r);
+namespace {
+// Numbers as printf's "%.6g" writes them (std::to_chars with a precision is specified so),
+// without printf's format parsing and locale: a large grid's CSV is a million rows.
+struct SixDigits {
+  char* operator()(double v, char* first) const {
+    return std::to_chars(first, first + NumberTextMemo<SixDigits>::kMaxChars, v,
+                         std::chars_format::general, 6)
+        .ptr;
+  }
+};
+
+// Rows [begin, end) of a grid's or points surface's CSV.
+void point_rows(const calc::SurfaceResult& r, size_t begin, size_t end, std::string& out) {
   // The last column says what the E columns measure (results.json's "quantity"), so a CSV read on
   // its own cannot pass a cylindrical value off as a planar one. nx, ny, nz are the receiver
   // normal: for a semi-cylindrical surface the direction the half cylinder faces. A point left
@@ -39,21 +53,15 @@ std::string surface_csv(const calc::SurfaceResult& r) {
   // it, as the statistics do.
   const auto& g = r.grid;
   const std::string quantity = std::string(",") + geometry::to_string(g.quantity) + "\n";
-  // Numbers as printf's "%.6g" writes them (std::to_chars with a precision is specified so),
-  // without printf's format parsing and locale: a large grid's CSV is a million rows.
   constexpr size_t kRowBytes = 8 * 14 + 3 * 13 + 16;  // digits, signs, exponents, separators
-  std::string out;
-  out.reserve(std::string_view(kSurfaceCsvHeader).size() + 1 +
-              g.points.size() * (kRowBytes + quantity.size()));
-  out += kSurfaceCsvHeader;
-  out += '\n';
+  out.reserve(out.size() + (end - begin) * (kRowBytes + quantity.size()));
+  // One memo per thread: the chunks of one CSV (and the next CSV) share its coordinates.
+  static thread_local NumberTextMemo<SixDigits> memo;
   char buf[32];
   const auto put_int = [&](int v) { out.append(buf, std::to_chars(buf, buf + sizeof buf, v).ptr); };
-  const auto put = [&](double v) {
-    out.append(buf, std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 6).ptr);
-  };
+  const auto put = [&](double v) { out.append(memo.text(v)); };
   const int nu = g.nu > 0 ? g.nu : 1;
-  for (size_t k = 0; k < g.points.size(); ++k) {
+  for (size_t k = begin; k < end; ++k) {
     const auto& p = g.points[k];
     const auto& n = g.normals[k];
     put_int(static_cast<int>(k % nu));
@@ -74,7 +82,31 @@ std::string surface_csv(const calc::SurfaceResult& r) {
     }
     out += quantity;
   }
+}
+
+// Rows a chunk: about 1 MB of text, formatted in parallel (report/chunked_text.h).
+constexpr size_t kRowsPerChunk = 8192;
+}  // namespace
+
+std::string surface_csv(const calc::SurfaceResult& r) {
+  if (r.grid.kind == geometry::SurfaceGrid::Kind::observers) return observers_csv(r);
+  std::string out = std::string(kSurfaceCsvHeader) + "\n";
+  point_rows(r, 0, r.grid.points.size(), out);
   return out;
+}
+
+void write_surface_csv(std::ostream& out, const calc::SurfaceResult& r) {
+  if (r.grid.kind == geometry::SurfaceGrid::Kind::observers) {
+    out << observers_csv(r);
+    return;
+  }
+  out << kSurfaceCsvHeader << '\n';
+  write_chunked(
+      r.grid.points.size(), kRowsPerChunk,
+      [&](size_t begin, size_t end, std::string& text) { point_rows(r, begin, end, text); },
+      [&](std::string_view text) {
+        out.write(text.data(), static_cast<std::streamsize>(text.size()));
+      });
 }
 
 }  // namespace luxgrid::report

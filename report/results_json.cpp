@@ -1,9 +1,13 @@
 #include "report/results_json.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <string_view>
+
+#include "report/chunked_text.h"
+#include "report/number_text_memo.h"
 
 namespace luxgrid::report {
 
@@ -165,14 +169,6 @@ class Buffered {
     if (buf_.size() >= kFlushAt) flush();
   }
   void indent(size_t n) { buf_.append(n, ' '); }
-  // A number exactly as nlohmann::json's dump writes it: the shortest text that reads back to
-  // the same double, "null" for a non-finite value.
-  void number(double v) {
-    if (!std::isfinite(v)) return text("null");
-    std::array<char, 64> digits;
-    const char* end = nlohmann::detail::to_chars(digits.data(), digits.data() + digits.size(), v);
-    text(std::string_view(digits.data(), static_cast<size_t>(end - digits.data())));
-  }
   void flush() {
     out_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
     buf_.clear();
@@ -184,17 +180,36 @@ class Buffered {
   std::string buf_;
 };
 
+// A number exactly as nlohmann::json's dump writes it: a short text that reads back to the same
+// double, "null" for a non-finite value. Its Grisu2 digits are not always std::to_chars's
+// shortest ones (about one random double in 1500 ends differently), so they are kept.
+struct JsonNumber {
+  char* operator()(double v, char* first) const {
+    if (!std::isfinite(v)) return std::copy_n("null", 4, first);
+    return nlohmann::detail::to_chars(first, first + NumberTextMemo<JsonNumber>::kMaxChars, v);
+  }
+};
+
+// Elements a chunk: a few hundred kB of text, formatted in parallel (report/chunked_text.h).
+constexpr size_t kElementsPerChunk = 8192;
+
 // One array in dump(1)'s layout at `depth` (the indent of the line holding its key): "[]" when
-// empty, else one element a line at depth + 1 and the closing bracket at depth.
+// empty, else one element a line at depth + 1 and the closing bracket at depth. `element(i,
+// depth, text)` appends element i's text; the elements are made in parallel chunks.
 template <typename Element>
 void write_array(Buffered& out, size_t count, size_t depth, const Element& element) {
   if (count == 0) return out.text("[]");
   out.text("[\n");
-  for (size_t i = 0; i < count; ++i) {
-    out.indent(depth + 1);
-    element(i, depth + 1);
-    out.text(i + 1 < count ? ",\n" : "\n");
-  }
+  write_chunked(
+      count, kElementsPerChunk,
+      [&](size_t begin, size_t end, std::string& text) {
+        for (size_t i = begin; i < end; ++i) {
+          text.append(depth + 1, ' ');
+          element(i, depth + 1, text);
+          text.append(i + 1 < count ? ",\n" : "\n");
+        }
+      },
+      [&](std::string_view text) { out.text(text); });
   out.indent(depth);
   out.text("]");
 }
@@ -202,21 +217,34 @@ void write_array(Buffered& out, size_t count, size_t depth, const Element& eleme
 void write_point_array(Buffered& out, const calc::SurfaceResult& r, PointArray array,
                        size_t depth) {
   const auto& g = r.grid;
+  // One memo per thread: the chunks of one array (and the next array) share its repeats.
+  auto number = [](double v, std::string& text) {
+    static thread_local NumberTextMemo<JsonNumber> memo;
+    text.append(memo.text(v));
+  };
   auto vectors = [&](const std::vector<Vec3>& v) {
-    write_array(out, v.size(), depth, [&](size_t i, size_t d) {
-      write_array(out, 3, d,
-                  [&](size_t c, size_t) { out.number(v[i][static_cast<glm::length_t>(c)]); });
+    write_array(out, v.size(), depth, [&](size_t i, size_t d, std::string& text) {
+      // [x, y, z] one a line, as dump(1) writes a three-element array at depth d.
+      text.append("[\n");
+      for (glm::length_t c = 0; c < 3; ++c) {
+        text.append(d + 1, ' ');
+        number(v[i][c], text);
+        text.append(c < 2 ? ",\n" : "\n");
+      }
+      text.append(d, ' ');
+      text.append("]");
     });
   };
   auto numbers = [&](const std::vector<double>& v) {
-    write_array(out, v.size(), depth, [&](size_t i, size_t) { out.number(v[i]); });
+    write_array(out, v.size(), depth,
+                [&](size_t i, size_t, std::string& text) { number(v[i], text); });
   };
   switch (array) {
     case PointArray::points: return vectors(g.points);
     case PointArray::normals: return vectors(g.normals);
     case PointArray::active:
-      return write_array(out, g.points.size(), depth, [&](size_t i, size_t) {
-        out.text(g.active.empty() || g.active[i] ? "true" : "false");
+      return write_array(out, g.points.size(), depth, [&](size_t i, size_t, std::string& text) {
+        text.append(g.active.empty() || g.active[i] ? "true" : "false");
       });
     case PointArray::E: return numbers(r.E);
     case PointArray::E_direct: return numbers(r.E_direct);
