@@ -6,6 +6,7 @@
 
 #include "report/chunked_text.h"
 #include "report/number_text_memo.h"
+#include "report/piece_buffer.h"
 
 namespace luxgrid::report {
 
@@ -57,30 +58,33 @@ void point_rows(const calc::SurfaceResult& r, size_t begin, size_t end, std::str
   out.reserve(out.size() + (end - begin) * (kRowBytes + quantity.size()));
   // One memo per thread: the chunks of one CSV (and the next CSV) share its coordinates.
   static thread_local NumberTextMemo<SixDigits> memo;
-  char buf[32];
-  const auto put_int = [&](int v) { out.append(buf, std::to_chars(buf, buf + sizeof buf, v).ptr); };
-  const auto put = [&](double v) { out.append(memo.text(v)); };
+  PieceBuffer row(out);
+  char digits[16];
+  const auto put_int = [&](int v) {
+    row.put(std::string_view(digits, std::to_chars(digits, digits + sizeof digits, v).ptr));
+  };
+  const auto put = [&](double v) { row.put(memo.text(v)); };
   const int nu = g.nu > 0 ? g.nu : 1;
   for (size_t k = begin; k < end; ++k) {
     const auto& p = g.points[k];
     const auto& n = g.normals[k];
     put_int(static_cast<int>(k % nu));
-    out += ',';
+    row.put(',');
     put_int(static_cast<int>(k / nu));
     for (const double v : {p.x, p.y, p.z, n.x, n.y, n.z}) {
-      out += ',';
+      row.put(',');
       put(v);
     }
     if (g.active.empty() || g.active[k]) {
-      out += ",true";
+      row.put(",true");
       for (const double v : {r.E[k], r.E_direct[k], r.E_indirect[k]}) {
-        out += ',';
+        row.put(',');
         put(v);
       }
     } else {
-      out += ",false,,,";
+      row.put(",false,,,");
     }
-    out += quantity;
+    row.put(quantity);
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include "report/chunked_text.h"
 #include "report/number_text_memo.h"
+#include "report/piece_buffer.h"
 
 namespace luxgrid::report {
 
@@ -195,7 +196,7 @@ constexpr size_t kElementsPerChunk = 8192;
 
 // One array in dump(1)'s layout at `depth` (the indent of the line holding its key): "[]" when
 // empty, else one element a line at depth + 1 and the closing bracket at depth. `element(i,
-// depth, text)` appends element i's text; the elements are made in parallel chunks.
+// depth, pieces)` puts element i's text; the elements are made in parallel chunks.
 template <typename Element>
 void write_array(Buffered& out, size_t count, size_t depth, const Element& element) {
   if (count == 0) return out.text("[]");
@@ -203,10 +204,11 @@ void write_array(Buffered& out, size_t count, size_t depth, const Element& eleme
   write_chunked(
       count, kElementsPerChunk,
       [&](size_t begin, size_t end, std::string& text) {
+        PieceBuffer pieces(text);
         for (size_t i = begin; i < end; ++i) {
-          text.append(depth + 1, ' ');
-          element(i, depth + 1, text);
-          text.append(i + 1 < count ? ",\n" : "\n");
+          pieces.spaces(depth + 1);
+          element(i, depth + 1, pieces);
+          pieces.put(i + 1 < count ? ",\n" : "\n");
         }
       },
       [&](std::string_view text) { out.text(text); });
@@ -218,33 +220,33 @@ void write_point_array(Buffered& out, const calc::SurfaceResult& r, PointArray a
                        size_t depth) {
   const auto& g = r.grid;
   // One memo per thread: the chunks of one array (and the next array) share its repeats.
-  auto number = [](double v, std::string& text) {
+  auto number = [](double v, PieceBuffer& text) {
     static thread_local NumberTextMemo<JsonNumber> memo;
-    text.append(memo.text(v));
+    text.put(memo.text(v));
   };
   auto vectors = [&](const std::vector<Vec3>& v) {
-    write_array(out, v.size(), depth, [&](size_t i, size_t d, std::string& text) {
+    write_array(out, v.size(), depth, [&](size_t i, size_t d, PieceBuffer& text) {
       // [x, y, z] one a line, as dump(1) writes a three-element array at depth d.
-      text.append("[\n");
+      text.put("[\n");
       for (glm::length_t c = 0; c < 3; ++c) {
-        text.append(d + 1, ' ');
+        text.spaces(d + 1);
         number(v[i][c], text);
-        text.append(c < 2 ? ",\n" : "\n");
+        text.put(c < 2 ? ",\n" : "\n");
       }
-      text.append(d, ' ');
-      text.append("]");
+      text.spaces(d);
+      text.put(']');
     });
   };
   auto numbers = [&](const std::vector<double>& v) {
     write_array(out, v.size(), depth,
-                [&](size_t i, size_t, std::string& text) { number(v[i], text); });
+                [&](size_t i, size_t, PieceBuffer& text) { number(v[i], text); });
   };
   switch (array) {
     case PointArray::points: return vectors(g.points);
     case PointArray::normals: return vectors(g.normals);
     case PointArray::active:
-      return write_array(out, g.points.size(), depth, [&](size_t i, size_t, std::string& text) {
-        text.append(g.active.empty() || g.active[i] ? "true" : "false");
+      return write_array(out, g.points.size(), depth, [&](size_t i, size_t, PieceBuffer& text) {
+        text.put(g.active.empty() || g.active[i] ? "true" : "false");
       });
     case PointArray::E: return numbers(r.E);
     case PointArray::E_direct: return numbers(r.E_direct);
