@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string_view>
 
 #include "report/chunked_text.h"
@@ -198,8 +199,13 @@ constexpr size_t kElementsPerChunk = 8192;
 // empty, else one element a line at depth + 1 and the closing bracket at depth. `element(i,
 // depth, pieces)` puts element i's text; the elements are made in parallel chunks.
 template <typename Element>
-void write_array(Buffered& out, size_t count, size_t depth, const Element& element) {
-  if (count == 0) return out.text("[]");
+void write_array(Buffered& out, size_t count, size_t depth, const Element& element,
+                 std::string* copy = nullptr) {
+  if (count == 0) {
+    if (copy) *copy = "[]";
+    return out.text("[]");
+  }
+  if (copy) *copy = "[\n";
   out.text("[\n");
   write_chunked(
       count, kElementsPerChunk,
@@ -211,13 +217,30 @@ void write_array(Buffered& out, size_t count, size_t depth, const Element& eleme
           pieces.put(i + 1 < count ? ",\n" : "\n");
         }
       },
-      [&](std::string_view text) { out.text(text); });
+      [&](std::string_view text) {
+        out.text(text);
+        if (copy) copy->append(text);
+      });
   out.indent(depth);
   out.text("]");
+  if (copy) copy->append(depth, ' ').append("]");
 }
 
-void write_point_array(Buffered& out, const calc::SurfaceResult& r, PointArray array,
-                       size_t depth) {
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+// Without reflected light E_direct is E bit for bit: E_direct's text is E's, kept while E is
+// written (a few bytes a point, for one array) instead of formatted a second time.
+struct KeptText {
+  const calc::SurfaceResult* surface = nullptr;
+  size_t depth = 0;
+  std::string text;
+};
+
+void write_point_array(Buffered& out, const calc::SurfaceResult& r, PointArray array, size_t depth,
+                       KeptText& kept) {
   const auto& g = r.grid;
   // One memo per thread: the chunks of one array (and the next array) share its repeats.
   auto number = [](double v, PieceBuffer& text) {
@@ -237,9 +260,10 @@ void write_point_array(Buffered& out, const calc::SurfaceResult& r, PointArray a
       text.put(']');
     });
   };
-  auto numbers = [&](const std::vector<double>& v) {
-    write_array(out, v.size(), depth,
-                [&](size_t i, size_t, PieceBuffer& text) { number(v[i], text); });
+  auto numbers = [&](const std::vector<double>& v, std::string* copy = nullptr) {
+    write_array(
+        out, v.size(), depth, [&](size_t i, size_t, PieceBuffer& text) { number(v[i], text); },
+        copy);
   };
   switch (array) {
     case PointArray::points: return vectors(g.points);
@@ -248,8 +272,17 @@ void write_point_array(Buffered& out, const calc::SurfaceResult& r, PointArray a
       return write_array(out, g.points.size(), depth, [&](size_t i, size_t, PieceBuffer& text) {
         text.put(g.active.empty() || g.active[i] ? "true" : "false");
       });
-    case PointArray::E: return numbers(r.E);
-    case PointArray::E_direct: return numbers(r.E_direct);
+    case PointArray::E:
+      if (!same_bits(r.E_direct, r.E)) return numbers(r.E);
+      kept.surface = &r, kept.depth = depth;
+      return numbers(r.E, &kept.text);
+    case PointArray::E_direct:
+      if (kept.surface == &r && kept.depth == depth && same_bits(r.E_direct, r.E)) {
+        out.text(kept.text);
+        kept = KeptText{};
+        return;
+      }
+      return numbers(r.E_direct);
     case PointArray::E_indirect: return numbers(r.E_indirect);
   }
 }
@@ -271,6 +304,7 @@ void write_results_json(std::ostream& stream, const nlohmann::json& outline,
                         const calc::Results& results) {
   const std::string text = outline.dump(1);
   Buffered out(stream);
+  KeptText kept;
   size_t from = 0;
   // Each placeholder is the value of a key at the start of a line: `\n<indent>"key": "\u0001points
   // K A"`.
@@ -288,7 +322,7 @@ void write_results_json(std::ostream& stream, const nlohmann::json& outline,
         array >= static_cast<int>(kPointArrays.size()))
       continue;
     out.text(std::string_view(text).substr(from, at - from));
-    write_point_array(out, results.surfaces[surface], static_cast<PointArray>(array), depth);
+    write_point_array(out, results.surfaces[surface], static_cast<PointArray>(array), depth, kept);
     from = close + 1;
   }
   out.text(std::string_view(text).substr(from));
