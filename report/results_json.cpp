@@ -195,12 +195,16 @@ struct JsonNumber {
 // Elements a chunk: a few hundred kB of text, formatted in parallel (report/chunked_text.h).
 constexpr size_t kElementsPerChunk = 8192;
 
+// A line of an array below depth is at most depth + kLineChars long: the indent, a number of up
+// to 24 characters ("-1.2345678901234567e-308") and ",\n".
+constexpr size_t kLineChars = 28;
+
 // One array in dump(1)'s layout at `depth` (the indent of the line holding its key): "[]" when
 // empty, else one element a line at depth + 1 and the closing bracket at depth. `element(i,
 // depth, pieces)` puts element i's text; the elements are made in parallel chunks.
 template <typename Element>
-void write_array(Buffered& out, size_t count, size_t depth, const Element& element,
-                 std::string* copy = nullptr) {
+void write_array(Buffered& out, size_t count, size_t depth, size_t lines_each,
+                 const Element& element, std::string* copy = nullptr) {
   if (count == 0) {
     if (copy) *copy = "[]";
     return out.text("[]");
@@ -210,6 +214,8 @@ void write_array(Buffered& out, size_t count, size_t depth, const Element& eleme
   write_chunked(
       count, kElementsPerChunk,
       [&](size_t begin, size_t end, std::string& text) {
+        // Reserved once, so the chunk's text is not copied as it grows.
+        text.reserve((end - begin) * lines_each * (depth + kLineChars));
         PieceBuffer pieces(text);
         for (size_t i = begin; i < end; ++i) {
           pieces.spaces(depth + 1);
@@ -248,7 +254,7 @@ void write_point_array(Buffered& out, const calc::SurfaceResult& r, PointArray a
     text.put(memo.text(v));
   };
   auto vectors = [&](const std::vector<Vec3>& v) {
-    write_array(out, v.size(), depth, [&](size_t i, size_t d, PieceBuffer& text) {
+    write_array(out, v.size(), depth, 5, [&](size_t i, size_t d, PieceBuffer& text) {
       // [x, y, z] one a line, as dump(1) writes a three-element array at depth d.
       text.put("[\n");
       for (glm::length_t c = 0; c < 3; ++c) {
@@ -262,14 +268,14 @@ void write_point_array(Buffered& out, const calc::SurfaceResult& r, PointArray a
   };
   auto numbers = [&](const std::vector<double>& v, std::string* copy = nullptr) {
     write_array(
-        out, v.size(), depth, [&](size_t i, size_t, PieceBuffer& text) { number(v[i], text); },
+        out, v.size(), depth, 1, [&](size_t i, size_t, PieceBuffer& text) { number(v[i], text); },
         copy);
   };
   switch (array) {
     case PointArray::points: return vectors(g.points);
     case PointArray::normals: return vectors(g.normals);
     case PointArray::active:
-      return write_array(out, g.points.size(), depth, [&](size_t i, size_t, PieceBuffer& text) {
+      return write_array(out, g.points.size(), depth, 1, [&](size_t i, size_t, PieceBuffer& text) {
         text.put(g.active.empty() || g.active[i] ? "true" : "false");
       });
     case PointArray::E:
