@@ -209,7 +209,11 @@ void write_array(Buffered& out, size_t count, size_t depth, size_t lines_each,
     if (copy) *copy = "[]";
     return out.text("[]");
   }
-  if (copy) *copy = "[\n";
+  if (copy) {
+    // Reserved once, as the chunks are.
+    copy->reserve(count * lines_each * (depth + kLineChars) + depth + 4);
+    *copy = "[\n";
+  }
   out.text("[\n");
   write_chunked(
       count, kElementsPerChunk,
