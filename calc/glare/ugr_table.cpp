@@ -185,9 +185,12 @@ std::optional<double> room_ugr(const photometry::IntensityDistribution& d,
   double floor_lm = 0.0;
   const std::vector<Landing>& land = landings();
   for (size_t c = 0; c < land.size(); ++c) {
-    floor_lm += fluxes.down_cell_lm[c] *
-                static_cast<double>(count_inside(xs, land[c].dx_m, -0.5 * X, 0.5 * X) *
-                                    count_inside(ys, land[c].dy_m, 0.0, Y));
+    const double flux = fluxes.down_cell_lm[c];
+    const size_t across = count_inside(xs, land[c].dx_m, -0.5 * X, 0.5 * X);
+    // A ray that lands beside the room for every column adds a finite flux times 0, which leaves
+    // the sum as it is: the rows need not be counted.
+    if (across == 0 && std::isfinite(flux)) continue;
+    floor_lm += flux * static_cast<double>(across * count_inside(ys, land[c].dy_m, 0.0, Y));
   }
   const ThreeSurfaces direct{floor_lm, n * fluxes.down_lm - floor_lm, n * fluxes.up_lm};
   const ThreeSurfaces in = indirect_flux(X, Y, H, {refl.floor, refl.walls, refl.ceiling}, direct);
