@@ -31,9 +31,7 @@ std::string observers_csv(const calc::SurfaceResult& r) {
   }
   return out;
 }
-}  // namespace
 
-namespace {
 // Numbers as printf's "%.6g" writes them (std::to_chars with a precision is specified so),
 // without printf's format parsing and locale: a large grid's CSV is a million rows.
 struct SixDigits {
