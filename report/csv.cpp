@@ -4,6 +4,10 @@
 #include <cstdio>
 #include <string_view>
 
+#include "report/chunked_text.h"
+#include "report/number_text_memo.h"
+#include "report/piece_buffer.h"
+
 namespace luxgrid::report {
 
 namespace {
@@ -27,10 +31,19 @@ std::string observers_csv(const calc::SurfaceResult& r) {
   }
   return out;
 }
-}  // namespace
 
-std::string surface_csv(const calc::SurfaceResult& r) {
-  if (r.grid.kind == geometry::SurfaceGrid::Kind::observers) return observers_csv(r);
+// Numbers as printf's "%.6g" writes them (std::to_chars with a precision is specified so),
+// without printf's format parsing and locale: a large grid's CSV is a million rows.
+struct SixDigits {
+  char* operator()(double v, char* first) const {
+    return std::to_chars(first, first + NumberTextMemo<SixDigits>::kMaxChars, v,
+                         std::chars_format::general, 6)
+        .ptr;
+  }
+};
+
+// Rows [begin, end) of a grid's or points surface's CSV.
+void point_rows(const calc::SurfaceResult& r, size_t begin, size_t end, std::string& out) {
   // The last column says what the E columns measure (results.json's "quantity"), so a CSV read on
   // its own cannot pass a cylindrical value off as a planar one. nx, ny, nz are the receiver
   // normal: for a semi-cylindrical surface the direction the half cylinder faces. A point left
@@ -39,42 +52,63 @@ std::string surface_csv(const calc::SurfaceResult& r) {
   // it, as the statistics do.
   const auto& g = r.grid;
   const std::string quantity = std::string(",") + geometry::to_string(g.quantity) + "\n";
-  // Numbers as printf's "%.6g" writes them (std::to_chars with a precision is specified so),
-  // without printf's format parsing and locale: a large grid's CSV is a million rows.
   constexpr size_t kRowBytes = 8 * 14 + 3 * 13 + 16;  // digits, signs, exponents, separators
-  std::string out;
-  out.reserve(std::string_view(kSurfaceCsvHeader).size() + 1 +
-              g.points.size() * (kRowBytes + quantity.size()));
-  out += kSurfaceCsvHeader;
-  out += '\n';
-  char buf[32];
-  const auto put_int = [&](int v) { out.append(buf, std::to_chars(buf, buf + sizeof buf, v).ptr); };
-  const auto put = [&](double v) {
-    out.append(buf, std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 6).ptr);
+  out.reserve(out.size() + (end - begin) * (kRowBytes + quantity.size()));
+  // One memo per thread: the chunks of one CSV (and the next CSV) share its coordinates.
+  static thread_local NumberTextMemo<SixDigits> memo;
+  PieceBuffer row(out);
+  char digits[16];
+  const auto put_int = [&](int v) {
+    row.put(std::string_view(digits, std::to_chars(digits, digits + sizeof digits, v).ptr));
   };
+  const auto put = [&](double v) { row.put(memo.text(v)); };
   const int nu = g.nu > 0 ? g.nu : 1;
-  for (size_t k = 0; k < g.points.size(); ++k) {
+  for (size_t k = begin; k < end; ++k) {
     const auto& p = g.points[k];
     const auto& n = g.normals[k];
     put_int(static_cast<int>(k % nu));
-    out += ',';
+    row.put(',');
     put_int(static_cast<int>(k / nu));
     for (const double v : {p.x, p.y, p.z, n.x, n.y, n.z}) {
-      out += ',';
+      row.put(',');
       put(v);
     }
     if (g.active.empty() || g.active[k]) {
-      out += ",true";
+      row.put(",true");
       for (const double v : {r.E[k], r.E_direct[k], r.E_indirect[k]}) {
-        out += ',';
+        row.put(',');
         put(v);
       }
     } else {
-      out += ",false,,,";
+      row.put(",false,,,");
     }
-    out += quantity;
+    row.put(quantity);
   }
+}
+
+// Rows a chunk: about 1 MB of text, formatted in parallel (report/chunked_text.h).
+constexpr size_t kRowsPerChunk = 8192;
+}  // namespace
+
+std::string surface_csv(const calc::SurfaceResult& r) {
+  if (r.grid.kind == geometry::SurfaceGrid::Kind::observers) return observers_csv(r);
+  std::string out = std::string(kSurfaceCsvHeader) + "\n";
+  point_rows(r, 0, r.grid.points.size(), out);
   return out;
+}
+
+void write_surface_csv(std::ostream& out, const calc::SurfaceResult& r) {
+  if (r.grid.kind == geometry::SurfaceGrid::Kind::observers) {
+    out << observers_csv(r);
+    return;
+  }
+  out << kSurfaceCsvHeader << '\n';
+  write_chunked(
+      r.grid.points.size(), kRowsPerChunk,
+      [&](size_t begin, size_t end, std::string& text) { point_rows(r, begin, end, text); },
+      [&](std::string_view text) {
+        out.write(text.data(), static_cast<std::streamsize>(text.size()));
+      });
 }
 
 }  // namespace luxgrid::report

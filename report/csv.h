@@ -1,6 +1,7 @@
 #pragma once
 // One CSV per surface: a row per point with position, normal, whether it is calculated, the three
 // maintained illuminances and the quantity they measure (planar, ..., semi-cylindrical).
+#include <ostream>
 #include <string>
 
 #include "calc/results.h"
@@ -13,5 +14,8 @@ inline constexpr const char* kSurfaceCsvHeader =
     "quantity";
 
 std::string surface_csv(const calc::SurfaceResult& r);
+// The same text written to `out`, its rows formatted in parallel a chunk at a time: what the
+// output folder's <surface>.csv is written with.
+void write_surface_csv(std::ostream& out, const calc::SurfaceResult& r);
 
 }  // namespace luxgrid::report

@@ -194,12 +194,18 @@ MapSamples make_samples(const calc::SurfaceResult& r, const calc::Scene* scene,
   auto inside = [](const geometry::RowLocator& l, const Vec3& w) {
     return l.locate(Vec2(w)) != geometry::Location::outside;
   };
+  // frame_point(frame, a, b) is (origin + right a) + up b: its first sum depends on the column
+  // only and its last term on the row only, so each is made once, the same doubles.
+  std::vector<Vec3> along_row(static_cast<size_t>(map_w));
+  for (int px = 0; px < map_w; ++px)
+    along_row[px] = frame.origin + frame.right * ((px + 0.5) / ppm);
   for (int py = 0; py < map_h; ++py) {
     const double row_y = frame_point(frame, 0.5 / ppm, (map_h - py - 0.5) / ppm).y;
     for (auto* set : {&room, &region, &obstacles})
       for (auto& l : *set) l.set_row(row_y);
+    const Vec3 up_row = frame.up * ((map_h - py - 0.5) / ppm);
     for (int px = 0; px < map_w; ++px) {
-      const Vec3 w = frame_point(frame, (px + 0.5) / ppm, (map_h - py - 0.5) / ppm);
+      const Vec3 w = along_row[px] + up_row;
       const Vec3 rel = w - g.origin;
       const double u = glm::dot(rel, g.u_dir), v = glm::dot(rel, g.v_dir);
       // Inside the surface: its colour, or obstacle grey; outside it: the room's light grey or

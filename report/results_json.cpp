@@ -1,9 +1,15 @@
 #include "report/results_json.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string_view>
+
+#include "report/chunked_text.h"
+#include "report/number_text_memo.h"
+#include "report/piece_buffer.h"
 
 namespace luxgrid::report {
 
@@ -165,14 +171,6 @@ class Buffered {
     if (buf_.size() >= kFlushAt) flush();
   }
   void indent(size_t n) { buf_.append(n, ' '); }
-  // A number exactly as nlohmann::json's dump writes it: the shortest text that reads back to
-  // the same double, "null" for a non-finite value.
-  void number(double v) {
-    if (!std::isfinite(v)) return text("null");
-    std::array<char, 64> digits;
-    const char* end = nlohmann::detail::to_chars(digits.data(), digits.data() + digits.size(), v);
-    text(std::string_view(digits.data(), static_cast<size_t>(end - digits.data())));
-  }
   void flush() {
     out_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
     buf_.clear();
@@ -184,42 +182,117 @@ class Buffered {
   std::string buf_;
 };
 
-// One array in dump(1)'s layout at `depth` (the indent of the line holding its key): "[]" when
-// empty, else one element a line at depth + 1 and the closing bracket at depth.
-template <typename Element>
-void write_array(Buffered& out, size_t count, size_t depth, const Element& element) {
-  if (count == 0) return out.text("[]");
-  out.text("[\n");
-  for (size_t i = 0; i < count; ++i) {
-    out.indent(depth + 1);
-    element(i, depth + 1);
-    out.text(i + 1 < count ? ",\n" : "\n");
+// A number exactly as nlohmann::json's dump writes it: a short text that reads back to the same
+// double, "null" for a non-finite value. Its Grisu2 digits are not always std::to_chars's
+// shortest ones (about one random double in 1500 ends differently), so they are kept.
+struct JsonNumber {
+  char* operator()(double v, char* first) const {
+    if (!std::isfinite(v)) return std::copy_n("null", 4, first);
+    return nlohmann::detail::to_chars(first, first + NumberTextMemo<JsonNumber>::kMaxChars, v);
   }
+};
+
+// Elements a chunk: a few hundred kB of text, formatted in parallel (report/chunked_text.h).
+constexpr size_t kElementsPerChunk = 8192;
+
+// A line of an array below depth is at most depth + kLineChars long: the indent, a number of up
+// to 24 characters ("-1.2345678901234567e-308") and ",\n".
+constexpr size_t kLineChars = 28;
+
+// One array in dump(1)'s layout at `depth` (the indent of the line holding its key): "[]" when
+// empty, else one element a line at depth + 1 and the closing bracket at depth. `element(i,
+// depth, pieces)` puts element i's text; the elements are made in parallel chunks.
+template <typename Element>
+void write_array(Buffered& out, size_t count, size_t depth, size_t lines_each,
+                 const Element& element, std::string* copy = nullptr) {
+  if (count == 0) {
+    if (copy) *copy = "[]";
+    return out.text("[]");
+  }
+  if (copy) {
+    // Reserved once, as the chunks are.
+    copy->reserve(count * lines_each * (depth + kLineChars) + depth + 4);
+    *copy = "[\n";
+  }
+  out.text("[\n");
+  write_chunked(
+      count, kElementsPerChunk,
+      [&](size_t begin, size_t end, std::string& text) {
+        // Reserved once, so the chunk's text is not copied as it grows.
+        text.reserve((end - begin) * lines_each * (depth + kLineChars));
+        PieceBuffer pieces(text);
+        for (size_t i = begin; i < end; ++i) {
+          pieces.spaces(depth + 1);
+          element(i, depth + 1, pieces);
+          pieces.put(i + 1 < count ? ",\n" : "\n");
+        }
+      },
+      [&](std::string_view text) {
+        out.text(text);
+        if (copy) copy->append(text);
+      });
   out.indent(depth);
   out.text("]");
+  if (copy) copy->append(depth, ' ').append("]");
 }
 
-void write_point_array(Buffered& out, const calc::SurfaceResult& r, PointArray array,
-                       size_t depth) {
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+// Without reflected light E_direct is E bit for bit: E_direct's text is E's, kept while E is
+// written (a few bytes a point, for one array) instead of formatted a second time.
+struct KeptText {
+  const calc::SurfaceResult* surface = nullptr;
+  size_t depth = 0;
+  std::string text;
+};
+
+void write_point_array(Buffered& out, const calc::SurfaceResult& r, PointArray array, size_t depth,
+                       KeptText& kept) {
   const auto& g = r.grid;
+  // One memo per thread: the chunks of one array (and the next array) share its repeats.
+  auto number = [](double v, PieceBuffer& text) {
+    static thread_local NumberTextMemo<JsonNumber> memo;
+    text.put(memo.text(v));
+  };
   auto vectors = [&](const std::vector<Vec3>& v) {
-    write_array(out, v.size(), depth, [&](size_t i, size_t d) {
-      write_array(out, 3, d,
-                  [&](size_t c, size_t) { out.number(v[i][static_cast<glm::length_t>(c)]); });
+    write_array(out, v.size(), depth, 5, [&](size_t i, size_t d, PieceBuffer& text) {
+      // [x, y, z] one a line, as dump(1) writes a three-element array at depth d.
+      text.put("[\n");
+      for (glm::length_t c = 0; c < 3; ++c) {
+        text.spaces(d + 1);
+        number(v[i][c], text);
+        text.put(c < 2 ? ",\n" : "\n");
+      }
+      text.spaces(d);
+      text.put(']');
     });
   };
-  auto numbers = [&](const std::vector<double>& v) {
-    write_array(out, v.size(), depth, [&](size_t i, size_t) { out.number(v[i]); });
+  auto numbers = [&](const std::vector<double>& v, std::string* copy = nullptr) {
+    write_array(
+        out, v.size(), depth, 1, [&](size_t i, size_t, PieceBuffer& text) { number(v[i], text); },
+        copy);
   };
   switch (array) {
     case PointArray::points: return vectors(g.points);
     case PointArray::normals: return vectors(g.normals);
     case PointArray::active:
-      return write_array(out, g.points.size(), depth, [&](size_t i, size_t) {
-        out.text(g.active.empty() || g.active[i] ? "true" : "false");
+      return write_array(out, g.points.size(), depth, 1, [&](size_t i, size_t, PieceBuffer& text) {
+        text.put(g.active.empty() || g.active[i] ? "true" : "false");
       });
-    case PointArray::E: return numbers(r.E);
-    case PointArray::E_direct: return numbers(r.E_direct);
+    case PointArray::E:
+      if (!same_bits(r.E_direct, r.E)) return numbers(r.E);
+      kept.surface = &r, kept.depth = depth;
+      return numbers(r.E, &kept.text);
+    case PointArray::E_direct:
+      if (kept.surface == &r && kept.depth == depth && same_bits(r.E_direct, r.E)) {
+        out.text(kept.text);
+        kept = KeptText{};
+        return;
+      }
+      return numbers(r.E_direct);
     case PointArray::E_indirect: return numbers(r.E_indirect);
   }
 }
@@ -241,6 +314,7 @@ void write_results_json(std::ostream& stream, const nlohmann::json& outline,
                         const calc::Results& results) {
   const std::string text = outline.dump(1);
   Buffered out(stream);
+  KeptText kept;
   size_t from = 0;
   // Each placeholder is the value of a key at the start of a line: `\n<indent>"key": "\u0001points
   // K A"`.
@@ -258,7 +332,7 @@ void write_results_json(std::ostream& stream, const nlohmann::json& outline,
         array >= static_cast<int>(kPointArrays.size()))
       continue;
     out.text(std::string_view(text).substr(from, at - from));
-    write_point_array(out, results.surfaces[surface], static_cast<PointArray>(array), depth);
+    write_point_array(out, results.surfaces[surface], static_cast<PointArray>(array), depth, kept);
     from = close + 1;
   }
   out.text(std::string_view(text).substr(from));

@@ -38,7 +38,9 @@ nlohmann::json results_outline_json(const calc::Results& results,
 
 // Writes `outline` (from results_outline_json) to `out` byte for byte as the whole document's
 // dump(1) followed by a newline, the point arrays streamed from `results` rather than built as
-// JSON values: a 10^6-point grid's results.json costs no memory beyond the results themselves.
+// JSON values, their elements formatted in parallel a chunk at a time: a 10^6-point grid's
+// results.json costs little memory beyond the results themselves (a few chunks' text, and for a
+// surface without reflected light its E array's text, which E_direct repeats).
 void write_results_json(std::ostream& out, const nlohmann::json& outline,
                         const calc::Results& results);
 

@@ -127,7 +127,9 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
     const SurfaceOutputFiles names = surface_output_files(s.grid.name);
     switch (job.what) {
       case Job::What::luminaires_html: return;
-      case Job::What::csv: return write_text_file(folder.file(names.csv), surface_csv(s));
+      case Job::What::csv:
+        return write_file_streamed(folder.file(names.csv),
+                                   [&](std::ostream& out) { write_surface_csv(out, s); });
       case Job::What::npy: return write_text_file(folder.file(names.npy), surface_npy(s));
       case Job::What::plots: {
         const int parts = parts_plotted ? 3 : 1;

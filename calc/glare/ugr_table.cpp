@@ -1,5 +1,6 @@
 #include "calc/glare/ugr_table.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -149,10 +150,16 @@ std::vector<double> grid_line(double from, double length, double S) {
   return v;
 }
 
+// How many of `centres` (ascending, as grid_line makes them) shifted by `offset` lie in
+// [lo, hi]. c + offset rounds monotonically in c, so those at or above lo are a suffix and those
+// at or below hi a prefix: two binary searches give the count of a comparison per centre, the
+// same one, for a 48-luminaire row a tenth of the work (it runs once per quadrature cell).
 size_t count_inside(const std::vector<double>& centres, double offset, double lo, double hi) {
-  size_t n = 0;
-  for (double c : centres) n += (c + offset >= lo && c + offset <= hi) ? 1 : 0;
-  return n;
+  const auto from = std::partition_point(centres.begin(), centres.end(),
+                                         [&](double c) { return !(c + offset >= lo); });
+  const auto to = std::partition_point(centres.begin(), centres.end(),
+                                       [&](double c) { return c + offset <= hi; });
+  return to > from ? static_cast<size_t>(to - from) : 0;
 }
 
 std::optional<double> room_ugr(const photometry::IntensityDistribution& d,
@@ -178,9 +185,12 @@ std::optional<double> room_ugr(const photometry::IntensityDistribution& d,
   double floor_lm = 0.0;
   const std::vector<Landing>& land = landings();
   for (size_t c = 0; c < land.size(); ++c) {
-    floor_lm += fluxes.down_cell_lm[c] *
-                static_cast<double>(count_inside(xs, land[c].dx_m, -0.5 * X, 0.5 * X) *
-                                    count_inside(ys, land[c].dy_m, 0.0, Y));
+    const double flux = fluxes.down_cell_lm[c];
+    const size_t across = count_inside(xs, land[c].dx_m, -0.5 * X, 0.5 * X);
+    // A ray that lands beside the room for every column adds a finite flux times 0, which leaves
+    // the sum as it is: the rows need not be counted.
+    if (across == 0 && std::isfinite(flux)) continue;
+    floor_lm += flux * static_cast<double>(across * count_inside(ys, land[c].dy_m, 0.0, Y));
   }
   const ThreeSurfaces direct{floor_lm, n * fluxes.down_lm - floor_lm, n * fluxes.up_lm};
   const ThreeSurfaces in = indirect_flux(X, Y, H, {refl.floor, refl.walls, refl.ceiling}, direct);
