@@ -59,4 +59,19 @@ inline double ray_angle(double sin_g, double cos_g) {
                         : 0.5 * kPi - ray_angle_below_45(cos_g, sin_g);
 }
 
+// The direction of the in-plane vector (x, y) in (-pi, pi]: std::atan2(y, x) to a few units in
+// the last place, from the same table (the psi cells' vertex directions and circle crossings).
+// (0, 0) gives 0; a negative zero y gives +pi where atan2 gives -pi (the same direction).
+inline double direction_angle(double y, double x) {
+  const double ax = std::abs(x), ay = std::abs(y);
+  const double big = std::max(ax, ay);
+  if (!(big > 0.0)) return 0.0;
+  const double t = std::min(ax, ay) / big;  // tan of the angle to the nearer axis, <= 1
+  const double c = 1.0 / std::sqrt(1.0 + t * t);
+  const double below = ray_angle_below_45(t * c, c);
+  const double a = ay <= ax ? below : 0.5 * kPi - below;  // in [0, pi / 2]
+  const double q = x < 0.0 ? kPi - a : a;
+  return y < 0.0 ? -q : q;
+}
+
 }  // namespace luxgrid::nearfield

@@ -136,7 +136,7 @@ void add_circle_crossings(const Polygon2& p, double r, double lo, double hi,
     for (double u : {(-qb - root) / qa, (-qb + root) / qa})
       if (u > 0.0 && u < 1.0) {
         const glm::dvec2 x = a + u * e;
-        add_periodic_break(std::atan2(x.y, x.x), lo, hi, out);
+        add_periodic_break(direction_angle(x.y, x.x), lo, hi, out);
       }
   }
 }
@@ -170,7 +170,7 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
   thread_local std::vector<double> scratch;
   out.clear();
   std::array<double, kMaxPolygonVertices> vertex_psi;  // each vertex's direction from F
-  for (int i = 0; i < poly.n; ++i) vertex_psi[i] = std::atan2(poly.v[i].y, poly.v[i].x);
+  for (int i = 0; i < poly.n; ++i) vertex_psi[i] = direction_angle(poly.v[i].y, poly.v[i].x);
   double psi_lo, psi_hi;
   if (inside) {
     psi_lo = vertex_psi[0];
@@ -178,7 +178,7 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
   } else {
     glm::dvec2 mid(0.0);
     for (int i = 0; i < poly.n; ++i) mid += poly.v[i];
-    const double psi_mid = std::atan2(mid.y, mid.x);
+    const double psi_mid = direction_angle(mid.y, mid.x);
     double lo = 0.0, hi = 0.0;
     for (int i = 0; i < poly.n; ++i) {
       double d = vertex_psi[i] - psi_mid;

@@ -39,5 +39,25 @@ TEST(RayAngle, AgreesWithAtan2ToAFewUnitsInTheLastPlace) {
   for (double x : xs) expect_close_to_atan2(x);
 }
 
+TEST(RayAngle, DirectionAngleAgreesWithAtan2InEveryQuadrant) {
+  std::mt19937_64 rng(18);
+  std::uniform_real_distribution<double> angle(-kPi, kPi), log_r(-8.0, 3.0);
+  for (int i = 0; i < 100000; ++i) {
+    const double a = angle(rng), r = std::pow(10.0, log_r(rng));
+    const double x = r * std::cos(a), y = r * std::sin(a);
+    const double want = std::atan2(y, x);
+    EXPECT_LE(std::abs(direction_angle(y, x) - want),
+              4.0 * std::numeric_limits<double>::epsilon() * std::abs(want))
+        << x << " " << y;
+  }
+  // The axes and the diagonals exactly where atan2 is exact.
+  EXPECT_EQ(direction_angle(0.0, 1.0), 0.0);
+  EXPECT_EQ(direction_angle(0.0, 0.0), 0.0);
+  EXPECT_NEAR(direction_angle(1.0, 0.0), 0.5 * kPi, 1e-16);
+  EXPECT_NEAR(direction_angle(0.0, -1.0), kPi, 1e-16);
+  EXPECT_NEAR(direction_angle(-1.0, 0.0), -0.5 * kPi, 1e-16);
+  EXPECT_NEAR(direction_angle(-2.0, -2.0), -0.75 * kPi, 2e-16);
+}
+
 }  // namespace
 }  // namespace luxgrid::nearfield
