@@ -56,6 +56,15 @@ class TabularDistribution final : public IntensityDistribution {
   };
   CPosition c_position(double c_rad) const;
   double intensity_at(const CPosition& c, std::size_t j, double tg) const;
+  // A bilinear table's value on gamma row j at the C position (interpolated in C only): what
+  // intensity_at(c, j, 0) gives, and intensity_at(c, j - 1, 1) up to rounding. Inline, for the
+  // table rung's closed form, which reads two rows per gamma interval of every ray.
+  double row_value(const CPosition& c, std::size_t j) const {
+    const double v0 = grid_.cd[c.i * ng_ + j];
+    if (nc_ == 1) return v0;
+    const std::size_t i1 = c.i + 1 < nc_ ? c.i + 1 : 0;
+    return v0 + c.tc * (grid_.cd[i1 * ng_ + j] - v0);
+  }
   // The gamma cell of an angle: false outside the table's gamma range (intensity zero there).
   bool gamma_cell(double gamma_rad, std::size_t& j, double& tg) const;
 

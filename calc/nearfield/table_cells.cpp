@@ -84,6 +84,8 @@ std::shared_ptr<const TableGammaCells> make_table_gamma_cells(
     cells->line_cos.push_back(g == kHalfPi ? 0.0 : std::cos(g));
   }
   const std::vector<double>& G = table.grid().gamma_rad;
+  for (std::size_t j = 0; j + 1 < G.size(); ++j)
+    cells->inv_row_width.push_back(1.0 / (G[j + 1] - G[j]));
   cells->interval_row.assign(L.size(), -1);
   cells->w_lo.assign(L.size(), 0.0);
   cells->w_hi.assign(L.size(), 0.0);
@@ -96,12 +98,22 @@ std::shared_ptr<const TableGammaCells> make_table_gamma_cells(
     // (1, 0) and (0, 1).
     const auto integral = [&](double i0, double i1) {
       return linear_sin_integral(L[k], cells->line_sin[k], cells->line_cos[k], L[k + 1],
-                                 cells->line_sin[k + 1], cells->line_cos[k + 1], G[j], G[j + 1], i0,
-                                 i1);
+                                 cells->line_sin[k + 1], cells->line_cos[k + 1], G[j],
+                                 cells->inv_row_width[j], i0, i1);
     };
     cells->w_lo[k] = integral(1.0, 0.0);
     cells->w_hi[k] = integral(0.0, 1.0);
   }
+  // The buckets of first_above / first_at_or_above: as wide as the narrowest gap between lines.
+  double gap = kPi;
+  for (std::size_t k = 0; k + 1 < L.size(); ++k) gap = std::min(gap, L[k + 1] - L[k]);
+  const std::size_t buckets = std::min<std::size_t>(
+      4096, static_cast<std::size_t>(std::ceil(kPi / std::max(gap, kPi / 4096))) + 1);
+  cells->inv_bucket = static_cast<double>(buckets - 1) / kPi;
+  for (std::size_t b = 0; b < buckets; ++b)
+    cells->bucket_first.push_back(static_cast<std::size_t>(
+        std::lower_bound(L.begin(), L.end(), static_cast<double>(b) / cells->inv_bucket) -
+        L.begin()));
   return cells;
 }
 

@@ -80,16 +80,37 @@ struct TableGammaCells {
   std::vector<double> line_sin, line_cos;
   std::vector<long> interval_row;
   std::vector<double> w_lo, w_hi;
+  // 1 / (width of the table's gamma row j), per row.
+  std::vector<double> inv_row_width;
+
+  // Where an angle falls among the lines, as std::upper_bound (first line > t) and
+  // std::lower_bound (first line >= t) give it, from a bucket of width at most the narrowest gap
+  // between lines (so the bucket's first line is at most one step from the answer) instead of a
+  // binary search: two a ray.
+  std::size_t first_above(double t) const { return scan(t, false); }
+  std::size_t first_at_or_above(double t) const { return scan(t, true); }
+  double inv_bucket = 0.0;
+  std::vector<std::size_t> bucket_first;  // first line >= the bucket's lower end
+
+ private:
+  std::size_t scan(double t, bool at_or_above) const {
+    const double b = t * inv_bucket;
+    std::size_t k =
+        b >= 0.0 ? bucket_first[std::min(static_cast<std::size_t>(b), bucket_first.size() - 1)] : 0;
+    while (k > 0 && (at_or_above ? lines[k - 1] >= t : lines[k - 1] > t)) --k;
+    while (k < lines.size() && (at_or_above ? lines[k] < t : lines[k] <= t)) ++k;
+    return k;
+  }
 };
 
-// The exact integral over table angles [a, b] (one gamma row j of the table, rows at g0 < g1) of
-// I(gamma) sin(gamma) d gamma, I linear in gamma from i0 at g0 to i1 at g1: the closed form of the
-// table rung's gamma integral for a receiver facing the axis (docs/nearfield.md). sa, ca, sb, cb:
-// sin and cos of a and b.
+// The exact integral over table angles [a, b] (one gamma row j of the table, rows at g0 < g1,
+// inv_dg = 1 / (g1 - g0)) of I(gamma) sin(gamma) d gamma, I linear in gamma from i0 at g0 to i1 at
+// g1: the closed form of the table rung's gamma integral for a receiver facing the axis
+// (docs/nearfield.md). sa, ca, sb, cb: sin and cos of a and b.
 inline double linear_sin_integral(double a, double sa, double ca, double b, double sb, double cb,
-                                  double g0, double g1, double i0, double i1) {
+                                  double g0, double inv_dg, double i0, double i1) {
   // integral of sin = ca - cb; of (gamma - g0) sin(gamma): [sin(gamma) - (gamma - g0) cos(gamma)]
-  const double slope = (i1 - i0) / (g1 - g0);
+  const double slope = (i1 - i0) * inv_dg;
   return i0 * (ca - cb) + slope * ((sb - (b - g0) * cb) - (sa - (a - g0) * ca));
 }
 

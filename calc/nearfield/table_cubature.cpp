@@ -32,6 +32,7 @@
 
 #include "calc/nearfield/fan_sample.h"
 #include "calc/nearfield/models.h"
+#include "calc/nearfield/ray_angle.h"
 #include "calc/nearfield/receiver_fan.h"
 #include "calc/nearfield/receiver_kernel.h"
 #include "calc/nearfield/table_cells.h"
@@ -58,6 +59,17 @@ constexpr double kAxialNormalTolerance = 1e-12;
 struct Polygon2 {
   std::array<glm::dvec2, kMaxPolygonVertices> v;
   int n = 0;
+  // Per edge i (v[i] to v[i + 1]): its vector and a x e, the parts of ray_interval's solve that
+  // do not depend on the ray (set by prepare_edges).
+  std::array<glm::dvec2, kMaxPolygonVertices> edge;
+  std::array<double, kMaxPolygonVertices> cross;
+  void prepare_edges() {
+    for (int i = 0; i < n; ++i) {
+      const glm::dvec2 a = v[i];
+      edge[i] = v[(i + 1) % n] - a;
+      cross[i] = -a.x * edge[i].y + a.y * edge[i].x;
+    }
+  }
 };
 
 bool contains_origin(const Polygon2& p) {
@@ -82,14 +94,17 @@ bool ray_interval(const Polygon2& p, double cos_psi, double sin_psi, bool origin
   rho_max = 0.0;
   bool hit = false;
   for (int i = 0; i < p.n; ++i) {
-    const glm::dvec2 a = p.v[i], b = p.v[(i + 1) % p.n];
-    const glm::dvec2 e = b - a;
+    const glm::dvec2 a = p.v[i], e = p.edge[i];
     // origin + t (c, s) = a + u e  ->  t (c, s) - u e = a
     const double det = -cos_psi * e.y + sin_psi * e.x;
     if (det == 0.0) continue;
-    const double t = (-a.x * e.y + a.y * e.x) / det;
-    const double u = (cos_psi * a.y - sin_psi * a.x) / det;
-    if (u < -1e-12 || u > 1.0 + 1e-12 || t < 0.0) continue;
+    // u = u_det / det and t = t_det / det, tested without dividing (the ray misses most edges).
+    const double u_det = cos_psi * a.y - sin_psi * a.x, t_det = p.cross[i];
+    const double abs_det = std::abs(det), sign = det > 0.0 ? 1.0 : -1.0;
+    if (sign * u_det < -1e-12 * abs_det || sign * u_det > (1.0 + 1e-12) * abs_det ||
+        sign * t_det < 0.0)
+      continue;
+    const double t = t_det / det;
     rho_min = std::min(rho_min, t);
     rho_max = std::max(rho_max, t);
     hit = true;
@@ -121,7 +136,7 @@ void add_circle_crossings(const Polygon2& p, double r, double lo, double hi,
     for (double u : {(-qb - root) / qa, (-qb + root) / qa})
       if (u > 0.0 && u < 1.0) {
         const glm::dvec2 x = a + u * e;
-        add_periodic_break(std::atan2(x.y, x.x), lo, hi, out);
+        add_periodic_break(direction_angle(x.y, x.x), lo, hi, out);
       }
   }
 }
@@ -154,17 +169,19 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
                std::vector<double>& out) {
   thread_local std::vector<double> scratch;
   out.clear();
+  std::array<double, kMaxPolygonVertices> vertex_psi;  // each vertex's direction from F
+  for (int i = 0; i < poly.n; ++i) vertex_psi[i] = direction_angle(poly.v[i].y, poly.v[i].x);
   double psi_lo, psi_hi;
   if (inside) {
-    psi_lo = std::atan2(poly.v[0].y, poly.v[0].x);
+    psi_lo = vertex_psi[0];
     psi_hi = psi_lo + kTwoPi;
   } else {
     glm::dvec2 mid(0.0);
     for (int i = 0; i < poly.n; ++i) mid += poly.v[i];
-    const double psi_mid = std::atan2(mid.y, mid.x);
+    const double psi_mid = direction_angle(mid.y, mid.x);
     double lo = 0.0, hi = 0.0;
     for (int i = 0; i < poly.n; ++i) {
-      double d = std::atan2(poly.v[i].y, poly.v[i].x) - psi_mid;
+      double d = vertex_psi[i] - psi_mid;
       d -= kTwoPi * std::round(d / kTwoPi);
       lo = std::min(lo, d);
       hi = std::max(hi, d);
@@ -173,8 +190,7 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
     psi_hi = psi_mid + hi;
   }
   if (!(psi_hi - psi_lo > kMinCell)) return false;
-  for (int i = 0; i < poly.n; ++i)
-    add_periodic_break(std::atan2(poly.v[i].y, poly.v[i].x), psi_lo, psi_hi, out);
+  for (int i = 0; i < poly.n; ++i) add_periodic_break(vertex_psi[i], psi_lo, psi_hi, out);
   if (c_lines.size() > 1)
     for (double c : c_lines) add_periodic_break(c - kPi, psi_lo, psi_hi, out);
   // A circle crosses the outline only between the outline's nearest point and its farthest
@@ -251,9 +267,11 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
     reach2 = std::max(reach2, glm::dot(poly.v[i], poly.v[i]));
   }
   sigma /= clipped.n;
+  poly.prepare_edges();
   const double abs_sigma = std::abs(sigma);
   if (!(abs_sigma > 0.0)) return true;  // excluded by the horizon shift
   const bool front = sigma > 0.0;
+  const double inv_sigma = 1.0 / abs_sigma;
   // A plane: cos_r from the normal in the luminaire frame (the fast path, no vector per node).
   const bool planar = receiver.kind == ReceiverKind::planar;
   const Vec3 n = e.world_to_local * receiver.direction;
@@ -311,25 +329,20 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
   const std::vector<double>& gamma_rows = table.grid().gamma_rad;
   // One ray in closed form: table angles [t_lo, t_hi] (the ray's in-plane reach rho_min, rho_max),
   // the lines strictly inside are [k_lo, k_hi).
-  auto closed_ray = [&](double t_lo, double t_hi, double rho_min, double rho_max, std::size_t k_lo,
-                        std::size_t k_hi, const photometry::TabularDistribution::CPosition& c) {
-    // sin and cos of the table angle at in-plane distance rho: gamma' = atan(rho / |sigma|).
-    const auto end_trig = [&](double rho, double& s, double& co) {
-      const double r = std::sqrt(rho * rho + abs_sigma * abs_sigma);
-      s = rho / r;
-      co = (front ? abs_sigma : -abs_sigma) / r;
-    };
-    double s_lo, c_lo, s_hi, c_hi;
-    end_trig(front ? rho_min : rho_max, s_lo, c_lo);
-    end_trig(front ? rho_max : rho_min, s_hi, c_hi);
+  auto closed_ray = [&](double t_lo, double t_hi, double sin_near, double cos_near, double sin_far,
+                        double cos_far, std::size_t k_lo, std::size_t k_hi,
+                        const photometry::TabularDistribution::CPosition& c) {
+    // sin and cos of the table angles at the ray's ends (of gamma' at its near and far end).
+    const double s_lo = front ? sin_near : sin_far, s_hi = front ? sin_far : sin_near;
+    const double c_lo = front ? cos_near : -cos_far, c_hi = front ? cos_far : -cos_near;
     // The piece [a, b] of interval k (k < 0 or past the last line: outside the table).
     const auto piece = [&](long k, double a, double sa, double ca, double b, double sb, double cb) {
       if (k < 0 || static_cast<std::size_t>(k) >= lines.size()) return 0.0;
       const long row = cells.interval_row[static_cast<std::size_t>(k)];
       if (row < 0) return 0.0;
       const std::size_t j = static_cast<std::size_t>(row);
-      return linear_sin_integral(a, sa, ca, b, sb, cb, gamma_rows[j], gamma_rows[j + 1],
-                                 table.intensity_at(c, j, 0.0), table.intensity_at(c, j, 1.0));
+      return linear_sin_integral(a, sa, ca, b, sb, cb, gamma_rows[j], cells.inv_row_width[j],
+                                 table.row_value(c, j), table.row_value(c, j + 1));
     };
     const long first = static_cast<long>(k_lo) - 1;
     if (k_lo >= k_hi) return n_z * piece(first, t_lo, s_lo, c_lo, t_hi, s_hi, c_hi);
@@ -341,8 +354,7 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
       const long row = cells.interval_row[k];
       if (row < 0) continue;
       const std::size_t j = static_cast<std::size_t>(row);
-      v += cells.w_lo[k] * table.intensity_at(c, j, 0.0) +
-           cells.w_hi[k] * table.intensity_at(c, j, 1.0);
+      v += cells.w_lo[k] * table.row_value(c, j) + cells.w_hi[k] * table.row_value(c, j + 1);
     }
     return n_z * v;
   };
@@ -378,19 +390,19 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
       double rho_min, rho_max;
       if (!ray_interval(poly, cp, sp, inside, rho_min, rho_max)) continue;
       // The ray's range of table angles.
-      const double g_near = std::atan2(rho_min, abs_sigma), g_far = std::atan2(rho_max, abs_sigma);
+      const double tan_near = rho_min * inv_sigma, tan_far = rho_max * inv_sigma;
+      const double cos_near = 1.0 / std::sqrt(1.0 + tan_near * tan_near),
+                   cos_far = 1.0 / std::sqrt(1.0 + tan_far * tan_far);
+      const double sin_near = tan_near * cos_near, sin_far = tan_far * cos_far;
+      const double g_near = ray_angle(sin_near, cos_near), g_far = ray_angle(sin_far, cos_far);
       const double t_lo = front ? g_near : kPi - g_far, t_hi = front ? g_far : kPi - g_near;
       const Ray dir{n.x * cp + n.y * sp, cp * e.rotation[0] + sp * e.rotation[1]};
       double c = psi + kPi;
       c -= kTwoPi * std::floor(c / kTwoPi);
       const photometry::TabularDistribution::CPosition cpos = table.c_position(c);
-      const double tan_near = rho_min / abs_sigma, tan_far = rho_max / abs_sigma;
       const double tan_lo = front ? tan_near : tan_far, tan_hi = front ? tan_far : tan_near;
       // Lines strictly inside (t_lo, t_hi): [k_lo, k_hi).
-      const std::size_t k_lo = static_cast<std::size_t>(
-          std::upper_bound(lines.begin(), lines.end(), t_lo) - lines.begin());
-      const std::size_t k_hi = static_cast<std::size_t>(
-          std::lower_bound(lines.begin(), lines.end(), t_hi) - lines.begin());
+      const std::size_t k_lo = cells.first_above(t_lo), k_hi = cells.first_at_or_above(t_hi);
       if (light_vector) {
         Moments m;
         if (k_lo >= k_hi) {
@@ -406,7 +418,7 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
       }
       double ray = 0.0;
       if (closed_form) {
-        ray = closed_ray(t_lo, t_hi, rho_min, rho_max, k_lo, k_hi, cpos);
+        ray = closed_ray(t_lo, t_hi, sin_near, cos_near, sin_far, cos_far, k_lo, k_hi, cpos);
       } else if (k_lo >= k_hi) {
         ray = end_cell(t_lo, t_hi, tan_lo, tan_hi, cpos, dir);
       } else {
