@@ -124,33 +124,31 @@ double indirect_upper_bound_lx(const indirect::IndirectSolution& solution) {
   return kIndirectBoundMargin * m_max;
 }
 
-// The worst patch-size estimate over the surfaces for a solution, and the surface it is on;
-// `probe_lx` gets each surface's E_indirect at its probes. Gathered at the probe points only
-// (their values are the whole grid's there, indirect.h); at every point only where a probe may
-// be darker than the estimate's floor, which needs the surface's largest E: that gather is
-// kept in `everywhere`, the solution's results.
+// The worst patch-size estimate over the surfaces for a solution, the surface it is on and each
+// surface's E_indirect at its probes. Gathered at the probe points only (their values are the
+// whole grid's there, indirect.h); at every point only where a probe may be darker than the
+// estimate's floor, which needs the surface's largest E: that gather is kept in `everywhere`,
+// the solution's results.
 struct WorstPatchEstimate {
   double worst = 0.0;
   std::string surface;
+  std::vector<std::vector<double>> probe_lx;
   std::optional<indirect::IndirectResult> everywhere;
 };
 WorstPatchEstimate worst_patch_estimate(const Scene& scene, const Results& results,
                                         const indirect::IndirectSolution& solution,
                                         const std::vector<geometry::SurfaceGrid>& probes,
-                                        const IndirectEstimateInputs& est,
-                                        std::vector<std::vector<double>>& probe_lx) {
-  const indirect::IndirectResult at_probes = indirect::gather_indirect(solution, scene, probes);
-  probe_lx = at_probes.E_indirect_per_surface;
-  const double bound_lx = indirect_upper_bound_lx(solution);
+                                        const IndirectEstimateInputs& est) {
   WorstPatchEstimate w;
-  std::optional<indirect::IndirectResult>& everywhere = w.everywhere;
+  w.probe_lx = indirect::gather_indirect(solution, scene, probes).E_indirect_per_surface;
+  const double bound_lx = indirect_upper_bound_lx(solution);
   for (size_t s = 0; s < results.surfaces.size(); ++s) {
     const SurfaceResult& sr = results.surfaces[s];
-    double e = patch_size_estimate_at_probes(sr.grid, sr.E_direct, est.probe_index[s], probe_lx[s],
-                                             est.coarse_lx[s], bound_lx);
+    double e = patch_size_estimate_at_probes(sr.grid, sr.E_direct, est.probe_index[s],
+                                             w.probe_lx[s], est.coarse_lx[s], bound_lx);
     if (e < 0.0) {
-      if (!everywhere) everywhere = indirect::gather_indirect(solution, scene, scene.surfaces);
-      const std::vector<double>& E_ind = everywhere->E_indirect_per_surface[s];
+      if (!w.everywhere) w.everywhere = indirect::gather_indirect(solution, scene, scene.surfaces);
+      const std::vector<double>& E_ind = w.everywhere->E_indirect_per_surface[s];
       std::vector<double> E(sr.E_direct.size());
       for (size_t i = 0; i < E.size(); ++i) E[i] = sr.E_direct[i] + E_ind[i];
       e = patch_size_estimate(sr.grid, E, E_ind, est.probe_index[s], est.coarse_lx[s]);
@@ -172,8 +170,7 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
   // mesh cannot make up for them.
   if (!(promise > 0.0) || solution->result.residual > promise) return;
   for (int step = 0; step < kMaxPatchRefinements; ++step) {
-    std::vector<std::vector<double>> probe_lx;
-    WorstPatchEstimate w = worst_patch_estimate(scene, results, *solution, probes, est, probe_lx);
+    WorstPatchEstimate w = worst_patch_estimate(scene, results, *solution, probes, est);
     gathered = std::move(w.everywhere);
     if (!(w.worst > kPatchShareOfPromise * promise)) return;
     const double size_m = solution->result.patch_size_m;
@@ -202,7 +199,7 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
                                       " m exceeds the patch budget (" + e.what() + ")");
       return;
     }
-    est.coarse_lx = std::move(probe_lx);
+    est.coarse_lx = std::move(w.probe_lx);
     est.coarse_patch_size_m = size_m;
     results.plan.notes.push_back("indirect: patch size refined from " +
                                  format_double("%.3g", size_m) + " m to " +
