@@ -36,9 +36,9 @@ SurfaceGrid make_plane_grid(const std::string& name, const Vec3& origin, const V
   g.size_v = size_v;
   // At least one cell per side; cells no larger than `spacing` (the usual rule: the number of
   // points is rounded up, so the actual spacing is never coarser than asked).
-  constexpr double kRoundingSlack = 1e-9;  // so 4 m / 0.25 m gives 16 cells, not 17
-  g.nu = std::max(1, static_cast<int>(std::ceil(size_u / spacing - kRoundingSlack)));
-  g.nv = std::max(1, static_cast<int>(std::ceil(size_v / spacing - kRoundingSlack)));
+  // pieces_of_at_most: 4 m / 0.25 m gives 16 cells, not 17
+  g.nu = pieces_of_at_most(size_u / spacing);
+  g.nv = pieces_of_at_most(size_v / spacing);
   g.spacing_u = size_u / g.nu;
   g.spacing_v = size_v / g.nv;
   const Vec3 normal = glm::normalize(glm::cross(g.u_dir, g.v_dir));

@@ -6,6 +6,8 @@
 
 #include <glm/matrix.hpp>
 
+#include "util/robust_math.h"
+
 namespace luxgrid::photometry {
 
 namespace {
@@ -31,7 +33,7 @@ void pieces(const std::vector<double>& nodes, const std::vector<double>& cuts, d
   out.clear();
   for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
     const double a = pts[k], b = pts[k + 1];
-    const int n = std::max(1, static_cast<int>(std::ceil((b - a) / max_piece - 1e-9)));
+    const int n = pieces_of_at_most((b - a) / max_piece);
     for (int q = 0; q < n; ++q) out.emplace_back(a + (b - a) * q / n, a + (b - a) * (q + 1) / n);
   }
 }

@@ -29,4 +29,14 @@ inline double angle_between(const Vec3& a, const Vec3& b) {
   return 2.0 * safe_asin(glm::length(b - a) / 2.0);
 }
 
+// How many equal pieces cut an interval `ratio` times as wide as the widest piece allowed:
+// ceil(ratio), but a ratio within 1e-9 above a whole number counts as that number. Widths are
+// often exact multiples of the widest piece (15-degree C planes cut at 7.5 degrees, a 5-degree
+// gamma cell at 5): rounding puts their ratio a few units in the last place above or below the
+// whole number, and a plain ceil then gives one piece more or not at random, so two receivers a
+// rounding apart got different cells (0.001 % apart under the office's luminaires).
+inline int pieces_of_at_most(double ratio) {
+  return std::max(1, static_cast<int>(std::ceil(ratio - 1e-9)));
+}
+
 }  // namespace luxgrid

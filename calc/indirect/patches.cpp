@@ -2,6 +2,7 @@
 
 #include "calc/visibility.h"
 #include "util/error.h"
+#include "util/robust_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -165,8 +166,8 @@ std::vector<Polygon2> horizontal_pieces(const Polygon2& outline, double size) {
     lo = glm::min(lo, v);
     hi = glm::max(hi, v);
   }
-  const int nx = std::max(1, static_cast<int>(std::ceil((hi.x - lo.x) / size - 1e-9)));
-  const int ny = std::max(1, static_cast<int>(std::ceil((hi.y - lo.y) / size - 1e-9)));
+  const int nx = pieces_of_at_most((hi.x - lo.x) / size);
+  const int ny = pieces_of_at_most((hi.y - lo.y) / size);
   const double dx = (hi.x - lo.x) / nx, dy = (hi.y - lo.y) / ny;
   std::vector<Polygon2> ears;  // built only if a boundary cell needs it
   std::vector<Polygon2> pieces;
@@ -289,7 +290,7 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
         }
       }
       const auto& f = ob.footprint;
-      const int nv = std::max(1, static_cast<int>(std::ceil((t - b) / patch_size_m - 1e-9)));
+      const int nv = pieces_of_at_most((t - b) / patch_size_m);
       for (size_t e = 0; e < f.size(); ++e) {
         const Vec2 a = f[e], c = f[(e + 1) % f.size()];
         const double len = glm::length(c - a);
@@ -297,7 +298,7 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
         const Vec2 dir = (c - a) / len;
         const Vec3 outward(dir.y, -dir.x,
                            0.0);  // counter-clockwise footprint: outside on the right
-        const int nu = std::max(1, static_cast<int>(std::ceil(len / patch_size_m - 1e-9)));
+        const int nu = pieces_of_at_most(len / patch_size_m);
         for (int j = 0; j < nv; ++j) {
           const double za = b + (t - b) * j / nv, zb = b + (t - b) * (j + 1) / nv;
           for (int i = 0; i < nu; ++i) {
@@ -310,14 +311,14 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
       }
     }
     const auto& o = room.outline;
-    const int nv = std::max(1, static_cast<int>(std::ceil(room.height / patch_size_m - 1e-9)));
+    const int nv = pieces_of_at_most(room.height / patch_size_m);
     for (size_t k = 0; k < o.size(); ++k) {
       const Vec2 a = o[k], b = o[(k + 1) % o.size()];
       const double len = glm::length(b - a);
       if (!(len > 0.0)) continue;
       const Vec2 t = (b - a) / len;
       const Vec3 inward(-t.y, t.x, 0.0);  // counter-clockwise outline: the room is on the left
-      const int nu = std::max(1, static_cast<int>(std::ceil(len / patch_size_m - 1e-9)));
+      const int nu = pieces_of_at_most(len / patch_size_m);
       for (int j = 0; j < nv; ++j) {
         const double za = z0 + room.height * j / nv, zb = z0 + room.height * (j + 1) / nv;
         for (int i = 0; i < nu; ++i) {

@@ -9,6 +9,7 @@
 #include "calc/nearfield/receiver_kernel.h"
 #include "geometry/polygon3.h"
 #include "geometry/visibility.h"
+#include "util/robust_math.h"
 
 namespace luxgrid::nearfield {
 FixedRule make_fixed_rule(const std::vector<Vec3>& polygon, double largest_dimension_m) {
@@ -17,9 +18,8 @@ FixedRule make_fixed_rule(const std::vector<Vec3>& polygon, double largest_dimen
   Vec3 lo(INFINITY), hi(-INFINITY);
   for (const Vec3& v : polygon) lo = glm::min(lo, v), hi = glm::max(hi, v);
   const auto cells = [&](double extent) {
-    return std::clamp(
-        static_cast<int>(std::ceil(kFixedRuleCellsPerD * extent / largest_dimension_m - 1e-9)), 1,
-        kFixedRuleMaxCells);
+    return std::min(pieces_of_at_most(kFixedRuleCellsPerD * extent / largest_dimension_m),
+                    kFixedRuleMaxCells);
   };
   const int nx = cells(hi.x - lo.x), ny = cells(hi.y - lo.y);
   double total = 0.0;

@@ -31,7 +31,7 @@ void append_gamma_nodes(const photometry::TabularDistribution& table, double a, 
   if (!(b - a > 1e-12)) return;
   const bool back = a >= kHalfPi;
   const double lo = back ? kPi - b : a, hi = back ? kPi - a : b;  // gamma' interval
-  const int wide = std::max(1, static_cast<int>(std::ceil((hi - lo) / kTableMaxGammaCell)));
+  const int wide = pieces_of_at_most((hi - lo) / kTableMaxGammaCell);
   for (int k = 0; k < wide; ++k) {
     const double p0 = lo + (hi - lo) * k / wide,
                  p1 = k + 1 == wide ? hi : lo + (hi - lo) * (k + 1) / wide;
@@ -43,7 +43,7 @@ void append_gamma_nodes(const photometry::TabularDistribution& table, double a, 
       append_piece(table, p0, p1, back, out);
       continue;
     }
-    const int pieces = static_cast<int>(std::ceil(std::log(t1 / t0) / std::log(kTableTanRatio)));
+    const int pieces = pieces_of_at_most(std::log(t1 / t0) / std::log(kTableTanRatio));
     const double ratio = std::pow(t1 / t0, 1.0 / pieces);
     double q0 = p0, t = t0;
     for (int q = 1; q <= pieces; ++q) {

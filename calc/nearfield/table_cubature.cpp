@@ -152,7 +152,7 @@ void finish_breaks(std::vector<double>& b, std::vector<double>& out, double lo, 
   for (std::size_t i = 1; i < b.size(); ++i) {
     const double a = out.back(), z = b[i];
     if (!(z - a > kMinCell)) continue;
-    const int pieces = static_cast<int>(std::ceil((z - a) / max_cell));
+    const int pieces = pieces_of_at_most((z - a) / max_cell);
     for (int k = 1; k < pieces; ++k) out.push_back(a + (z - a) * k / pieces);
     out.push_back(z);
   }

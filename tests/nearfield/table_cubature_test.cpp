@@ -366,5 +366,29 @@ TEST(TableRung, SymmetricSetUpsGiveSymmetricValues) {
   }
 }
 
+TEST(TableRung, CellsDoNotDependOnRounding) {
+  // Under the office's luminaires (the Mirel, C planes 15 degrees apart) a floor point's psi
+  // cell between two C lines is 15 degrees wide, exactly twice the widest cell, and a ray's end
+  // cell can be exactly one 5-degree gamma step. Rounding put such a cell a few units in the
+  // last place above or below that width, and splitting it by ceil(width / widest) gave two
+  // pieces or three: neighbouring floor points 0.001 % apart for nothing. Receivers a few units
+  // in the last place apart must get the same cells: values equal to rounding (1e-12).
+  const Emitter e =
+      testing::paper_emitter(2.8, kPi, corpus("ldt/zumtobel_mirel_isym4.ldt"), 0.345, 0.345);
+  for (const Vec3 p : {Vec3(0.125, 0.125, 0.0), Vec3(-0.125, 0.125, 0.0), Vec3(0.125, -0.125, 0.0),
+                       Vec3(0.375, 0.125, 0.0), Vec3(0.0, 0.25, 0.0), Vec3(0.25, 0.5, 0.75),
+                       Vec3(-0.5, 0.375, 0.75)}) {
+    const double v = table_rung(e, p, testing::kUp);
+    Vec3 q = p;
+    for (int step = 0; step < 8; ++step) {
+      q.x = std::nextafter(q.x, step % 2 ? 1.0 : -1.0);
+      q.y = std::nextafter(q.y, step % 4 < 2 ? 1.0 : -1.0);
+      const double w = table_rung(e, q, testing::kUp);
+      EXPECT_NEAR(w, v, 1e-12 * v)
+          << "at " << p.x << ", " << p.y << ", " << p.z << ", step " << step;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace luxgrid::nearfield
