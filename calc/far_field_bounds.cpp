@@ -1,6 +1,11 @@
 #include "calc/far_field_bounds.h"
 
+#include <algorithm>
+#include <memory>
+
+#include <tbb/combinable.h>
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 
 #include "calc/nearfield/far_field_bound.h"
 
@@ -32,10 +37,56 @@ struct Distinct {
   std::vector<size_t> members;
 };
 
+// Every pair direct light will compute for the members of one distinct emitter: the active
+// points of every surface whose zone holds a member. Null when there are more than
+// kMapDemandPairs (the whole map is then cheaper than marking them).
+std::unique_ptr<nearfield::MapDemand> demand_of(const Scene& scene,
+                                                const std::vector<nearfield::Emitter>& emitters,
+                                                const std::vector<size_t>& members,
+                                                const DirectReach& reach,
+                                                const std::vector<std::vector<uint32_t>>& zones) {
+  // Which zones light each member, then how many pairs that makes.
+  std::vector<std::vector<char>> member_in_zone(members.size(),
+                                                std::vector<char>(reach.zone_count(), 0));
+  for (uint32_t z = 0; z < reach.zone_count(); ++z)
+    for (size_t m = 0; m < members.size(); ++m) {
+      const auto& lums = reach.zone(z).luminaires;
+      member_in_zone[m][z] =
+          std::binary_search(lums.begin(), lums.end(), static_cast<uint32_t>(members[m]));
+    }
+  size_t pairs = 0;
+  for (size_t s = 0; s < scene.surfaces.size(); ++s)
+    for (uint32_t z : zones[s])
+      for (size_t m = 0; m < members.size(); ++m) pairs += member_in_zone[m][z];
+  if (pairs > kMapDemandPairs) return nullptr;
+  // In parallel over the members' pairs; the per-sample maximum does not depend on the order.
+  tbb::combinable<nearfield::MapDemand> parts;
+  tbb::parallel_for(size_t{0}, members.size(), [&](size_t m) {
+    const nearfield::Emitter& e = emitters[members[m]];
+    nearfield::MapDemand& demand = parts.local();
+    for (size_t s = 0; s < scene.surfaces.size(); ++s) {
+      const geometry::SurfaceGrid& grid = scene.surfaces[s];
+      for (size_t i = 0; i < grid.points.size(); ++i) {
+        if (!member_in_zone[m][zones[s][i]] || !(grid.active.empty() || grid.active[i])) continue;
+        // The direction and distance FarFieldBound::weights is asked for (nearfield
+        // switch_weights).
+        const Vec3 r = grid.points[i] - e.centroid;
+        const double d = glm::length(r);
+        if (d > 0.0) demand.add(e.world_to_local * (r / d), d / e.largest_dimension_m);
+      }
+    }
+  });
+  auto demand = std::make_unique<nearfield::MapDemand>();
+  parts.combine_each([&](const nearfield::MapDemand& part) { demand->merge(part); });
+  return demand;
+}
+
 }  // namespace
 
 std::vector<std::string> attach_far_field_bounds(const Scene& scene, const Plan& plan,
-                                                 std::vector<nearfield::Emitter>& emitters) {
+                                                 std::vector<nearfield::Emitter>& emitters,
+                                                 const DirectReach* reach,
+                                                 const std::vector<std::vector<uint32_t>>* zones) {
   std::vector<std::string> lines;
   if (plan.near_switch != nearfield::NearFieldSwitch::automatic) return lines;
   const double tolerance = nearfield::promised_tolerance(plan.near_model);
@@ -45,7 +96,7 @@ std::vector<std::string> attach_far_field_bounds(const Scene& scene, const Plan&
       tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
   std::vector<Distinct> distinct;
   for (size_t i = 0; i < emitters.size(); ++i) {
-    nearfield::Emitter& e = emitters[i];
+    const nearfield::Emitter& e = emitters[i];
     if (e.is_point()) continue;
     std::vector<Vec3> outline = local_outline(e);
     auto it = std::find_if(distinct.begin(), distinct.end(), [&](const Distinct& d) {
@@ -54,17 +105,17 @@ std::vector<std::string> attach_far_field_bounds(const Scene& scene, const Plan&
     });
     if (it == distinct.end()) {
       distinct.push_back(
-          {e.distribution.get(),
-           std::move(outline),
-           nearfield::build_far_field_bound(e, plan.near_model, tolerance, max_threads),
-           scene.luminaires[i].photometry,
-           {}});
+          {e.distribution.get(), std::move(outline), nullptr, scene.luminaires[i].photometry, {}});
       it = distinct.end() - 1;
     }
     it->members.push_back(i);
-    e.far_bound = it->bound;
   }
-  for (const Distinct& d : distinct) {
+  for (Distinct& d : distinct) {
+    const std::unique_ptr<nearfield::MapDemand> demand =
+        reach && zones ? demand_of(scene, emitters, d.members, *reach, *zones) : nullptr;
+    d.bound = nearfield::build_far_field_bound(emitters[d.members[0]], plan.near_model, tolerance,
+                                               max_threads, demand.get());
+    for (size_t i : d.members) emitters[i].far_bound = d.bound;
     const std::string who = d.members.size() == 1
                                 ? scene.luminaires[d.members[0]].label
                                 : std::to_string(d.members.size()) + " luminaires";

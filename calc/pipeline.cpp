@@ -35,15 +35,20 @@ DirectEstimateInputs run_direct(const Scene& scene, const SceneLookups& lookups,
   size_t total_points = 0;
   for (const auto& s : scene.surfaces) total_points += s.points.size();
   auto emitters = make_emitters(scene);
-  // The error-bound map measures the far-field model on the table; the texture's own deviation
-  // (calc/intensity_lookup.h) is within a tenth of the promise on top of it.
-  results.plan.near_far_per_emitter = attach_far_field_bounds(scene, results.plan, emitters);
-  attach_intensity_lookups(lookups, emitters);
   DirectReach reach(scene, results.plan.visibility_test);
+  std::vector<std::vector<uint32_t>> zones;
+  for (const auto& grid : scene.surfaces) zones.push_back(reach.zones_of(grid));
+  // The error-bound map measures the far-field model on the table; the texture's own deviation
+  // (calc/intensity_lookup.h) is within a tenth of the promise on top of it. Each map measures
+  // what the pairs below will ask of it.
+  results.plan.near_far_per_emitter =
+      attach_far_field_bounds(scene, results.plan, emitters, &reach, &zones);
+  attach_intensity_lookups(lookups, emitters);
   DirectCounts counts;
   size_t points_before = 0;
   size_t pairs_unreachable = 0;
-  for (const auto& grid : scene.surfaces) {
+  for (size_t s = 0; s < scene.surfaces.size(); ++s) {
+    const geometry::SurfaceGrid& grid = scene.surfaces[s];
     SurfaceResult r;
     r.grid = grid;
     Progress surface_progress;
@@ -52,7 +57,7 @@ DirectEstimateInputs run_direct(const Scene& scene, const SceneLookups& lookups,
       const double offset = static_cast<double>(points_before) / total_points;
       surface_progress = [=](double f) { progress(offset + share * f); };
     }
-    const GridReach grid_reach{reach, reach.zones_of(grid)};
+    const GridReach grid_reach{reach, std::move(zones[s])};
     estimates.error_lx.emplace_back();
     r.E_direct = direct_illuminance(results.plan, emitters, grid, surface_progress, &counts,
                                     &grid_reach, &estimates.error_lx.back());

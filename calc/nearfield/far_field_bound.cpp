@@ -102,7 +102,9 @@ struct Probe {
     float far_over_D, fixed_over_D;
     float far_error, fixed_error;
   };
-  Measured distances_over_D(const Vec3& u) const {
+  // `last`: the last rung tried (the ladder's end, or the first rung at or beyond the farthest
+  // receiver of a MapDemand); failing there is "near field at every distance tried".
+  Measured distances_over_D(const Vec3& u, int last = kLadderRungs - 1) const {
     std::array<std::array<double, 5>, kLadderRungs> near;
     for (auto& row : near) row.fill(-1.0);
     std::array<signed char, kLadderRungs> far_seen, fixed_seen;  // -1 unknown, 0 fails, 1 passes
@@ -164,11 +166,11 @@ struct Probe {
     const auto over_D = [](int k) {
       return k < 0 ? kNearEverywhere : static_cast<float>(rung_over_D(k));
     };
-    const int far = search(false, kLadderRungs - 1);
+    const int far = search(false, last);
     const float far_error = far < 0 ? 0.0f : far_err[far];
     // The fixed rule is used only nearer than d_far, so only the rungs below it matter.
     if (far == 0) return {over_D(0), over_D(0), far_error, 0.0f};
-    const int fixed = search(true, far < 0 ? kLadderRungs - 1 : far);
+    const int fixed = search(true, far < 0 ? last : far);
     return {over_D(far), fixed < 0 ? over_D(far) : over_D(fixed), far_error,
             fixed < 0 ? 0.0f : fixed_err[fixed]};
   }
@@ -250,19 +252,26 @@ double ramp(double distance_m, double start_m) {
   return t * t * (3.0 - 2.0 * t);
 }
 
-// Each sample charged with what its neighbours need, scaled by the footprint (see the caller).
-std::vector<float> dilate(const std::vector<float>& raw, double delta0) {
+// Each sample charged with what its neighbours need, scaled by the footprint (see the caller);
+// only where `wanted` is positive (the samples a demand reads), the rest 0.
+std::vector<float> dilate(const std::vector<float>& raw, double delta0,
+                          const std::vector<float>& wanted) {
+  // The samples' directions, made once: each is read by up to 49 neighbours.
+  std::vector<Vec3> dir(raw.size());
+  for (int g = 0; g < kGammaSamples; ++g)
+    for (int c = 0; c < kCSamples; ++c) dir[g * kCSamples + c] = direction_of_sample(g, c);
   std::vector<float> out(raw.size(), 0.0f);
   for (int g = 0; g < kGammaSamples; ++g)
     for (int c = 0; c < kCSamples; ++c) {
-      const Vec3 here = direction_of_sample(g, c);
+      if (!(wanted[g * kCSamples + c] > 0.0f)) continue;
+      const Vec3& here = dir[g * kCSamples + c];
       double v = 0.0;
       for (int dg = -kDilationReach; dg <= kDilationReach; ++dg)
         for (int dc = -kDilationReach; dc <= kDilationReach; ++dc) {
           const int gg = g + dg, cc = (c + dc + kCSamples) % kCSamples;
           if (gg < 0 || gg >= kGammaSamples) continue;
           const double r = raw[gg * kCSamples + cc];
-          const double excess = angle_between(here, direction_of_sample(gg, cc)) - delta0;
+          const double excess = angle_between(here, dir[gg * kCSamples + cc]) - delta0;
           v = std::max(v, excess <= 1e-12 ? r : std::min(r, kFootprintMargin / (2.0 * excess)));
         }
       out[g * kCSamples + c] = static_cast<float>(v);
@@ -282,7 +291,78 @@ void merge_poles(std::vector<float>& raw) {
   }
 }
 
+// Which samples a demand reads and which it measures, each with its farthest receiver (x D;
+// 0: none).
+struct Needs {
+  std::vector<float> read_over_D;     // read by a pair's interpolation (one sample of margin)
+  std::vector<float> measure_over_D;  // read, or read by a read sample's dilation or pole
+  static Needs everything() {
+    const auto all = std::vector<float>(kGammaSamples * kCSamples, kNearEverywhere);
+    return {all, all};
+  }
+};
+
+// The larger value over the samples within `reach` of each (in gamma, and in C around the circle).
+std::vector<float> max_filter(const std::vector<float>& v, int reach) {
+  std::vector<float> along_c(v.size(), 0.0f), out(v.size(), 0.0f);
+  for (int g = 0; g < kGammaSamples; ++g)
+    for (int c = 0; c < kCSamples; ++c)
+      for (int dc = -reach; dc <= reach; ++dc)
+        along_c[g * kCSamples + c] = std::max(along_c[g * kCSamples + c],
+                                              v[g * kCSamples + (c + dc + kCSamples) % kCSamples]);
+  for (int g = 0; g < kGammaSamples; ++g)
+    for (int dg = -reach; dg <= reach; ++dg)
+      if (g + dg >= 0 && g + dg < kGammaSamples)
+        for (int c = 0; c < kCSamples; ++c)
+          out[g * kCSamples + c] =
+              std::max(out[g * kCSamples + c], along_c[(g + dg) * kCSamples + c]);
+  return out;
+}
+
+Needs needs_of(const MapDemand& demand) {
+  Needs n;
+  // One sample of margin around the four a pair reads: its direction here and in the run are
+  // the same doubles, but the margin costs little and takes rounding out of the argument.
+  n.read_over_D = max_filter(demand.reach_over_D(), 1);
+  n.measure_over_D = max_filter(n.read_over_D, kDilationReach);
+  // merge_poles makes a pole sample the worst of its row and the next, at every C.
+  for (int pole : {0, kGammaSamples - 1}) {
+    const int next = pole == 0 ? 1 : kGammaSamples - 2;
+    float reach = 0.0f;
+    for (int c = 0; c < kCSamples; ++c)
+      reach = std::max(reach, n.measure_over_D[pole * kCSamples + c]);
+    for (int row : {pole, next})
+      for (int c = 0; c < kCSamples; ++c)
+        n.measure_over_D[row * kCSamples + c] =
+            std::max(n.measure_over_D[row * kCSamples + c], reach);
+  }
+  return n;
+}
+
+// The last rung a sample needs: the first at or beyond its farthest receiver (failing there, the
+// far field fails at every receiver), at most the ladder's end.
+int last_rung_for(float reach_over_D) {
+  for (int k = 0; k < kLadderRungs - 1; ++k)
+    if (rung_over_D(k) >= reach_over_D) return k;
+  return kLadderRungs - 1;
+}
+
 }  // namespace
+
+MapDemand::MapDemand() : reach_(kGammaSamples * kCSamples, 0.0f) {}
+
+void MapDemand::add(const Vec3& local_dir, double distance_over_D) {
+  const GridSpot s = spot_of(local_dir);
+  const auto d = static_cast<float>(std::min(distance_over_D, double{kNearEverywhere}));
+  for (int g : {s.g0, s.g0 + 1})
+    for (int c : {s.c0, s.c1}) reach_[g * kCSamples + c] = std::max(reach_[g * kCSamples + c], d);
+  ++receivers_;
+}
+
+void MapDemand::merge(const MapDemand& other) {
+  for (std::size_t i = 0; i < reach_.size(); ++i) reach_[i] = std::max(reach_[i], other.reach_[i]);
+  receivers_ += other.receivers_;
+}
 
 double FarFieldBound::distance_over_D(const Vec3& u) const {
   return interpolate_over_D(d_far_over_D, spot_of(u));
@@ -317,7 +397,8 @@ FarFieldBound::Weights FarFieldBound::weights(const Vec3& u, double distance_m) 
 
 std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
                                                            const Model& near_model,
-                                                           double tolerance, unsigned threads) {
+                                                           double tolerance, unsigned threads,
+                                                           const MapDemand* demand) {
   auto bound = std::make_shared<FarFieldBound>();
   bound->tolerance = tolerance;
   bound->largest_dimension_m = e.largest_dimension_m;
@@ -330,6 +411,9 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
     bound->far_everywhere_over_D = kBlendWidth * kLadderStart;
     return bound;
   }
+  // What is measured: every sample out to the ladder's end, or what the demand reads.
+  const Needs needs = demand ? needs_of(*demand) : Needs::everything();
+  bound->restricted = demand != nullptr;
   double peak = 0.0;
   for (int i = 0; i < n; ++i)
     peak = std::max(peak,
@@ -337,19 +421,29 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
   const Probe probe{e, near_model, tolerance / kBoundSafetyFactor, peak,
                     near_model.kind == ModelKind::standard || near_model.kind == ModelKind::high};
   std::vector<Probe::Measured> measured(n);
+  std::vector<char> capped(n, 0);  // failed at its last rung short of the ladder's end
   // Directions in parallel (the nearfield library has no TBB; the samples are independent).
   if (threads == 0) threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  std::vector<int> todo;
+  for (int i = 0; i < n; ++i)
+    if (needs.measure_over_D[i] > 0.0f) todo.push_back(i);
+  threads = std::max(1u, std::min(threads, static_cast<unsigned>(todo.size())));
   std::vector<std::thread> pool;
   for (unsigned t = 0; t < threads; ++t) {
     pool.emplace_back([&, t] {
-      for (int i = static_cast<int>(t); i < n; i += static_cast<int>(threads)) {
-        measured[i] = probe.distances_over_D(direction_of_sample(i / kCSamples, i % kCSamples));
+      for (std::size_t k = t; k < todo.size(); k += threads) {
+        const int i = todo[k];
+        const int last = last_rung_for(needs.measure_over_D[i]);
+        measured[i] =
+            probe.distances_over_D(direction_of_sample(i / kCSamples, i % kCSamples), last);
         raw[i] = measured[i].far_over_D;
         raw_fixed[i] = measured[i].fixed_over_D;
+        capped[i] = raw[i] >= kNearEverywhere && last < kLadderRungs - 1;
       }
     });
   }
   for (auto& th : pool) th.join();
+  bound->samples_measured = static_cast<int>(todo.size());
   for (const Probe::Measured& m : measured) {
     bound->far_error_measured =
         std::max(bound->far_error_measured, static_cast<double>(m.far_error));
@@ -366,26 +460,51 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
   // field at every distance (2.5 x the open plan's cost) for a kink whose error is 0.5 degrees
   // wide. The fixed rule's nodes see the same footprint, so its map is dilated the same way.
   const double delta0 = kink_slack_rad(e);
-  bound->d_far_over_D = dilate(raw, delta0);
-  bound->d_fixed_over_D = dilate(raw_fixed, delta0);
-  for (int i = 0; i < n; ++i)
+  bound->d_far_over_D = dilate(raw, delta0, needs.read_over_D);
+  bound->d_fixed_over_D = dilate(raw_fixed, delta0, needs.read_over_D);
+  // A sample no pair reads: never asked; near field, should anything ask.
+  for (int i = 0; i < n; ++i) {
+    if (!(needs.read_over_D[i] > 0.0f))
+      bound->d_far_over_D[i] = bound->d_fixed_over_D[i] = kNearEverywhere;
     bound->d_fixed_over_D[i] = std::min(bound->d_fixed_over_D[i], bound->d_far_over_D[i]);
-  bound->far_everywhere_over_D =
-      kBlendWidth * *std::max_element(bound->d_far_over_D.begin(), bound->d_far_over_D.end());
-  {
-    std::vector<float> sorted = raw_fixed;
-    std::sort(sorted.begin(), sorted.end());
-    bound->fixed_median_over_D = sorted[n / 2];
-    bound->fixed_max_over_D = sorted.back();
   }
-  // Summary for the plan, over the undilated samples (what each direction measured).
-  std::vector<float> sorted = raw;
-  std::sort(sorted.begin(), sorted.end());
-  bound->min_over_D = sorted.front();
-  bound->max_over_D = sorted.back();
-  bound->median_over_D = sorted[n / 2];
-  bound->near_everywhere_somewhere = sorted.back() >= kNearEverywhere;
-  const auto worst = std::max_element(raw.begin(), raw.end()) - raw.begin();
+  // Beyond every read sample's band: a sample whose band reaches no receiver (near field out to
+  // its farthest) counts with that farthest receiver instead, which no pair reading it is beyond.
+  float far_everywhere = 0.0f;
+  for (int i = 0; i < n; ++i)
+    if (needs.read_over_D[i] > 0.0f)
+      far_everywhere =
+          std::max(far_everywhere, bound->d_far_over_D[i] < kNearEverywhere
+                                       ? bound->d_far_over_D[i]
+                                       : std::min(needs.read_over_D[i], kNearEverywhere));
+  bound->far_everywhere_over_D = kBlendWidth * far_everywhere;
+  // Summary for the plan over the samples the pairs read, undilated (what each direction
+  // measured); those left to the near field out to their farthest receiver are counted apart.
+  std::vector<float> far_read, fixed_read;
+  int worst = -1;
+  for (int i = 0; i < n; ++i) {
+    if (!(needs.read_over_D[i] > 0.0f)) continue;
+    fixed_read.push_back(raw_fixed[i]);
+    if (capped[i]) {
+      ++bound->samples_capped;
+      bound->capped_reach_over_D =
+          std::max(bound->capped_reach_over_D, static_cast<double>(needs.read_over_D[i]));
+      continue;
+    }
+    far_read.push_back(raw[i]);
+    if (worst < 0 || raw[i] > raw[worst]) worst = i;
+  }
+  bound->samples_read = static_cast<int>(fixed_read.size());
+  if (fixed_read.empty()) return bound;  // no receiver: nothing to say
+  std::sort(fixed_read.begin(), fixed_read.end());
+  bound->fixed_median_over_D = fixed_read[fixed_read.size() / 2];
+  bound->fixed_max_over_D = fixed_read.back();
+  if (worst < 0) return bound;  // every read direction keeps the near field to its farthest point
+  std::sort(far_read.begin(), far_read.end());
+  bound->min_over_D = far_read.front();
+  bound->max_over_D = far_read.back();
+  bound->median_over_D = far_read[far_read.size() / 2];
+  bound->near_everywhere_somewhere = far_read.back() >= kNearEverywhere;
   bound->worst_gamma_deg = (worst / kCSamples) * kGammaStepDeg;
   bound->worst_c_deg = (worst % kCSamples) * kCStepDeg;
   bound->worst_gradient_per_deg =
@@ -396,28 +515,56 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
 std::string describe(const FarFieldBound& b) {
   char buf[448];
   char fixed[256];
-  // Up to 8 D the opening's geometry alone (slanted receivers) explains the distance (a
-  // Lambertian square measures 7.2 D); beyond, the table does.
-  const char* why = b.max_over_D <= 8.0 ? "smooth distribution (geometry of the opening)"
-                    : b.worst_gradient_per_deg > 0.05
-                        ? "sharp beam"
-                        : "kinks or curvature between measured angles";
-  if (b.near_everywhere_somewhere) {
-    std::snprintf(
-        buf, sizeof buf,
-        "%s: near field at every distance at C %.1f gamma %.0f deg, from %.1f D elsewhere "
-        "(median %.1f D, D = %.2f m); far field within %.2g %% beyond (measured at most %.2g %%)",
-        why, b.worst_c_deg, b.worst_gamma_deg, b.min_over_D, b.median_over_D, b.largest_dimension_m,
-        100 * b.tolerance, 100 * b.far_error_measured);
+  char scope[320] = "";
+  const int all = kGammaSamples * kCSamples;
+  if (b.restricted) {
+    const int far_measured = b.samples_read - b.samples_capped;
+    if (b.samples_capped > 0 && far_measured > 0)
+      std::snprintf(scope, sizeof scope,
+                    "; measured over the %d of %d directions the scene's points lie in, each out "
+                    "to its farthest point (%d of them keep the near field out to it, up to %.1f "
+                    "D)",
+                    b.samples_read, all, b.samples_capped, b.capped_reach_over_D);
+    else if (far_measured > 0)
+      std::snprintf(scope, sizeof scope,
+                    "; measured over the %d of %d directions the scene's points lie in, each out "
+                    "to its farthest point",
+                    b.samples_read, all);
+  }
+  if (b.restricted && b.samples_read > 0 && b.samples_read == b.samples_capped) {
+    std::snprintf(buf, sizeof buf,
+                  "near field at every point: in each of the %d of %d directions the scene's "
+                  "points lie in the far field is not within %.2g %% out to the farthest of them "
+                  "(up to %.1f D, D = %.2f m)",
+                  b.samples_read, all, 100 * b.tolerance, b.capped_reach_over_D,
+                  b.largest_dimension_m);
+  } else if (b.restricted && b.samples_read == 0) {
+    std::snprintf(buf, sizeof buf, "no point of the scene in reach (D = %.2f m)",
+                  b.largest_dimension_m);
+    return buf;
   } else {
-    std::snprintf(
-        buf, sizeof buf,
-        "%s: near field out to %.1f D (at C %.1f gamma %.0f deg, intensity changing %.1f %%/deg), "
-        "%.1f D at least, median %.1f D (D = %.2f m); far field within %.2g %% beyond (measured at "
-        "most %.2g %%)",
-        why, b.max_over_D, b.worst_c_deg, b.worst_gamma_deg, 100 * b.worst_gradient_per_deg,
-        b.min_over_D, b.median_over_D, b.largest_dimension_m, 100 * b.tolerance,
-        100 * b.far_error_measured);
+    // Up to 8 D the opening's geometry alone (slanted receivers) explains the distance (a
+    // Lambertian square measures 7.2 D); beyond, the table does.
+    const char* why = b.max_over_D <= 8.0 ? "smooth distribution (geometry of the opening)"
+                      : b.worst_gradient_per_deg > 0.05
+                          ? "sharp beam"
+                          : "kinks or curvature between measured angles";
+    if (b.near_everywhere_somewhere) {
+      std::snprintf(buf, sizeof buf,
+                    "%s: near field at every distance at C %.1f gamma %.0f deg, from %.1f D "
+                    "elsewhere (median %.1f D, D = %.2f m)%s; far field within %.2g %% beyond "
+                    "(measured at most %.2g %%)",
+                    why, b.worst_c_deg, b.worst_gamma_deg, b.min_over_D, b.median_over_D,
+                    b.largest_dimension_m, scope, 100 * b.tolerance, 100 * b.far_error_measured);
+    } else {
+      std::snprintf(buf, sizeof buf,
+                    "%s: near field out to %.1f D (at C %.1f gamma %.0f deg, intensity changing "
+                    "%.1f %%/deg), %.1f D at least, median %.1f D (D = %.2f m)%s; far field within "
+                    "%.2g %% beyond (measured at most %.2g %%)",
+                    why, b.max_over_D, b.worst_c_deg, b.worst_gamma_deg,
+                    100 * b.worst_gradient_per_deg, b.min_over_D, b.median_over_D,
+                    b.largest_dimension_m, scope, 100 * b.tolerance, 100 * b.far_error_measured);
+    }
   }
   if (b.fixed_max_over_D >= kNearEverywhere)
     std::snprintf(fixed, sizeof fixed,

@@ -10,6 +10,7 @@
 // bilinear between them) the footprint straddles the kink out to 10 D and more. The map is
 // measured, not modelled: near field (the quality's rung) against far field along rays at growing
 // distance, so it sees what the table actually does.
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,6 +57,30 @@ inline constexpr double kBlendWidth = 1.25;
 inline constexpr int kGammaSamples = 37;  // 0..180 degrees step 5
 inline constexpr int kCSamples = 48;      // 0..352.5 degrees step 7.5
 
+// What a run asks of the map: for every direction sample, the farthest distance (x D) at which a
+// receiver of the scene lies in a direction interpolated from it (0: no receiver does). The
+// weights of a pair read only the four samples around its direction (bilinear), and those read
+// their neighbours' measurements up to kDilationReach samples away, so a sample no receiver
+// reaches this way need not be measured, and one whose receivers are all nearer than some rung
+// need not be measured beyond it. build_far_field_bound measures exactly that (docs/nearfield.md,
+// "Only what the scene asks").
+class MapDemand {
+ public:
+  MapDemand();
+  // A receiver at `distance_over_D` in the unit direction `local_dir` of the luminaire frame, as
+  // FarFieldBound::weights will be asked for it.
+  void add(const Vec3& local_dir, double distance_over_D);
+  // Both demands (the larger reach per sample).
+  void merge(const MapDemand& other);
+  // Per sample (gamma row-major, kCSamples per row): the farthest receiver (x D), 0 if none.
+  const std::vector<float>& reach_over_D() const { return reach_; }
+  std::size_t receivers() const { return receivers_; }
+
+ private:
+  std::vector<float> reach_;
+  std::size_t receivers_ = 0;
+};
+
 struct FarFieldBound {
   double tolerance = kStandardPromise;  // the promise it was built for
   double largest_dimension_m = 0.0;
@@ -84,6 +109,15 @@ struct FarFieldBound {
   // weights() answers without locating the direction in the map. kNearEverywhere when some
   // direction keeps the near field at every distance.
   double far_everywhere_over_D = 0.0;
+  // Built for a MapDemand: the samples measured (read by the scene's pairs or by their
+  // dilation), of all kGammaSamples x kCSamples; directions whose receivers are all nearer than
+  // the distance the far field would need (near field out to the farthest of them: `capped`).
+  // The summary above is over the samples the scene's pairs read.
+  bool restricted = false;
+  int samples_measured = kGammaSamples * kCSamples;
+  int samples_read = kGammaSamples * kCSamples;  // of them, read by the scene's pairs
+  int samples_capped = 0;                        // of those, capped
+  double capped_reach_over_D = 0.0;              // their farthest receiver
 
   // d_far(w) / D for a unit direction in the luminaire frame, bilinear between samples (so the
   // far weight is continuous across directions too).
@@ -109,9 +143,15 @@ struct FarFieldBound {
 // near-field evaluations worst case, in parallel (tens to hundreds of ms per distinct emitter) on
 // at most `threads` threads (0: the processor's, up to 8; the calculation passes its own limit,
 // `luxgrid --threads`).
+// With `demand`, only the samples it reads, each out to the farthest receiver that reads it
+// (the rest is never asked): a sample whose far field fails out to that receiver keeps the near
+// field at every distance, so weights() of a pair the demand holds gives a far weight no larger
+// than the whole map's; a sample passing within it finds the rung the whole map finds where
+// the error falls with distance, as the ladder assumes.
 std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& emitter,
                                                            const Model& near_model,
-                                                           double tolerance, unsigned threads = 0);
+                                                           double tolerance, unsigned threads = 0,
+                                                           const MapDemand* demand = nullptr);
 
 // The plan's line for one emitter: "near field out to 9.1 D (C 45, gamma 35), 2.0 D at least,
 // median 3.4 D (0.65 m opening), far field within 1 % beyond" with the reason.

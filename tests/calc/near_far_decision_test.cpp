@@ -97,6 +97,17 @@ Worst check_scene(const std::string& what, Emitter e) {
   const auto high_bound =
       nearfield::build_far_field_bound(e, Model::high(), nearfield::kHighPromise);
   const auto t2 = std::chrono::steady_clock::now();
+  // The maps a run builds: only what these receivers ask (nearfield::MapDemand).
+  nearfield::MapDemand demand;
+  for (const auto& surface : floor_and_wall(e))
+    for (const auto& r : surface) {
+      const Vec3 d = r.p - e.centroid;
+      demand.add(e.world_to_local * glm::normalize(d), glm::length(d) / e.largest_dimension_m);
+    }
+  const auto standard_for_scene = nearfield::build_far_field_bound(
+      e, Model::standard(), nearfield::kStandardPromise, 0, &demand);
+  const auto high_for_scene =
+      nearfield::build_far_field_bound(e, Model::high(), nearfield::kHighPromise, 0, &demand);
   std::printf("%s: map built in %.0f ms (standard), %.0f ms (high)\n", what.c_str(),
               1e3 * std::chrono::duration<double>(t1 - t0).count(),
               1e3 * std::chrono::duration<double>(t2 - t1).count());
@@ -121,6 +132,16 @@ Worst check_scene(const std::string& what, Emitter e) {
       EXPECT_LE(err_h, nearfield::kHighPromise) << what << " " << names[s] << " point " << i;
       worst.standard = std::max(worst.standard, err_s);
       worst.high = std::max(worst.high, err_h);
+      e.far_bound = standard_for_scene;
+      const double es_scene =
+          nearfield::hybrid_illuminance(e, surface[i].p, surface[i].n, Model::standard());
+      e.far_bound = high_for_scene;
+      const double eh_scene =
+          nearfield::hybrid_illuminance(e, surface[i].p, surface[i].n, Model::high());
+      EXPECT_LE(std::abs(es_scene - ref[i]) / ref[i], nearfield::kStandardPromise)
+          << what << " " << names[s] << " point " << i << " (map for the scene)";
+      EXPECT_LE(std::abs(eh_scene - ref[i]) / ref[i], nearfield::kHighPromise)
+          << what << " " << names[s] << " point " << i << " (map for the scene)";
       // What the five-times rule gave, printed to show the scene tests the decision.
       e.far_bound = nullptr;
       const double e5 =
