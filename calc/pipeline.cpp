@@ -140,12 +140,26 @@ struct WorstPatchEstimate {
   std::vector<std::vector<double>> probe_lx;
   std::optional<indirect::IndirectResult> everywhere;
 };
+// `final`: no finer mesh can follow (its work would exceed kRefineWorkLimit), so this solution
+// gives the results whatever the estimate says: it is gathered at every point at once and the
+// probes read from that (the same bits as gathering them alone), instead of gathering the
+// probes twice.
 WorstPatchEstimate worst_patch_estimate(const Scene& scene, const Results& results,
                                         const indirect::IndirectSolution& solution,
                                         const std::vector<geometry::SurfaceGrid>& probes,
-                                        const IndirectEstimateInputs& est) {
+                                        const IndirectEstimateInputs& est, bool final) {
   WorstPatchEstimate w;
-  w.probe_lx = indirect::gather_indirect(solution, scene, probes).E_indirect_per_surface;
+  if (final) {
+    w.everywhere = indirect::gather_indirect(solution, scene, scene.surfaces);
+    for (size_t s = 0; s < probes.size(); ++s) {
+      std::vector<double> at_probes;
+      for (size_t i : est.probe_index[s])
+        at_probes.push_back(w.everywhere->E_indirect_per_surface[s][i]);
+      w.probe_lx.push_back(std::move(at_probes));
+    }
+  } else {
+    w.probe_lx = indirect::gather_indirect(solution, scene, probes).E_indirect_per_surface;
+  }
   const double bound_lx = indirect_upper_bound_lx(solution);
   for (size_t s = 0; s < results.surfaces.size(); ++s) {
     const SurfaceResult& sr = results.surfaces[s];
@@ -175,7 +189,8 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
   // mesh cannot make up for them.
   if (!(promise > 0.0) || solution->result.residual > promise) return;
   for (int step = 0; step < kMaxPatchRefinements; ++step) {
-    WorstPatchEstimate w = worst_patch_estimate(scene, results, *solution, probes, est);
+    const bool final = refine_work(scene, 0.5 * solution->result.patch_size_m) > kRefineWorkLimit;
+    WorstPatchEstimate w = worst_patch_estimate(scene, results, *solution, probes, est, final);
     gathered = std::move(w.everywhere);
     if (!(w.worst > kPatchShareOfPromise * promise)) return;
     const double size_m = solution->result.patch_size_m;
