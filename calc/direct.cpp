@@ -15,9 +15,6 @@
 
 namespace luxgrid::calc {
 
-namespace {
-// What a point of a grid measures. Horizontal and vertical are planes whose normals the loader
-// has set; a half cylinder faces the normal the loader set to its `facing` direction.
 nearfield::Receiver receiver_of(geometry::Quantity q, const Vec3& normal) {
   switch (q) {
     case geometry::Quantity::cylindrical: return nearfield::Receiver::cylindrical();
@@ -25,6 +22,8 @@ nearfield::Receiver receiver_of(geometry::Quantity q, const Vec3& normal) {
     default: return nearfield::Receiver::planar(normal);
   }
 }
+
+namespace {
 // Points per run of the far-field loop below: the run's sums stay in L1 while every luminaire
 // passes over it, and neighbouring points read neighbouring texels of the luminaire's texture.
 constexpr size_t kFarFieldRun = 64;

@@ -18,6 +18,10 @@ using Progress = std::function<void(double fraction_done)>;
 // arriving from behind the receiver or at the luminaire itself. Finite and >= 0.
 double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3& normal);
 
+// What a point of a grid measures. Horizontal and vertical are planes whose normals the loader
+// has set; a half cylinder faces the normal the loader set to its `facing` direction.
+nearfield::Receiver receiver_of(geometry::Quantity q, const Vec3& normal);
+
 // The emitters of all luminaires, built once per run (calc/nearfield/emitter.h).
 std::vector<nearfield::Emitter> make_emitters(const Scene& scene);
 

@@ -7,7 +7,9 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include "calc/direct.h"
 #include "calc/nearfield/far_field_bound.h"
+#include "calc/nearfield/illuminance.h"
 
 namespace luxgrid::calc {
 namespace {
@@ -40,7 +42,7 @@ struct Distinct {
 // Every pair direct light will compute for the members of one distinct emitter: the active
 // points of every surface whose zone holds a member. Null when there are more than
 // kMapDemandPairs (the whole map is then cheaper than marking them).
-std::unique_ptr<nearfield::MapDemand> demand_of(const Scene& scene,
+std::unique_ptr<nearfield::MapDemand> demand_of(const Scene& scene, const Plan& plan,
                                                 const std::vector<nearfield::Emitter>& emitters,
                                                 const std::vector<size_t>& members,
                                                 const DirectReach& reach,
@@ -72,7 +74,11 @@ std::unique_ptr<nearfield::MapDemand> demand_of(const Scene& scene,
         // switch_weights).
         const Vec3 r = grid.points[i] - e.centroid;
         const double d = glm::length(r);
-        if (d > 0.0) demand.add(e.world_to_local * (r / d), d / e.largest_dimension_m);
+        if (!(d > 0.0)) continue;
+        const bool fixed_rule = nearfield::fixed_rule_may_serve(
+            e, receiver_of(grid.quantity, grid.normals[i]), plan.near_model,
+            reach.zone(zones[s][i]).visibility.get());
+        demand.add(e.world_to_local * (r / d), d / e.largest_dimension_m, fixed_rule);
       }
     }
   });
@@ -112,7 +118,7 @@ std::vector<std::string> attach_far_field_bounds(const Scene& scene, const Plan&
   }
   for (Distinct& d : distinct) {
     const std::unique_ptr<nearfield::MapDemand> demand =
-        reach && zones ? demand_of(scene, emitters, d.members, *reach, *zones) : nullptr;
+        reach && zones ? demand_of(scene, plan, emitters, d.members, *reach, *zones) : nullptr;
     d.bound = nearfield::build_far_field_bound(emitters[d.members[0]], plan.near_model, tolerance,
                                                max_threads, demand.get());
     for (size_t i : d.members) emitters[i].far_bound = d.bound;

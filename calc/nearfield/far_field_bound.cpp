@@ -37,6 +37,10 @@ constexpr double kReceiverTiltRad = 75.0 * kDegToRad;
 constexpr double kFootprintMargin = 2.0;
 constexpr int kDilationReach = 3;
 
+// The search below tries a direction's last rung right after rung 0 when the last is at most
+// this (5 D, its receivers no farther; far_field_bound.h's MapDemand).
+constexpr int kCapFirstRungs = 5;
+
 // A direction failing out to the ladder's end keeps the near field at every distance.
 constexpr float kNearEverywhere = 1e6f;  // x D
 
@@ -103,8 +107,10 @@ struct Probe {
     float far_error, fixed_error;
   };
   // `last`: the last rung tried (the ladder's end, or the first rung at or beyond the farthest
-  // receiver of a MapDemand); failing there is "near field at every distance tried".
-  Measured distances_over_D(const Vec3& u, int last = kLadderRungs - 1) const {
+  // receiver of a MapDemand); failing there is "near field at every distance tried". The same
+  // for the fixed rule, `fixed_last` (-1: not measured, its distance is the far field's).
+  Measured distances_over_D(const Vec3& u, int last = kLadderRungs - 1,
+                            int fixed_last = kLadderRungs - 1) const {
     std::array<std::array<double, 5>, kLadderRungs> near;
     for (auto& row : near) row.fill(-1.0);
     std::array<signed char, kLadderRungs> far_seen, fixed_seen;  // -1 unknown, 0 fails, 1 passes
@@ -147,8 +153,14 @@ struct Probe {
     // (rungs 0, 1, 3, 7, 15, last, then bisection inside the bracket): a failing verdict stops
     // at its first failing normal and is cheap, a passing one costs all five, so the search
     // tries to pass as few times as it can.
+    // A direction whose receivers all lie within kCapFirstRungs of the ladder's start (a
+    // MapDemand's) and that fails at rung 0 is tried at `last` next: failing there too (the near
+    // field out to the farthest receiver: a smooth opening needs 5 to 7 D in front of it) ends
+    // the search after two verdicts instead of the galloping's four.
     auto search = [&](bool fixed, int last) {
       int lo = -1, hi = -1;  // lo fails (or -1: none tried), hi passes
+      if (last > 1 && last <= kCapFirstRungs && !verdict(0, fixed) && !verdict(last, fixed))
+        return -1;
       for (int k = 0;; k = std::min(2 * k + 1, last)) {
         if (verdict(k, fixed)) {
           hi = k;
@@ -169,8 +181,8 @@ struct Probe {
     const int far = search(false, last);
     const float far_error = far < 0 ? 0.0f : far_err[far];
     // The fixed rule is used only nearer than d_far, so only the rungs below it matter.
-    if (far == 0) return {over_D(0), over_D(0), far_error, 0.0f};
-    const int fixed = search(true, far < 0 ? last : far);
+    if (far == 0 || fixed_last < 0) return {over_D(far), over_D(far), far_error, 0.0f};
+    const int fixed = search(true, std::min(far < 0 ? last : far, fixed_last));
     return {over_D(far), fixed < 0 ? over_D(far) : over_D(fixed), far_error,
             fixed < 0 ? 0.0f : fixed_err[fixed]};
   }
@@ -296,9 +308,11 @@ void merge_poles(std::vector<float>& raw) {
 struct Needs {
   std::vector<float> read_over_D;     // read by a pair's interpolation (one sample of margin)
   std::vector<float> measure_over_D;  // read, or read by a read sample's dilation or pole
+  // The same for the fixed rule's distances (read where the fixed rule may serve a pair).
+  std::vector<float> fixed_read_over_D, fixed_measure_over_D;
   static Needs everything() {
     const auto all = std::vector<float>(kGammaSamples * kCSamples, kNearEverywhere);
-    return {all, all};
+    return {all, all, all, all};
   }
 };
 
@@ -319,23 +333,29 @@ std::vector<float> max_filter(const std::vector<float>& v, int reach) {
   return out;
 }
 
-Needs needs_of(const MapDemand& demand) {
-  Needs n;
-  // One sample of margin around the four a pair reads: its direction here and in the run are
-  // the same doubles, but the margin costs little and takes rounding out of the argument.
-  n.read_over_D = max_filter(demand.reach_over_D(), 1);
-  n.measure_over_D = max_filter(n.read_over_D, kDilationReach);
-  // merge_poles makes a pole sample the worst of its row and the next, at every C.
+// What reaches read: one sample of margin around the four a pair reads (its direction here and
+// in the run are the same doubles, but the margin costs little and takes rounding out of the
+// argument); what they measure: those and their neighbours in the dilation, and merge_poles
+// makes a pole sample the worst of its row and the next, at every C.
+void read_and_measure(const std::vector<float>& reach, std::vector<float>& read,
+                      std::vector<float>& measure) {
+  read = max_filter(reach, 1);
+  measure = max_filter(read, kDilationReach);
   for (int pole : {0, kGammaSamples - 1}) {
     const int next = pole == 0 ? 1 : kGammaSamples - 2;
-    float reach = 0.0f;
+    float farthest = 0.0f;
     for (int c = 0; c < kCSamples; ++c)
-      reach = std::max(reach, n.measure_over_D[pole * kCSamples + c]);
+      farthest = std::max(farthest, measure[pole * kCSamples + c]);
     for (int row : {pole, next})
       for (int c = 0; c < kCSamples; ++c)
-        n.measure_over_D[row * kCSamples + c] =
-            std::max(n.measure_over_D[row * kCSamples + c], reach);
+        measure[row * kCSamples + c] = std::max(measure[row * kCSamples + c], farthest);
   }
+}
+
+Needs needs_of(const MapDemand& demand) {
+  Needs n;
+  read_and_measure(demand.reach_over_D(), n.read_over_D, n.measure_over_D);
+  read_and_measure(demand.fixed_reach_over_D(), n.fixed_read_over_D, n.fixed_measure_over_D);
   return n;
 }
 
@@ -349,18 +369,26 @@ int last_rung_for(float reach_over_D) {
 
 }  // namespace
 
-MapDemand::MapDemand() : reach_(kGammaSamples * kCSamples, 0.0f) {}
+MapDemand::MapDemand()
+    : reach_(kGammaSamples * kCSamples, 0.0f), fixed_reach_(kGammaSamples * kCSamples, 0.0f) {}
 
-void MapDemand::add(const Vec3& local_dir, double distance_over_D) {
+void MapDemand::add(const Vec3& local_dir, double distance_over_D, bool fixed_rule) {
   const GridSpot s = spot_of(local_dir);
   const auto d = static_cast<float>(std::min(distance_over_D, double{kNearEverywhere}));
   for (int g : {s.g0, s.g0 + 1})
-    for (int c : {s.c0, s.c1}) reach_[g * kCSamples + c] = std::max(reach_[g * kCSamples + c], d);
+    for (int c : {s.c0, s.c1}) {
+      reach_[g * kCSamples + c] = std::max(reach_[g * kCSamples + c], d);
+      if (fixed_rule)
+        fixed_reach_[g * kCSamples + c] = std::max(fixed_reach_[g * kCSamples + c], d);
+    }
   ++receivers_;
 }
 
 void MapDemand::merge(const MapDemand& other) {
-  for (std::size_t i = 0; i < reach_.size(); ++i) reach_[i] = std::max(reach_[i], other.reach_[i]);
+  for (std::size_t i = 0; i < reach_.size(); ++i) {
+    reach_[i] = std::max(reach_[i], other.reach_[i]);
+    fixed_reach_[i] = std::max(fixed_reach_[i], other.fixed_reach_[i]);
+  }
   receivers_ += other.receivers_;
 }
 
@@ -434,8 +462,11 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
       for (std::size_t k = t; k < todo.size(); k += threads) {
         const int i = todo[k];
         const int last = last_rung_for(needs.measure_over_D[i]);
-        measured[i] =
-            probe.distances_over_D(direction_of_sample(i / kCSamples, i % kCSamples), last);
+        const int fixed_last = needs.fixed_measure_over_D[i] > 0.0f
+                                   ? last_rung_for(needs.fixed_measure_over_D[i])
+                                   : -1;
+        measured[i] = probe.distances_over_D(direction_of_sample(i / kCSamples, i % kCSamples),
+                                             last, fixed_last);
         raw[i] = measured[i].far_over_D;
         raw_fixed[i] = measured[i].fixed_over_D;
         capped[i] = raw[i] >= kNearEverywhere && last < kLadderRungs - 1;
@@ -481,10 +512,11 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
   // Summary for the plan over the samples the pairs read, undilated (what each direction
   // measured); those left to the near field out to their farthest receiver are counted apart.
   std::vector<float> far_read, fixed_read;
-  int worst = -1;
+  int worst = -1, read = 0;
   for (int i = 0; i < n; ++i) {
     if (!(needs.read_over_D[i] > 0.0f)) continue;
-    fixed_read.push_back(raw_fixed[i]);
+    ++read;
+    if (needs.fixed_read_over_D[i] > 0.0f) fixed_read.push_back(raw_fixed[i]);
     if (capped[i]) {
       ++bound->samples_capped;
       bound->capped_reach_over_D =
@@ -494,11 +526,13 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
     far_read.push_back(raw[i]);
     if (worst < 0 || raw[i] > raw[worst]) worst = i;
   }
-  bound->samples_read = static_cast<int>(fixed_read.size());
-  if (fixed_read.empty()) return bound;  // no receiver: nothing to say
-  std::sort(fixed_read.begin(), fixed_read.end());
-  bound->fixed_median_over_D = fixed_read[fixed_read.size() / 2];
-  bound->fixed_max_over_D = fixed_read.back();
+  bound->samples_read = read;
+  bound->fixed_samples_read = static_cast<int>(fixed_read.size());
+  if (!fixed_read.empty()) {
+    std::sort(fixed_read.begin(), fixed_read.end());
+    bound->fixed_median_over_D = fixed_read[fixed_read.size() / 2];
+    bound->fixed_max_over_D = fixed_read.back();
+  }
   if (worst < 0) return bound;  // every read direction keeps the near field to its farthest point
   std::sort(far_read.begin(), far_read.end());
   bound->min_over_D = far_read.front();
@@ -566,7 +600,11 @@ std::string describe(const FarFieldBound& b) {
                     b.largest_dimension_m, scope, 100 * b.tolerance, 100 * b.far_error_measured);
     }
   }
-  if (b.fixed_max_over_D >= kNearEverywhere)
+  if (b.restricted && b.fixed_samples_read == 0)
+    std::snprintf(fixed, sizeof fixed,
+                  "; the fixed rule serves none of the scene's pairs (cylinders, or planes facing "
+                  "the opening's axis, where the table rung is in closed form)");
+  else if (b.fixed_max_over_D >= kNearEverywhere)
     std::snprintf(fixed, sizeof fixed,
                   "; the fixed rule within %.2g %% beyond %.1f D (median), not at every direction "
                   "(measured at "

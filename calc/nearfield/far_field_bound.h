@@ -68,16 +68,19 @@ class MapDemand {
  public:
   MapDemand();
   // A receiver at `distance_over_D` in the unit direction `local_dir` of the luminaire frame, as
-  // FarFieldBound::weights will be asked for it.
-  void add(const Vec3& local_dir, double distance_over_D);
+  // FarFieldBound::weights will be asked for it; `fixed_rule`: the fixed rule may serve it
+  // (nearfield::fixed_rule_may_serve), so the map's fixed-rule distances are read there too.
+  void add(const Vec3& local_dir, double distance_over_D, bool fixed_rule = true);
   // Both demands (the larger reach per sample).
   void merge(const MapDemand& other);
-  // Per sample (gamma row-major, kCSamples per row): the farthest receiver (x D), 0 if none.
+  // Per sample (gamma row-major, kCSamples per row): the farthest receiver (x D), 0 if none; and
+  // the farthest the fixed rule may serve.
   const std::vector<float>& reach_over_D() const { return reach_; }
+  const std::vector<float>& fixed_reach_over_D() const { return fixed_reach_; }
   std::size_t receivers() const { return receivers_; }
 
  private:
-  std::vector<float> reach_;
+  std::vector<float> reach_, fixed_reach_;
   std::size_t receivers_ = 0;
 };
 
@@ -115,9 +118,10 @@ struct FarFieldBound {
   // The summary above is over the samples the scene's pairs read.
   bool restricted = false;
   int samples_measured = kGammaSamples * kCSamples;
-  int samples_read = kGammaSamples * kCSamples;  // of them, read by the scene's pairs
-  int samples_capped = 0;                        // of those, capped
-  double capped_reach_over_D = 0.0;              // their farthest receiver
+  int samples_read = kGammaSamples * kCSamples;        // of them, read by the scene's pairs
+  int fixed_samples_read = kGammaSamples * kCSamples;  // read for the fixed rule
+  int samples_capped = 0;                              // of those, capped
+  double capped_reach_over_D = 0.0;                    // their farthest receiver
 
   // d_far(w) / D for a unit direction in the luminaire frame, bilinear between samples (so the
   // far weight is continuous across directions too).

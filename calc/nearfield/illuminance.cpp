@@ -169,6 +169,13 @@ double estimated_pair_error(const Emitter& e, const SwitchWeights& w) {
   return error;
 }
 
+bool fixed_rule_may_serve(const Emitter& e, const Receiver& receiver, const Model& near_model,
+                          const geometry::Visibility* occ) {
+  if (receiver.kind != ReceiverKind::planar) return false;
+  return occ || !near_model_uses_table(near_model) ||
+         !table_rung_in_closed_form(e, receiver.direction);
+}
+
 double hybrid_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                           const Model& near_model, NearFieldSwitch mode,
                           const geometry::Visibility* occ) {
@@ -183,15 +190,7 @@ double hybrid_illuminance(const Emitter& e, const Vec3& point, const Receiver& r
   if (mode == NearFieldSwitch::never) w.far = 1.0;
   if (mode == NearFieldSwitch::automatic) {
     w = switch_weights(e, point);
-    // The map measures the fixed rule on planar receivers only; a cylinder's weight sin(eps)
-    // vanishes along the axis, where a few nodes are far off (3 % under a panel): near rung there.
-    if (receiver.kind != ReceiverKind::planar) w.fixed = 0.0;
-    // Where the table rung is in closed form along its rays it costs about what the fixed rule
-    // does and is exact in gamma, where the fixed rule is only within the promise (0.25 % off
-    // under a panel at 2.6 D, docs/nearfield.md): the near rung then serves the pair alone.
-    if (w.fixed > 0.0 && !occ && near_model_uses_table(near_model) &&
-        table_rung_in_closed_form(e, receiver.direction))
-      w.fixed = 0.0;
+    if (w.fixed > 0.0 && !fixed_rule_may_serve(e, receiver, near_model, occ)) w.fixed = 0.0;
     if ((w.far > 0.0 || w.fixed > 0.0) && !e.is_point() && in_penumbra(e, point, occ))
       w.far = 0.0, w.fixed = 0.0;
   }

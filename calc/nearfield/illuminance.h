@@ -93,6 +93,15 @@ SwitchWeights switch_weights(const Emitter& emitter, const Vec3& point);
 // 0 without a bound (the near rung is what the map measures against).
 double estimated_pair_error(const Emitter& emitter, const SwitchWeights& w);
 
+// Whether the fixed rule may serve a pair of this receiver (where the map allows it): planar
+// receivers only (the map measures it on planes, and a cylinder's weight sin(eps) vanishes along
+// the axis, where a few nodes are far off: 3 % under a panel), and not where the table rung is in
+// closed form along its rays without an occluder (it then costs about what the fixed rule does
+// and is exact in gamma, where the fixed rule is only within the promise: 0.25 % off under a
+// panel at 2.6 D, docs/nearfield.md).
+bool fixed_rule_may_serve(const Emitter& emitter, const Receiver& receiver, const Model& near_model,
+                          const geometry::Visibility* occluder);
+
 // settings.near_field: auto (blend by far_field_weight), always (near model everywhere),
 // never (far field everywhere).
 enum class NearFieldSwitch { automatic, always, never };
