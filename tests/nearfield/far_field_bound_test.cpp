@@ -200,6 +200,17 @@ TEST(FarFieldBound, DemandMeasuresLessAndNeverWidensTheFarField) {
       describe(*whole).c_str(), describe(*part).c_str(), far_whole, static_cast<int>(pairs.size()),
       far_same);
   EXPECT_GT(far_whole, 0);
+
+  // Receivers the fixed rule may not serve (fixed_rule_may_serve: planes facing the axis under a
+  // table, cylinders) ask nothing of its distances: the far field's map is the same to the bit,
+  // and the plan says the fixed rule serves none of them.
+  MapDemand far_only;
+  for (const Pair& p : pairs) far_only.add(p.u, p.d / e.largest_dimension_m, false);
+  const auto no_fixed = build_far_field_bound(e, Model::standard(), kStandardPromise, 0, &far_only);
+  EXPECT_EQ(no_fixed->fixed_samples_read, 0);
+  EXPECT_NE(describe(*no_fixed).find("serves none"), std::string::npos) << describe(*no_fixed);
+  for (const Pair& p : pairs)
+    EXPECT_EQ(no_fixed->weights(p.u, p.d).far, part->weights(p.u, p.d).far);
 }
 
 TEST(FarFieldBound, FigureData) {
