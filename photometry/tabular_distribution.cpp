@@ -122,31 +122,41 @@ bool TabularDistribution::gamma_cell(double g, std::size_t& j, double& tg) const
   return true;
 }
 
-TabularDistribution::CPosition TabularDistribution::c_position(double c) const {
-  CPosition out;
-  if (nc_ == 1) return out;
+namespace {
+// c in [0, 2 pi) (c_position's argument may be any real).
+double wrap_c(double c) {
   if (!(c >= 0.0 && c < kTwoPi)) {
     c = std::fmod(c, kTwoPi);
     if (c < 0.0) c += kTwoPi;
     if (!(c < kTwoPi)) c = 0.0;
   }
-  double c0, c1;
+  return c;
+}
+}  // namespace
+
+TabularDistribution::CCell TabularDistribution::c_cell(double c) const {
+  CCell out;
+  if (nc_ == 1) return out;
+  c = wrap_c(c);
   if (c_uniform_) {
     out.i = std::min(static_cast<std::size_t>(c * inv_dc_), nc_ - 1);
-    c0 = grid_.c_rad[out.i];
-    c1 = out.i + 1 < nc_ ? grid_.c_rad[out.i + 1] : kTwoPi;
+    out.c0 = grid_.c_rad[out.i];
+    out.c1 = out.i + 1 < nc_ ? grid_.c_rad[out.i + 1] : kTwoPi;
   } else if (c < grid_.c_rad.front()) {  // wrap cell before the first plane
     out.i = nc_ - 1;
-    c0 = grid_.c_rad.back() - kTwoPi;
-    c1 = grid_.c_rad.front();
+    out.c0 = grid_.c_rad.back() - kTwoPi;
+    out.c1 = grid_.c_rad.front();
   } else {
     auto it = std::upper_bound(grid_.c_rad.begin(), grid_.c_rad.end(), c);
     out.i = static_cast<std::size_t>(it - grid_.c_rad.begin() - 1);
-    c0 = grid_.c_rad[out.i];
-    c1 = out.i + 1 < nc_ ? grid_.c_rad[out.i + 1] : grid_.c_rad.front() + kTwoPi;
+    out.c0 = grid_.c_rad[out.i];
+    out.c1 = out.i + 1 < nc_ ? grid_.c_rad[out.i + 1] : grid_.c_rad.front() + kTwoPi;
   }
-  out.tc = std::clamp((c - c0) / (c1 - c0), 0.0, 1.0);
   return out;
+}
+
+TabularDistribution::CPosition TabularDistribution::c_position(double c) const {
+  return c_position_in(c_cell(c), wrap_c(c));
 }
 
 bool TabularDistribution::locate(double c, double g, Cell& cell) const {

@@ -12,6 +12,7 @@
 //    replaced by its mean over C, so the lookup is exactly continuous at the poles.
 //  * Types A and B (floodlights, automotive) are stored as a C-style grid in a rotated frame;
 //    `table_from_luminaire` maps a luminaire-frame direction into it (see symmetry.h).
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -55,6 +56,18 @@ class TabularDistribution final : public IntensityDistribution {
     double tc = 0.0;    // fraction towards the next plane
   };
   CPosition c_position(double c_rad) const;
+  // The same in two steps, for many C inside one cell of the table (the table rung's rays in
+  // one psi cell, whose ends are C planes or lie between them): the C cell of `c_rad` once, then
+  // the position of each c_rad in [0, 2 pi) inside that cell, the bits c_position gives.
+  struct CCell {
+    std::size_t i = 0;
+    double c0 = 0.0, c1 = 0.0;  // the planes around it (c1 may be 2 pi past the last plane)
+  };
+  CCell c_cell(double c_rad) const;
+  CPosition c_position_in(const CCell& cell, double c_rad) const {
+    if (nc_ == 1) return CPosition{};
+    return CPosition{cell.i, std::clamp((c_rad - cell.c0) / (cell.c1 - cell.c0), 0.0, 1.0)};
+  }
   double intensity_at(const CPosition& c, std::size_t j, double tg) const;
   // A bilinear table's value on gamma row j at the C position (interpolated in C only): what
   // intensity_at(c, j, 0) gives, and intensity_at(c, j - 1, 1) up to rounding. Inline, for the

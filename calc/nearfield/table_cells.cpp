@@ -83,6 +83,10 @@ std::shared_ptr<const TableGammaCells> make_table_gamma_cells(
     cells->line_sin.push_back(g == kHalfPi ? 1.0 : std::sin(g));
     cells->line_cos.push_back(g == kHalfPi ? 0.0 : std::cos(g));
   }
+  for (double c : table.grid().c_rad) {
+    cells->c_break_cos.push_back(std::cos(c - kPi));
+    cells->c_break_sin.push_back(std::sin(c - kPi));
+  }
   const std::vector<double>& G = table.grid().gamma_rad;
   for (std::size_t j = 0; j + 1 < G.size(); ++j)
     cells->inv_row_width.push_back(1.0 / (G[j + 1] - G[j]));

@@ -34,10 +34,13 @@ inline constexpr double kGaussPairSeriesMax = 0.05;
 struct GaussPair {
   double x_lo, s_lo, c_lo;  // node towards a: angle, sin, cos
   double x_hi, s_hi, c_hi;  // node towards b
+  double x_mid;             // the midpoint
 };
-inline GaussPair gauss_pair(double a, double b) {
+// With the midpoint's sine and cosine when the caller knows them (the table rung's psi cells
+// take them from their ends' directions), else computed here.
+inline GaussPair gauss_pair(double a, double b, double sin_mid = 2.0, double cos_mid = 2.0) {
   const double m = a + 0.5 * (b - a), delta = (b - a) * (0.5 - kGauss2Node);
-  GaussPair g{m - delta, 0.0, 0.0, m + delta, 0.0, 0.0};
+  GaussPair g{m - delta, 0.0, 0.0, m + delta, 0.0, 0.0, m};
   if (!(std::abs(delta) <= kGaussPairSeriesMax)) {
     g.s_lo = std::sin(g.x_lo), g.c_lo = std::cos(g.x_lo);
     g.s_hi = std::sin(g.x_hi), g.c_hi = std::cos(g.x_hi);
@@ -46,7 +49,8 @@ inline GaussPair gauss_pair(double a, double b) {
   const double d2 = delta * delta;
   const double sd = delta * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0 * (1.0 - d2 / 42.0)));
   const double cd = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0 * (1.0 - d2 / 30.0 * (1.0 - d2 / 56.0)));
-  const double sm = std::sin(m), cm = std::cos(m);
+  const bool given = sin_mid <= 1.0;
+  const double sm = given ? sin_mid : std::sin(m), cm = given ? cos_mid : std::cos(m);
   g.s_lo = sm * cd - cm * sd, g.c_lo = cm * cd + sm * sd;
   g.s_hi = sm * cd + cm * sd, g.c_hi = cm * cd - sm * sd;
   return g;
@@ -82,6 +86,9 @@ struct TableGammaCells {
   std::vector<double> w_lo, w_hi;
   // 1 / (width of the table's gamma row j), per row.
   std::vector<double> inv_row_width;
+  // Per C plane of the table (C ascending in [0, 2 pi), size 1: none): the direction of the psi
+  // break it makes, psi = C - pi, as (cos, sin), so a break needs no cosine of its own.
+  std::vector<double> c_break_cos, c_break_sin;
 
   // Where an angle falls among the lines, as std::upper_bound (first line > t) and
   // std::lower_bound (first line >= t) give it, from a bucket of width at most the narrowest gap
@@ -95,10 +102,11 @@ struct TableGammaCells {
  private:
   std::size_t scan(double t, bool at_or_above) const {
     const double b = t * inv_bucket;
-    std::size_t k =
-        b >= 0.0 ? bucket_first[std::min(static_cast<std::size_t>(b), bucket_first.size() - 1)] : 0;
-    while (k > 0 && (at_or_above ? lines[k - 1] >= t : lines[k - 1] > t)) --k;
-    while (k < lines.size() && (at_or_above ? lines[k] < t : lines[k] <= t)) ++k;
+    const std::size_t last_bucket = bucket_first.size() - 1, count = lines.size();
+    const double* line = lines.data();
+    std::size_t k = b >= 0.0 ? bucket_first[std::min(static_cast<std::size_t>(b), last_bucket)] : 0;
+    while (k > 0 && (at_or_above ? line[k - 1] >= t : line[k - 1] > t)) --k;
+    while (k < count && (at_or_above ? line[k] < t : line[k] <= t)) ++k;
     return k;
   }
 };

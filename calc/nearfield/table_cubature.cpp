@@ -113,18 +113,42 @@ bool ray_interval(const Polygon2& p, double cos_psi, double sin_psi, bool origin
   return hit && rho_max > rho_min;
 }
 
-// Appends every copy (period 2 pi) of the angle x that falls strictly inside (lo, hi).
-void add_periodic_break(double x, double lo, double hi, std::vector<double>& out) {
-  x -= kTwoPi * std::floor((x - lo) / kTwoPi);  // first copy >= lo
-  for (; x < hi; x += kTwoPi)
-    if (x > lo) out.push_back(x);
+// The distance along the ray from the origin at angle psi to the line of edge i: ray_interval's
+// t for an edge the ray is known to cross.
+double edge_distance(const Polygon2& p, int i, double cos_psi, double sin_psi) {
+  return p.cross[i] / (-cos_psi * p.edge[i].y + sin_psi * p.edge[i].x);
+}
+
+// x - 2 pi floor((x - lo) / 2 pi): the copy of angle x in [lo, lo + 2 pi), the same bits, without
+// floor's call for the angles the rung meets (at most a turn away).
+inline double first_copy_at_or_above(double x, double lo) {
+  const double turns = (x - lo) / kTwoPi;
+  if (turns >= 0.0 && turns < 1.0) return x - kTwoPi * 0.0;
+  if (turns >= 1.0 && turns < 2.0) return x - kTwoPi * 1.0;
+  if (turns >= -1.0 && turns < 0.0) return x - kTwoPi * -1.0;
+  return x - kTwoPi * std::floor(turns);
+}
+
+// A psi break: its angle and its direction (cos, sin), the direction taken from the geometry
+// that made the break (a vertex, a circle crossing, a C plane), so that a cell's middle direction
+// is the normalised sum of its ends': no sine and cosine per cell.
+struct Break {
+  double psi, c, s;
+};
+
+// Appends every copy (period 2 pi) of the break at angle x, direction (c, s), that falls strictly
+// inside (lo, hi).
+inline void add_periodic_break(double x, double c, double s, double lo, double hi,
+                               std::vector<Break>& out) {
+  for (x = first_copy_at_or_above(x, lo); x < hi; x += kTwoPi)
+    if (x > lo) out.push_back({x, c, s});
 }
 
 // Appends the directions (as breaks inside (lo, hi)) where the circle of radius r around the
 // origin crosses the polygon's edges.
 void add_circle_crossings(const Polygon2& p, double r, double lo, double hi,
-                          std::vector<double>& out) {
-  const double r2 = r * r;
+                          std::vector<Break>& out) {
+  const double r2 = r * r, inv_r = 1.0 / r;
   for (int i = 0; i < p.n; ++i) {
     const glm::dvec2 a = p.v[i], e = p.v[(i + 1) % p.n] - a;
     // |a + u e|^2 = r^2, u in [0, 1]
@@ -136,63 +160,115 @@ void add_circle_crossings(const Polygon2& p, double r, double lo, double hi,
     for (double u : {(-qb - root) / qa, (-qb + root) / qa})
       if (u > 0.0 && u < 1.0) {
         const glm::dvec2 x = a + u * e;
-        add_periodic_break(direction_angle(x.y, x.x), lo, hi, out);
+        add_periodic_break(direction_angle(x.y, x.x), x.x * inv_r, x.y * inv_r, lo, hi, out);
       }
   }
 }
 
-// Sorted breaks of [lo, hi] with no cell wider than max_cell (`out` is scratch space).
-void finish_breaks(std::vector<double>& b, std::vector<double>& out, double lo, double hi,
+// Sorted breaks of [lo, hi] with no cell wider than max_cell (`out` is scratch space). A gap cut
+// into pieces gets its pieces' directions by turning the first one's by the piece's angle.
+void finish_breaks(std::vector<Break>& b, std::vector<Break>& out, const Break& lo, const Break& hi,
                    double max_cell) {
   b.push_back(lo);
   b.push_back(hi);
-  std::sort(b.begin(), b.end());
+  std::sort(b.begin(), b.end(), [](const Break& x, const Break& y) { return x.psi < y.psi; });
   out.clear();
   out.push_back(b.front());
   for (std::size_t i = 1; i < b.size(); ++i) {
-    const double a = out.back(), z = b[i];
-    if (!(z - a > kMinCell)) continue;
-    const int pieces = pieces_of_at_most((z - a) / max_cell);
-    for (int k = 1; k < pieces; ++k) out.push_back(a + (z - a) * k / pieces);
+    const Break a = out.back(), z = b[i];
+    if (!(z.psi - a.psi > kMinCell)) continue;
+    const int pieces = pieces_of_at_most((z.psi - a.psi) / max_cell);
+    if (pieces > 1) {
+      const double step = (z.psi - a.psi) / pieces, cs = std::cos(step), sn = std::sin(step);
+      double c = a.c, s = a.s;
+      for (int k = 1; k < pieces; ++k) {
+        const double c_next = c * cs - s * sn;
+        s = s * cs + c * sn, c = c_next;
+        out.push_back({a.psi + (z.psi - a.psi) * k / pieces, c, s});
+      }
+    }
     out.push_back(z);
   }
   b.swap(out);
 }
 
-// The psi cells of one receiver, as sorted breaks in `out`: the angular range of the polygon seen
-// from F (all around when F is inside), cut at the polygon's vertex directions (rho(psi) has a
-// corner there), at the table's C lines (C = psi + pi), and where a gamma line (a circle of
-// radius |sigma| tan gamma' around F) crosses the outline: there a ray's first or last gamma
-// cell changes, a kink in psi. False when the range is empty.
+// The psi cells of one receiver: the angular range of the polygon seen from F (all around when
+// F is inside), cut at the polygon's vertex directions (rho(psi) has a corner there), at the
+// table's C lines (C = psi + pi), and where a gamma line (a circle of radius |sigma| tan gamma'
+// around F) crosses the outline: there a ray's first or last gamma cell changes, a kink in psi.
+// With F outside, each edge's angular span and whether it faces F: a ray in a cell enters through
+// the facing edge whose span holds the cell and leaves through the other (edges_of).
+struct PsiCells {
+  std::vector<Break> breaks;  // sorted
+  bool outside = false;
+  double psi_mid = 0.0;  // spans are relative to it
+  std::array<double, kMaxPolygonVertices> span_lo{}, span_hi{};
+  std::array<bool, kMaxPolygonVertices> facing{};
+
+  // The edges a ray at psi (inside the range, F outside) enters and leaves through: false where
+  // the spans do not tell (F on an edge's line), and the caller tests every edge.
+  bool edges_of(double psi, int n, int& near, int& far) const {
+    const double rel = psi - psi_mid;
+    near = far = -1;
+    for (int i = 0; i < n; ++i)
+      if (span_lo[i] < rel && rel < span_hi[i]) (facing[i] ? near : far) = i;
+    return near >= 0 && far >= 0;
+  }
+};
+
+// False when the range is empty.
 bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, double reach,
-               const TableGammaCells& cells, const std::vector<double>& c_lines,
-               std::vector<double>& out) {
-  thread_local std::vector<double> scratch;
-  out.clear();
+               const TableGammaCells& cells, const std::vector<double>& c_lines, PsiCells& out) {
+  thread_local std::vector<Break> scratch;
+  std::vector<Break>& b = out.breaks;
+  b.clear();
+  if (poly.n < 3) return false;                        // (the caller's clip has 3 or more corners)
   std::array<double, kMaxPolygonVertices> vertex_psi;  // each vertex's direction from F
-  for (int i = 0; i < poly.n; ++i) vertex_psi[i] = direction_angle(poly.v[i].y, poly.v[i].x);
-  double psi_lo, psi_hi;
+  std::array<glm::dvec2, kMaxPolygonVertices> vertex_dir;
+  for (int i = 0; i < poly.n; ++i) {
+    vertex_psi[i] = direction_angle(poly.v[i].y, poly.v[i].x);
+    const double len = glm::length(poly.v[i]);
+    vertex_dir[i] = len > 0.0 ? poly.v[i] / len : glm::dvec2(1.0, 0.0);
+  }
+  Break lo_break, hi_break;
+  out.outside = !inside;
   if (inside) {
-    psi_lo = vertex_psi[0];
-    psi_hi = psi_lo + kTwoPi;
+    lo_break = {vertex_psi[0], vertex_dir[0].x, vertex_dir[0].y};
+    hi_break = {vertex_psi[0] + kTwoPi, vertex_dir[0].x, vertex_dir[0].y};
   } else {
     glm::dvec2 mid(0.0);
     for (int i = 0; i < poly.n; ++i) mid += poly.v[i];
     const double psi_mid = direction_angle(mid.y, mid.x);
+    std::array<double, kMaxPolygonVertices> rel;
     double lo = 0.0, hi = 0.0;
+    int i_lo = 0, i_hi = 0;
     for (int i = 0; i < poly.n; ++i) {
       double d = vertex_psi[i] - psi_mid;
       d -= kTwoPi * std::round(d / kTwoPi);
-      lo = std::min(lo, d);
-      hi = std::max(hi, d);
+      rel[i] = d;
+      if (d < lo) lo = d, i_lo = i;
+      if (d > hi) hi = d, i_hi = i;
     }
-    psi_lo = psi_mid + lo;
-    psi_hi = psi_mid + hi;
+    lo_break = {psi_mid + lo, vertex_dir[i_lo].x, vertex_dir[i_lo].y};
+    hi_break = {psi_mid + hi, vertex_dir[i_hi].x, vertex_dir[i_hi].y};
+    out.psi_mid = psi_mid;
+    double area2 = 0.0;
+    for (int i = 0; i < poly.n; ++i) area2 += -poly.cross[i];  // a x b = -cross
+    for (int i = 0; i < poly.n; ++i) {
+      const int j = (i + 1) % poly.n;
+      out.span_lo[i] = std::min(rel[i], rel[j]);
+      out.span_hi[i] = std::max(rel[i], rel[j]);
+      out.facing[i] = -poly.cross[i] * area2 < 0.0;  // F on the edge's outer side
+    }
   }
+  const double psi_lo = lo_break.psi, psi_hi = hi_break.psi;
   if (!(psi_hi - psi_lo > kMinCell)) return false;
-  for (int i = 0; i < poly.n; ++i) add_periodic_break(vertex_psi[i], psi_lo, psi_hi, out);
+  for (int i = 0; i < poly.n; ++i)
+    add_periodic_break(vertex_psi[i], vertex_dir[i].x, vertex_dir[i].y, psi_lo, psi_hi, b);
   if (c_lines.size() > 1)
-    for (double c : c_lines) add_periodic_break(c - kPi, psi_lo, psi_hi, out);
+    for (std::size_t k = 0; k < c_lines.size(); ++k)
+      add_periodic_break(c_lines[k] - kPi, cells.c_break_cos[k], cells.c_break_sin[k], psi_lo,
+                         psi_hi, b);
   // A circle crosses the outline only between the outline's nearest point and its farthest
   // vertex (reach): the circles inside the nearest distance are skipped without solving for their
   // crossings (a margin of 1e-9 keeps a circle through the nearest point).
@@ -205,13 +281,21 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
     nearest2 = std::min(nearest2, glm::dot(q, q));
   }
   const double nearest = std::sqrt(nearest2) * (1.0 - 1e-9);
-  for (std::size_t k = 0; k < cells.lines.size(); ++k) {
-    const double gp = front ? cells.lines[k] : kPi - cells.lines[k];
-    if (!(gp > 0.0 && gp < 0.5 * kPi)) continue;
-    const double r = abs_sigma * cells.line_tan[k];
-    if (r < reach && r >= nearest) add_circle_crossings(poly, r, psi_lo, psi_hi, out);
+  // The lines in order of gamma' from 0 (ascending in front, descending behind), so their radii
+  // grow: the first beyond the reach ends the loop.
+  const double* lines = cells.lines.data();
+  const double* line_tan = cells.line_tan.data();
+  const std::size_t count = cells.lines.size();
+  for (std::size_t step = 0; step < count; ++step) {
+    const std::size_t k = front ? step : count - 1 - step;
+    const double gp = front ? lines[k] : kPi - lines[k];
+    if (!(gp > 0.0)) continue;
+    if (!(gp < 0.5 * kPi)) break;
+    const double r = abs_sigma * line_tan[k];
+    if (!(r < reach)) break;
+    if (r >= nearest) add_circle_crossings(poly, r, psi_lo, psi_hi, b);
   }
-  finish_breaks(out, scratch, psi_lo, psi_hi, kMaxPsiCell);
+  finish_breaks(b, scratch, lo_break, hi_break, kMaxPsiCell);
   return true;
 }
 
@@ -284,11 +368,11 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
   const std::vector<double>& lines = cells.lines;
 
   const bool inside = contains_origin(poly);
-  thread_local std::vector<double> psi_breaks;
+  thread_local PsiCells psi;
   thread_local std::vector<TableGammaNode> end_nodes;
-  if (!psi_cells(poly, inside, front, abs_sigma, std::sqrt(reach2), cells, table.grid().c_rad,
-                 psi_breaks))
+  if (!psi_cells(poly, inside, front, abs_sigma, std::sqrt(reach2), cells, table.grid().c_rad, psi))
     return true;
+  const std::vector<Break>& psi_breaks = psi.breaks;
 
   double sum = 0.0;
   // One ray's direction terms: `radial` = n . (cos psi, sin psi, 0) in the luminaire frame for a
@@ -326,7 +410,10 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
   // against a linear I).
   const bool closed_form = !light_vector && planar && closed_form_applies(table, n);
   if (closed_form && !(n_z > 0.0)) return true;  // the receiver faces away: cos_r <= 0 everywhere
-  const std::vector<double>& gamma_rows = table.grid().gamma_rad;
+  const double* gamma_rows = table.grid().gamma_rad.data();
+  const long* interval_row = cells.interval_row.data();
+  const double* inv_row_width = cells.inv_row_width.data();
+  const std::size_t line_count = lines.size();
   // One ray in closed form: table angles [t_lo, t_hi] (the ray's in-plane reach rho_min, rho_max),
   // the lines strictly inside are [k_lo, k_hi).
   auto closed_ray = [&](double t_lo, double t_hi, double sin_near, double cos_near, double sin_far,
@@ -337,11 +424,11 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
     const double c_lo = front ? cos_near : -cos_far, c_hi = front ? cos_far : -cos_near;
     // The piece [a, b] of interval k (k < 0 or past the last line: outside the table).
     const auto piece = [&](long k, double a, double sa, double ca, double b, double sb, double cb) {
-      if (k < 0 || static_cast<std::size_t>(k) >= lines.size()) return 0.0;
-      const long row = cells.interval_row[static_cast<std::size_t>(k)];
+      if (k < 0 || static_cast<std::size_t>(k) >= line_count) return 0.0;
+      const long row = interval_row[k];
       if (row < 0) return 0.0;
       const std::size_t j = static_cast<std::size_t>(row);
-      return linear_sin_integral(a, sa, ca, b, sb, cb, gamma_rows[j], cells.inv_row_width[j],
+      return linear_sin_integral(a, sa, ca, b, sb, cb, gamma_rows[j], inv_row_width[j],
                                  table.row_value(c, j), table.row_value(c, j + 1));
     };
     const long first = static_cast<long>(k_lo) - 1;
@@ -350,11 +437,13 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
         piece(first, t_lo, s_lo, c_lo, lines[k_lo], cells.line_sin[k_lo], cells.line_cos[k_lo]) +
         piece(static_cast<long>(k_hi) - 1, lines[k_hi - 1], cells.line_sin[k_hi - 1],
               cells.line_cos[k_hi - 1], t_hi, s_hi, c_hi);
+    const double* w_lo = cells.w_lo.data();
+    const double* w_hi = cells.w_hi.data();
     for (std::size_t k = k_lo; k + 1 < k_hi; ++k) {
-      const long row = cells.interval_row[k];
+      const long row = interval_row[k];
       if (row < 0) continue;
       const std::size_t j = static_cast<std::size_t>(row);
-      v += cells.w_lo[k] * table.row_value(c, j) + cells.w_hi[k] * table.row_value(c, j + 1);
+      v += w_lo[k] * table.row_value(c, j) + w_hi[k] * table.row_value(c, j + 1);
     }
     return n_z * v;
   };
@@ -380,15 +469,33 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
     add_moments(end_nodes.data(), end_nodes.data() + end_nodes.size(), c, m);
   };
   Vec3 moments_sum(0.0);
+  photometry::TabularDistribution::CCell c_cell{0, 1.0, 0.0};  // empty: looked up first
   for (std::size_t k = 0; k + 1 < psi_breaks.size(); ++k) {
-    const double pa = psi_breaks[k], pw = psi_breaks[k + 1] - pa;
-    const GaussPair nodes = gauss_pair(pa, pa + pw);
+    const Break& a = psi_breaks[k];
+    const Break& b = psi_breaks[k + 1];
+    const double pa = a.psi, pw = b.psi - pa;
+    // The middle direction from the ends' (a cell spans at most kMaxPsiCell).
+    const double mc = a.c + b.c, ms = a.s + b.s, inv_len = 1.0 / std::sqrt(mc * mc + ms * ms);
+    const GaussPair nodes = gauss_pair(pa, pa + pw, ms * inv_len, mc * inv_len);
+    // What the cell's two rays share: with F outside, the edges they enter and leave through (no
+    // vertex direction lies inside a cell), and the table's C cell (nor does a C plane).
+    int near_edge = -1, far_edge = -1;
+    const bool by_edges = psi.outside && psi.edges_of(nodes.x_mid, poly.n, near_edge, far_edge);
+    const double c_mid = first_copy_at_or_above(nodes.x_mid + kPi, 0.0);
+    // Consecutive cells mostly share a C cell: looked up again only when the middle leaves it.
+    if (!(c_mid >= c_cell.c0 && c_mid < c_cell.c1)) c_cell = table.c_cell(c_mid);
     for (int node = 0; node < 2; ++node) {
       const double psi = node == 0 ? nodes.x_lo : nodes.x_hi;
       const double cp = node == 0 ? nodes.c_lo : nodes.c_hi,
                    sp = node == 0 ? nodes.s_lo : nodes.s_hi;
       double rho_min, rho_max;
-      if (!ray_interval(poly, cp, sp, inside, rho_min, rho_max)) continue;
+      if (by_edges) {
+        rho_min = edge_distance(poly, near_edge, cp, sp);
+        rho_max = edge_distance(poly, far_edge, cp, sp);
+        if (!(rho_max > rho_min && rho_min >= 0.0)) continue;
+      } else if (!ray_interval(poly, cp, sp, inside, rho_min, rho_max)) {
+        continue;
+      }
       // The ray's range of table angles.
       const double tan_near = rho_min * inv_sigma, tan_far = rho_max * inv_sigma;
       const double cos_near = 1.0 / std::sqrt(1.0 + tan_near * tan_near),
@@ -396,10 +503,9 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
       const double sin_near = tan_near * cos_near, sin_far = tan_far * cos_far;
       const double g_near = ray_angle(sin_near, cos_near), g_far = ray_angle(sin_far, cos_far);
       const double t_lo = front ? g_near : kPi - g_far, t_hi = front ? g_far : kPi - g_near;
-      const Ray dir{n.x * cp + n.y * sp, cp * e.rotation[0] + sp * e.rotation[1]};
-      double c = psi + kPi;
-      c -= kTwoPi * std::floor(c / kTwoPi);
-      const photometry::TabularDistribution::CPosition cpos = table.c_position(c);
+      const double c = first_copy_at_or_above(psi + kPi, 0.0);
+      const photometry::TabularDistribution::CPosition cpos =
+          c >= c_cell.c0 && c <= c_cell.c1 ? table.c_position_in(c_cell, c) : table.c_position(c);
       const double tan_lo = front ? tan_near : tan_far, tan_hi = front ? tan_far : tan_near;
       // Lines strictly inside (t_lo, t_hi): [k_lo, k_hi).
       const std::size_t k_lo = cells.first_above(t_lo), k_hi = cells.first_at_or_above(t_hi);
@@ -419,7 +525,8 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
       double ray = 0.0;
       if (closed_form) {
         ray = closed_ray(t_lo, t_hi, sin_near, cos_near, sin_far, cos_far, k_lo, k_hi, cpos);
-      } else if (k_lo >= k_hi) {
+      } else if (const Ray dir{n.x * cp + n.y * sp, cp * e.rotation[0] + sp * e.rotation[1]};
+                 k_lo >= k_hi) {
         ray = end_cell(t_lo, t_hi, tan_lo, tan_hi, cpos, dir);
       } else {
         ray = end_cell(t_lo, lines[k_lo], tan_lo, cells.line_tan[k_lo], cpos, dir) +
