@@ -32,11 +32,11 @@
 
 #include "calc/nearfield/fan_sample.h"
 #include "calc/nearfield/models.h"
-#include "calc/nearfield/ray_angle.h"
 #include "calc/nearfield/receiver_fan.h"
 #include "calc/nearfield/receiver_kernel.h"
 #include "calc/nearfield/table_cells.h"
 #include "photometry/tabular_distribution.h"
+#include "util/table_angle.h"
 
 namespace luxgrid::nearfield {
 namespace {
@@ -169,7 +169,8 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
                std::vector<double>& out) {
   thread_local std::vector<double> scratch;
   out.clear();
-  std::array<double, kMaxPolygonVertices> vertex_psi;  // each vertex's direction from F
+  // Each vertex's direction from F (zeroed: GCC cannot see that the polygon has corners here).
+  std::array<double, kMaxPolygonVertices> vertex_psi{};
   for (int i = 0; i < poly.n; ++i) vertex_psi[i] = direction_angle(poly.v[i].y, poly.v[i].x);
   double psi_lo, psi_hi;
   if (inside) {
@@ -394,7 +395,8 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
       const double cos_near = 1.0 / std::sqrt(1.0 + tan_near * tan_near),
                    cos_far = 1.0 / std::sqrt(1.0 + tan_far * tan_far);
       const double sin_near = tan_near * cos_near, sin_far = tan_far * cos_far;
-      const double g_near = ray_angle(sin_near, cos_near), g_far = ray_angle(sin_far, cos_far);
+      const double g_near = quadrant_angle(sin_near, cos_near),
+                   g_far = quadrant_angle(sin_far, cos_far);
       const double t_lo = front ? g_near : kPi - g_far, t_hi = front ? g_far : kPi - g_near;
       const Ray dir{n.x * cp + n.y * sp, cp * e.rotation[0] + sp * e.rotation[1]};
       double c = psi + kPi;
