@@ -72,8 +72,9 @@ SinCos unit_pair_at(double theta, std::mt19937_64& rng) {
   return {glm::length(glm::cross(a, b)), glm::dot(a, b)};
 }
 
-// 4 units in the last place: the largest seen over these samples is 3 (tiny angles: the pair's
-// rescaling, the series and the product each round once; near pi: pi's own rounding).
+// Within 4 eps of the angle (relative): the largest seen is 2, over these samples and over 5
+// million more (tiny angles: the pair's rescaling, the series and the sum each round once; near
+// pi: pi's own rounding).
 TEST(TableAngle, ArcAngleAgreesWithAtan2OverTheHalfTurn) {
   std::mt19937_64 rng(19);
   std::uniform_real_distribution<double> uniform(0.0, kPi), log_angle(-15.0, 0.0);
