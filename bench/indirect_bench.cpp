@@ -2,13 +2,19 @@
 // 12 x 8 x 3 m room (floor 0.2, walls 0.5, ceiling 0.7) with 6 Lambertian downlights and a
 // 0.25 m workplane grid (1 353 points), solved at patch sizes from 1 m to 0.25 m, converged
 // (`auto`) and one bounce. Counters: patches, VPLs, form-factor matrix size (the dominant memory:
-// n^2 floats; the mesh and vectors are O(n)), bounces run.
+// n^2 floats; the mesh and vectors are O(n)), bounces run. Beside it the kernel that dominates
+// the final gather: Lambert's exact point-to-polygon factor (form_factor.h) of a 0.25 m patch
+// from points within 1 m of it (as the gather takes it: patches within half the far ratio of a
+// receiver), wholly in front of the receiver or cut by its horizon.
 // Run: build/bench/indirect_bench --benchmark_min_time=0.01
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <memory>
+#include <random>
 #include <vector>
 
+#include "calc/indirect/form_factor.h"
 #include "calc/indirect/indirect.h"
 #include "photometry/builtin.h"
 
@@ -63,5 +69,26 @@ BENCHMARK(BM_Indirect)
     ->ArgsProduct({{100, 70, 50, 35, 25}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// Lambert's factor of a 0.25 m square patch (z = 0) from 4096 points 1 mm to 0.9 m above it and
+// up to 0.9 m beside it; receiver normals tilted at random towards the patch (argument 0: every
+// patch wholly above the receiver's horizon) or within 60 degrees of the horizontal (1: about
+// two in five cut by it).
+void BM_PointPolygonFormFactor(benchmark::State& state) {
+  const std::vector<Vec3> patch = {{0, 0, 0}, {0.25, 0, 0}, {0.25, 0.25, 0}, {0, 0.25, 0}};
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double down = state.range(0) == 0 ? 5.0 : 0.0;
+  std::vector<Vec3> x, n;
+  for (int i = 0; i < 4096; ++i) {
+    x.emplace_back(0.125 + 0.9 * u(rng), 0.125 + 0.9 * u(rng), 0.001 + 0.9 * std::abs(u(rng)));
+    n.push_back(glm::normalize(Vec3(u(rng), u(rng), -(down + std::abs(u(rng))))));
+  }
+  for (auto _ : state)
+    for (size_t i = 0; i < x.size(); ++i)
+      benchmark::DoNotOptimize(indirect::point_polygon_form_factor(x[i], n[i], patch));
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(x.size()));
+}
+BENCHMARK(BM_PointPolygonFormFactor)->Arg(0)->Arg(1);
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -33,6 +34,10 @@ struct FixedPolygon3 {
   int n = 0;
 };
 
+// The horizon clip's tolerance: a corner counts as on the plane when its height is at most this
+// times the polygon's reach (its farthest corner from the origin); see below.
+inline constexpr double kOnPlaneTolerance = 64.0 * std::numeric_limits<double>::epsilon();
+
 // The horizon clip: `corners[0..count)` (count <= Capacity) clipped to the half-space
 // n . (y - origin) >= 0, returned relative to `origin` (corner - origin): Sutherland-Hodgman, a
 // corner on the plane kept once, each crossing projected exactly onto the plane (so a receiver's
@@ -43,18 +48,28 @@ struct FixedPolygon3 {
 // polygon gains at most one corner; a non-convex one is cut short rather than overflow Capacity.
 // Fewer than three corners: nothing lies above the plane.
 namespace detail {
+// The corners relative to the origin, rel[count], their heights over the plane, h[count], and the
+// on-plane tolerance (kOnPlaneTolerance times the reach, taken as the root of the largest
+// squared length: one square root instead of one per corner, the same value, the root being
+// monotonic and correctly rounded).
+template <class Buffer, class Heights>
+double relative_heights(const Vec3* corners, int count, const Vec3& origin, const Vec3& n,
+                        Buffer& rel, Heights& h) {
+  double reach2 = 0.0;
+  for (int i = 0; i < count; ++i) {
+    rel[i] = corners[i] - origin;
+    h[i] = glm::dot(rel[i], n);
+    reach2 = std::max(reach2, glm::dot(rel[i], rel[i]));
+  }
+  return kOnPlaneTolerance * std::sqrt(reach2);
+}
+
 // The clip of clip_to_half_space_relative on caller-provided buffers rel[count], h[count];
 // `emit(corner)` receives the clipped corners while `room()` allows two more.
 template <class Buffer, class Heights, class Emit, class Room>
 void clip_relative(const Vec3* corners, int count, const Vec3& origin, const Vec3& n, Buffer& rel,
                    Heights& h, Emit&& emit, Room&& room) {
-  double reach = 0.0;
-  for (int i = 0; i < count; ++i) {
-    rel[i] = corners[i] - origin;
-    h[i] = glm::dot(rel[i], n);
-    reach = std::max(reach, glm::length(rel[i]));
-  }
-  const double on_plane = 64.0 * std::numeric_limits<double>::epsilon() * reach;
+  const double on_plane = relative_heights(corners, count, origin, n, rel, h);
   for (int i = 0; i < count; ++i) {
     if (std::abs(h[i]) <= on_plane) {
       rel[i] -= h[i] * n;
@@ -62,7 +77,7 @@ void clip_relative(const Vec3* corners, int count, const Vec3& origin, const Vec
     }
   }
   for (int i = 0; i < count; ++i) {
-    const int j = (i + 1) % count;
+    const int j = i + 1 < count ? i + 1 : 0;
     if (!room()) break;
     if (h[i] >= 0.0) emit(rel[i]);
     if ((h[i] > 0.0 && h[j] < 0.0) || (h[i] < 0.0 && h[j] > 0.0)) {
@@ -87,6 +102,19 @@ FixedPolygon3<Capacity> clip_to_half_space_relative(const Vec3* corners, int cou
       corners, count, origin, n, rel, h, [&](const Vec3& p) { out.v[out.n++] = p; },
       [&] { return out.n + 2 <= Capacity; });
   return out;
+}
+
+// The corners relative to `origin` in rel[0..count) (count <= Capacity) when every one lies
+// above the plane n . (y - origin) = 0 by more than the clip's on-plane tolerance: then true, and
+// rel is what clip_to_half_space_relative would return, to the bit, without its copy and its
+// branches (most patches seen from close by lie wholly in front of the receiver).
+template <size_t Capacity>
+bool relative_if_wholly_above(const Vec3* corners, int count, const Vec3& origin, const Vec3& n,
+                              std::array<Vec3, Capacity>& rel) {
+  if (count < 3 || count > static_cast<int>(Capacity)) return false;
+  std::array<double, Capacity> h;
+  const double on_plane = detail::relative_heights(corners, count, origin, n, rel, h);
+  return *std::min_element(h.begin(), h.begin() + count) > on_plane;
 }
 
 // `poly` clipped to the half-space n . (y - origin) >= 0 as clip_to_half_space_relative, in world

@@ -1,52 +1,77 @@
 #pragma once
 // Spherical-geometry kernels: solid angles and Lambert's projected solid angle of triangles and
-// polygons seen from a point, robust for degenerate and large triangles (solid angles by atan2,
-// never atan [VanOosterom1983]). The near-field models (calc/nearfield) and reflected light
-// (calc/indirect: form factors, the first bounce) share them.
+// polygons seen from a point, robust for degenerate and large triangles (solid angles by the
+// angle over the half turn, atan2's, never atan [VanOosterom1983]; the angles by the table angle
+// of util/table_angle.h, atan2 to a few units in the last place without a library call). The
+// near-field models (calc/nearfield) and reflected light (calc/indirect: form factors, the first
+// bounce) share them.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 
 #include "util/robust_math.h"
+#include "util/table_angle.h"
 
 namespace luxgrid::geometry {
 
-// Solid angle (sr) of the spherical triangle with unit vertices a, b, c: Van Oosterom and
-// Strackee (1983), Luksch et al. 2020 Eq. 11,
-//   tan(Omega / 2) = a . (b x c) / (1 + a.b + a.c + b.c).
-// atan2 keeps Omega right above pi sr, where the denominator turns negative and plain atan
-// would return Omega - 2 pi; a degenerate triangle (two equal vertices) gives 0.
-inline double triangle_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
+// Solid angle (sr) of the triangle with corners a, b, c seen from the origin, given with their
+// lengths la, lb, lc: Van Oosterom and Strackee (1983) [VanOosterom1983], Luksch et al. 2020
+// Eq. 11,
+//   tan(Omega / 2) = |a . (b x c)| / (la lb lc + (a . b) lc + (a . c) lb + (b . c) la),
+// which for unit vectors is a . (b x c) / (1 + a.b + a.c + b.c): no corner needs normalising.
+// The angle of the pair (denominator, numerator) over the half turn, as atan2 gives it, keeps
+// Omega right above pi sr, where the denominator turns negative and plain atan would return
+// Omega - 2 pi; a degenerate triangle (two equal vertices) gives 0. By the table angle
+// (util/table_angle.h; the pair is of any length): this runs for every piece of the first
+// bounce.
+inline double triangle_solid_angle(const Vec3& a, double la, const Vec3& b, double lb,
+                                   const Vec3& c, double lc) {
   const double numerator = std::abs(glm::dot(a, glm::cross(b, c)));
-  const double denominator = 1.0 + glm::dot(a, b) + glm::dot(a, c) + glm::dot(b, c);
-  return 2.0 * std::atan2(numerator, denominator);
+  const double denominator =
+      la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la;
+  return 2.0 * direction_angle(numerator, denominator);
 }
 
-// One edge of Lambert's polygon formula (Lambert 1760; Baum et al. 1989): theta * g, where
-// theta is the arc from unit vector a to unit vector b and g = (a x b) / |a x b|. The projected
-// solid angle of a spherical polygon is |n . sum over edges| / 2. Equal vertices give 0.
-inline Vec3 lambert_edge(const Vec3& a, const Vec3& b) {
+// The same for unit vectors a, b, c (the spherical triangle).
+inline double triangle_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return triangle_solid_angle(a, 1.0, b, 1.0, c, 1.0);
+}
+
+// One edge of Lambert's polygon formula (Lambert 1760; Baum et al. 1989) projected on the
+// receiver normal n: theta n . g, where theta is the arc between the directions of a and b and
+// g = (a x b) / |a x b|. The projected solid angle of a spherical polygon is
+// |sum over edges| / 2. a and b are corners relative to the viewpoint, of any length (only their
+// directions count), given with their inverse lengths inv_a = 1 / |a|, inv_b = 1 / |b|; equal
+// directions give 0. theta = atan2(|a x b|, a . b) (accurate near 0 and pi, where acos(a . b) is
+// not) by arc_angle, from the pair scaled to unit length, and 1 / |a x b| is taken beside it
+// rather than after it: this runs for every edge of every exact form factor, where the library's
+// atan2 and the divisions of normalising each corner and each angle took a sixth of a whole
+// calculation (docs/performance.md).
+inline double lambert_edge(const Vec3& a, double inv_a, const Vec3& b, double inv_b,
+                           const Vec3& n) {
   const Vec3 c = glm::cross(a, b);
-  const double s = glm::length(c);
-  if (!(s > 0.0)) return Vec3(0.0);
-  return c * (std::atan2(s, glm::dot(a, b)) / s);
+  const double length = glm::length(c);
+  if (!(length > 0.0)) return 0.0;
+  const double scale = inv_a * inv_b;
+  return glm::dot(n, c) * (arc_angle(length * scale, glm::dot(a, b) * scale) * (1.0 / length));
 }
 
-// Projected solid angle (sr) of the spherical triangle a, b, c for the receiver normal n:
-// the integral of (w . n) over the triangle, exact (Lambert), for a triangle above the horizon.
+// Projected solid angle (sr) of the spherical triangle a, b, c (unit vectors) for the receiver
+// normal n: the integral of (w . n) over the triangle, exact (Lambert), for a triangle above the
+// horizon.
 inline double triangle_projected_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c,
                                              const Vec3& n) {
-  return 0.5 * std::abs(glm::dot(n, lambert_edge(a, b) + lambert_edge(b, c) + lambert_edge(c, a)));
+  return 0.5 * std::abs(lambert_edge(a, 1.0, b, 1.0, n) + lambert_edge(b, 1.0, c, 1.0, n) +
+                        lambert_edge(c, 1.0, a, 1.0, n));
 }
 
-// Solid angle (sr) of the planar triangle abc seen from s (triangle_solid_angle of the unit
-// directions); 0 when s is a vertex.
+// Solid angle (sr) of the planar triangle abc seen from s; 0 when s is a vertex.
 inline double triangle_solid_angle_from(const Vec3& s, const Vec3& a, const Vec3& b,
                                         const Vec3& c) {
   const Vec3 ra = a - s, rb = b - s, rc = c - s;
   const double la = glm::length(ra), lb = glm::length(rb), lc = glm::length(rc);
   if (!(la > 0.0 && lb > 0.0 && lc > 0.0)) return 0.0;
-  return triangle_solid_angle(ra / la, rb / lb, rc / lc);
+  return triangle_solid_angle(ra, la, rb, lb, rc, lc);
 }
 
 // Corners closer than this to the viewpoint are left out of projected_solid_angle: their edges
@@ -55,28 +80,28 @@ inline double triangle_solid_angle_from(const Vec3& s, const Vec3& a, const Vec3
 inline constexpr double kMinCornerDistance_m = 1e-12;
 
 // Projected solid angle (sr) of a planar polygon seen from the origin for the unit normal n, by
-// Lambert's formula [Baum1989, Eq. 2]: |n . sum over edges lambert_edge(u_k, u_k+1)| / 2, with
-// u_k the unit directions to the corners `rel[0..count)` (relative to the viewpoint). Exact for
-// any planar polygon wholly above the viewpoint's horizon (clip it first: polygon3.h); bounded
-// however close the viewpoint is (no singularity). In [0, pi].
+// Lambert's formula [Baum1989, Eq. 2]: |sum over edges lambert_edge(r_k, r_k+1)| / 2, with r_k
+// the corners `rel[0..count)` (relative to the viewpoint). Exact for any planar polygon wholly
+// above the viewpoint's horizon (clip it first: polygon3.h); bounded however close the viewpoint
+// is (no singularity). In [0, pi].
 inline double projected_solid_angle(const Vec3* rel, size_t count, const Vec3& n) {
   if (count < 3) return 0.0;
-  Vec3 sum(0.0), prev(0.0), first(0.0);
-  bool have_prev = false;
+  double sum = 0.0;
+  const Vec3 *prev = nullptr, *first = nullptr;
+  double inv_prev = 0.0, inv_first = 0.0;
   for (size_t k = 0; k < count; ++k) {
     const double len = glm::length(rel[k]);
     if (!(len > kMinCornerDistance_m)) continue;
-    const Vec3 u = rel[k] / len;
-    if (have_prev)
-      sum += lambert_edge(prev, u);
+    const double inv = 1.0 / len;
+    if (prev)
+      sum += lambert_edge(*prev, inv_prev, rel[k], inv, n);
     else
-      first = u;
-    prev = u;
-    have_prev = true;
+      first = &rel[k], inv_first = inv;
+    prev = &rel[k], inv_prev = inv;
   }
-  if (!have_prev) return 0.0;
-  sum += lambert_edge(prev, first);
-  return 0.5 * std::abs(glm::dot(n, sum));
+  if (!prev) return 0.0;
+  sum += lambert_edge(*prev, inv_prev, *first, inv_first, n);
+  return 0.5 * std::abs(sum);
 }
 
 }  // namespace luxgrid::geometry

@@ -1,6 +1,7 @@
 #include "calc/indirect/form_factor.h"
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
 #include "geometry/spherical.h"
@@ -23,8 +24,14 @@ double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Vec3* corne
     for (size_t k = 0; k < clipped.size(); ++k) rel[k] = clipped[k] - x;
     psa = geometry::projected_solid_angle(rel.data(), rel.size(), n);
   } else {
-    const auto clipped = geometry::clip_to_half_space_relative<2 * kMaxStack>(corners, m, x, n);
-    psa = geometry::projected_solid_angle(clipped.v.data(), static_cast<size_t>(clipped.n), n);
+    // Most near patches lie wholly above the horizon, where the clip changes nothing.
+    std::array<Vec3, kMaxStack> rel;
+    if (geometry::relative_if_wholly_above(corners, m, x, n, rel)) {
+      psa = geometry::projected_solid_angle(rel.data(), static_cast<size_t>(m), n);
+    } else {
+      const auto clipped = geometry::clip_to_half_space_relative<2 * kMaxStack>(corners, m, x, n);
+      psa = geometry::projected_solid_angle(clipped.v.data(), static_cast<size_t>(clipped.n), n);
+    }
   }
   return std::clamp(psa / kPi, 0.0, 1.0);
 }

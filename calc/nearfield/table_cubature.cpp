@@ -32,11 +32,11 @@
 
 #include "calc/nearfield/fan_sample.h"
 #include "calc/nearfield/models.h"
-#include "calc/nearfield/ray_angle.h"
 #include "calc/nearfield/receiver_fan.h"
 #include "calc/nearfield/receiver_kernel.h"
 #include "calc/nearfield/table_cells.h"
 #include "photometry/tabular_distribution.h"
+#include "util/table_angle.h"
 
 namespace luxgrid::nearfield {
 namespace {
@@ -501,7 +501,8 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
       const double cos_near = 1.0 / std::sqrt(1.0 + tan_near * tan_near),
                    cos_far = 1.0 / std::sqrt(1.0 + tan_far * tan_far);
       const double sin_near = tan_near * cos_near, sin_far = tan_far * cos_far;
-      const double g_near = ray_angle(sin_near, cos_near), g_far = ray_angle(sin_far, cos_far);
+      const double g_near = quadrant_angle(sin_near, cos_near),
+                   g_far = quadrant_angle(sin_far, cos_far);
       const double t_lo = front ? g_near : kPi - g_far, t_hi = front ? g_far : kPi - g_near;
       const double c = first_copy_at_or_above(psi + kPi, 0.0);
       const photometry::TabularDistribution::CPosition cpos =
