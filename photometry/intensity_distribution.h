@@ -6,6 +6,7 @@
 #include <string>
 
 #include "util/robust_math.h"
+#include "util/table_angle.h"
 
 namespace luxgrid::photometry {
 
@@ -38,7 +39,29 @@ struct PhotometricAngles {
   double c;
   double gamma;
 };
-PhotometricAngles angles_of(const Vec3& direction);
+// By the table angle (util/table_angle.h: atan2 to a few units in the last place, without a
+// library call), in two parts for callers that need only gamma: every intensity look-up (the
+// first bounce's pieces, the far-field pairs) and every near/far weight takes them. For a unit
+// direction (the interface's contract) (h, -z) is a unit pair, and so is (|y|, x) / h; anything
+// else (a direction of another length, the vertical, underflow) takes atan2 inside arc_angle or
+// here. `horizontal` = sqrt(x^2 + y^2).
+inline double gamma_of(double horizontal, double z) { return arc_angle(horizontal, -z); }
+inline double c_of(double x, double y, double horizontal) {
+  double c;
+  if (horizontal > 0.0) {
+    const double inv_h = 1.0 / horizontal;
+    const double a = arc_angle(std::abs(y) * inv_h, x * inv_h);
+    c = y < 0.0 ? 2.0 * kPi - a : a;
+  } else {
+    c = std::atan2(y, x);
+    if (c < 0.0) c += 2.0 * kPi;
+  }
+  return c < 2.0 * kPi ? c : 0.0;
+}
+inline PhotometricAngles angles_of(const Vec3& d) {
+  const double horizontal = std::sqrt(d.x * d.x + d.y * d.y);
+  return {c_of(d.x, d.y, horizontal), gamma_of(horizontal, d.z)};
+}
 Vec3 direction_of(double c, double gamma);
 
 }  // namespace luxgrid::photometry

@@ -224,25 +224,10 @@ double TabularDistribution::intensity_at(double c, double g) const {
 
 double TabularDistribution::intensity(const Vec3& direction) const {
   const Vec3 d = has_frame_ ? frame_ * direction : direction;
-  // The angles by the table angle (util/table_angle.h: atan2 to a few units in the last place,
-  // without a library call): this runs for every piece of the first bounce and every near-field
-  // far-field pair. For a unit direction (the interface's contract) (h, -z) is a unit pair, and so
-  // is (|y|, x) / h; anything else (a direction of another length, the vertical, underflow) takes
-  // atan2 inside arc_angle or here.
+  // The angles as angles_of gives them (intensity_distribution.h), C only where the table has
+  // more than one plane.
   const double h = std::sqrt(d.x * d.x + d.y * d.y);
-  const double g = arc_angle(h, -d.z);  // 0 at nadir
-  double c = 0.0;
-  if (nc_ > 1) {
-    if (h > 0.0) {
-      const double inv_h = 1.0 / h;
-      const double a = arc_angle(std::abs(d.y) * inv_h, d.x * inv_h);
-      c = d.y < 0.0 ? kTwoPi - a : a;
-    } else {
-      c = std::atan2(d.y, d.x);
-      if (c < 0.0) c += kTwoPi;
-    }
-  }
-  return intensity_at(c, g);
+  return intensity_at(nc_ > 1 ? photometry::c_of(d.x, d.y, h) : 0.0, gamma_of(h, d.z));
 }
 
 Vec3 TabularDistribution::luminaire_direction(double c, double g) const {
