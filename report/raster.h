@@ -15,6 +15,12 @@ struct Rgb {
   float r = 0.f, g = 0.f, b = 0.f;
 };
 
+// A colour as the raster stores it: each channel rounded to a byte (Raster::to_bytes).
+struct Rgb8 {
+  std::uint8_t r = 0, g = 0, b = 0;
+  bool operator==(const Rgb8&) const = default;
+};
+
 class Raster {
  public:
   Raster(int width, int height, Rgb background);
@@ -23,6 +29,8 @@ class Raster {
   int height() const { return height_; }
   // Row-major, the top row first, 3 bytes (R, G, B) per pixel.
   const std::vector<std::uint8_t>& pixels() const { return rgb_; }
+  // Row y's first byte (0 <= y < height()), for callers that fill whole rows of bytes.
+  std::uint8_t* row(int y) { return rgb_.data() + static_cast<std::size_t>(y) * width_ * 3; }
   Rgb at(int x, int y) const;
 
   void set(int x, int y, Rgb c) {  // inline: the plots set each of their pixels
@@ -38,6 +46,7 @@ class Raster {
     if (!(scaled >= 0.f)) return 0;
     return static_cast<std::uint8_t>(static_cast<int>(static_cast<double>(scaled) + 0.5));
   }
+  static Rgb8 to_bytes(Rgb c) { return {to_byte(c.r), to_byte(c.g), to_byte(c.b)}; }
   // c over the pixel with coverage alpha in [0, 1] (anti-aliased text).
   void blend(int x, int y, Rgb c, float alpha);
   // The half-open rectangle [x0, x1) x [y0, y1).
