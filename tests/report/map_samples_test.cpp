@@ -234,9 +234,7 @@ TEST(MapSamples, EveryPixelAsThePlotsWorkedItOutBefore) {
         }
         const Rgb8 colour = reference_colour(want, field, c.result.E, scale);
         for (const Raster* r : {&fast_map, &slow_map}) {
-          const std::uint8_t* p =
-              r->pixels().data() +
-              (static_cast<size_t>(py + 1) * r->width() + static_cast<size_t>(px + 2)) * 3;
+          const std::uint8_t* p = r->row(py + 1) + static_cast<size_t>(px + 2) * 3;
           ASSERT_EQ((Rgb8{p[0], p[1], p[2]}), colour) << px << " " << py;
         }
         sampled += want.kind == Stencil::Kind::sampled && want.used != 0;
