@@ -178,12 +178,18 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
     const int fu = g.nu * S + 1, fv = g.nv * S + 1;
     std::vector<double> fine(static_cast<size_t>(fu) * fv);
     std::vector<bool> fine_on(fine.size());
-    for (int j = 0; j < fv; ++j)
+    // field.sample(i / S - 0.5, j / S - 0.5), its places along u and v found once per column and
+    // row.
+    std::vector<AxisStencil> fine_columns(static_cast<size_t>(fu));
+    for (int i = 0; i < fu; ++i) fine_columns[i] = Field::axis(double(i) / S - 0.5, field.nu());
+    for (int j = 0; j < fv; ++j) {
+      const AxisStencil row = Field::axis(double(j) / S - 0.5, field.nv());
       for (int i = 0; i < fu; ++i) {
-        const double e = field.sample(double(i) / S - 0.5, double(j) / S - 0.5);
+        const double e = field.value(field.stencil(fine_columns[i], row), r.E);
         fine[static_cast<size_t>(j) * fu + i] = std::isnan(e) ? 0.0 : e;
         fine_on[static_cast<size_t>(j) * fu + i] = !std::isnan(e);
       }
+    }
     struct Level {
       double lx;
       bool required;
@@ -204,8 +210,12 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
       std::vector<IsoSegment> segments;
     };
     std::vector<Pending> drawn;
-    for (const Level& level : levels) {
-      auto segments = isolux_segments(fine, fu, fv, level.lx, fine_on);
+    std::vector<double> level_lx;
+    for (const Level& level : levels) level_lx.push_back(level.lx);
+    auto segments_per_level = isolux_segments(fine, fu, fv, level_lx, fine_on);
+    for (size_t k = 0; k < levels.size(); ++k) {
+      const Level& level = levels[k];
+      auto& segments = segments_per_level[k];
       if (segments.empty()) continue;
       // Light lines on the dark half of the map, dark lines on the light half: visible in colour
       // and in grey print. Requirement lines are drawn 3 px wide, round values 1 px.
