@@ -16,7 +16,7 @@ namespace luxgrid::report {
 
 namespace {
 
-// The PNG file, as the PNG specification (W3C, 2003; RFC 2083) lays it out: the signature, then
+// The PNG file, as the PNG specification lays it out (docs/references.md, PNG): the signature, then
 // chunks of a 4-byte big-endian length, a 4-byte type, the data and a CRC-32 of type and data.
 // A plot needs three: IHDR (size, 8-bit RGB, no interlacing), one IDAT (every row after its
 // filter byte, as one zlib stream) and IEND.
@@ -24,8 +24,9 @@ constexpr std::array<unsigned char, 8> kSignature = {0x89, 'P', 'N', 'G', '\r', 
 
 // Plots are smooth colour ramps, flat margins and a little text. Row filters cost time and gain
 // nothing on them (every row is written with filter 0, none), and libdeflate's level 1 compresses
-// them faster than zlib's level 3 and a little smaller: the office's 9 plots as 921 kB in
-// 1.9 x 10^8 instructions, against 959 kB in 3.7 x 10^8 (docs/performance.md, "PNG encoding").
+// them faster than zlib's level 3 did (through libpng) and a little smaller: the office's 9 plots
+// as 921 kB in 1.9 x 10^8 instructions, against 959 kB in 3.7 x 10^8 (docs/performance.md, "The
+// plots: pixels, colours and the PNG file").
 // The pixels are the same at any level (tests/report/png_plot_test.cpp decodes them).
 constexpr int kDeflateLevel = 1;
 
