@@ -123,16 +123,14 @@ MapSamples make_map_samples(const calc::SurfaceResult& r, const calc::Scene* sce
   for (int c = 0; c < 3; ++c)
     separable = separable && (g.u_dir[c] == 0.0 || frame.up[c] == 0.0) &&
                 (g.v_dir[c] == 0.0 || frame.right[c] == 0.0);
-  ms.separable = separable;
   std::vector<unsigned char> u_inside, v_inside;  // separable: 0 <= u <= size_u, per column
   // Separable: which of a pixel's weights (Stencil::weight(tx, ty, di, dj), bit 2 dj + di) are
   // positive, from which of its factors are, per column (1 - tx, tx) and per row (1 - ty, ty).
   // The factors are >= 0, and rounded multiplication is monotone: when the smallest positive
   // factors along u and v have a positive product, so has every pair of positive factors, and a
   // weight is positive exactly when both its factors are. Else (an underflow, which the map's
-  // fractions of 2^-54 and more never reach) each pixel's weights are multiplied out.
+  // fractions of 2^-54 and more never reach) the pixels are worked out one by one.
   std::vector<std::uint8_t> column_mask, row_mask;
-  bool masks = false;
   if (separable) {
     ms.columns.resize(static_cast<size_t>(map_w)), ms.rows.resize(static_cast<size_t>(map_h));
     u_inside.resize(ms.columns.size()), v_inside.resize(ms.rows.size());
@@ -157,33 +155,44 @@ MapSamples make_map_samples(const calc::SurfaceResult& r, const calc::Scene* sce
       ms.rows[py] = Field::axis(v / sv - 0.5, field.nv());
       row_mask[py] = factor_mask(ms.rows[py].t, 0b0011, 0b1100, smallest_v);
     }
-    masks = smallest_u * smallest_v > 0.0;
-  } else {
-    ms.pixels.resize(ms.code.size());
+    if (!(smallest_u * smallest_v > 0.0)) separable = false, ms.columns.clear(), ms.rows.clear();
   }
+  ms.separable = separable;
+  if (!separable) ms.pixels.resize(ms.code.size());
 
   // Per row: each pixel's world x (the locators' answers for the row at once when every pixel
-  // lies on the row's y, as on plans), then what it shows.
+  // lies on the row's y, as on plans), then which polygons it lies in (the bits below), then what
+  // it shows.
+  constexpr unsigned kInRegion = 1, kInRoom = 2, kInObstacle = 4;
   std::vector<double> xs(static_cast<size_t>(map_w));
   std::vector<geometry::Location> where(xs.size());
-  std::vector<unsigned char> in_region(xs.size()), in_room(xs.size()), in_obstacle(xs.size());
-  const bool locating = room_shown || !region.empty() || !obstacles.empty();
+  std::vector<std::uint8_t> in(xs.size());
   // Separable: per row, each grid column's points (as Stencil::used's bits) and its point
   // nearest to the row that are on.
   std::vector<std::uint8_t> cell_on(static_cast<size_t>(field.nu())),
       nearest_on(static_cast<size_t>(field.nu()));
+  // Separable: the map's columns in runs that take the same from their column (in u's range,
+  // first and nearest point along u, positive factors), so that within a run and a row a pixel's
+  // code depends only on the polygons it lies in.
+  std::vector<int> run_end;
+  for (int px = 1; separable && px <= map_w; ++px) {
+    const AxisStencil &a = ms.columns[px - 1], &b = ms.columns[std::min(px, map_w - 1)];
+    if (px == map_w || u_inside[px] != u_inside[px - 1] || a.first != b.first ||
+        a.nearest != b.nearest || column_mask[px] != column_mask[px - 1])
+      run_end.push_back(px);
+  }
   for (int py = 0; py < map_h; ++py) {
     const Vec3 up_row = up_of_row(py);
     const double row_y = frame_point(frame, 0.5 / ppm, (map_h - py - 0.5) / ppm).y;
-    if (locating) {
+    std::fill(in.begin(), in.end(), region.empty() ? kInRegion : 0u);
+    if (room_shown || !region.empty() || !obstacles.empty()) {
       bool on_row = true;
       for (int px = 0; px < map_w; ++px) {
         const Vec3 w = along_row[px] + up_row;
         xs[px] = w.x, on_row = on_row && w.y == row_y;
       }
       // Whether each pixel lies in any of the polygons (boundary included).
-      auto mark = [&](std::vector<geometry::RowLocator>& set, std::vector<unsigned char>& in) {
-        std::fill(in.begin(), in.end(), 0);
+      auto mark = [&](std::vector<geometry::RowLocator>& set, unsigned bit) {
         for (auto& l : set) {
           l.set_row(row_y);
           if (on_row) {
@@ -191,44 +200,51 @@ MapSamples make_map_samples(const calc::SurfaceResult& r, const calc::Scene* sce
           } else {
             for (int px = 0; px < map_w; ++px) where[px] = l.locate(Vec2(along_row[px] + up_row));
           }
-          for (int px = 0; px < map_w; ++px) in[px] |= where[px] != geometry::Location::outside;
+          for (int px = 0; px < map_w; ++px)
+            if (where[px] != geometry::Location::outside) in[px] |= bit;
         }
       };
-      mark(region, in_region), mark(room, in_room), mark(obstacles, in_obstacle);
+      mark(region, kInRegion), mark(room, kInRoom), mark(obstacles, kInObstacle);
     }
-    if (masks) {
+    // Inside the surface: its colour, or obstacle grey; outside it: the room's light grey or
+    // white.
+    auto kind_of = [&](unsigned polygons, bool in_rect) {
+      if (!(in_rect && (polygons & kInRegion)))
+        return room_shown && (polygons & kInRoom) ? Stencil::Kind::not_calculated
+                                                  : Stencil::Kind::outside_room;
+      return polygons & kInObstacle ? Stencil::Kind::obstacle : Stencil::Kind::sampled;
+    };
+    std::uint8_t* code = ms.code.data() + static_cast<size_t>(py) * map_w;
+    if (separable) {
       for (int i = 0; i < field.nu(); ++i) {
         cell_on[i] = field.cell_on(i, ms.rows[py].first);
         nearest_on[i] = field.on(i, ms.rows[py].nearest);
       }
-    }
-    // Inside the surface: its colour, or obstacle grey; outside it: the room's light grey or
-    // white.
-    auto kind_of = [&](int px, bool in_rect) {
-      if (!(in_rect && (region.empty() || in_region[px])))
-        return room_shown && in_room[px] ? Stencil::Kind::not_calculated
-                                         : Stencil::Kind::outside_room;
-      return in_obstacle[px] ? Stencil::Kind::obstacle : Stencil::Kind::sampled;
-    };
-    std::uint8_t* code = ms.code.data() + static_cast<size_t>(py) * map_w;
-    if (separable) {
-      for (int px = 0; px < map_w; ++px) {
+      auto code_at = [&](int px, unsigned polygons) {
         Stencil st;
-        st.kind = kind_of(px, u_inside[px] && v_inside[py]);
-        if (st.kind != Stencil::Kind::sampled) {
-        } else if (!masks) {
-          st.used = field.used(ms.columns[px], ms.rows[py], nearest_must_be_on);
-        } else if (!nearest_must_be_on || nearest_on[ms.columns[px].nearest]) {
+        st.kind = kind_of(polygons, u_inside[px] && v_inside[py]);
+        if (st.kind == Stencil::Kind::sampled &&
+            (!nearest_must_be_on || nearest_on[ms.columns[px].nearest]))
           st.used = cell_on[ms.columns[px].first] & column_mask[px] & row_mask[py];
+        return code_of(st);
+      };
+      // Each run's codes by the polygons a pixel lies in, worked out at the first such pixel
+      // (0xFF: not yet; a code is below 64).
+      int px = 0;
+      for (int end : run_end) {
+        std::uint8_t by_polygons[8] = {0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF};
+        for (; px < end; ++px) {
+          std::uint8_t& c = by_polygons[in[px]];
+          if (c == 0xFF) c = code_at(px, in[px]);
+          code[px] = c;
         }
-        code[px] = code_of(st);
       }
     } else {
       for (int px = 0; px < map_w; ++px) {
         double u, v;
         grid_uv(along_row[px] + up_row, u, v);
         Stencil st;
-        st.kind = kind_of(px, u >= 0 && u <= g.size_u && v >= 0 && v <= g.size_v);
+        st.kind = kind_of(in[px], u >= 0 && u <= g.size_u && v >= 0 && v <= g.size_v);
         if (st.kind == Stencil::Kind::sampled)
           st = field.stencil(u / su - 0.5, v / sv - 0.5, nearest_must_be_on);
         code[px] = code_of(st);

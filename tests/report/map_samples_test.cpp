@@ -159,6 +159,11 @@ std::vector<Case> cases(const calc::Scene& l_room, const calc::Scene& slanted) {
   slanted_shape.outline = slanted.rooms[0].outline, slanted_shape.height = 2.7;
   for (const auto& g : geometry::make_room_surface_grids("S", slanted_shape, 0.35, {}))
     out.push_back({g.name, with_values(g), &slanted});
+  // A rectangle on the L room's plan: pixels off it but in the room, on either side of its edges.
+  out.push_back({"desk in the L room",
+                 with_values(geometry::make_plane_grid("desk", {1, 5, 0.75}, {1, 0, 0}, {0, 1, 0},
+                                                       2.0, 1.2, 0.2)),
+                 &l_room});
   // A workplane turned 30 degrees against the plan, in the L room: located per pixel.
   const double c30 = std::cos(0.5235987755982988), s30 = std::sin(0.5235987755982988);
   out.push_back({"turned plane",
