@@ -41,6 +41,8 @@ void RowLocator::set_row(double y) {
     if (x0 <= x1) near_edge_.push_back({x0, x1});
   }
   std::sort(crossings_x_.begin(), crossings_x_.end());
+  std::sort(near_edge_.begin(), near_edge_.end(),
+            [](const Interval& a, const Interval& b) { return a.x0 < b.x0; });
 }
 
 Location RowLocator::locate(const Vec2& p) const {
@@ -52,6 +54,39 @@ Location RowLocator::locate(const Vec2& p) const {
   const auto right =
       crossings_x_.end() - std::upper_bound(crossings_x_.begin(), crossings_x_.end(), p.x);
   return right % 2 == 1 ? Location::inside : Location::outside;
+}
+
+void RowLocator::locate_row(std::span<const double> xs, std::span<Location> out) const {
+  if (!row_set_) {
+    for (size_t k = 0; k < xs.size(); ++k) out[k] = locate(Vec2(xs[k], y_));
+    return;
+  }
+  // locate()'s answers in one walk along the row: `crossed` counts the crossings at or left of x
+  // (so crossings_x_.size() - crossed lie right of it, as upper_bound counts them), `edge` is
+  // the first near-edge range that does not end left of x: x lies in a range only if it lies in
+  // that one, as the later ones start no sooner. Away from the ranges the answer holds
+  // from x until the next crossing or range, so it is written for the whole span at once. A step
+  // back (or a NaN, which locate() finds outside, as an empty walk does) starts the walk again.
+  size_t crossed = 0, edge = 0;
+  const size_t crossings = crossings_x_.size(), ranges = near_edge_.size();
+  double previous = -INFINITY;
+  for (size_t k = 0; k < xs.size();) {
+    const double x = xs[k];
+    if (!(x >= previous)) crossed = 0, edge = 0;
+    while (crossed < crossings && crossings_x_[crossed] <= x) ++crossed;
+    while (edge < ranges && near_edge_[edge].x1 < x) ++edge;
+    if (edge < ranges && near_edge_[edge].x0 <= x) {
+      out[k++] = geometry::locate(Vec2(x, y_), poly_, tol_m_);
+      previous = x;
+      continue;
+    }
+    const Location answer = (crossings - crossed) % 2 == 1 ? Location::inside : Location::outside;
+    const double end = std::min(crossed < crossings ? crossings_x_[crossed] : INFINITY,
+                                edge < ranges ? near_edge_[edge].x0 : INFINITY);
+    do out[k++] = answer;
+    while (k < xs.size() && xs[k] >= x && xs[k] < end);
+    previous = xs[k - 1];
+  }
 }
 
 }  // namespace luxgrid::geometry

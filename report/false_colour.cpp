@@ -7,10 +7,10 @@
 #include <memory>
 
 #include "geometry/polygon.h"
-#include "geometry/row_locate.h"
 #include "report/isolux.h"
 #include "report/luminaire_outline.h"
 #include "report/map_frame.h"
+#include "report/map_samples.h"
 #include "report/png_file.h"
 #include "report/raster.h"
 #include "report/raster_text.h"
@@ -27,9 +27,7 @@ constexpr int kTop = 92, kLeft = 58, kBottom = 44, kLegendGap = 22, kBarW = 20, 
               kMinWidth = 640;
 constexpr int kTitlePx = 17, kStatsPx = 13, kNotePx = 12, kAxisPx = 12, kLabelPx = 12;
 
-const Rgb kWhite{1, 1, 1}, kBlack{0, 0, 0}, kOutsideRoom{1, 1, 1};
-const Rgb kNotCalculated{0.93f, 0.93f, 0.93f};  // inside the room, outside the surface
-const Rgb kObstacle{0.72f, 0.72f, 0.72f};       // points left out inside the surface
+const Rgb kWhite{1, 1, 1}, kBlack{0, 0, 0};
 
 std::string format_lux(double v) {
   char buf[32];
@@ -48,187 +46,9 @@ struct Box {
   bool overlaps(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
 };
 
-// Which grid points a sample of the map is interpolated from, and how (Field::stencil), or what
-// else the pixel shows.
-struct Stencil {
-  enum class Kind : std::uint8_t { outside_room, not_calculated, obstacle, sampled };
-  double tx = 0.0, ty = 0.0;  // bilinear weights' fractions along i and j
-  std::uint32_t k0 = 0;       // index of point (i0, j0)
-  Kind kind = Kind::sampled;
-  std::uint8_t used = 0;  // bit 2 dj + di: point (i0 + di, j0 + dj) has weight and a value
-  static double weight(double tx, double ty, int di, int dj) {
-    return (di ? tx : 1 - tx) * (dj ? ty : 1 - ty);
-  }
-};
-
-// The grid's value at fractional index coordinates (fi, fj) (point (i, j) at fi = i, fj = j):
-// bilinear between the four surrounding points, over the active ones only; NaN where none of
-// them is active or (by default) the nearest is not. In two steps: which points with which
-// weights (the Stencil, the same for every plot of one grid: MapSamples keeps it per pixel), then
-// the value from the illuminances.
-class Field {
- public:
-  // Whether each point counts is looked up once here, not at each of a plot's 10^5 samples.
-  explicit Field(const calc::SurfaceResult& r)
-      : E_(r.E), nu_(std::max(1, r.grid.nu)), nv_(std::max(1, r.grid.nv)) {
-    on_.resize(static_cast<size_t>(nu_) * nv_);
-    for (size_t k = 0; k < on_.size(); ++k)
-      on_[k] = k < E_.size() && (k >= r.grid.active.size() || r.grid.active[k]);
-  }
-
-  // std::lround of a coordinate >= 0 (halves away from zero) without the call into libm: x - k
-  // is exact for k = trunc(x), so the comparison decides as lround does (NaN: 0, as lround's
-  // result cast to int was). Runs once a pixel.
-  static int round_index(double x) {
-    if (!(x >= 0.0)) return 0;
-    const int k = static_cast<int>(x);
-    return x - k >= 0.5 ? k + 1 : k;
-  }
-
-  // `nearest_must_be_on`: NaN where the nearest point is left out (the left-out cell is drawn
-  // grey); false when the caller draws the obstacles' real footprints instead.
-  Stencil stencil(double fi, double fj, bool nearest_must_be_on = true) const {
-    fi = std::clamp(fi, 0.0, nu_ - 1.0), fj = std::clamp(fj, 0.0, nv_ - 1.0);
-    Stencil st;
-    if (nearest_must_be_on && !on(round_index(fi), round_index(fj))) return st;
-    const int i0 = std::min(static_cast<int>(fi), std::max(nu_ - 2, 0)),
-              j0 = std::min(static_cast<int>(fj), std::max(nv_ - 2, 0));
-    st.tx = nu_ > 1 ? fi - i0 : 0.0, st.ty = nv_ > 1 ? fj - j0 : 0.0;
-    st.k0 = static_cast<std::uint32_t>(static_cast<size_t>(j0) * nu_ + i0);
-    // The four points (i0, j0), (i0 + 1, j0), (i0, j0 + 1), (i0 + 1, j0 + 1) (one or two of them
-    // on a grid one point wide or high): those with weight and a value.
-    for (int dj = 0; dj <= (nv_ > 1 ? 1 : 0); ++dj)
-      for (int di = 0; di <= (nu_ > 1 ? 1 : 0); ++di)
-        if (Stencil::weight(st.tx, st.ty, di, dj) > 0.0 && on_[st.k0 + dj * nu_ + di])
-          st.used |= static_cast<std::uint8_t>(1u << (2 * dj + di));
-    return st;
-  }
-
-  // The value at a stencil: NaN where it uses no point.
-  double value(const Stencil& st, const std::vector<double>& E) const {
-    double sum = 0.0, weight = 0.0;
-    for (int dj = 0; dj <= 1; ++dj)
-      for (int di = 0; di <= 1; ++di)
-        if (st.used & (1u << (2 * dj + di))) {
-          const double w = Stencil::weight(st.tx, st.ty, di, dj);
-          sum += w * E[st.k0 + dj * nu_ + di], weight += w;
-        }
-    return weight > 0.0 ? sum / weight : NAN;
-  }
-
-  double sample(double fi, double fj, bool nearest_must_be_on = true) const {
-    return value(stencil(fi, fj, nearest_must_be_on), E_);
-  }
-
- private:
-  bool on(int i, int j) const { return on_[static_cast<size_t>(j) * nu_ + i]; }
-
-  const std::vector<double>& E_;
-  int nu_, nv_;
-  std::vector<unsigned char> on_;  // point (i, j) has a value and is active: on_[j nu + i]
-};
-
 // A map's size and scale, from the grid and the scene alone.
-struct MapLayout {
-  MapFrame frame;
-  bool horizontal = true;
-  double ppm = 1.0;  // pixels per metre
-  int map_w = 1, map_h = 1;
-};
-
-MapLayout map_layout(const geometry::SurfaceGrid& g, const calc::Scene* scene) {
-  MapLayout l;
-  l.frame = map_frame(g, scene);
-  l.horizontal = l.frame.view == MapFrame::View::plan || l.frame.view == MapFrame::View::ceiling;
-  l.ppm = std::min(kMapMaxW / l.frame.width_m, kMapMaxH / l.frame.height_m);
-  l.map_w = std::max(1, static_cast<int>(std::lround(l.frame.width_m * l.ppm)));
-  l.map_h = std::max(1, static_cast<int>(std::lround(l.frame.height_m * l.ppm)));
-  return l;
-}
-
-// On plans, the footprints of the obstacles the surface's height cuts are drawn as they are
-// (a rotated cabinet as a rotated rectangle), not as the staircase of the points they remove.
-std::vector<const std::vector<Vec2>*> cut_obstacles(const MapLayout& l) {
-  std::vector<const std::vector<Vec2>*> cut;
-  if (l.horizontal && l.frame.room)
-    for (const auto& o : l.frame.room->obstacles)
-      if (o.z0 <= l.frame.origin.z && l.frame.origin.z <= o.z1) cut.push_back(&o.footprint);
-  return cut;
-}
-
-}  // namespace
-
-// What each pixel of the map shows, row by row from the top: each pixel's centre in the grid's
-// frame, then where it lies (outside the room, in the room but off the surface, on an obstacle)
-// or the grid points it is interpolated from.
-struct MapSamples {
-  const calc::Scene* scene = nullptr;
-  int map_w = 0, map_h = 0;
-  std::size_t points = 0;    // E.size() of the grid it was made for
-  std::vector<bool> active;  // and its active points
-  std::vector<Stencil> pixels;
-};
-
-namespace {
-
-MapSamples make_samples(const calc::SurfaceResult& r, const calc::Scene* scene,
-                        const MapLayout& layout, const Field& field) {
-  const auto& g = r.grid;
-  const MapFrame& frame = layout.frame;
-  const double ppm = layout.ppm;
-  const int map_w = layout.map_w, map_h = layout.map_h;
-  MapSamples ms;
-  ms.scene = scene, ms.map_w = map_w, ms.map_h = map_h;
-  ms.points = r.E.size(), ms.active = g.active;
-  ms.pixels.resize(static_cast<size_t>(map_w) * map_h);
-  const double su = g.nu > 0 ? g.size_u / g.nu : 1.0,
-               sv = g.nv > 0 ? g.size_v / g.nv : 1.0;  // cell size, m
-  const auto cut = cut_obstacles(layout);
-  // Each polygon's point location is prepared once per row (geometry/row_locate.h), the same
-  // answers as geometry::locate for a fraction of the cost: a map has about 10^5 pixels.
-  const bool room_shown = layout.horizontal && frame.room;
-  std::vector<geometry::RowLocator> room, region, obstacles;
-  if (room_shown) room.emplace_back(frame.room->outline, 0.0);
-  for (const auto& poly : g.region) region.emplace_back(poly, 0.0);
-  for (const auto* fp : cut) obstacles.emplace_back(*fp, 0.0);
-  auto inside = [](const geometry::RowLocator& l, const Vec3& w) {
-    return l.locate(Vec2(w)) != geometry::Location::outside;
-  };
-  // frame_point(frame, a, b) is (origin + right a) + up b: its first sum depends on the column
-  // only and its last term on the row only, so each is made once, the same doubles.
-  std::vector<Vec3> along_row(static_cast<size_t>(map_w));
-  for (int px = 0; px < map_w; ++px)
-    along_row[px] = frame.origin + frame.right * ((px + 0.5) / ppm);
-  for (int py = 0; py < map_h; ++py) {
-    const double row_y = frame_point(frame, 0.5 / ppm, (map_h - py - 0.5) / ppm).y;
-    for (auto* set : {&room, &region, &obstacles})
-      for (auto& l : *set) l.set_row(row_y);
-    const Vec3 up_row = frame.up * ((map_h - py - 0.5) / ppm);
-    for (int px = 0; px < map_w; ++px) {
-      const Vec3 w = along_row[px] + up_row;
-      const Vec3 rel = w - g.origin;
-      const double u = glm::dot(rel, g.u_dir), v = glm::dot(rel, g.v_dir);
-      // Inside the surface: its colour, or obstacle grey; outside it: the room's light grey or
-      // white. So a pixel is located in the obstacles or in the room outline, not in both.
-      const bool in_rect = u >= 0 && u <= g.size_u && v >= 0 && v <= g.size_v;
-      bool in_region = in_rect;
-      if (in_rect && !region.empty()) {
-        in_region = false;
-        for (const auto& l : region) in_region = in_region || inside(l, w);
-      }
-      Stencil& st = ms.pixels[static_cast<size_t>(py) * map_w + px];
-      if (!in_region) {
-        st.kind = room_shown && inside(room.front(), w) ? Stencil::Kind::not_calculated
-                                                        : Stencil::Kind::outside_room;
-      } else {
-        bool in_obstacle = false;
-        for (const auto& l : obstacles) in_obstacle = in_obstacle || inside(l, w);
-        st = in_obstacle ? Stencil{0.0, 0.0, 0, Stencil::Kind::obstacle, 0}
-                         : field.stencil(u / su - 0.5, v / sv - 0.5, cut.empty());
-      }
-    }
-  }
-  return ms;
+MapLayout plot_map_layout(const geometry::SurfaceGrid& g, const calc::Scene* scene) {
+  return map_layout(g, scene, kMapMaxW, kMapMaxH);
 }
 
 }  // namespace
@@ -240,15 +60,16 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
 
 std::shared_ptr<const MapSamples> map_samples(const calc::SurfaceResult& r,
                                               const calc::Scene* scene) {
+  const MapLayout layout = plot_map_layout(r.grid, scene);
   return std::make_shared<const MapSamples>(
-      make_samples(r, scene, map_layout(r.grid, scene), Field(r)));
+      make_map_samples(r, scene, layout, cut_obstacles(layout), Field(r)));
 }
 
 std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourScale& scale,
                                    const std::filesystem::path& path, const PlotOverlay& overlay,
                                    MapPixels* where, const MapSamples* samples) {
   const auto& g = r.grid;
-  const MapLayout layout = map_layout(g, overlay.scene);
+  const MapLayout layout = plot_map_layout(g, overlay.scene);
   const MapFrame& frame = layout.frame;
   const bool horizontal = layout.horizontal;
   const double ppm = layout.ppm;
@@ -291,24 +112,8 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
                      samples->map_h == map_h && samples->points == r.E.size() &&
                      samples->active == g.active;
   MapSamples made;
-  if (!reuse) made = make_samples(r, overlay.scene, layout, field);
-  const MapSamples& ms = reuse ? *samples : made;
-  for (int py = 0; py < map_h; ++py) {
-    for (int px = 0; px < map_w; ++px) {
-      const Stencil& st = ms.pixels[static_cast<size_t>(py) * map_w + px];
-      Rgb c = kObstacle;
-      switch (st.kind) {
-        case Stencil::Kind::outside_room: c = kOutsideRoom; break;
-        case Stencil::Kind::not_calculated: c = kNotCalculated; break;
-        case Stencil::Kind::obstacle: break;
-        case Stencil::Kind::sampled: {
-          const double e = field.value(st, r.E);
-          if (!std::isnan(e)) c = viridis(std::clamp((e - scale.min) / span, 0.0, 1.0));
-        }
-      }
-      canvas.set(kLeft + px, kTop + py, c);
-    }
-  }
+  if (!reuse) made = make_map_samples(r, overlay.scene, layout, cut_obstacles(layout), field);
+  paint_map(reuse ? *samples : made, field, r.E, scale, canvas, kLeft, kTop);
 
   // --- outlines: the room and its obstacles (plans), the surface's own outline -----------------
   const double z = frame.origin.z;
@@ -373,12 +178,18 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
     const int fu = g.nu * S + 1, fv = g.nv * S + 1;
     std::vector<double> fine(static_cast<size_t>(fu) * fv);
     std::vector<bool> fine_on(fine.size());
-    for (int j = 0; j < fv; ++j)
+    // field.sample(i / S - 0.5, j / S - 0.5), its places along u and v found once per column and
+    // row.
+    std::vector<AxisStencil> fine_columns(static_cast<size_t>(fu));
+    for (int i = 0; i < fu; ++i) fine_columns[i] = Field::axis(double(i) / S - 0.5, field.nu());
+    for (int j = 0; j < fv; ++j) {
+      const AxisStencil row = Field::axis(double(j) / S - 0.5, field.nv());
       for (int i = 0; i < fu; ++i) {
-        const double e = field.sample(double(i) / S - 0.5, double(j) / S - 0.5);
+        const double e = field.value(field.stencil(fine_columns[i], row), r.E);
         fine[static_cast<size_t>(j) * fu + i] = std::isnan(e) ? 0.0 : e;
         fine_on[static_cast<size_t>(j) * fu + i] = !std::isnan(e);
       }
+    }
     struct Level {
       double lx;
       bool required;
@@ -399,8 +210,12 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
       std::vector<IsoSegment> segments;
     };
     std::vector<Pending> drawn;
-    for (const Level& level : levels) {
-      auto segments = isolux_segments(fine, fu, fv, level.lx, fine_on);
+    std::vector<double> level_lx;
+    for (const Level& level : levels) level_lx.push_back(level.lx);
+    auto segments_per_level = isolux_segments(fine, fu, fv, level_lx, fine_on);
+    for (size_t k = 0; k < levels.size(); ++k) {
+      const Level& level = levels[k];
+      auto& segments = segments_per_level[k];
       if (segments.empty()) continue;
       // Light lines on the dark half of the map, dark lines on the light half: visible in colour
       // and in grey print. Requirement lines are drawn 3 px wide, round values 1 px.

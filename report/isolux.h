@@ -19,6 +19,12 @@ struct IsoSegment {
 std::vector<IsoSegment> isolux_segments(const std::vector<double>& E, int nu, int nv, double level,
                                         const std::vector<bool>& active = {});
 
+// The same for several levels in one pass over the squares: element k holds
+// isolux_segments(E, nu, nv, levels[k], active).
+std::vector<std::vector<IsoSegment>> isolux_segments(const std::vector<double>& E, int nu, int nv,
+                                                     const std::vector<double>& levels,
+                                                     const std::vector<bool>& active = {});
+
 // Round contour levels: the scale's ticks strictly inside (min, max) and inside the data range.
 std::vector<double> isolux_levels(const ColourScale& scale, double emin, double emax);
 

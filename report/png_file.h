@@ -1,5 +1,6 @@
 #pragma once
-// Writes a Raster as an 8-bit RGB PNG with libpng.
+// Writes a Raster as an 8-bit RGB PNG: the chunks written here, the image data compressed by
+// libdeflate.
 #include <filesystem>
 #include <string>
 

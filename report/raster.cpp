@@ -12,16 +12,29 @@ Raster::Raster(int width, int height, Rgb background) : width_(width), height_(h
   if (width <= 0 || height <= 0) throw CalculationError("cannot make an empty picture");
   const std::uint8_t r = to_byte(background.r), g = to_byte(background.g),
                      b = to_byte(background.b);
-  // A grey background (white, for the plots) is one byte repeated: filled as such at once.
-  rgb_.assign(static_cast<std::size_t>(width) * height * 3, r);
-  if (g != r || b != r)
-    for (std::size_t k = 0; k < rgb_.size(); k += 3) rgb_[k + 1] = g, rgb_[k + 2] = b;
+  // A grey background (white, for the plots) is one byte repeated: filled as such at once, then
+  // each row's filter-type byte.
+  const std::size_t stride = static_cast<std::size_t>(width) * 3 + 1;
+  data_.assign(stride * static_cast<std::size_t>(height), r);
+  for (int y = 0; y < height; ++y) {
+    std::uint8_t* p = row(y);
+    p[-1] = 0;
+    if (g != r || b != r)
+      for (int x = 0; x < width; ++x) p[3 * x + 1] = g, p[3 * x + 2] = b;
+  }
+}
+
+std::vector<std::uint8_t> Raster::pixels() const {
+  std::vector<std::uint8_t> rgb;
+  rgb.reserve(static_cast<std::size_t>(width_) * height_ * 3);
+  for (int y = 0; y < height_; ++y) rgb.insert(rgb.end(), row(y), row(y) + width_ * 3);
+  return rgb;
 }
 
 Rgb Raster::at(int x, int y) const {
   if (x < 0 || y < 0 || x >= width_ || y >= height_) return {};
-  const std::size_t k = (static_cast<std::size_t>(y) * width_ + x) * 3;
-  return {rgb_[k] / 255.f, rgb_[k + 1] / 255.f, rgb_[k + 2] / 255.f};
+  const std::size_t k = offset(x, y);
+  return {data_[k] / 255.f, data_[k + 1] / 255.f, data_[k + 2] / 255.f};
 }
 
 void Raster::blend(int x, int y, Rgb c, float alpha) {
@@ -38,7 +51,7 @@ void Raster::fill(int x0, int x1, int y0, int y1, Rgb c) {
   if (x0 >= x1 || y0 >= y1) return;
   const std::uint8_t r = to_byte(c.r), g = to_byte(c.g), b = to_byte(c.b);
   for (int y = y0; y < y1; ++y) {
-    std::uint8_t* p = rgb_.data() + (static_cast<std::size_t>(y) * width_ + x0) * 3;
+    std::uint8_t* p = row(y) + static_cast<std::size_t>(x0) * 3;
     for (int x = x0; x < x1; ++x, p += 3) p[0] = r, p[1] = g, p[2] = b;
   }
 }

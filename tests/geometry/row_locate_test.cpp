@@ -4,6 +4,7 @@
 // rounding error away from an edge, and off the prepared row.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -72,6 +73,47 @@ TEST(RowLocator, AgreesWithLocateEverywhereIncludingEdgesAndCorners) {
   // The sweep did reach the cases that matter: many points on an edge, far more elsewhere.
   EXPECT_GT(on_boundary, 500);
   EXPECT_GT(compared, 50000);
+}
+
+TEST(RowLocator, ARowAtOnceAgreesWithLocateForEveryPoint) {
+  // locate_row walks the row once for ascending xs, writing spans between crossings at once: the
+  // points above (every crossing and a unit in the last place either side, every corner), a
+  // raster's regular sweep with repeated x, and the same in shuffled order, descending, and with
+  // NaN and infinities among them.
+  std::mt19937 rng(11);
+  long compared = 0;
+  for (double tol : {0.0, 1e-9, 0.05}) {
+    for (const Polygon2& poly : kPolygons) {
+      RowLocator row(poly, tol);
+      for (double y : rows_for(poly)) {
+        row.set_row(y);
+        std::vector<double> xs = xs_for(poly, y);
+        for (int k = 0; k < 400; ++k) xs.push_back(-1.5 + k * 0.0291);
+        xs.push_back(xs[5]), xs.push_back(xs[5]);
+        std::sort(xs.begin(), xs.end());
+        std::vector<double> shuffled = xs, descending(xs.rbegin(), xs.rend()), odd = xs;
+        std::shuffle(shuffled.begin(), shuffled.end(), rng);
+        odd.insert(odd.begin() + static_cast<long>(odd.size() / 2), NAN);
+        odd.insert(odd.begin(), NAN), odd.push_back(INFINITY), odd.push_back(-INFINITY);
+        for (const auto* order : {&xs, &shuffled, &descending, &odd}) {
+          std::vector<Location> got(order->size(), Location::boundary);
+          row.locate_row(*order, got);
+          for (size_t k = 0; k < order->size(); ++k) {
+            const Vec2 p((*order)[k], y);
+            ASSERT_EQ(got[k], locate(p, poly, tol)) << "x " << p.x << " y " << y << " tol " << tol;
+            ++compared;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 500000);
+  // Before any row is prepared the points are on y = 0, located one by one.
+  RowLocator fresh(kPolygons[0], 0.0);
+  const std::vector<double> xs = {-1, 1, 3, 7};
+  std::vector<Location> got(xs.size());
+  fresh.locate_row(xs, got);
+  for (size_t k = 0; k < xs.size(); ++k) EXPECT_EQ(got[k], locate({xs[k], 0.0}, kPolygons[0], 0.0));
 }
 
 TEST(RowLocator, PointsOffThePreparedRowAreAnsweredToo) {

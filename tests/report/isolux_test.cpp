@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <random>
 
 #include "photometry/builtin.h"
 #include "report/colour_scale.h"
@@ -52,6 +54,49 @@ TEST(Isolux, InactivePointsAndFlatFieldsGiveNothing) {
   active[0] = false;
   EXPECT_TRUE(isolux_segments(E, 4, 4, 250.0, active).empty());
   EXPECT_FALSE(isolux_segments(E, 4, 4, 250.0).empty());
+}
+
+TEST(Isolux, ManyLevelsAtOnceAreEachLevelsOwnSegments) {
+  // The plots ask for all their levels in one pass, which visits only the levels between a
+  // square's lowest and highest corner. Each level must get exactly its own segments, in the
+  // same order: levels in any order, repeated, equal to corner values (a corner exactly at a
+  // level counts as above it), NaN and infinite; NaN corners and inactive points in the field.
+  std::mt19937 rng(9);
+  std::uniform_int_distribution<int> step(0, 12);
+  const int nu = 23, nv = 17;
+  std::vector<double> E;
+  for (int k = 0; k < nu * nv; ++k) E.push_back(25.0 * step(rng));  // many exact ties
+  E[40] = NAN, E[41] = NAN, E[200] = INFINITY;
+  std::vector<bool> active(E.size(), true);
+  for (size_t k = 3; k < active.size(); k += 11) active[k] = false;
+  const std::vector<double> levels = {150, 25,        300,      150,   0,  12.5,
+                                      NAN, -INFINITY, INFINITY, 299.9, 1e9};
+  const auto all = isolux_segments(E, nu, nv, levels, active);
+  ASSERT_EQ(all.size(), levels.size());
+  size_t total = 0;
+  for (size_t k = 0; k < levels.size(); ++k) {
+    const auto one = isolux_segments(E, nu, nv, levels[k], active);
+    // Independently: a square gives one segment when its corners are on both sides of the level
+    // (at or above it, or not: NaN is not), two for a saddle.
+    size_t expected = 0;
+    for (int j = 0; j + 1 < nv; ++j)
+      for (int i = 0; i + 1 < nu; ++i) {
+        const size_t c[4] = {static_cast<size_t>(j) * nu + i, static_cast<size_t>(j) * nu + i + 1,
+                             static_cast<size_t>(j + 1) * nu + i + 1,
+                             static_cast<size_t>(j + 1) * nu + i};
+        int code = 0, on = 0;
+        for (int q = 0; q < 4; ++q) code |= (E[c[q]] >= levels[k]) << q, on += active[c[q]];
+        if (on == 4 && code != 0 && code != 15) expected += code == 5 || code == 10 ? 2 : 1;
+      }
+    ASSERT_EQ(one.size(), expected) << "level " << levels[k];
+    ASSERT_EQ(all[k].size(), one.size()) << "level " << levels[k];
+    // The same doubles, bit for bit (a NaN or infinite corner gives NaN ends).
+    for (size_t n = 0; n < one.size(); ++n)
+      EXPECT_EQ(std::memcmp(&all[k][n], &one[n], sizeof(IsoSegment)), 0) << levels[k] << " " << n;
+    total += one.size();
+  }
+  EXPECT_GT(total, 500u);
+  EXPECT_TRUE(all[6].empty()) << "NaN level";
 }
 
 TEST(Isolux, LevelsAreTicksInsideTheData) {
