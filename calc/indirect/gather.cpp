@@ -132,6 +132,30 @@ GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
 
 namespace {
 
+// Entries of a chunk whose far kernels are computed at once (far_terms).
+constexpr size_t kTermBlock = 32;
+
+// The far kernel of entries [0, count) of the arrays for the receiver (x, n) and the group's
+// normal m: flux x point_kernel_pi_per_m2 where the centroid lies in the band [inner2, outer2),
+// +0 elsewhere. A loop without a sum, which the compiler vectorises (four divisions at once with
+// AVX2); the caller adds the terms in order, so the sum has the bits of adding each as it was made
+// (every term is >= +0: the callers have checked that x is in front of every patch and every
+// centroid in front of x, so adding a +0 changes nothing).
+[[gnu::target_clones("avx2", "default")]] void far_terms(const double* cx, const double* cy,
+                                                         const double* cz, const double* flux,
+                                                         size_t count, Vec3 x, Vec3 n, Vec3 m,
+                                                         double inner2, double outer2,
+                                                         double* out) {
+  for (size_t k = 0; k < count; ++k) {
+    const double dx = x.x - cx[k], dy = x.y - cy[k], dz = x.z - cz[k];
+    const double hm = m.x * dx + m.y * dy + m.z * dz;
+    const double hn = -(n.x * dx + n.y * dy + n.z * dz);
+    const double d2 = dx * dx + dy * dy + dz * dz;
+    const double term = flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
+    out[k] = d2 >= inner2 && d2 < outer2 ? term : 0.0;
+  }
+}
+
 // Form factor from the point (x, n) to patch p in the final gather: the point kernel when the
 // patch is far (`far`: beyond far_ratio x its diameter), the kernel on its quarters between
 // far_ratio x D / 2 and far_ratio x D, Lambert's exact polygon formula closer (and whenever the
@@ -229,12 +253,11 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
           // the receiver in front of every patch (group test), farther than its near distance.
           if (as_one_source(ch)) continue;
           double sum = 0.0;
-          for (size_t k = ch.begin; k < ch.end; ++k) {
-            const double dx = x.x - cx[k], dy = x.y - cy[k], dz = x.z - cz[k];
-            const double hm = m.x * dx + m.y * dy + m.z * dz;
-            const double hn = -(n.x * dx + n.y * dy + n.z * dz);
-            const double d2 = dx * dx + dy * dy + dz * dz;
-            if (d2 >= inner2 && d2 < outer2) sum += flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
+          for (size_t k = ch.begin; k < ch.end; k += kTermBlock) {
+            const size_t count = std::min(kTermBlock, ch.end - k);
+            double terms[kTermBlock];
+            far_terms(cx + k, cy + k, cz + k, flux + k, count, x, n, m, inner2, outer2, terms);
+            for (size_t q = 0; q < count; ++q) sum += terms[q];
           }
           far += sum;
           continue;
