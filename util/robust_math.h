@@ -36,6 +36,7 @@ inline double angle_between(const Vec3& a, const Vec3& b) {
 // whole number, and a plain ceil then gives one piece more or not at random, so two receivers a
 // rounding apart got different cells (0.001 % apart under the office's luminaires).
 inline int pieces_of_at_most(double ratio) {
+  if (ratio <= 1.0) return 1;  // most calls: no piece wider than allowed (and no call of ceil)
   return std::max(1, static_cast<int>(std::ceil(ratio - 1e-9)));
 }
 
