@@ -162,10 +162,18 @@ size_t count_inside(const std::vector<double>& centres, double offset, double lo
   return to > from ? static_cast<size_t>(to - from) : 0;
 }
 
-std::optional<double> room_ugr(const photometry::IntensityDistribution& d,
-                               const photometry::LuminousOpening& o, const TableRoom& room,
-                               const TableReflectances& refl, Viewing viewing,
-                               const Fluxes& fluxes) {
+// What a table room gives whatever its reflectances: the glare sum over its luminaires and the
+// direct flux on its floor (at eye level), walls and ceiling. A table row's five reflectance
+// columns share it (room_ugr).
+struct RoomDirect {
+  double glare_sum = 0.0;
+  ThreeSurfaces direct{0.0, 0.0, 0.0};
+  double X = 0.0, Y = 0.0, H = 0.0;
+};
+
+RoomDirect room_direct(const photometry::IntensityDistribution& d,
+                       const photometry::LuminousOpening& o, const TableRoom& room, Viewing viewing,
+                       const Fluxes& fluxes) {
   const double H = kTableH_m, S = kTableSpacingOverH * H;
   const double X = room.x_H * H, Y = room.y_H * H;
   const auto xs = grid_line(-0.5 * X, X, S), ys = grid_line(0.0, Y, S);
@@ -179,7 +187,9 @@ std::optional<double> room_ugr(const photometry::IntensityDistribution& d,
       pose.position = Vec3(x, y, H);
       if (const auto t = glare_term(d, o, pose, eye, view)) sum += t->value();
     }
-  if (!(sum > 0.0)) return std::nullopt;
+  RoomDirect r;
+  r.glare_sum = sum, r.X = X, r.Y = Y, r.H = H;
+  if (!(sum > 0.0)) return r;
   // Direct flux of all luminaires onto the floor (the plane at eye level), walls and ceiling.
   const double n = static_cast<double>(xs.size() * ys.size());
   double floor_lm = 0.0;
@@ -192,12 +202,18 @@ std::optional<double> room_ugr(const photometry::IntensityDistribution& d,
     if (across == 0 && std::isfinite(flux)) continue;
     floor_lm += flux * static_cast<double>(across * count_inside(ys, land[c].dy_m, 0.0, Y));
   }
-  const ThreeSurfaces direct{floor_lm, n * fluxes.down_lm - floor_lm, n * fluxes.up_lm};
-  const ThreeSurfaces in = indirect_flux(X, Y, H, {refl.floor, refl.walls, refl.ceiling}, direct);
-  const double E_wid_lx = in.walls / (2.0 * H * (X + Y));
+  r.direct = ThreeSurfaces{floor_lm, n * fluxes.down_lm - floor_lm, n * fluxes.up_lm};
+  return r;
+}
+
+std::optional<double> room_ugr(const RoomDirect& r, const TableReflectances& refl) {
+  if (!(r.glare_sum > 0.0)) return std::nullopt;
+  const ThreeSurfaces in =
+      indirect_flux(r.X, r.Y, r.H, {refl.floor, refl.walls, refl.ceiling}, r.direct);
+  const double E_wid_lx = in.walls / (2.0 * r.H * (r.X + r.Y));
   const double Lb = E_wid_lx / kPi;
   if (!(Lb > 0.0)) return std::nullopt;
-  return unified_glare_rating(sum, Lb);
+  return unified_glare_rating(r.glare_sum, Lb);
 }
 
 void require_area(const photometry::LuminousOpening& o) {
@@ -214,7 +230,7 @@ std::optional<double> table_ugr(const photometry::IntensityDistribution& d,
                                 const photometry::LuminousOpening& o, const TableRoom& room,
                                 const TableReflectances& refl, Viewing viewing) {
   require_area(o);
-  return room_ugr(d, o, room, refl, viewing, CellIntensities(d).fluxes(viewing));
+  return room_ugr(room_direct(d, o, room, viewing, CellIntensities(d).fluxes(viewing)), refl);
 }
 
 TableUgrs table_ugrs(const photometry::IntensityDistribution& d,
@@ -222,8 +238,9 @@ TableUgrs table_ugrs(const photometry::IntensityDistribution& d,
                      const TableReflectances& refl) {
   require_area(o);
   const CellIntensities cells(d);
-  return {room_ugr(d, o, room, refl, Viewing::crosswise, cells.fluxes(Viewing::crosswise)),
-          room_ugr(d, o, room, refl, Viewing::endwise, cells.fluxes(Viewing::endwise))};
+  return {
+      room_ugr(room_direct(d, o, room, Viewing::crosswise, cells.fluxes(Viewing::crosswise)), refl),
+      room_ugr(room_direct(d, o, room, Viewing::endwise, cells.fluxes(Viewing::endwise)), refl)};
 }
 
 UgrTable ugr_table(const photometry::DistributionPtr& distribution,
@@ -242,9 +259,10 @@ UgrTable ugr_table(const photometry::DistributionPtr& distribution,
     const Fluxes f = cells.fluxes(v);
     auto& rows = v == Viewing::crosswise ? t.crosswise : t.endwise;
     for (const auto& room : kTableRooms) {
+      const RoomDirect direct = room_direct(d, o, room, v, f);
       std::array<std::optional<double>, 5> row;
       for (size_t r = 0; r < kTableReflectances.size(); ++r)
-        row[r] = room_ugr(d, o, room, kTableReflectances[r], v, f);
+        row[r] = room_ugr(direct, kTableReflectances[r]);
       rows.push_back(row);
     }
   }
