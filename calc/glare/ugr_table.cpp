@@ -41,12 +41,14 @@ const std::vector<Landing>& landings() {
   static const std::vector<Landing> made = [] {
     std::vector<Landing> l;
     l.reserve(static_cast<size_t>(kNadirSteps) * kAzimuthSteps);
+    std::array<double, kAzimuthSteps> cos_p, sin_p;  // once per azimuth, not per cell
+    for (int k = 0; k < kAzimuthSteps; ++k) {
+      const double p = (k + 0.5) * kAzimuthStep_rad;
+      cos_p[k] = std::cos(p), sin_p[k] = std::sin(p);
+    }
     for (int i = 0; i < kNadirSteps; ++i) {
       const double reach = kTableH_m * std::tan((i + 0.5) * kNadirStep_rad);
-      for (int k = 0; k < kAzimuthSteps; ++k) {
-        const double p = (k + 0.5) * kAzimuthStep_rad;
-        l.push_back({reach * std::cos(p), reach * std::sin(p)});
-      }
+      for (int k = 0; k < kAzimuthSteps; ++k) l.push_back({reach * cos_p[k], reach * sin_p[k]});
     }
     return l;
   }();
