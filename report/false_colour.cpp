@@ -67,7 +67,7 @@ std::shared_ptr<const MapSamples> map_samples(const calc::SurfaceResult& r,
 
 std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourScale& scale,
                                    const std::filesystem::path& path, const PlotOverlay& overlay,
-                                   MapPixels* where, const MapSamples* samples) {
+                                   MapPixels* where, const MapSamples* samples, std::string* png) {
   const auto& g = r.grid;
   const MapLayout layout = plot_map_layout(g, overlay.scene);
   const MapFrame& frame = layout.frame;
@@ -328,7 +328,8 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
   }
   if (!line.empty()) flush();
 
-  write_png(canvas, path);
+  std::string bytes = write_png(canvas, path);
+  if (png) *png = std::move(bytes);
   return warning;
 }
 

@@ -46,9 +46,11 @@ std::shared_ptr<const MapSamples> map_samples(const calc::SurfaceResult& r,
 // the map's place in the picture (its origin is map_frame(r.grid, overlay.scene).origin).
 // `samples`: map_samples(of a result on this grid, overlay.scene), else they are made here (as
 // they are when they were made for another grid size, other active points or another scene).
+// `png`, when given, receives the file's bytes (for report.html).
 std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourScale& scale,
                                    const std::filesystem::path& path, const PlotOverlay& overlay,
-                                   MapPixels* where = nullptr, const MapSamples* samples = nullptr);
+                                   MapPixels* where = nullptr, const MapSamples* samples = nullptr,
+                                   std::string* png = nullptr);
 std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourScale& scale,
                                    const std::filesystem::path& path);
 

@@ -87,7 +87,7 @@ std::string encode(const Raster& raster) {
 
 }  // namespace
 
-void write_png(const Raster& raster, const std::filesystem::path& path) {
+std::string write_png(const Raster& raster, const std::filesystem::path& path) {
   const std::string png = encode(raster);
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (!f) throw CalculationError(path.string() + ": cannot write the image: cannot open the file");
@@ -97,6 +97,7 @@ void write_png(const Raster& raster, const std::filesystem::path& path) {
     throw CalculationError(path.string() + ": cannot write the image: cannot " +
                            (written ? "close" : "write") + " the file");
   }
+  return png;
 }
 
 std::string encode_png(const Raster& raster) { return encode(raster); }

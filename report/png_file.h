@@ -8,8 +8,9 @@
 
 namespace luxgrid::report {
 
-// Throws CalculationError naming `path` when the file cannot be written.
-void write_png(const Raster& raster, const std::filesystem::path& path);
+// Throws CalculationError naming `path` when the file cannot be written. Returns the bytes
+// written (report.html embeds them without reading the file back).
+std::string write_png(const Raster& raster, const std::filesystem::path& path);
 
 // The same PNG as bytes in memory (for images embedded in report.html).
 std::string encode_png(const Raster& raster);

@@ -5,8 +5,6 @@
 #include <chrono>
 #include <cstdlib>
 #include <ctime>
-#include <fstream>
-#include <sstream>
 
 #include <tbb/parallel_for.h>
 
@@ -22,14 +20,6 @@
 namespace luxgrid::report {
 
 namespace {
-
-std::string read_bytes(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw CalculationError(p.string() + ": cannot read back the image");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The calculation's date for the report: now, or SOURCE_DATE_EPOCH (seconds since 1970, the
 // reproducible-builds convention) when set, so that two runs can write byte-identical reports.
@@ -94,15 +84,16 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
     std::size_t surface;
     enum class What { luminaires_html, csv, npy, plots } what;
     std::array<std::string, 3> warnings;  // plots: the total's, the direct part's, the reflected's
+    std::string png;                      // plots, for report.html: the total's file as written
   };
   std::vector<Job> jobs;
   if (options.report && options.scene && !options.scene->photometry.empty())
-    jobs.push_back({0, Job::What::luminaires_html, {}});
+    jobs.push_back({0, Job::What::luminaires_html, {}, {}});
   for (std::size_t i = 0; i < results.surfaces.size(); ++i) {
     if (results.surfaces[i].grid.kind == geometry::SurfaceGrid::Kind::grid)
-      jobs.push_back({i, Job::What::plots, {}});
-    jobs.push_back({i, Job::What::csv, {}});
-    if (options.arrays_npy) jobs.push_back({i, Job::What::npy, {}});
+      jobs.push_back({i, Job::What::plots, {}, {}});
+    jobs.push_back({i, Job::What::csv, {}, {}});
+    if (options.arrays_npy) jobs.push_back({i, Job::What::npy, {}, {}});
   }
   // The direct (part 1) or reflected (part 2) light of a surface as a result of its own.
   auto part_of = [](const calc::SurfaceResult& s, int part) {
@@ -138,8 +129,9 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
           if (part == 0) {
             const ColourScale scale =
                 options.scale ? *options.scale : fit_scale(s.stats.Emin, s.stats.Emax);
-            job.warnings[0] = write_false_colour_png(s, scale, folder.file(names.png),
-                                                     overlay_for(s), nullptr, samples.get());
+            job.warnings[0] =
+                write_false_colour_png(s, scale, folder.file(names.png), overlay_for(s), nullptr,
+                                       samples.get(), options.report ? &job.png : nullptr);
             return;
           }
           const calc::SurfaceResult p = part_of(s, part);
@@ -153,14 +145,12 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
       }
     }
   });
-  for (const Job& job : jobs) {
+  for (Job& job : jobs) {
     for (const std::string& w : job.warnings)
       if (!w.empty() && std::find(warnings.begin(), warnings.end(), w) == warnings.end())
         warnings.push_back(w);
-    if (job.what == Job::What::plots && options.report) {
-      const calc::SurfaceResult& s = results.surfaces[job.surface];
-      report.png[s.grid.name] = read_bytes(folder.file(surface_output_files(s.grid.name).png));
-    }
+    if (job.what == Job::What::plots && options.report)
+      report.png[results.surfaces[job.surface].grid.name] = std::move(job.png);
   }
   if (options.report) write_text_file(folder.file(kReportFile), html_report(report));
   results.timing_s.emplace_back(

@@ -9,6 +9,7 @@
 
 #include "calc/nearfield/fixed_rule.h"
 #include "calc/nearfield/illuminance.h"
+#include "calc/nearfield/map_symmetry.h"
 #include "calc/nearfield/models.h"
 
 namespace luxgrid::nearfield {
@@ -106,11 +107,17 @@ struct Probe {
     float far_over_D, fixed_over_D;
     float far_error, fixed_error;
   };
+  // The same as rungs: the first passing rung of each search (-1: none passed; the fixed rule's
+  // also -1 when it was not measured) and the errors there.
+  struct Rungs {
+    int far, fixed;
+    float far_error, fixed_error;
+  };
   // `last`: the last rung tried (the ladder's end, or the first rung at or beyond the farthest
   // receiver of a MapDemand); failing there is "near field at every distance tried". The same
   // for the fixed rule, `fixed_last` (-1: not measured, its distance is the far field's).
-  Measured distances_over_D(const Vec3& u, int last = kLadderRungs - 1,
-                            int fixed_last = kLadderRungs - 1) const {
+  Rungs distances_over_D(const Vec3& u, int last = kLadderRungs - 1,
+                         int fixed_last = kLadderRungs - 1) const {
     std::array<std::array<double, 5>, kLadderRungs> near;
     for (auto& row : near) row.fill(-1.0);
     std::array<signed char, kLadderRungs> far_seen, fixed_seen;  // -1 unknown, 0 fails, 1 passes
@@ -175,18 +182,32 @@ struct Probe {
       }
       return hi;
     };
-    const auto over_D = [](int k) {
-      return k < 0 ? kNearEverywhere : static_cast<float>(rung_over_D(k));
-    };
     const int far = search(false, last);
     const float far_error = far < 0 ? 0.0f : far_err[far];
     // The fixed rule is used only nearer than d_far, so only the rungs below it matter.
-    if (far == 0 || fixed_last < 0) return {over_D(far), over_D(far), far_error, 0.0f};
+    if (far == 0 || fixed_last < 0) return {far, -1, far_error, 0.0f};
     const int fixed = search(true, std::min(far < 0 ? last : far, fixed_last));
-    return {over_D(far), fixed < 0 ? over_D(far) : over_D(fixed), far_error,
-            fixed < 0 ? 0.0f : fixed_err[fixed]};
+    return {far, fixed, far_error, fixed < 0 ? 0.0f : fixed_err[fixed]};
   }
 };
+
+// What a sample whose searches end at `last` and `fixed_last` reads from rungs measured for its
+// class (map_symmetry.h) with the class's largest: the same rungs where they lie within its own
+// searches, else failing there (the near field out to its farthest receiver). For the sample
+// that set the class's searches, exactly what its own search found.
+Probe::Measured for_sample(const Probe::Rungs& r, int last, int fixed_last) {
+  const auto over_D = [](int k) {
+    return k < 0 ? kNearEverywhere : static_cast<float>(rung_over_D(k));
+  };
+  const int far = r.far >= 0 && r.far <= last ? r.far : -1;
+  Probe::Measured m{over_D(far), over_D(far), far < 0 ? 0.0f : r.far_error, 0.0f};
+  if (far == 0 || fixed_last < 0) return m;
+  if (r.fixed >= 0 && r.fixed <= std::min(far < 0 ? last : far, fixed_last)) {
+    m.fixed_over_D = over_D(r.fixed);
+    m.fixed_error = r.fixed_error;
+  }
+  return m;
+}
 
 // How far a kink can lie from the nearest sample (rad): 0 when every measured angle of the
 // table is on a sample line (gamma a multiple of 5 degrees, C of 7.5: the samples then sit on the
@@ -426,7 +447,8 @@ FarFieldBound::Weights FarFieldBound::weights(const Vec3& u, double distance_m) 
 std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
                                                            const Model& near_model,
                                                            double tolerance, unsigned threads,
-                                                           const MapDemand* demand) {
+                                                           const MapDemand* demand,
+                                                           bool share_mirror_images) {
   auto bound = std::make_shared<FarFieldBound>();
   bound->tolerance = tolerance;
   bound->largest_dimension_m = e.largest_dimension_m;
@@ -448,33 +470,55 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
                     e.distribution->intensity(direction_of_sample(i / kCSamples, i % kCSamples)));
   const Probe probe{e, near_model, tolerance / kBoundSafetyFactor, peak,
                     near_model.kind == ModelKind::standard || near_model.kind == ModelKind::high};
-  std::vector<Probe::Measured> measured(n);
-  std::vector<char> capped(n, 0);  // failed at its last rung short of the ladder's end
-  // Directions in parallel (the nearfield library has no TBB; the samples are independent).
-  if (threads == 0) threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  // Each class of samples that measure the same (the pole rows; a direction and its mirror
+  // image, map_symmetry.h) is measured once, by its representative, out to the farthest any of
+  // them needs.
+  std::vector<int> representative(n);
+  if (share_mirror_images)
+    representative = map_sample_representatives(e, probe.uses_table);
+  else
+    for (int i = 0; i < n; ++i) representative[i] = i;
+  std::vector<float> class_measure(n, 0.0f), class_fixed(n, 0.0f);
+  for (int i = 0; i < n; ++i) {
+    if (!(needs.measure_over_D[i] > 0.0f)) continue;
+    const int r = representative[i];
+    class_measure[r] = std::max(class_measure[r], needs.measure_over_D[i]);
+    class_fixed[r] = std::max(class_fixed[r], needs.fixed_measure_over_D[i]);
+  }
+  const auto fixed_last_for = [](float reach_over_D) {
+    return reach_over_D > 0.0f ? last_rung_for(reach_over_D) : -1;
+  };
   std::vector<int> todo;
   for (int i = 0; i < n; ++i)
-    if (needs.measure_over_D[i] > 0.0f) todo.push_back(i);
+    if (class_measure[i] > 0.0f) todo.push_back(i);
+  std::vector<Probe::Rungs> rungs(n);
+  // Directions in parallel (the nearfield library has no TBB; the samples are independent).
+  if (threads == 0) threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
   threads = std::max(1u, std::min(threads, static_cast<unsigned>(todo.size())));
   std::vector<std::thread> pool;
   for (unsigned t = 0; t < threads; ++t) {
     pool.emplace_back([&, t] {
       for (std::size_t k = t; k < todo.size(); k += threads) {
         const int i = todo[k];
-        const int last = last_rung_for(needs.measure_over_D[i]);
-        const int fixed_last = needs.fixed_measure_over_D[i] > 0.0f
-                                   ? last_rung_for(needs.fixed_measure_over_D[i])
-                                   : -1;
-        measured[i] = probe.distances_over_D(direction_of_sample(i / kCSamples, i % kCSamples),
-                                             last, fixed_last);
-        raw[i] = measured[i].far_over_D;
-        raw_fixed[i] = measured[i].fixed_over_D;
-        capped[i] = raw[i] >= kNearEverywhere && last < kLadderRungs - 1;
+        rungs[i] =
+            probe.distances_over_D(direction_of_sample(i / kCSamples, i % kCSamples),
+                                   last_rung_for(class_measure[i]), fixed_last_for(class_fixed[i]));
       }
     });
   }
   for (auto& th : pool) th.join();
   bound->samples_measured = static_cast<int>(todo.size());
+  std::vector<Probe::Measured> measured(n);
+  std::vector<char> capped(n, 0);  // failed at its last rung short of the ladder's end
+  for (int i = 0; i < n; ++i) {
+    if (!(needs.measure_over_D[i] > 0.0f)) continue;
+    const int last = last_rung_for(needs.measure_over_D[i]);
+    measured[i] =
+        for_sample(rungs[representative[i]], last, fixed_last_for(needs.fixed_measure_over_D[i]));
+    raw[i] = measured[i].far_over_D;
+    raw_fixed[i] = measured[i].fixed_over_D;
+    capped[i] = raw[i] >= kNearEverywhere && last < kLadderRungs - 1;
+  }
   for (const Probe::Measured& m : measured) {
     bound->far_error_measured =
         std::max(bound->far_error_measured, static_cast<double>(m.far_error));

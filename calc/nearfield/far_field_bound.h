@@ -152,10 +152,14 @@ struct FarFieldBound {
 // field at every distance, so weights() of a pair the demand holds gives a far weight no larger
 // than the whole map's; a sample passing within it finds the rung the whole map finds where
 // the error falls with distance, as the ladder assumes.
+// Samples that measure the same (map_symmetry.h: the pole rows, and a direction and its mirror
+// image where the emitter is its own) are measured once; `share_mirror_images` false measures
+// every sample itself (for the tests that compare the two).
 std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& emitter,
                                                            const Model& near_model,
                                                            double tolerance, unsigned threads = 0,
-                                                           const MapDemand* demand = nullptr);
+                                                           const MapDemand* demand = nullptr,
+                                                           bool share_mirror_images = true);
 
 // The plan's line for one emitter: "near field out to 9.1 D (C 45, gamma 35), 2.0 D at least,
 // median 3.4 D (0.65 m opening), far field within 1 % beyond" with the reason.

@@ -11,6 +11,7 @@
 
 #include "calc/nearfield/far_field_bound.h"
 #include "calc/nearfield/illuminance.h"
+#include "calc/nearfield/map_symmetry.h"
 #include "calc/nearfield/models.h"
 #include "nearfield_test_support.h"
 #include "photometry/photometry.h"
@@ -211,6 +212,46 @@ TEST(FarFieldBound, DemandMeasuresLessAndNeverWidensTheFarField) {
   EXPECT_NE(describe(*no_fixed).find("serves none"), std::string::npos) << describe(*no_fixed);
   for (const Pair& p : pairs)
     EXPECT_EQ(no_fixed->weights(p.u, p.d).far, part->weights(p.u, p.d).far);
+}
+
+TEST(FarFieldBound, MirrorImagesMeasuredOnceGiveTheSameMap) {
+  // The Mirel's file is quadrant-symmetric (EULUMDAT Isym 4) and its opening a rectangle on the
+  // axes: a direction and its images across the planes C 0-180 and C 90-270 measure the same
+  // (map_symmetry.h). Counted: the 35 rows between the poles have 13 classes each (44 C samples
+  // in classes of 4, C 0 with C 180 and C 90 with C 270), each pole row one: 457 of 1776. The
+  // map measured that way equals the map measured at every sample, sample by sample (the
+  // searches are the same; only rounding differs between a direction and its image).
+  const auto ph = load("ldt/zumtobel_mirel_isym4.ldt");
+  const glm::dmat3 tilt(glm::rotate(glm::dmat4(1.0), 0.35, glm::normalize(Vec3(0.6, -0.3, 1.0))));
+  const Emitter e = make_emitter(ph.opening, Vec3(2.0, 1.5, 2.8), tilt, ph.distribution);
+  const auto classes = [](const std::vector<int>& rep) {
+    int n = 0;
+    for (std::size_t i = 0; i < rep.size(); ++i) n += rep[i] == static_cast<int>(i);
+    return n;
+  };
+  EXPECT_EQ(classes(map_sample_representatives(e, true)), 457);
+  // Not for a cubature's near values, whose nodes need not mirror: the poles only.
+  EXPECT_EQ(classes(map_sample_representatives(e, false)), 35 * 48 + 2);
+  const auto shared = build_far_field_bound(e, Model::standard(), kStandardPromise);
+  const auto each =
+      build_far_field_bound(e, Model::standard(), kStandardPromise, 0, nullptr, false);
+  EXPECT_EQ(shared->samples_measured, 457);
+  EXPECT_EQ(each->samples_measured, 1776);
+  int differ = 0;
+  for (std::size_t i = 0; i < each->d_far_over_D.size(); ++i)
+    differ += shared->d_far_over_D[i] != each->d_far_over_D[i] ||
+              shared->d_fixed_over_D[i] != each->d_fixed_over_D[i];
+  EXPECT_EQ(differ, 0);
+  EXPECT_EQ(shared->far_error_measured, each->far_error_measured);
+  EXPECT_EQ(shared->far_everywhere_over_D, each->far_everywhere_over_D);
+
+  // The same table behind an opening turned by 30 degrees in its plane: no longer its own
+  // mirror image, so only the poles are shared.
+  std::vector<Vec3> turned;
+  const glm::dmat3 spin(glm::rotate(glm::dmat4(1.0), 30.0 * kDegToRad, Vec3(0, 0, 1)));
+  for (const Vec3& v : e.vertices) turned.push_back(spin * (e.world_to_local * (v - e.centroid)));
+  const Emitter t = make_polygon_emitter(turned, glm::dmat3(1.0), ph.distribution);
+  EXPECT_EQ(classes(map_sample_representatives(t, true)), 35 * 48 + 2);
 }
 
 TEST(FarFieldBound, FigureData) {
