@@ -192,8 +192,9 @@ struct JsonNumber {
   }
 };
 
-// Elements a chunk: a few hundred kB of text, formatted in parallel (report/chunked_text.h).
-constexpr size_t kElementsPerChunk = 8192;
+// Elements a chunk: a few tens of kB of text, formatted in parallel (report/chunked_text.h),
+// small for the same reason as the CSV's rows (report/csv.cpp).
+constexpr size_t kElementsPerChunk = 1024;
 
 // A line of an array below depth is at most depth + kLineChars long: the indent, a number of up
 // to 24 characters ("-1.2345678901234567e-308") and ",\n".
