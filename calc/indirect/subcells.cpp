@@ -13,6 +13,13 @@ SubcellCorners subcell_corners(const Patch& p, int a, int b) {
 CellMesh cell_mesh(const PatchMesh& mesh, const std::vector<char>& refine) {
   CellMesh out;
   out.mesh.patch_size_m = mesh.patch_size_m / kSubcellsPerSide;
+  // Reserved at once: thousands of cells grown by doubling would touch twice their memory for
+  // the first time, a page fault a page (docs/performance.md, "Memory touched for the first time").
+  size_t refined = 0;
+  for (size_t i = 0; i < mesh.patches.size(); ++i)
+    refined += refine[i] && mesh.patches[i].has_quarters ? 1 : 0;
+  out.mesh.patches.reserve(refined * kSubcellsPerSide * kSubcellsPerSide);
+  out.patch.reserve(refined * kSubcellsPerSide * kSubcellsPerSide);
   for (size_t r = 0; r + 1 < mesh.room_begin.size(); ++r) {
     out.mesh.room_begin.push_back(out.mesh.patches.size());
     for (size_t i = mesh.room_begin[r]; i < mesh.room_begin[r + 1]; ++i) {

@@ -161,13 +161,15 @@ struct Probe {
     // at its first failing normal and is cheap, a passing one costs all five, so the search
     // tries to pass as few times as it can.
     // A direction whose receivers all lie within kCapFirstRungs of the ladder's start (a
-    // MapDemand's) and that fails at rung 0 is tried at `last` next: failing there too (the near
-    // field out to the farthest receiver: a smooth opening needs 5 to 7 D in front of it) ends
-    // the search after two verdicts instead of the galloping's four.
+    // MapDemand's) is tried at `last` first: failing there (the near field out to the farthest
+    // receiver: a smooth opening needs 5 to 7 D in front of it) ends the search after one
+    // verdict, without the nearest rung, whose near value costs the most (the opening is seen
+    // widest there). The near field then serves every distance of the direction, which is what
+    // a pass at rung 0 would have been overruled by anyway wherever the error falls with
+    // distance, as the ladder assumes.
     auto search = [&](bool fixed, int last) {
       int lo = -1, hi = -1;  // lo fails (or -1: none tried), hi passes
-      if (last > 1 && last <= kCapFirstRungs && !verdict(0, fixed) && !verdict(last, fixed))
-        return -1;
+      if (last > 1 && last <= kCapFirstRungs && !verdict(last, fixed)) return -1;
       for (int k = 0;; k = std::min(2 * k + 1, last)) {
         if (verdict(k, fixed)) {
           hi = k;
