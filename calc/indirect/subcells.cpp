@@ -15,16 +15,17 @@ CellMesh cell_mesh(const PatchMesh& mesh, const std::vector<char>& refine) {
   out.mesh.patch_size_m = mesh.patch_size_m / kSubcellsPerSide;
   // Reserved at once: thousands of cells grown by doubling would touch twice their memory for
   // the first time, a page fault a page (docs/performance.md, "Memory touched for the first time").
-  size_t refined = 0;
+  const auto refined = [&](size_t i) { return refine[i] && mesh.patches[i].has_quarters; };
+  size_t cells = 0;
   for (size_t i = 0; i < mesh.patches.size(); ++i)
-    refined += refine[i] && mesh.patches[i].has_quarters ? 1 : 0;
-  out.mesh.patches.reserve(refined * kSubcellsPerSide * kSubcellsPerSide);
-  out.patch.reserve(refined * kSubcellsPerSide * kSubcellsPerSide);
+    cells += refined(i) ? kSubcellsPerSide * kSubcellsPerSide : 0;
+  out.mesh.patches.reserve(cells);
+  out.patch.reserve(cells);
   for (size_t r = 0; r + 1 < mesh.room_begin.size(); ++r) {
     out.mesh.room_begin.push_back(out.mesh.patches.size());
     for (size_t i = mesh.room_begin[r]; i < mesh.room_begin[r + 1]; ++i) {
+      if (!refined(i)) continue;
       const Patch& p = mesh.patches[i];
-      if (!refine[i] || !p.has_quarters) continue;
       for (int a = 0; a < kSubcellsPerSide; ++a)
         for (int b = 0; b < kSubcellsPerSide; ++b) {
           Patch c = p;

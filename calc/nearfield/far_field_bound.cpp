@@ -164,9 +164,8 @@ struct Probe {
     // MapDemand's) is tried at `last` first: failing there (the near field out to the farthest
     // receiver: a smooth opening needs 5 to 7 D in front of it) ends the search after one
     // verdict, without the nearest rung, whose near value costs the most (the opening is seen
-    // widest there). The near field then serves every distance of the direction, which is what
-    // a pass at rung 0 would have been overruled by anyway wherever the error falls with
-    // distance, as the ladder assumes.
+    // widest there). Where the error falls with distance, as the ladder assumes, every nearer
+    // rung fails too; where it would not, keeping the near field is the safe side.
     auto search = [&](bool fixed, int last) {
       int lo = -1, hi = -1;  // lo fails (or -1: none tried), hi passes
       if (last > 1 && last <= kCapFirstRungs && !verdict(last, fixed)) return -1;
