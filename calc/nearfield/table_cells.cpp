@@ -91,8 +91,7 @@ std::shared_ptr<const TableGammaCells> make_table_gamma_cells(
   for (std::size_t j = 0; j + 1 < G.size(); ++j)
     cells->inv_row_width.push_back(1.0 / (G[j + 1] - G[j]));
   cells->interval_row.assign(L.size(), -1);
-  cells->w_lo.assign(L.size(), 0.0);
-  cells->w_hi.assign(L.size(), 0.0);
+  std::vector<double> w_lo(L.size(), 0.0), w_hi(L.size(), 0.0);
   for (std::size_t k = 0; k + 1 < L.size(); ++k) {
     std::size_t j = 0;
     double tg = 0.0;
@@ -105,8 +104,21 @@ std::shared_ptr<const TableGammaCells> make_table_gamma_cells(
                                  cells->line_sin[k + 1], cells->line_cos[k + 1], G[j],
                                  cells->inv_row_width[j], i0, i1);
     };
-    cells->w_lo[k] = integral(1.0, 0.0);
-    cells->w_hi[k] = integral(0.0, 1.0);
+    w_lo[k] = integral(1.0, 0.0);
+    w_hi[k] = integral(0.0, 1.0);
+  }
+  cells->planes = table.grid().c_rad.size();
+  cells->plane_sums.assign(cells->planes * L.size(), 0.0);
+  for (std::size_t i = 0; i < cells->planes; ++i) {
+    const photometry::TabularDistribution::CPosition plane{i, 0.0};
+    double* sums = cells->plane_sums.data() + i * L.size();
+    for (std::size_t k = 0; k + 1 < L.size(); ++k) {
+      const long row = cells->interval_row[k];
+      const std::size_t j = row < 0 ? 0 : static_cast<std::size_t>(row);
+      sums[k + 1] = sums[k] + (row < 0 ? 0.0
+                                       : w_lo[k] * table.row_value(plane, j) +
+                                             w_hi[k] * table.row_value(plane, j + 1));
+    }
   }
   // The buckets of first_above / first_at_or_above: as wide as the narrowest gap between lines.
   double gap = kPi;

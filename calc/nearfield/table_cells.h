@@ -79,11 +79,26 @@ struct TableGammaCells {
   // For the closed form along a ray (bilinear tables, receivers facing the opening's axis;
   // table_cubature.cpp): sin and cos of each line's table angle, and per interval k
   // (lines[k], lines[k + 1]) the table's gamma row j holding it (-1 outside the table's range:
-  // intensity zero) with the weights of the exact integral of I sin(gamma) over the whole interval:
-  //   integral = w_lo[k] I(C, row j, tg 0) + w_hi[k] I(C, row j, tg 1).
+  // intensity zero).
   std::vector<double> line_sin, line_cos;
   std::vector<long> interval_row;
-  std::vector<double> w_lo, w_hi;
+  // The exact integral of I sin(gamma) over whole intervals along one C plane of the table, as
+  // running sums: plane_sums[i * lines.size() + k] is the sum over intervals k' < k on plane i.
+  // On a bilinear table I is linear in C between two planes, and so is the integral: a ray's
+  // whole intervals [k_begin, k_end) cost two differences and one interpolation
+  // (whole_intervals), not two table reads per interval. The sums are of non-negative terms, so
+  // a difference loses at most (number of intervals) x 1e-16 of the plane's whole sum.
+  std::vector<double> plane_sums;
+  std::size_t planes = 0;
+  double whole_intervals(const photometry::TabularDistribution::CPosition& c, std::size_t k_begin,
+                         std::size_t k_end) const {
+    const std::size_t n = lines.size();
+    const double* p0 = plane_sums.data() + c.i * n;
+    const double s0 = p0[k_end] - p0[k_begin];
+    if (planes == 1) return s0;
+    const double* p1 = plane_sums.data() + (c.i + 1 < planes ? c.i + 1 : 0) * n;
+    return s0 + c.tc * ((p1[k_end] - p1[k_begin]) - s0);
+  }
   // 1 / (width of the table's gamma row j), per row.
   std::vector<double> inv_row_width;
   // Per C plane of the table (C ascending in [0, 2 pi), size 1: none): the direction of the psi

@@ -244,7 +244,9 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
     int i_lo = 0, i_hi = 0;
     for (int i = 0; i < poly.n; ++i) {
       double d = vertex_psi[i] - psi_mid;
-      d -= kTwoPi * std::round(d / kTwoPi);
+      // Into [-pi, pi]: d is within a turn of 0 (both angles are in (-pi, pi]).
+      if (d > kPi) d -= kTwoPi;
+      if (d < -kPi) d += kTwoPi;
       rel[i] = d;
       if (d < lo) lo = d, i_lo = i;
       if (d > hi) hi = d, i_hi = i;
@@ -437,14 +439,7 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
         piece(first, t_lo, s_lo, c_lo, lines[k_lo], cells.line_sin[k_lo], cells.line_cos[k_lo]) +
         piece(static_cast<long>(k_hi) - 1, lines[k_hi - 1], cells.line_sin[k_hi - 1],
               cells.line_cos[k_hi - 1], t_hi, s_hi, c_hi);
-    const double* w_lo = cells.w_lo.data();
-    const double* w_hi = cells.w_hi.data();
-    for (std::size_t k = k_lo; k + 1 < k_hi; ++k) {
-      const long row = interval_row[k];
-      if (row < 0) continue;
-      const std::size_t j = static_cast<std::size_t>(row);
-      v += w_lo[k] * table.row_value(c, j) + w_hi[k] * table.row_value(c, j + 1);
-    }
+    if (k_lo + 1 < k_hi) v += cells.whole_intervals(c, k_lo, k_hi - 1);
     return n_z * v;
   };
   // The light vector: per ray the nodes' moments sum_j w_j I_j (sin, cos) of gamma', no receiver
@@ -484,6 +479,14 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
     const double c_mid = first_copy_at_or_above(nodes.x_mid + kPi, 0.0);
     // Consecutive cells mostly share a C cell: looked up again only when the middle leaves it.
     if (!(c_mid >= c_cell.c0 && c_mid < c_cell.c1)) c_cell = table.c_cell(c_mid);
+    // And the lines strictly inside each ray's range of table angles: a ray's ends cross a line
+    // only where that line's circle crosses the outline, a psi break, so both rays of a cell
+    // have the same (found for the first ray that reaches the opening, reused for the second).
+    // Where an end lies within rounding of a line, the other ray's end may lie a rounding past
+    // it: its end piece then spans a signed sliver of the neighbouring interval, the same
+    // integral up to rounding.
+    std::size_t k_lo = 0, k_hi = 0;
+    bool lines_known = false;
     for (int node = 0; node < 2; ++node) {
       const double psi = node == 0 ? nodes.x_lo : nodes.x_hi;
       const double cp = node == 0 ? nodes.c_lo : nodes.c_hi,
@@ -509,7 +512,10 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
           c >= c_cell.c0 && c <= c_cell.c1 ? table.c_position_in(c_cell, c) : table.c_position(c);
       const double tan_lo = front ? tan_near : tan_far, tan_hi = front ? tan_far : tan_near;
       // Lines strictly inside (t_lo, t_hi): [k_lo, k_hi).
-      const std::size_t k_lo = cells.first_above(t_lo), k_hi = cells.first_at_or_above(t_hi);
+      if (!lines_known) {
+        k_lo = cells.first_above(t_lo), k_hi = cells.first_at_or_above(t_hi);
+        lines_known = true;
+      }
       if (light_vector) {
         Moments m;
         if (k_lo >= k_hi) {
