@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <memory>
 
+#include <tbb/blocked_range.h>
 #include <tbb/combinable.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
@@ -17,6 +18,9 @@ namespace {
 // Two openings are the same emitter when their polygons in the luminaire frame agree to this
 // fraction of their size (rounding of the pose's rotation; a real difference is millimetres).
 constexpr double kSameOpeningRelative = 1e-9;
+// Points per task when the map's demand is marked (each costs about 0.1 us: a few thousand
+// make a task worth its scheduling).
+constexpr std::size_t kMapDemandGrain = 4096;
 
 std::vector<Vec3> local_outline(const nearfield::Emitter& e) {
   std::vector<Vec3> out;
@@ -61,25 +65,32 @@ std::unique_ptr<nearfield::MapDemand> demand_of(const Scene& scene, const Plan& 
     for (uint32_t z : zones[s])
       for (size_t m = 0; m < members.size(); ++m) pairs += member_in_zone[m][z];
   if (pairs > kMapDemandPairs) return nullptr;
-  // In parallel over the members' pairs; the per-sample maximum does not depend on the order.
+  // In parallel over the members' pairs, and over the points of each surface (a scene of one
+  // luminaire over many points has one member); the per-sample maximum does not depend on the
+  // order.
   tbb::combinable<nearfield::MapDemand> parts;
   tbb::parallel_for(size_t{0}, members.size(), [&](size_t m) {
     const nearfield::Emitter& e = emitters[members[m]];
-    nearfield::MapDemand& demand = parts.local();
     for (size_t s = 0; s < scene.surfaces.size(); ++s) {
       const geometry::SurfaceGrid& grid = scene.surfaces[s];
-      for (size_t i = 0; i < grid.points.size(); ++i) {
-        if (!member_in_zone[m][zones[s][i]] || !(grid.active.empty() || grid.active[i])) continue;
-        // The direction and distance FarFieldBound::weights is asked for (nearfield
-        // switch_weights).
-        const Vec3 r = grid.points[i] - e.centroid;
-        const double d = glm::length(r);
-        if (!(d > 0.0)) continue;
-        const bool fixed_rule = nearfield::fixed_rule_may_serve(
-            e, receiver_of(grid.quantity, grid.normals[i]), plan.near_model,
-            reach.zone(zones[s][i]).visibility.get());
-        demand.add(e.world_to_local * (r / d), d / e.largest_dimension_m, fixed_rule);
-      }
+      tbb::parallel_for(
+          tbb::blocked_range<size_t>(0, grid.points.size(), kMapDemandGrain),
+          [&](const tbb::blocked_range<size_t>& range) {
+            nearfield::MapDemand& demand = parts.local();
+            for (size_t i = range.begin(); i != range.end(); ++i) {
+              if (!member_in_zone[m][zones[s][i]] || !(grid.active.empty() || grid.active[i]))
+                continue;
+              // The direction and distance FarFieldBound::weights is asked for (nearfield
+              // switch_weights).
+              const Vec3 r = grid.points[i] - e.centroid;
+              const double d = glm::length(r);
+              if (!(d > 0.0)) continue;
+              const bool fixed_rule = nearfield::fixed_rule_may_serve(
+                  e, receiver_of(grid.quantity, grid.normals[i]), plan.near_model,
+                  reach.zone(zones[s][i]).visibility.get());
+              demand.add(e.world_to_local * (r / d), d / e.largest_dimension_m, fixed_rule);
+            }
+          });
     }
   });
   auto demand = std::make_unique<nearfield::MapDemand>();
