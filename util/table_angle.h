@@ -165,4 +165,12 @@ inline double direction_angle(double y, double x) {
   return y < 0.0 ? -q : q;
 }
 
+// The direction of the unit vector (x, y) (of unit length to rounding) in (-pi, pi]: what
+// direction_angle gives, without its normalisation (a square root and two divisions) for a
+// direction already at hand; a negative zero y gives +pi as there.
+inline double unit_direction_angle(double y, double x) {
+  const double a = arc_angle(std::abs(y), x);
+  return y < 0.0 ? -a : a;
+}
+
 }  // namespace luxgrid

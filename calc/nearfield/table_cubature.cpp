@@ -159,8 +159,8 @@ void add_circle_crossings(const Polygon2& p, double r, double lo, double hi,
     const double root = std::sqrt(disc);
     for (double u : {(-qb - root) / qa, (-qb + root) / qa})
       if (u > 0.0 && u < 1.0) {
-        const glm::dvec2 x = a + u * e;
-        add_periodic_break(direction_angle(x.y, x.x), x.x * inv_r, x.y * inv_r, lo, hi, out);
+        const glm::dvec2 x = a + u * e, dir = x * inv_r;
+        add_periodic_break(unit_direction_angle(dir.y, dir.x), dir.x, dir.y, lo, hi, out);
       }
   }
 }
@@ -226,9 +226,9 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
   std::array<double, kMaxPolygonVertices> vertex_psi;  // each vertex's direction from F
   std::array<glm::dvec2, kMaxPolygonVertices> vertex_dir;
   for (int i = 0; i < poly.n; ++i) {
-    vertex_psi[i] = direction_angle(poly.v[i].y, poly.v[i].x);
     const double len = glm::length(poly.v[i]);
     vertex_dir[i] = len > 0.0 ? poly.v[i] / len : glm::dvec2(1.0, 0.0);
+    vertex_psi[i] = unit_direction_angle(vertex_dir[i].y, vertex_dir[i].x);
   }
   Break lo_break, hi_break;
   out.outside = !inside;
@@ -267,10 +267,29 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
   if (!(psi_hi - psi_lo > kMinCell)) return false;
   for (int i = 0; i < poly.n; ++i)
     add_periodic_break(vertex_psi[i], vertex_dir[i].x, vertex_dir[i].y, psi_lo, psi_hi, b);
-  if (c_lines.size() > 1)
-    for (std::size_t k = 0; k < c_lines.size(); ++k)
+  const std::size_t c_count = c_lines.size();
+  if (c_count > 1 && inside) {
+    for (std::size_t k = 0; k < c_count; ++k)
       add_periodic_break(c_lines[k] - kPi, cells.c_break_cos[k], cells.c_break_sin[k], psi_lo,
                          psi_hi, b);
+  } else if (c_count > 1) {
+    // F outside: the range is narrower than a half turn, so a C line has at most one copy in
+    // it, and the lines that have one follow each other (cyclically) from the first line past
+    // the range's start: only those are tried, from one line earlier (the start's rounding) to
+    // the first whose copy lies beyond the range. Each copy is add_periodic_break's.
+    const double c_start = first_copy_at_or_above(psi_lo + kPi, 0.0);
+    std::size_t k = static_cast<std::size_t>(
+        std::upper_bound(c_lines.begin(), c_lines.end(), c_start) - c_lines.begin());
+    k = (k + c_count - 1) % c_count;
+    for (std::size_t tried = 0; tried < c_count; ++tried, k = (k + 1) % c_count) {
+      const double x = first_copy_at_or_above(c_lines[k] - kPi, psi_lo);
+      if (x >= psi_hi) {
+        if (tried == 0) continue;
+        break;
+      }
+      if (x > psi_lo) b.push_back({x, cells.c_break_cos[k], cells.c_break_sin[k]});
+    }
+  }
   // A circle crosses the outline only between the outline's nearest point and its farthest
   // vertex (reach): the circles inside the nearest distance are skipped without solving for their
   // crossings (a margin of 1e-9 keeps a circle through the nearest point).
@@ -288,7 +307,22 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
   const double* lines = cells.lines.data();
   const double* line_tan = cells.line_tan.data();
   const std::size_t count = cells.lines.size();
-  for (std::size_t step = 0; step < count; ++step) {
+  // The circles inside the nearest distance, found by bisection: in this order a line's gamma'
+  // grows, and so does its radius up to pi / 2, so they are a prefix of the steps.
+  const auto inside_nearest = [&](std::size_t step) {
+    const std::size_t k = front ? step : count - 1 - step;
+    const double gp = front ? lines[k] : kPi - lines[k];
+    return gp < 0.5 * kPi && (!(gp > 0.0) || abs_sigma * line_tan[k] < nearest);
+  };
+  std::size_t first_step = 0;
+  for (std::size_t last = count; first_step < last;) {
+    const std::size_t mid = first_step + (last - first_step) / 2;
+    if (inside_nearest(mid))
+      first_step = mid + 1;
+    else
+      last = mid;
+  }
+  for (std::size_t step = first_step; step < count; ++step) {
     const std::size_t k = front ? step : count - 1 - step;
     const double gp = front ? lines[k] : kPi - lines[k];
     if (!(gp > 0.0)) continue;

@@ -146,5 +146,20 @@ TEST(TableAngle, DirectionAngleAgreesWithAtan2InEveryQuadrant) {
   EXPECT_NEAR(direction_angle(-2.0, -2.0), -0.75 * kPi, 2e-16);
 }
 
+TEST(TableAngle, UnitDirectionAngleAgreesWithAtan2InEveryQuadrant) {
+  // Unit vectors normalised in double (as the table rung's directions are): within 4 eps of
+  // atan2, as arc_angle.
+  std::mt19937_64 rng(20);
+  std::uniform_real_distribution<double> angle(-kPi, kPi);
+  for (int i = 0; i < 100000; ++i) {
+    const glm::dvec2 u = glm::normalize(glm::dvec2(std::cos(angle(rng)), std::sin(angle(rng))));
+    expect_within_ulps(unit_direction_angle(u.y, u.x), std::atan2(u.y, u.x), 4.0,
+                       "unit_direction_angle", u.y, u.x);
+  }
+  EXPECT_EQ(unit_direction_angle(0.0, 1.0), 0.0);
+  EXPECT_EQ(unit_direction_angle(-0.0, -1.0), std::atan2(0.0, -1.0));
+  EXPECT_NEAR(unit_direction_angle(-1.0, 0.0), -0.5 * kPi, 1e-16);
+}
+
 }  // namespace
 }  // namespace luxgrid
