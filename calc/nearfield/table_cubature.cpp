@@ -113,10 +113,10 @@ bool ray_interval(const Polygon2& p, double cos_psi, double sin_psi, bool origin
   return hit && rho_max > rho_min;
 }
 
-// The distance along the ray from the origin at angle psi to the line of edge i: ray_interval's
-// t for an edge the ray is known to cross.
-double edge_distance(const Polygon2& p, int i, double cos_psi, double sin_psi) {
-  return p.cross[i] / (-cos_psi * p.edge[i].y + sin_psi * p.edge[i].x);
+// The distance along the ray from the origin at angle psi to the line of edge i, for an edge the
+// ray is known to cross, is ray_interval's t = cross[i] / edge_det(i).
+double edge_det(const Polygon2& p, int i, double cos_psi, double sin_psi) {
+  return -cos_psi * p.edge[i].y + sin_psi * p.edge[i].x;
 }
 
 // x - 2 pi floor((x - lo) / 2 pi): the copy of angle x in [lo, lo + 2 pi), the same bits, without
@@ -525,19 +525,33 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
       const double psi = node == 0 ? nodes.x_lo : nodes.x_hi;
       const double cp = node == 0 ? nodes.c_lo : nodes.c_hi,
                    sp = node == 0 ? nodes.s_lo : nodes.s_hi;
-      double rho_min, rho_max;
+      // The ray's reach [rho_min, rho_max] and the sines and cosines of gamma' at its ends.
+      double rho_min, rho_max, cos_near, cos_far, sin_near, sin_far;
       if (by_edges) {
-        rho_min = edge_distance(poly, near_edge, cp, sp);
-        rho_max = edge_distance(poly, far_edge, cp, sp);
+        // On an edge rho = cross / det, so tan(gamma') = rho / |sigma| = x / det with
+        // x = cross / |sigma|, and (sin, cos) = (|x|, |det|) / sqrt(x^2 + det^2): after the
+        // determinant one square root and one division, where going through tan takes a
+        // division, a square root and another division one after the other (the rays' ends are
+        // the rung's longest chain of dependent operations).
+        const double det_near = edge_det(poly, near_edge, cp, sp),
+                     det_far = edge_det(poly, far_edge, cp, sp);
+        rho_min = poly.cross[near_edge] / det_near;
+        rho_max = poly.cross[far_edge] / det_far;
         if (!(rho_max > rho_min && rho_min >= 0.0)) continue;
-      } else if (!ray_interval(poly, cp, sp, inside, rho_min, rho_max)) {
-        continue;
+        const double x_near = poly.cross[near_edge] * inv_sigma,
+                     x_far = poly.cross[far_edge] * inv_sigma;
+        const double inv_near = 1.0 / std::sqrt(x_near * x_near + det_near * det_near),
+                     inv_far = 1.0 / std::sqrt(x_far * x_far + det_far * det_far);
+        cos_near = std::abs(det_near) * inv_near, sin_near = std::abs(x_near) * inv_near;
+        cos_far = std::abs(det_far) * inv_far, sin_far = std::abs(x_far) * inv_far;
+      } else {
+        if (!ray_interval(poly, cp, sp, inside, rho_min, rho_max)) continue;
+        const double t_near = rho_min * inv_sigma, t_far = rho_max * inv_sigma;
+        cos_near = 1.0 / std::sqrt(1.0 + t_near * t_near);
+        cos_far = 1.0 / std::sqrt(1.0 + t_far * t_far);
+        sin_near = t_near * cos_near, sin_far = t_far * cos_far;
       }
-      // The ray's range of table angles.
       const double tan_near = rho_min * inv_sigma, tan_far = rho_max * inv_sigma;
-      const double cos_near = 1.0 / std::sqrt(1.0 + tan_near * tan_near),
-                   cos_far = 1.0 / std::sqrt(1.0 + tan_far * tan_far);
-      const double sin_near = tan_near * cos_near, sin_far = tan_far * cos_far;
       const double g_near = quadrant_angle(sin_near, cos_near),
                    g_far = quadrant_angle(sin_far, cos_far);
       const double t_lo = front ? g_near : kPi - g_far, t_hi = front ? g_far : kPi - g_near;
