@@ -29,6 +29,11 @@ constexpr double kShootLift_m = 1e-6;
 // over the last sweep; below it the tail's shape error is negligible against the tolerances.
 constexpr double kRatioStability = 1e-4;
 constexpr int kMinSweepsBeforeTail = 4;
+// A bounce ratio this close to 1 is no absorption up to rounding (reflectance 1 everywhere: the
+// form factors' rows sum to 1 only to rounding, so the ratio lands a few units in the last place
+// either side of 1). The series does not converge, and a geometric tail r / (1 - r) there would
+// multiply rounding by 1e9 and more and call the result converged.
+constexpr double kNoAbsorptionRatio = 1.0 - 1e-9;
 
 double l1(const std::vector<double>& v) {
   double s = 0.0;
@@ -281,7 +286,7 @@ RadiosityResult solve_bounce_series(size_t n, const BounceTransfer& transfer,
   while (res.bounces_run < target) {
     const double r = sweep();
     if (bounces > 0) continue;
-    if (!(r < 1.0)) {  // no absorption: the series does not converge
+    if (!(r < kNoAbsorptionRatio)) {  // no absorption: the series does not converge
       ratio_prev = r;
       continue;
     }

@@ -103,7 +103,7 @@ TEST(Limits, AWhiteRoomStopsAtTheBounceLimit) {
   o.patch_size_m = 1.0;
   const IndirectResult r = compute_indirect(s, {}, o);
   EXPECT_LE(r.bounces_run, kMaxBounces);
-  EXPECT_GT(r.residual, 0.0);
+  EXPECT_GT(r.residual, 0.0) << r.bounces_run << " bounces";
 }
 
 }  // namespace
