@@ -113,11 +113,12 @@ std::shared_ptr<const TableGammaCells> make_table_gamma_cells(
     const photometry::TabularDistribution::CPosition plane{i, 0.0};
     double* sums = cells->plane_sums.data() + i * L.size();
     for (std::size_t k = 0; k + 1 < L.size(); ++k) {
-      const long row = cells->interval_row[k];
-      const std::size_t j = row < 0 ? 0 : static_cast<std::size_t>(row);
-      sums[k + 1] = sums[k] + (row < 0 ? 0.0
-                                       : w_lo[k] * table.row_value(plane, j) +
-                                             w_hi[k] * table.row_value(plane, j + 1));
+      double interval = 0.0;  // outside the table's gamma range: intensity zero
+      if (const long row = cells->interval_row[k]; row >= 0) {
+        const std::size_t j = static_cast<std::size_t>(row);
+        interval = w_lo[k] * table.row_value(plane, j) + w_hi[k] * table.row_value(plane, j + 1);
+      }
+      sums[k + 1] = sums[k] + interval;
     }
   }
   // The buckets of first_above / first_at_or_above: as wide as the narrowest gap between lines.

@@ -86,6 +86,12 @@ bool contains_origin(const Polygon2& p) {
   return true;
 }
 
+// The distance along the ray from the origin at angle psi to the line of edge i, for an edge the
+// ray is known to cross, is t = cross[i] / edge_det(i) (ray_interval's solve).
+double edge_det(const Polygon2& p, int i, double cos_psi, double sin_psi) {
+  return -cos_psi * p.edge[i].y + sin_psi * p.edge[i].x;
+}
+
 // Distances along the ray from the origin at angle psi where it enters and leaves the convex
 // polygon. False when the ray misses it (only at the rim of the angular range, by rounding).
 bool ray_interval(const Polygon2& p, double cos_psi, double sin_psi, bool origin_inside,
@@ -94,9 +100,9 @@ bool ray_interval(const Polygon2& p, double cos_psi, double sin_psi, bool origin
   rho_max = 0.0;
   bool hit = false;
   for (int i = 0; i < p.n; ++i) {
-    const glm::dvec2 a = p.v[i], e = p.edge[i];
+    const glm::dvec2 a = p.v[i];
     // origin + t (c, s) = a + u e  ->  t (c, s) - u e = a
-    const double det = -cos_psi * e.y + sin_psi * e.x;
+    const double det = edge_det(p, i, cos_psi, sin_psi);
     if (det == 0.0) continue;
     // u = u_det / det and t = t_det / det, tested without dividing (the ray misses most edges).
     const double u_det = cos_psi * a.y - sin_psi * a.x, t_det = p.cross[i];
@@ -111,12 +117,6 @@ bool ray_interval(const Polygon2& p, double cos_psi, double sin_psi, bool origin
   }
   if (origin_inside) rho_min = 0.0;
   return hit && rho_max > rho_min;
-}
-
-// The distance along the ray from the origin at angle psi to the line of edge i, for an edge the
-// ray is known to cross, is ray_interval's t = cross[i] / edge_det(i).
-double edge_det(const Polygon2& p, int i, double cos_psi, double sin_psi) {
-  return -cos_psi * p.edge[i].y + sin_psi * p.edge[i].x;
 }
 
 // x - 2 pi floor((x - lo) / 2 pi): the copy of angle x in [lo, lo + 2 pi), the same bits, without
