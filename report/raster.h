@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "util/huge_page_allocator.h"
+
 namespace luxgrid::report {
 
 // A colour in sRGB, each channel in [0, 1] (stored rounded to 8 bits).
@@ -32,7 +34,9 @@ class Raster {
   std::vector<std::uint8_t> pixels() const;
   // Each row, the top row first, as PNG filters it: a filter-type byte 0 (none), then the row's
   // pixels as pixels() has them.
-  const std::vector<std::uint8_t>& scanlines() const { return data_; }
+  // A plot's megabyte in huge pages where the system gives them (util/huge_page_allocator.h).
+  using Scanlines = std::vector<std::uint8_t, HugePageAllocator<std::uint8_t>>;
+  const Scanlines& scanlines() const { return data_; }
   // Row y's first pixel byte (0 <= y < height()), for callers that fill whole rows of bytes.
   std::uint8_t* row(int y) { return data_.data() + offset(0, y); }
   const std::uint8_t* row(int y) const { return data_.data() + offset(0, y); }
@@ -67,7 +71,7 @@ class Raster {
            static_cast<std::size_t>(x) * 3;
   }
   int width_, height_;
-  std::vector<std::uint8_t> data_;  // scanlines()
+  Scanlines data_;  // scanlines()
 };
 
 }  // namespace luxgrid::report

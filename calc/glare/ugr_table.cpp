@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include "calc/glare/flux_transfer.h"
 #include "calc/glare/ugr.h"
@@ -11,6 +12,7 @@
 #include "photometry/opening.h"
 #include "photometry/tabular_distribution.h"
 #include "util/error.h"
+#include "util/huge_page_allocator.h"
 
 namespace luxgrid::calc::glare {
 
@@ -37,9 +39,13 @@ constexpr double kNadirStep_rad = kPi / (2 * kNadirSteps),
 struct Landing {
   double dx_m, dy_m;
 };
-const std::vector<Landing>& landings() {
-  static const std::vector<Landing> made = [] {
-    std::vector<Landing> l;
+// The quadrature's arrays (2 MB, 1 MB) in huge pages where the system gives them: fresh 4 kB
+// pages cost more than the quadrature on a virtual machine (util/huge_page_allocator.h).
+template <class T>
+using CellArray = std::vector<T, HugePageAllocator<T>>;
+const CellArray<Landing>& landings() {
+  static const CellArray<Landing> made = [] {
+    CellArray<Landing> l;
     l.reserve(static_cast<size_t>(kNadirSteps) * kAzimuthSteps);
     std::array<double, kAzimuthSteps> cos_p, sin_p;  // once per azimuth, not per cell
     for (int k = 0; k < kAzimuthSteps; ++k) {
@@ -57,7 +63,7 @@ const std::vector<Landing>& landings() {
 
 struct Fluxes {
   double down_lm = 0.0, up_lm = 0.0;
-  std::vector<double> down_cell_lm;  // per lower cell, in the order of landings()
+  CellArray<double> down_cell_lm;  // per lower cell, in the order of landings()
 };
 
 // `intensity_cd(hemisphere, i, k, world)`: the intensity of cell i (angle from nadir, or from
@@ -140,8 +146,7 @@ class CellIntensities {
 
  private:
   const photometry::IntensityDistribution& d_;
-  std::vector<double>
-      cd_;  // [hemisphere][nadir step][azimuth step], luminaire frame; empty: ask d_
+  CellArray<double> cd_;  // [hemisphere][nadir step][azimuth step], luminaire frame; empty: ask d_
 };
 
 // Luminaire centres along one side: n = L / S of them, S/2 from each end.
@@ -220,7 +225,7 @@ RoomDirect room_direct(const photometry::IntensityDistribution& d,
   // Direct flux of all luminaires onto the floor (the plane at eye level), walls and ceiling.
   const double n = static_cast<double>(xs.size() * ys.size());
   double floor_lm = 0.0;
-  const std::vector<Landing>& land = landings();
+  const CellArray<Landing>& land = landings();
   const ShiftedCount across_x(xs), along_y(ys);
   for (size_t c = 0; c < land.size(); ++c) {
     const double flux = fluxes.down_cell_lm[c];

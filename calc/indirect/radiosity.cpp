@@ -6,10 +6,6 @@
 #include <limits>
 #include <string>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -59,21 +55,6 @@ double dot(const float* row, const double* v, size_t b, size_t e) {
 // Tile size of the source chunks, in units of the largest patch diameter of a coplanar run.
 constexpr double kChunkTile = 4.0;
 }  // namespace
-
-void* allocate_huge_pages(size_t bytes) {
-  constexpr size_t kHuge = size_t(2) << 20;
-  if (bytes < kHuge) {
-    if (void* p = std::malloc(bytes == 0 ? 1 : bytes)) return p;
-    throw std::bad_alloc();
-  }
-  const size_t rounded = (bytes + kHuge - 1) / kHuge * kHuge;
-  void* p = std::aligned_alloc(kHuge, rounded);
-  if (!p) throw std::bad_alloc();
-#ifdef MADV_HUGEPAGE
-  madvise(p, rounded, MADV_HUGEPAGE);  // advice only: without THP the pages are just small
-#endif
-  return p;
-}
 
 FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
                               const geometry::Visibility* visibility, double far_ratio,

@@ -22,10 +22,7 @@
 // rho); once it is stable the remaining bounces are a geometric series whose sum Delta_k r / (1 -
 // r) is added (the "ambient" tail of Cohen et al. 1988), so rho = 0.95 converges in tens of sweeps,
 // not hundreds.
-#include <cstdlib>
 #include <functional>
-#include <new>
-#include <utility>
 #include <vector>
 
 #include "calc/indirect/clustered.h"
@@ -33,39 +30,9 @@
 #include "calc/indirect/limits.h"
 #include "calc/indirect/patches.h"
 #include "geometry/visibility.h"
+#include "util/huge_page_allocator.h"
 
 namespace luxgrid::calc::indirect {
-
-// Allocator for the dense matrix: 2 MB-aligned blocks with transparent huge pages requested
-// (madvise), and no value-initialisation (form_factors writes every entry). At 4000 patches the
-// matrix is 64 MB; in 4 kB pages that is 16 000 page faults, which cost more than computing the
-// entries on a virtual machine.
-template <class T>
-struct HugePageAllocator {
-  using value_type = T;
-  HugePageAllocator() = default;
-  template <class U>
-  HugePageAllocator(const HugePageAllocator<U>&) noexcept {}
-  T* allocate(size_t count);
-  void deallocate(T* p, size_t) noexcept { std::free(p); }
-  template <class U>
-  void construct(U* p) noexcept {
-    ::new (static_cast<void*>(p)) U;
-  }  // default-init: no zeroing
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-  template <class U>
-  bool operator==(const HugePageAllocator<U>&) const noexcept {
-    return true;
-  }
-};
-void* allocate_huge_pages(size_t bytes);  // radiosity.cpp; throws std::bad_alloc
-template <class T>
-T* HugePageAllocator<T>::allocate(size_t count) {
-  return static_cast<T*>(allocate_huge_pages(count * sizeof(T)));
-}
 
 // Dense form-factor matrix of one room's patches, stored so that row i holds F[j -> i] for all j
 // (the "gather" layout: incident flux on i = row i . exitant flux).
