@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "calc/nearfield/fan_sample.h"
+#include "calc/nearfield/gauss_legendre.h"
 #include "calc/nearfield/models.h"
 #include "calc/nearfield/receiver_fan.h"
 #include "calc/nearfield/receiver_kernel.h"
@@ -134,6 +135,7 @@ inline double first_copy_at_or_above(double x, double lo) {
 // is the normalised sum of its ends': no sine and cosine per cell.
 struct Break {
   double psi, c, s;
+  int points = 2;  // the Gauss-Legendre rule of the cell that starts here (finish_breaks)
 };
 
 // Appends every copy (period 2 pi) of the break at angle x, direction (c, s), that falls strictly
@@ -141,7 +143,7 @@ struct Break {
 inline void add_periodic_break(double x, double c, double s, double lo, double hi,
                                std::vector<Break>& out) {
   for (x = first_copy_at_or_above(x, lo); x < hi; x += kTwoPi)
-    if (x > lo) out.push_back({x, c, s});
+    if (x > lo) out.push_back({x, c, s, 2});
 }
 
 // Appends the directions (as breaks inside (lo, hi)) where the circle of radius r around the
@@ -165,39 +167,7 @@ void add_circle_crossings(const Polygon2& p, double r, double lo, double hi,
   }
 }
 
-// Sorted breaks of [lo, hi] with no cell wider than max_cell (`out` is scratch space). A gap cut
-// into pieces gets its pieces' directions by turning the first one's by the piece's angle.
-void finish_breaks(std::vector<Break>& b, std::vector<Break>& out, const Break& lo, const Break& hi,
-                   double max_cell) {
-  b.push_back(lo);
-  b.push_back(hi);
-  std::sort(b.begin(), b.end(), [](const Break& x, const Break& y) { return x.psi < y.psi; });
-  out.clear();
-  out.push_back(b.front());
-  for (std::size_t i = 1; i < b.size(); ++i) {
-    const Break a = out.back(), z = b[i];
-    if (!(z.psi - a.psi > kMinCell)) continue;
-    const int pieces = pieces_of_at_most((z.psi - a.psi) / max_cell);
-    if (pieces > 1) {
-      const double step = (z.psi - a.psi) / pieces, cs = std::cos(step), sn = std::sin(step);
-      double c = a.c, s = a.s;
-      for (int k = 1; k < pieces; ++k) {
-        const double c_next = c * cs - s * sn;
-        s = s * cs + c * sn, c = c_next;
-        out.push_back({a.psi + (z.psi - a.psi) * k / pieces, c, s});
-      }
-    }
-    out.push_back(z);
-  }
-  b.swap(out);
-}
-
-// The psi cells of one receiver: the angular range of the polygon seen from F (all around when
-// F is inside), cut at the polygon's vertex directions (rho(psi) has a corner there), at the
-// table's C lines (C = psi + pi), and where a gamma line (a circle of radius |sigma| tan gamma'
-// around F) crosses the outline: there a ray's first or last gamma cell changes, a kink in psi.
-// With F outside, each edge's angular span and whether it faces F: a ray in a cell enters through
-// the facing edge whose span holds the cell and leaves through the other (edges_of).
+// What psi_cells (below) makes: the breaks, and with F outside each edge's angular span.
 struct PsiCells {
   std::vector<Break> breaks;  // sorted
   bool outside = false;
@@ -215,6 +185,153 @@ struct PsiCells {
     return near >= 0 && far >= 0;
   }
 };
+
+// True when neither edge `near` nor `far` (-1: none) of the polygon is parallel to a ray at angles
+// within `margin` (rad) of the gap [a, z] (directions given): rho(psi) = cross / det(psi) on the
+// edge a ray enters or leaves through has its poles where det vanishes, and its complex poles lie
+// no nearer (tan(gamma') = x / det: at det = +-i x). det of an edge is |e| sin(psi - psi_e): over a
+// range narrower than a half turn it vanishes iff its sign changes between the range's ends.
+bool far_from_parallel(const Polygon2& p, int near, int far, const Break& a, const Break& z,
+                       double margin) {
+  const double width = z.psi - a.psi;
+  if (!(width + 2.0 * margin < kPi)) return false;
+  double c0, s0, c1, s1;  // a turned back by margin, z turned on by margin
+  if (margin == width) {
+    // Without trigonometry: a turned back by the gap is z mirrored in a, z turned on is a
+    // mirrored in z (most wide gaps get one rule).
+    const double dot2 = 2.0 * (a.c * z.c + a.s * z.s);
+    c0 = dot2 * a.c - z.c, s0 = dot2 * a.s - z.s;
+    c1 = dot2 * z.c - a.c, s1 = dot2 * z.s - a.s;
+  } else {
+    const double cm = std::cos(margin), sm = std::sin(margin);
+    c0 = a.c * cm + a.s * sm, s0 = a.s * cm - a.c * sm;
+    c1 = z.c * cm - z.s * sm, s1 = z.s * cm + z.c * sm;
+  }
+  for (const int i : {near, far})
+    if (i >= 0 && !(edge_det(p, i, c0, s0) * edge_det(p, i, c1, s1) > 0.0)) return false;
+  return true;
+}
+
+// The edge the ray from the origin in direction (c, s) leaves a polygon around the origin
+// through, or -1 (the ray passes through a vertex).
+int exit_edge(const Polygon2& p, double c, double s) {
+  for (int i = 0; i < p.n; ++i) {
+    const double det = edge_det(p, i, c, s);
+    if (det == 0.0) continue;
+    const double u = (c * p.v[i].y - s * p.v[i].x) / det, t = p.cross[i] / det;
+    if (u > 0.0 && u < 1.0 && t > 0.0) return i;
+  }
+  return -1;
+}
+
+// Sorted breaks of [lo, hi] with no cell wider than max_cell, or a wider gap (no kink inside it:
+// every kink is a break) integrated by one Gauss-Legendre rule. A gap of `pieces` x max_cell is
+// not cut into pieces of two nodes each but gets one rule of pieces + 1 nodes, exact to degree
+// 2 pieces + 1 where the pieces' pairs are exact to degree 3 on each: fewer rays for an
+// integrand analytic across the gap, as long as its nearest singularity (the rays parallel to an
+// edge they cross: far_from_parallel) lies at least a gap's width beyond it (docs/nearfield.md,
+// "Wide gaps"); nearer, the pieces as before. Gaps of more than kMaxGaussLegendrePoints - 1 pieces
+// are cut first into equal parts of at most that many, each part's direction turned from the gap's
+// first. `out` is scratch space.
+void finish_breaks(const Polygon2& poly, const PsiCells& psi, std::vector<Break>& b,
+                   std::vector<Break>& out, const Break& lo, const Break& hi, double max_cell) {
+  b.push_back(lo);
+  b.push_back(hi);
+  std::sort(b.begin(), b.end(), [](const Break& x, const Break& y) { return x.psi < y.psi; });
+  out.clear();
+  out.push_back(b.front());
+  constexpr int kMaxPiecesPerRule = kMaxGaussLegendrePoints - 1;
+  for (std::size_t i = 1; i < b.size(); ++i) {
+    const Break a = out.back(), z = b[i];
+    if (!(z.psi - a.psi > kMinCell)) continue;
+    const int pieces = pieces_of_at_most((z.psi - a.psi) / max_cell);
+    if (pieces > 1) {
+      const int by_rule = (pieces + kMaxPiecesPerRule - 1) / kMaxPiecesPerRule;
+      // The edges the gap's rays cross, from its middle ray (F outside: its near and far edge).
+      int near = -1, far = -1;
+      bool edges_known = false;
+      if (psi.outside) {
+        edges_known = psi.edges_of(a.psi + 0.5 * (z.psi - a.psi), poly.n, near, far);
+      } else {
+        const double mc = a.c + z.c, ms = a.s + z.s;
+        far = exit_edge(poly, mc, ms);
+        edges_known = far >= 0;
+      }
+      const bool rule = edges_known &&
+                        far_from_parallel(poly, near, far, a, z,
+                                          by_rule == 1 ? z.psi - a.psi : (z.psi - a.psi) / by_rule);
+      const int parts = rule ? by_rule : pieces;
+      const int points = rule ? (pieces + parts - 1) / parts + 1 : 2;
+      out.back().points = points;
+      if (parts > 1) {
+        const double step = (z.psi - a.psi) / parts, cs = std::cos(step), sn = std::sin(step);
+        double c = a.c, s = a.s;
+        for (int k = 1; k < parts; ++k) {
+          const double c_next = c * cs - s * sn;
+          s = s * cs + c * sn, c = c_next;
+          out.push_back({a.psi + (z.psi - a.psi) * k / parts, c, s, points});
+        }
+      }
+    }
+    out.push_back(z);
+  }
+  b.swap(out);
+}
+
+// A ray of a psi cell: its angle, direction and Gauss weight (1 for the pair's).
+struct CellNode {
+  double psi, c, s, weight;
+};
+
+// sin and cos of |delta| <= kWideSeriesMax by their Taylor series to delta^13 and delta^14: the
+// first omitted terms, delta^15 / 15! and delta^16 / 16!, are below 1e-16 of the kept ones there.
+// Wider: the library.
+constexpr double kWideSeriesMax = 0.55;
+inline void sin_cos_of_offset(double delta, double& s, double& c) {
+  if (!(std::abs(delta) <= kWideSeriesMax)) {
+    s = std::sin(delta), c = std::cos(delta);
+    return;
+  }
+  const double d2 = delta * delta;
+  s = delta *
+      (1.0 -
+       d2 * (1.0 / 6) *
+           (1.0 - d2 * (1.0 / 20) *
+                      (1.0 - d2 * (1.0 / 42) *
+                                 (1.0 - d2 * (1.0 / 72) *
+                                            (1.0 - d2 * (1.0 / 110) * (1.0 - d2 * (1.0 / 156)))))));
+  c = 1.0 -
+      d2 * 0.5 *
+          (1.0 - d2 * (1.0 / 12) *
+                     (1.0 - d2 * (1.0 / 30) *
+                                (1.0 - d2 * (1.0 / 56) *
+                                           (1.0 - d2 * (1.0 / 90) *
+                                                      (1.0 - d2 * (1.0 / 132) *
+                                                                 (1.0 - d2 * (1.0 / 182)))))));
+}
+
+// The `points` nodes of the Gauss-Legendre rule on the cell of half-width `half` around the
+// middle angle x_mid, direction (cos_mid, sin_mid).
+void wide_nodes(int points, double x_mid, double half, double cos_mid, double sin_mid,
+                std::array<CellNode, kMaxGaussLegendrePoints>& out) {
+  const GaussLegendreRule& rule = gauss_legendre(points);
+  for (int i = 0; i < (points + 1) / 2; ++i) {
+    const int j = points - 1 - i;  // the mirror node, at -delta
+    const double delta = half * rule.x[i];
+    double sd, cd;
+    sin_cos_of_offset(delta, sd, cd);
+    out[i] = {x_mid + delta, cos_mid * cd - sin_mid * sd, sin_mid * cd + cos_mid * sd, rule.w[i]};
+    if (j != i)
+      out[j] = {x_mid - delta, cos_mid * cd + sin_mid * sd, sin_mid * cd - cos_mid * sd, rule.w[j]};
+  }
+}
+
+// The psi cells of one receiver: the angular range of the polygon seen from F (all around when
+// F is inside), cut at the polygon's vertex directions (rho(psi) has a corner there), at the
+// table's C lines (C = psi + pi), and where a gamma line (a circle of radius |sigma| tan gamma'
+// around F) crosses the outline: there a ray's first or last gamma cell changes, a kink in psi.
+// With F outside, each edge's angular span and whether it faces F: a ray in a cell enters through
+// the facing edge whose span holds the cell and leaves through the other (edges_of).
 
 // False when the range is empty.
 bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, double reach,
@@ -331,7 +448,7 @@ bool psi_cells(const Polygon2& poly, bool inside, bool front, double abs_sigma, 
     if (!(r < reach)) break;
     if (r >= nearest) add_circle_crossings(poly, r, psi_lo, psi_hi, b);
   }
-  finish_breaks(b, scratch, lo_break, hi_break, kMaxPsiCell);
+  finish_breaks(poly, out, b, scratch, lo_break, hi_break, kMaxPsiCell);
   return true;
 }
 
@@ -505,12 +622,20 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
     const double pa = a.psi, pw = b.psi - pa;
     // The middle direction from the ends' (a cell spans at most kMaxPsiCell).
     const double mc = a.c + b.c, ms = a.s + b.s, inv_len = 1.0 / std::sqrt(mc * mc + ms * ms);
-    const GaussPair nodes = gauss_pair(pa, pa + pw, ms * inv_len, mc * inv_len);
+    // The cell's rays: the Gauss pair, or a wide gap's rule (finish_breaks).
+    const double x_mid = pa + 0.5 * pw;
+    std::array<CellNode, kMaxGaussLegendrePoints> rays;
+    if (a.points == 2) {
+      const GaussPair g = gauss_pair(pa, pa + pw, ms * inv_len, mc * inv_len);
+      rays[0] = {g.x_lo, g.c_lo, g.s_lo, 1.0}, rays[1] = {g.x_hi, g.c_hi, g.s_hi, 1.0};
+    } else {
+      wide_nodes(a.points, x_mid, 0.5 * pw, mc * inv_len, ms * inv_len, rays);
+    }
     // What the cell's two rays share: with F outside, the edges they enter and leave through (no
     // vertex direction lies inside a cell), and the table's C cell (nor does a C plane).
     int near_edge = -1, far_edge = -1;
-    const bool by_edges = psi.outside && psi.edges_of(nodes.x_mid, poly.n, near_edge, far_edge);
-    const double c_mid = first_copy_at_or_above(nodes.x_mid + kPi, 0.0);
+    const bool by_edges = psi.outside && psi.edges_of(x_mid, poly.n, near_edge, far_edge);
+    const double c_mid = first_copy_at_or_above(x_mid + kPi, 0.0);
     // Consecutive cells mostly share a C cell: looked up again only when the middle leaves it.
     if (!(c_mid >= c_cell.c0 && c_mid < c_cell.c1)) c_cell = table.c_cell(c_mid);
     // And the lines strictly inside each ray's range of table angles: a ray's ends cross a line
@@ -521,10 +646,9 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
     // integral up to rounding.
     std::size_t k_lo = 0, k_hi = 0;
     bool lines_known = false;
-    for (int node = 0; node < 2; ++node) {
-      const double psi = node == 0 ? nodes.x_lo : nodes.x_hi;
-      const double cp = node == 0 ? nodes.c_lo : nodes.c_hi,
-                   sp = node == 0 ? nodes.s_lo : nodes.s_hi;
+    for (int node = 0; node < a.points; ++node) {
+      const double psi = rays[node].psi, cp = rays[node].c, sp = rays[node].s,
+                   weight = rays[node].weight;
       // The ray's reach [rho_min, rho_max] and the sines and cosines of gamma' at its ends.
       double rho_min, rho_max, cos_near, cos_far, sin_near, sin_far;
       if (by_edges) {
@@ -574,7 +698,8 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
           const TableGammaNode* base = cells.nodes.data();
           add_moments(base + cells.first[k_lo], base + cells.first[k_hi - 1], cpos, m);
         }
-        moments_sum += 0.5 * pw * Vec3(m.radial * cp, m.radial * sp, front ? m.axial : -m.axial);
+        moments_sum +=
+            0.5 * pw * weight * Vec3(m.radial * cp, m.radial * sp, front ? m.axial : -m.axial);
         continue;
       }
       double ray = 0.0;
@@ -590,7 +715,7 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
         const TableGammaNode* base = cells.nodes.data();
         ray += node_sum(base + cells.first[k_lo], base + cells.first[k_hi - 1], cpos, dir);
       }
-      sum += 0.5 * pw * ray;
+      sum += 0.5 * pw * weight * ray;
     }
   }
   if (light_vector) *light_vector = (view.scale / e.area_m2) * moments_sum;
