@@ -69,15 +69,22 @@ class TabularDistribution final : public IntensityDistribution {
     return CPosition{cell.i, std::clamp((c_rad - cell.c0) / (cell.c1 - cell.c0), 0.0, 1.0)};
   }
   double intensity_at(const CPosition& c, std::size_t j, double tg) const;
-  // A bilinear table's value on gamma row j at the C position (interpolated in C only): what
-  // intensity_at(c, j, 0) gives, and intensity_at(c, j - 1, 1) up to rounding. Inline, for the
-  // table rung's closed form, which reads two rows per gamma interval of every ray.
-  double row_value(const CPosition& c, std::size_t j) const {
-    const double v0 = grid_.cd[c.i * ng_ + j];
-    if (nc_ == 1) return v0;
-    const std::size_t i1 = c.i + 1 < nc_ ? c.i + 1 : 0;
-    return v0 + c.tc * (grid_.cd[i1 * ng_ + j] - v0);
+  // The two C planes around a C position, for many rows at one C (the table rung's rays: its
+  // closed form reads two rows per gamma interval of every ray), found once.
+  struct CColumns {
+    const double* v0;
+    const double* v1;  // v0 when the table has one C plane (tc is 0 then)
+    double tc;
+    double row_value(std::size_t j) const { return v0[j] + tc * (v1[j] - v0[j]); }
+  };
+  CColumns c_columns(const CPosition& c) const {
+    const double* v0 = grid_.cd.data() + c.i * ng_;
+    if (nc_ == 1) return {v0, v0, 0.0};
+    return {v0, grid_.cd.data() + (c.i + 1 < nc_ ? c.i + 1 : 0) * ng_, c.tc};
   }
+  // A bilinear table's value on gamma row j at the C position (interpolated in C only): what
+  // intensity_at(c, j, 0) gives, and intensity_at(c, j - 1, 1) up to rounding.
+  double row_value(const CPosition& c, std::size_t j) const { return c_columns(c).row_value(j); }
   // The gamma cell of an angle: false outside the table's gamma range (intensity zero there).
   bool gamma_cell(double gamma_rad, std::size_t& j, double& tg) const;
 

@@ -64,11 +64,17 @@ struct Polygon2 {
   // do not depend on the ray (set by prepare_edges).
   std::array<glm::dvec2, kMaxPolygonVertices> edge;
   std::array<double, kMaxPolygonVertices> cross;
+  // And the coefficients of add_circle_crossings' quadratic that do not depend on the circle:
+  // e . e, a . e and a . a.
+  std::array<double, kMaxPolygonVertices> edge_len2, start_dot_edge, start_len2;
   void prepare_edges() {
     for (int i = 0; i < n; ++i) {
       const glm::dvec2 a = v[i];
       edge[i] = v[(i + 1) % n] - a;
       cross[i] = -a.x * edge[i].y + a.y * edge[i].x;
+      edge_len2[i] = glm::dot(edge[i], edge[i]);
+      start_dot_edge[i] = glm::dot(a, edge[i]);
+      start_len2[i] = glm::dot(a, a);
     }
   }
 };
@@ -152,9 +158,9 @@ void add_circle_crossings(const Polygon2& p, double r, double lo, double hi,
                           std::vector<Break>& out) {
   const double r2 = r * r, inv_r = 1.0 / r;
   for (int i = 0; i < p.n; ++i) {
-    const glm::dvec2 a = p.v[i], e = p.v[(i + 1) % p.n] - a;
+    const glm::dvec2 a = p.v[i], e = p.edge[i];
     // |a + u e|^2 = r^2, u in [0, 1]
-    const double qa = glm::dot(e, e), qb = glm::dot(a, e), qc = glm::dot(a, a) - r2;
+    const double qa = p.edge_len2[i], qb = p.start_dot_edge[i], qc = p.start_len2[i] - r2;
     if (!(qa > 0.0)) continue;
     const double disc = qb * qb - qa * qc;
     if (!(disc > 0.0)) continue;
@@ -325,6 +331,23 @@ void wide_nodes(int points, double x_mid, double half, double cos_mid, double si
       out[j] = {x_mid - delta, cos_mid * cd + sin_mid * sd, sin_mid * cd - cos_mid * sd, rule.w[j]};
   }
 }
+
+// A ray of the rung's psi cells: its angle and direction, its share 0.5 x cell width x Gauss
+// weight, and what its cell's rays share: the table's C cell, the cell's index, and with F
+// outside the edges it enters and leaves through (near_edge < 0: every edge is tried).
+struct RayJob {
+  double psi, c, s, scale;
+  photometry::TabularDistribution::CCell c_cell;
+  std::size_t cell;
+  int near_edge, far_edge;
+};
+
+// Where a ray enters and leaves the opening: sin, cos and tan of gamma' and its table angle at
+// both ends (ok false: the ray misses the opening, by rounding at the rim of the range).
+struct RayEnds {
+  bool ok;
+  double sin_near, cos_near, sin_far, cos_far, tan_near, tan_far, g_near, g_far;
+};
 
 // The psi cells of one receiver: the angular range of the polygon seen from F (all around when
 // F is inside), cut at the polygon's vertex directions (rho(psi) has a corner there), at the
@@ -575,6 +598,7 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
     // sin and cos of the table angles at the ray's ends (of gamma' at its near and far end).
     const double s_lo = front ? sin_near : sin_far, s_hi = front ? sin_far : sin_near;
     const double c_lo = front ? cos_near : -cos_far, c_hi = front ? cos_far : -cos_near;
+    const photometry::TabularDistribution::CColumns columns = table.c_columns(c);
     // The piece [a, b] of interval k (k < 0 or past the last line: outside the table).
     const auto piece = [&](long k, double a, double sa, double ca, double b, double sb, double cb) {
       if (k < 0 || static_cast<std::size_t>(k) >= line_count) return 0.0;
@@ -582,7 +606,7 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
       if (row < 0) return 0.0;
       const std::size_t j = static_cast<std::size_t>(row);
       return linear_sin_integral(a, sa, ca, b, sb, cb, gamma_rows[j], inv_row_width[j],
-                                 table.row_value(c, j), table.row_value(c, j + 1));
+                                 columns.row_value(j), columns.row_value(j + 1));
     };
     const long first = static_cast<long>(k_lo) - 1;
     if (k_lo >= k_hi) return n_z * piece(first, t_lo, s_lo, c_lo, t_hi, s_hi, c_hi);
@@ -614,9 +638,27 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
     append_gamma_nodes(table, a, b, ta, tb, end_nodes);
     add_moments(end_nodes.data(), end_nodes.data() + end_nodes.size(), c, m);
   };
-  Vec3 moments_sum(0.0);
+  // Three passes over the rays, each a loop of independent iterations: the rays' ends are a long
+  // chain of dependent operations (determinant, square root, division, table angle), and a loop
+  // that does only them lets the processor run several rays' chains at once, where one ray's
+  // whole work per iteration left it waiting on each chain in turn.
+  // 1. The cells' rays, with what a cell's rays share: with F outside, the edges they enter and
+  //    leave through (no vertex direction lies inside a cell), and the table's C cell (nor does a
+  //    C plane).
+  // The buffers are the thread's, grown to the largest count seen; the loops index them through
+  // plain pointers and counts (a thread-local vector's size and data would be read again from
+  // thread-local storage at every step).
+  thread_local std::vector<RayJob> jobs_buffer;
+  thread_local std::vector<RayEnds> ends_buffer;
+  const std::size_t cell_count = psi_breaks.size() - 1;
+  std::size_t ray_count = 0;
+  for (std::size_t k = 0; k < cell_count; ++k) ray_count += psi_breaks[k].points;
+  if (jobs_buffer.size() < ray_count) jobs_buffer.resize(ray_count), ends_buffer.resize(ray_count);
+  RayJob* const jobs = jobs_buffer.data();
+  RayEnds* const ends = ends_buffer.data();
+  std::size_t job_count = 0;
   photometry::TabularDistribution::CCell c_cell{0, 1.0, 0.0};  // empty: looked up first
-  for (std::size_t k = 0; k + 1 < psi_breaks.size(); ++k) {
+  for (std::size_t k = 0; k < cell_count; ++k) {
     const Break& a = psi_breaks[k];
     const Break& b = psi_breaks[k + 1];
     const double pa = a.psi, pw = b.psi - pa;
@@ -631,92 +673,117 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
     } else {
       wide_nodes(a.points, x_mid, 0.5 * pw, mc * inv_len, ms * inv_len, rays);
     }
-    // What the cell's two rays share: with F outside, the edges they enter and leave through (no
-    // vertex direction lies inside a cell), and the table's C cell (nor does a C plane).
     int near_edge = -1, far_edge = -1;
     const bool by_edges = psi.outside && psi.edges_of(x_mid, poly.n, near_edge, far_edge);
     const double c_mid = first_copy_at_or_above(x_mid + kPi, 0.0);
     // Consecutive cells mostly share a C cell: looked up again only when the middle leaves it.
     if (!(c_mid >= c_cell.c0 && c_mid < c_cell.c1)) c_cell = table.c_cell(c_mid);
-    // And the lines strictly inside each ray's range of table angles: a ray's ends cross a line
-    // only where that line's circle crosses the outline, a psi break, so both rays of a cell
-    // have the same (found for the first ray that reaches the opening, reused for the second).
-    // Where an end lies within rounding of a line, the other ray's end may lie a rounding past
-    // it: its end piece then spans a signed sliver of the neighbouring interval, the same
-    // integral up to rounding.
-    std::size_t k_lo = 0, k_hi = 0;
-    bool lines_known = false;
-    for (int node = 0; node < a.points; ++node) {
-      const double psi = rays[node].psi, cp = rays[node].c, sp = rays[node].s,
-                   weight = rays[node].weight;
-      // The ray's reach [rho_min, rho_max] and the sines and cosines of gamma' at its ends.
-      double rho_min, rho_max, cos_near, cos_far, sin_near, sin_far;
-      if (by_edges) {
-        // On an edge rho = cross / det, so tan(gamma') = rho / |sigma| = x / det with
-        // x = cross / |sigma|, and (sin, cos) = (|x|, |det|) / sqrt(x^2 + det^2): after the
-        // determinant one square root and one division, where going through tan takes a
-        // division, a square root and another division one after the other (the rays' ends are
-        // the rung's longest chain of dependent operations).
-        const double det_near = edge_det(poly, near_edge, cp, sp),
-                     det_far = edge_det(poly, far_edge, cp, sp);
-        rho_min = poly.cross[near_edge] / det_near;
-        rho_max = poly.cross[far_edge] / det_far;
-        if (!(rho_max > rho_min && rho_min >= 0.0)) continue;
-        const double x_near = poly.cross[near_edge] * inv_sigma,
-                     x_far = poly.cross[far_edge] * inv_sigma;
-        const double inv_near = 1.0 / std::sqrt(x_near * x_near + det_near * det_near),
-                     inv_far = 1.0 / std::sqrt(x_far * x_far + det_far * det_far);
-        cos_near = std::abs(det_near) * inv_near, sin_near = std::abs(x_near) * inv_near;
-        cos_far = std::abs(det_far) * inv_far, sin_far = std::abs(x_far) * inv_far;
-      } else {
-        if (!ray_interval(poly, cp, sp, inside, rho_min, rho_max)) continue;
-        const double t_near = rho_min * inv_sigma, t_far = rho_max * inv_sigma;
-        cos_near = 1.0 / std::sqrt(1.0 + t_near * t_near);
-        cos_far = 1.0 / std::sqrt(1.0 + t_far * t_far);
-        sin_near = t_near * cos_near, sin_far = t_far * cos_far;
-      }
-      const double tan_near = rho_min * inv_sigma, tan_far = rho_max * inv_sigma;
-      const double g_near = quadrant_angle(sin_near, cos_near),
-                   g_far = quadrant_angle(sin_far, cos_far);
-      const double t_lo = front ? g_near : kPi - g_far, t_hi = front ? g_far : kPi - g_near;
-      const double c = first_copy_at_or_above(psi + kPi, 0.0);
-      const photometry::TabularDistribution::CPosition cpos =
-          c >= c_cell.c0 && c <= c_cell.c1 ? table.c_position_in(c_cell, c) : table.c_position(c);
-      const double tan_lo = front ? tan_near : tan_far, tan_hi = front ? tan_far : tan_near;
-      // Lines strictly inside (t_lo, t_hi): [k_lo, k_hi).
-      if (!lines_known) {
-        k_lo = cells.first_above(t_lo), k_hi = cells.first_at_or_above(t_hi);
-        lines_known = true;
-      }
-      if (light_vector) {
-        Moments m;
-        if (k_lo >= k_hi) {
-          end_moments(t_lo, t_hi, tan_lo, tan_hi, cpos, m);
-        } else {
-          end_moments(t_lo, lines[k_lo], tan_lo, cells.line_tan[k_lo], cpos, m);
-          end_moments(lines[k_hi - 1], t_hi, cells.line_tan[k_hi - 1], tan_hi, cpos, m);
-          const TableGammaNode* base = cells.nodes.data();
-          add_moments(base + cells.first[k_lo], base + cells.first[k_hi - 1], cpos, m);
-        }
-        moments_sum +=
-            0.5 * pw * weight * Vec3(m.radial * cp, m.radial * sp, front ? m.axial : -m.axial);
-        continue;
-      }
-      double ray = 0.0;
-      if (closed_form) {
-        ray = closed_ray(t_lo, t_hi, sin_near, cos_near, sin_far, cos_far, k_lo, k_hi, cpos);
-      } else if (const Ray dir{n.x * cp + n.y * sp, cp * e.rotation[0] + sp * e.rotation[1]};
-                 k_lo >= k_hi) {
-        ray = end_cell(t_lo, t_hi, tan_lo, tan_hi, cpos, dir);
-      } else {
-        ray = end_cell(t_lo, lines[k_lo], tan_lo, cells.line_tan[k_lo], cpos, dir) +
-              end_cell(lines[k_hi - 1], t_hi, cells.line_tan[k_hi - 1], tan_hi, cpos, dir);
-        // The whole cells between: nodes precomputed per emitter (table_cells.h).
-        const TableGammaNode* base = cells.nodes.data();
-        ray += node_sum(base + cells.first[k_lo], base + cells.first[k_hi - 1], cpos, dir);
-      }
-      sum += 0.5 * pw * weight * ray;
+    for (int node = 0; node < a.points; ++node)
+      jobs[job_count++] = {rays[node].psi,
+                           rays[node].c,
+                           rays[node].s,
+                           0.5 * pw * rays[node].weight,
+                           c_cell,
+                           k,
+                           by_edges ? near_edge : -1,
+                           far_edge};
+  }
+  // 2. Each ray's reach [rho_min, rho_max] and the sines, cosines and table angles at its ends.
+  for (std::size_t r = 0; r < ray_count; ++r) {
+    const RayJob& job = jobs[r];
+    RayEnds& end = ends[r];
+    const double cp = job.c, sp = job.s;
+    double rho_min, rho_max, cos_near, cos_far, sin_near, sin_far;
+    end.ok = false;
+    if (job.near_edge >= 0) {
+      // On an edge rho = cross / det, so tan(gamma') = rho / |sigma| = x / det with
+      // x = cross / |sigma|, and (sin, cos) = (|x|, |det|) / sqrt(x^2 + det^2): after the
+      // determinant one square root and one division, where going through tan takes a
+      // division, a square root and another division one after the other.
+      const int near_edge = job.near_edge, far_edge = job.far_edge;
+      const double det_near = edge_det(poly, near_edge, cp, sp),
+                   det_far = edge_det(poly, far_edge, cp, sp);
+      rho_min = poly.cross[near_edge] / det_near;
+      rho_max = poly.cross[far_edge] / det_far;
+      if (!(rho_max > rho_min && rho_min >= 0.0)) continue;
+      const double x_near = poly.cross[near_edge] * inv_sigma,
+                   x_far = poly.cross[far_edge] * inv_sigma;
+      const double inv_near = 1.0 / std::sqrt(x_near * x_near + det_near * det_near),
+                   inv_far = 1.0 / std::sqrt(x_far * x_far + det_far * det_far);
+      cos_near = std::abs(det_near) * inv_near, sin_near = std::abs(x_near) * inv_near;
+      cos_far = std::abs(det_far) * inv_far, sin_far = std::abs(x_far) * inv_far;
+    } else {
+      if (!ray_interval(poly, cp, sp, inside, rho_min, rho_max)) continue;
+      const double t_near = rho_min * inv_sigma, t_far = rho_max * inv_sigma;
+      cos_near = 1.0 / std::sqrt(1.0 + t_near * t_near);
+      cos_far = 1.0 / std::sqrt(1.0 + t_far * t_far);
+      sin_near = t_near * cos_near, sin_far = t_far * cos_far;
     }
+    end = {true,
+           sin_near,
+           cos_near,
+           sin_far,
+           cos_far,
+           rho_min * inv_sigma,
+           rho_max * inv_sigma,
+           quadrant_angle(sin_near, cos_near),
+           quadrant_angle(sin_far, cos_far)};
+  }
+  // 3. The integral along each ray that reaches the opening, added in the rays' order.
+  // The lines strictly inside each ray's range of table angles: a ray's ends cross a line only
+  // where that line's circle crosses the outline, a psi break, so the rays of a cell have the
+  // same (found for the first ray that reaches the opening, reused for the others). Where an end
+  // lies within rounding of a line, another ray's end may lie a rounding past it: its end piece
+  // then spans a signed sliver of the neighbouring interval, the same integral up to rounding.
+  Vec3 moments_sum(0.0);
+  std::size_t k_lo = 0, k_hi = 0, lines_cell = std::numeric_limits<std::size_t>::max();
+  for (std::size_t r = 0; r < ray_count; ++r) {
+    const RayEnds& end = ends[r];
+    if (!end.ok) continue;
+    const RayJob& job = jobs[r];
+    const double cp = job.c, sp = job.s;
+    const double sin_near = end.sin_near, cos_near = end.cos_near, sin_far = end.sin_far,
+                 cos_far = end.cos_far;
+    const double t_lo = front ? end.g_near : kPi - end.g_far,
+                 t_hi = front ? end.g_far : kPi - end.g_near;
+    const double c = first_copy_at_or_above(job.psi + kPi, 0.0);
+    const photometry::TabularDistribution::CCell& cc = job.c_cell;
+    const photometry::TabularDistribution::CPosition cpos =
+        c >= cc.c0 && c <= cc.c1 ? table.c_position_in(cc, c) : table.c_position(c);
+    const double tan_lo = front ? end.tan_near : end.tan_far,
+                 tan_hi = front ? end.tan_far : end.tan_near;
+    // Lines strictly inside (t_lo, t_hi): [k_lo, k_hi).
+    if (job.cell != lines_cell) {
+      k_lo = cells.first_above(t_lo), k_hi = cells.first_at_or_above(t_hi);
+      lines_cell = job.cell;
+    }
+    if (light_vector) {
+      Moments m;
+      if (k_lo >= k_hi) {
+        end_moments(t_lo, t_hi, tan_lo, tan_hi, cpos, m);
+      } else {
+        end_moments(t_lo, lines[k_lo], tan_lo, cells.line_tan[k_lo], cpos, m);
+        end_moments(lines[k_hi - 1], t_hi, cells.line_tan[k_hi - 1], tan_hi, cpos, m);
+        const TableGammaNode* base = cells.nodes.data();
+        add_moments(base + cells.first[k_lo], base + cells.first[k_hi - 1], cpos, m);
+      }
+      moments_sum += job.scale * Vec3(m.radial * cp, m.radial * sp, front ? m.axial : -m.axial);
+      continue;
+    }
+    double ray = 0.0;
+    if (closed_form) {
+      ray = closed_ray(t_lo, t_hi, sin_near, cos_near, sin_far, cos_far, k_lo, k_hi, cpos);
+    } else if (const Ray dir{n.x * cp + n.y * sp, cp * e.rotation[0] + sp * e.rotation[1]};
+               k_lo >= k_hi) {
+      ray = end_cell(t_lo, t_hi, tan_lo, tan_hi, cpos, dir);
+    } else {
+      ray = end_cell(t_lo, lines[k_lo], tan_lo, cells.line_tan[k_lo], cpos, dir) +
+            end_cell(lines[k_hi - 1], t_hi, cells.line_tan[k_hi - 1], tan_hi, cpos, dir);
+      // The whole cells between: nodes precomputed per emitter (table_cells.h).
+      const TableGammaNode* base = cells.nodes.data();
+      ray += node_sum(base + cells.first[k_lo], base + cells.first[k_hi - 1], cpos, dir);
+    }
+    sum += job.scale * ray;
   }
   if (light_vector) *light_vector = (view.scale / e.area_m2) * moments_sum;
   lux = sanitize_illuminance(view.scale * sum / e.area_m2);
