@@ -165,11 +165,16 @@ void add_circle_crossings(const Polygon2& p, double r, double lo, double hi,
     const double disc = qb * qb - qa * qc;
     if (!(disc > 0.0)) continue;
     const double root = std::sqrt(disc);
-    for (double u : {(-qb - root) / qa, (-qb + root) / qa})
+    // u = numerator / qa (qa > 0): a numerator outside (0, qa) puts u outside (0, 1), so only
+    // the others are divided (most roots miss the edge) and tested as before.
+    for (double numerator : {-qb - root, -qb + root}) {
+      if (!(numerator > 0.0 && numerator < qa)) continue;
+      const double u = numerator / qa;
       if (u > 0.0 && u < 1.0) {
         const glm::dvec2 x = a + u * e, dir = x * inv_r;
         add_periodic_break(unit_direction_angle(dir.y, dir.x), dir.x, dir.y, lo, hi, out);
       }
+    }
   }
 }
 
