@@ -4,14 +4,16 @@
 // transparent huge pages requested (madvise), and elements are default-initialised (no zeroing:
 // the owners write every entry). A page fault costs about 11 us on the virtual machines this runs
 // on, so a megabyte in 4 kB pages costs 2.7 ms the first time it is touched, in huge pages 0.1 to
-// 0.2 ms (docs/performance.md, "Fresh memory in huge pages"); a block of 512 KiB rounded up to
-// one huge page still costs less than its 128 small ones. Smaller blocks come from malloc as
-// usual. Without transparent huge pages (or with them off) the advice does nothing and the pages
-// are small.
+// 0.2 ms (docs/performance.md, "6 December"); a block of 512 KiB rounded up to one huge page
+// still costs less than its 128 small ones. Smaller blocks come from malloc as usual, and so does
+// every block where the system offers no transparent huge pages (then a mapping of its own would
+// fault its small pages in afresh each time, where malloc's arenas reuse what was freed).
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <new>
+#include <string_view>
 #include <utility>
 
 #if defined(__linux__)
@@ -27,12 +29,36 @@ inline std::size_t huge_page_rounded(std::size_t bytes) {
   return (bytes + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes;
 }
 
+// Whether the system gives transparent huge pages to a mapping that asks (madvise): the
+// setting in /sys/kernel/mm/transparent_hugepage/enabled is "[always]" or "[madvise]". Read once.
+inline bool huge_pages_on_request() {
+#if defined(__linux__)
+  static const bool on = [] {
+    std::FILE* f = std::fopen("/sys/kernel/mm/transparent_hugepage/enabled", "r");
+    if (!f) return false;
+    char text[128] = {};
+    const std::size_t n = std::fread(text, 1, sizeof text - 1, f);
+    std::fclose(f);
+    const std::string_view setting(text, n);
+    return setting.find("[always]") != std::string_view::npos ||
+           setting.find("[madvise]") != std::string_view::npos;
+  }();
+  return on;
+#else
+  return false;
+#endif
+}
+
+inline bool mapped_on_its_own(std::size_t bytes) {
+  return bytes >= kHugePageMinBytes && huge_pages_on_request();
+}
+
 // Blocks of kHugePageMinBytes or more are mapped on their own (mmap, 2 MiB-aligned, released by
 // munmap when freed), not taken from malloc's arenas: an arena hands back memory it has touched
 // before in 4 kB pages, or grows in them. Throws std::bad_alloc. Released by
 // release_huge_pages with the same size.
 inline void* allocate_huge_pages(std::size_t bytes) {
-  if (bytes < kHugePageMinBytes) {
+  if (!mapped_on_its_own(bytes)) {
     if (void* p = std::malloc(bytes == 0 ? 1 : bytes)) return p;
     throw std::bad_alloc();
   }
@@ -58,7 +84,7 @@ inline void* allocate_huge_pages(std::size_t bytes) {
 
 inline void release_huge_pages(void* p, std::size_t bytes) noexcept {
 #if defined(__linux__)
-  if (bytes >= kHugePageMinBytes) {
+  if (mapped_on_its_own(bytes)) {
     munmap(p, huge_page_rounded(bytes));
     return;
   }
