@@ -149,7 +149,7 @@ struct Break {
 inline void add_periodic_break(double x, double c, double s, double lo, double hi,
                                std::vector<Break>& out) {
   for (x = first_copy_at_or_above(x, lo); x < hi; x += kTwoPi)
-    if (x > lo) out.push_back({x, c, s, 2});
+    if (x > lo) out.push_back({x, c, s});
 }
 
 // Appends the directions (as breaks inside (lo, hi)) where the circle of radius r around the
@@ -198,16 +198,17 @@ struct PsiCells {
 };
 
 // True when neither edge `near` nor `far` (-1: none) of the polygon is parallel to a ray at angles
-// within `margin` (rad) of the gap [a, z] (directions given): rho(psi) = cross / det(psi) on the
-// edge a ray enters or leaves through has its poles where det vanishes, and its complex poles lie
-// no nearer (tan(gamma') = x / det: at det = +-i x). det of an edge is |e| sin(psi - psi_e): over a
-// range narrower than a half turn it vanishes iff its sign changes between the range's ends.
+// within one part's width of the gap [a, z] (directions given), the gap cut into `parts` equal
+// parts: rho(psi) = cross / det(psi) on the edge a ray enters or leaves through has its poles
+// where det vanishes, and its complex poles lie no nearer (tan(gamma') = x / det: at det = +-i x).
+// det of an edge is |e| sin(psi - psi_e): over a range narrower than a half turn it vanishes iff
+// its sign changes between the range's ends.
 bool far_from_parallel(const Polygon2& p, int near, int far, const Break& a, const Break& z,
-                       double margin) {
-  const double width = z.psi - a.psi;
+                       int parts) {
+  const double width = z.psi - a.psi, margin = width / parts;
   if (!(width + 2.0 * margin < kPi)) return false;
   double c0, s0, c1, s1;  // a turned back by margin, z turned on by margin
-  if (margin == width) {
+  if (parts == 1) {
     // Without trigonometry: a turned back by the gap is z mirrored in a, z turned on is a
     // mirrored in z (most wide gaps get one rule).
     const double dot2 = 2.0 * (a.c * z.c + a.s * z.s);
@@ -268,9 +269,7 @@ void finish_breaks(const Polygon2& poly, const PsiCells& psi, std::vector<Break>
         far = exit_edge(poly, mc, ms);
         edges_known = far >= 0;
       }
-      const bool rule = edges_known &&
-                        far_from_parallel(poly, near, far, a, z,
-                                          by_rule == 1 ? z.psi - a.psi : (z.psi - a.psi) / by_rule);
+      const bool rule = edges_known && far_from_parallel(poly, near, far, a, z, by_rule);
       const int parts = rule ? by_rule : pieces;
       const int points = rule ? (pieces + parts - 1) / parts + 1 : 2;
       out.back().points = points;
@@ -296,7 +295,8 @@ struct CellNode {
 
 // sin and cos of |delta| <= kWideSeriesMax by their Taylor series to delta^13 and delta^14: the
 // first omitted terms, delta^15 / 15! and delta^16 / 16!, are below 1e-16 of the kept ones there.
-// Wider: the library.
+// Wider: the library. (gauss_pair, table_cells.h, stops the same series at delta^7 and delta^8
+// for its offsets of at most 0.05 rad, the pairs' hot path; a wide gap's offsets reach 0.5 rad.)
 constexpr double kWideSeriesMax = 0.55;
 inline void sin_cos_of_offset(double delta, double& s, double& c) {
   if (!(std::abs(delta) <= kWideSeriesMax)) {
