@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include <tbb/task_group.h>
+
 #include "app/progress.h"
 #include "calc/emergency_scene.h"
 #include "calc/pipeline.h"
@@ -56,6 +58,13 @@ std::vector<std::filesystem::path> input_files(const calc::Scene& scene) {
 RunOutcome run_project(const std::filesystem::path& project_file,
                        const std::filesystem::path& out_dir, const RunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
+  {
+    // The worker threads are started now, while the project loads on this one, rather than by
+    // the first parallel loop, which would otherwise run alone on this thread until they are up.
+    tbb::task_group start_workers;
+    start_workers.run([] {});
+    start_workers.wait();
+  }
   project::Project loaded = project::load_project(project_file);
   apply_lighting_scene(loaded, options.scene);
   calc::Scene& scene = loaded.scene;

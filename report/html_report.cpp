@@ -198,19 +198,23 @@ std::string luminaire_sections(
   return h;
 }
 
-// One surface: its map with what the picture shows, the statistics, its requirement rows, and
-// for small grids the values themselves.
-std::string surface_section(const calc::SurfaceResult& s, const calc::Scene* scene,
-                            const ReportInput& in) {
+// One surface, appended to `h`: its map with what the picture shows, the statistics, its
+// requirement rows, and for small grids the values themselves. The map's image goes to `put`
+// as it is encoded, after the text before it.
+void surface_section(const calc::SurfaceResult& s, const calc::Scene* scene, const ReportInput& in,
+                     std::string& h, const TextSink& put) {
   const auto& g = s.grid;
   const bool grid = g.kind == geometry::SurfaceGrid::Kind::grid;
-  std::string h = "<div class=\"surface\" data-surface=\"" + html_escape(g.name) + "\"><h3>" +
-                  html_escape(g.name) + "</h3>\n";
+  h += "<div class=\"surface\" data-surface=\"" + html_escape(g.name) + "\"><h3>" +
+       html_escape(g.name) + "</h3>\n";
   const auto png = in.png.find(g.name);
   if (png != in.png.end()) {
     h += "<img alt=\"false-colour illuminance of " + html_escape(g.name) +
-         "\" src=\"data:image/png;base64," + base64(png->second) + "\">\n<p class=\"caption\">" +
-         html_escape(map_frame(g, scene).description) +
+         "\" src=\"data:image/png;base64,";
+    put(h);
+    h.clear();
+    base64_to(png->second, put);
+    h += "\">\n<p class=\"caption\">" + html_escape(map_frame(g, scene).description) +
          " Colours: maintained illuminance in lx (legend on the right), smooth between the grid "
          "points; white and "
          "black lines: isolux lines at the legend's values, the thick ones at a required value "
@@ -281,7 +285,7 @@ std::string surface_section(const calc::SurfaceResult& s, const calc::Scene* sce
     }
     h += "</table>\n";
   }
-  return h + "</div>\n";
+  h += "</div>\n";
 }
 
 // How the numbers were obtained, in words a client reads; the technical plan is in the appendix.
@@ -338,29 +342,43 @@ std::string method_section(const calc::Results& r, const calc::Scene* scene) {
 std::string format_lux_value(double lx) { return format_double("%.1f", lx); }
 std::string format_ratio_value(double ratio) { return format_double("%.3f", ratio); }
 
-std::string base64(const std::string& bytes) {
+void base64_to(std::string_view bytes, const TextSink& put) {
   static constexpr char kAlphabet[] =
       "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  // Sized once and written in place: a report embeds a megabyte of images.
-  std::string out((bytes.size() + 2) / 3 * 4, '=');
-  char* o = out.data();
+  // A few kilobytes at a time through a buffer on the stack: a report embeds a megabyte of
+  // images, which as one string would be fresh memory (page faults) and a copy into the page.
+  constexpr std::size_t kQuads = 4096;
+  char buf[4 * kQuads];
   const auto* in = reinterpret_cast<const unsigned char*>(bytes.data());
-  size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3, o += 4) {
-    const unsigned n = (unsigned{in[i]} << 16) | (unsigned{in[i + 1]} << 8) | in[i + 2];
-    o[0] = kAlphabet[(n >> 18) & 63];
-    o[1] = kAlphabet[(n >> 12) & 63];
-    o[2] = kAlphabet[(n >> 6) & 63];
-    o[3] = kAlphabet[n & 63];
+  const std::size_t whole = bytes.size() / 3;  // complete 3-byte groups
+  for (std::size_t g0 = 0; g0 < whole; g0 += kQuads) {
+    const std::size_t g1 = std::min(whole, g0 + kQuads);
+    char* o = buf;
+    for (std::size_t g = g0; g < g1; ++g, o += 4) {
+      const unsigned char* b = in + 3 * g;
+      const unsigned n = (unsigned{b[0]} << 16) | (unsigned{b[1]} << 8) | b[2];
+      o[0] = kAlphabet[(n >> 18) & 63];
+      o[1] = kAlphabet[(n >> 12) & 63];
+      o[2] = kAlphabet[(n >> 6) & 63];
+      o[3] = kAlphabet[n & 63];
+    }
+    put(std::string_view(buf, static_cast<std::size_t>(o - buf)));
   }
-  // One or two bytes left: two or three characters, the rest of the quad stays '='.
+  // One or two bytes left: two or three characters, padded with '=' to a quad.
+  const std::size_t i = 3 * whole;
   if (i < bytes.size()) {
-    const unsigned n =
-        (unsigned{in[i]} << 16) | (i + 1 < bytes.size() ? unsigned{in[i + 1]} << 8 : 0u);
-    o[0] = kAlphabet[(n >> 18) & 63];
-    o[1] = kAlphabet[(n >> 12) & 63];
-    if (i + 1 < bytes.size()) o[2] = kAlphabet[(n >> 6) & 63];
+    const bool two = i + 1 < bytes.size();
+    const unsigned n = (unsigned{in[i]} << 16) | (two ? unsigned{in[i + 1]} << 8 : 0u);
+    const char tail[4] = {kAlphabet[(n >> 18) & 63], kAlphabet[(n >> 12) & 63],
+                          two ? kAlphabet[(n >> 6) & 63] : '=', '='};
+    put(std::string_view(tail, 4));
   }
+}
+
+std::string base64(std::string_view bytes) {
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  base64_to(bytes, [&](std::string_view s) { out += s; });
   return out;
 }
 
@@ -371,6 +389,12 @@ std::string luminaire_sections_html(
 }
 
 std::string html_report(const ReportInput& in) {
+  std::string page;
+  write_html_report(in, [&](std::string_view s) { page += s; });
+  return page;
+}
+
+void write_html_report(const ReportInput& in, const TextSink& put) {
   const calc::Results& r = *in.results;
   const calc::Scene* scene = in.scene;
   const std::string project = r.project.empty() ? std::string("Lighting project") : r.project;
@@ -531,7 +555,7 @@ std::string html_report(const ReportInput& in) {
 
   // --- surfaces -------------------------------------------------------------------------------
   h += "<h2>Calculation surfaces</h2>\n";
-  for (const auto& s : r.surfaces) h += surface_section(s, scene, in);
+  for (const auto& s : r.surfaces) surface_section(s, scene, in, h, put);
 
   // --- method ---------------------------------------------------------------------------------
   h += method_section(r, scene);
@@ -589,7 +613,7 @@ std::string html_report(const ReportInput& in) {
   h += "</table>\n";
   h += "<p class=\"muted\">Generated by luxgrid " + html_escape(in.version) +
        ".</p>\n</body></html>\n";
-  return h;
+  put(h);
 }
 
 }  // namespace luxgrid::report

@@ -2,8 +2,10 @@
 // report.html: the one self-contained page a lighting designer hands over. Images are inline
 // (PNG as base64 data URIs, plan views and polar diagrams as inline SVG), there is no script and
 // no external resource, and a print style sheet lays it out on A4.
+#include <functional>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "calc/results.h"
@@ -27,6 +29,13 @@ struct ReportInput {
   std::string luminaires_html;
 };
 
+// Where the page's text goes, piece by piece and in order.
+using TextSink = std::function<void(std::string_view)>;
+
+// The page, handed to `put` as it is made: the images' base64 a few kilobytes at a time, so
+// that a report with a megabyte of images is never a megabyte of text in memory.
+void write_html_report(const ReportInput& in, const TextSink& put);
+// The same page as one string.
 std::string html_report(const ReportInput& in);
 
 // The report's luminaire types (product data, flux, power, LOR, CIE 190 UGR, polar diagrams) and
@@ -37,8 +46,9 @@ std::string luminaire_sections_html(
     const calc::Scene& scene,
     const std::map<const photometry::IntensityDistribution*, double>& known_flux_lm = {});
 
-// RFC 4648 base64 of `bytes`.
-std::string base64(const std::string& bytes);
+// RFC 4648 base64 of `bytes`: to `put` in pieces, or as one string.
+void base64_to(std::string_view bytes, const TextSink& put);
+std::string base64(std::string_view bytes);
 
 // The numbers as the report prints them (tests compare the page with results.json through these).
 std::string format_lux_value(double lx);       // "%.1f"

@@ -6,7 +6,10 @@
 #include <cstdlib>
 #include <ctime>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+#include <tbb/partitioner.h>
 
 #include "calc/statistics.h"
 #include "report/csv.h"
@@ -78,8 +81,11 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   // task per CSV or array and one per surface's plots, which draws its two or three plots in
   // parallel again after working out once what each pixel of its map shows (map_samples). The
   // report's luminaire sections (polar diagrams, CIE 190 tables) are a task of their own, the
-  // first one, so what is left after the plots is assembling text. The warnings are gathered in
-  // surface order afterwards, so the output does not depend on the schedule.
+  // first one, so what is left after the plots is assembling text. The longest tasks are taken
+  // first and one at a time (the luminaires, the plots, then the CSVs and arrays, which take a
+  // fraction of a plot's time), so the last task to finish is a short one and no thread waits
+  // long for another at the end. The warnings are gathered in surface order afterwards, so the
+  // output does not depend on the schedule.
   struct Job {
     std::size_t surface;
     enum class What { luminaires_html, csv, npy, plots } what;
@@ -89,9 +95,10 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   std::vector<Job> jobs;
   if (options.report && options.scene && !options.scene->photometry.empty())
     jobs.push_back({0, Job::What::luminaires_html, {}, {}});
-  for (std::size_t i = 0; i < results.surfaces.size(); ++i) {
+  for (std::size_t i = 0; i < results.surfaces.size(); ++i)
     if (results.surfaces[i].grid.kind == geometry::SurfaceGrid::Kind::grid)
       jobs.push_back({i, Job::What::plots, {}, {}});
+  for (std::size_t i = 0; i < results.surfaces.size(); ++i) {
     jobs.push_back({i, Job::What::csv, {}, {}});
     if (options.arrays_npy) jobs.push_back({i, Job::What::npy, {}, {}});
   }
@@ -107,8 +114,7 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
     p.stats = calc::compute_statistics(p.E, s.grid.active);
     return p;
   };
-  tbb::parallel_for(std::size_t{0}, jobs.size(), [&](std::size_t n) {
-    Job& job = jobs[n];
+  const auto run_job = [&](Job& job) {
     if (job.what == Job::What::luminaires_html) {
       report.luminaires_html =
           luminaire_sections_html(*options.scene, results.plan.indirect_decision.luminous_flux_lm);
@@ -144,7 +150,13 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
         return;
       }
     }
-  });
+  };
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, jobs.size(), 1),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t n = range.begin(); n != range.end(); ++n) run_job(jobs[n]);
+      },
+      tbb::simple_partitioner());
   for (Job& job : jobs) {
     for (const std::string& w : job.warnings)
       if (!w.empty() && std::find(warnings.begin(), warnings.end(), w) == warnings.end())
@@ -152,41 +164,53 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
     if (job.what == Job::What::plots && options.report)
       report.png[results.surfaces[job.surface].grid.name] = std::move(job.png);
   }
-  if (options.report) write_text_file(folder.file(kReportFile), html_report(report));
+  // report.html and results.json side by side: neither reads the other.
+  const auto write_html = [&] {
+    if (options.report)
+      write_file_streamed(folder.file(kReportFile), [&](std::ostream& out) {
+        write_html_report(report, [&](std::string_view s) {
+          out.write(s.data(), static_cast<std::streamsize>(s.size()));
+        });
+      });
+  };
+  const auto write_json = [&] {
+    // The scene's warnings (legal but suspicious input) and the outputs', as the terminal shows
+    // them.
+    std::vector<std::string> all_warnings =
+        options.scene ? options.scene->warnings : std::vector<std::string>{};
+    all_warnings.insert(all_warnings.end(), warnings.begin(), warnings.end());
+    ResultsOrigin origin;
+    origin.version = options.version;
+    if (options.scene) origin.project_sha256 = options.scene->project_sha256;
+    // Without the point arrays: write_results_json streams them from `results`.
+    nlohmann::json j = results_outline_json(results, all_warnings, origin);
+    if (options.scene) {
+      // The maintenance factor every E includes, and its parts when the project gave them [CIE97].
+      const auto& settings = options.scene->settings;
+      nlohmann::json m = {{"factor", settings.maintenance_factor}};
+      if (const auto& p = settings.maintenance_parts) {
+        m["LLMF"] = p->LLMF;
+        m["LSF"] = p->LSF;
+        m["LMF"] = p->LMF;
+        m["RSMF"] = p->RSMF;
+      }
+      j["maintenance"] = std::move(m);
+    }
+    if (!options.checks.empty()) {
+      // Per surface, each requirement with its verdict and margin; at the top, the overall verdict.
+      for (auto& s : j["surfaces"]) {
+        for (const auto& c : options.checks) {
+          if (c.surface == s["name"]) s["requirements"].push_back(check_to_json(c));
+        }
+      }
+      j["requirements_met"] = all_met(options.checks);
+    }
+    write_file_streamed(folder.file(kResultsFile),
+                        [&](std::ostream& out) { write_results_json(out, j, results); });
+  };
+  tbb::parallel_invoke(write_html, write_json);
   results.timing_s.emplace_back(
       "report", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  // The scene's warnings (legal but suspicious input) and the outputs', as the terminal shows them.
-  std::vector<std::string> all_warnings =
-      options.scene ? options.scene->warnings : std::vector<std::string>{};
-  all_warnings.insert(all_warnings.end(), warnings.begin(), warnings.end());
-  ResultsOrigin origin;
-  origin.version = options.version;
-  if (options.scene) origin.project_sha256 = options.scene->project_sha256;
-  // Without the point arrays: write_results_json streams them from `results`.
-  nlohmann::json j = results_outline_json(results, all_warnings, origin);
-  if (options.scene) {
-    // The maintenance factor every E includes, and its parts when the project gave them [CIE97].
-    const auto& settings = options.scene->settings;
-    nlohmann::json m = {{"factor", settings.maintenance_factor}};
-    if (const auto& p = settings.maintenance_parts) {
-      m["LLMF"] = p->LLMF;
-      m["LSF"] = p->LSF;
-      m["LMF"] = p->LMF;
-      m["RSMF"] = p->RSMF;
-    }
-    j["maintenance"] = std::move(m);
-  }
-  if (!options.checks.empty()) {
-    // Per surface, each requirement with its verdict and margin; at the top, the overall verdict.
-    for (auto& s : j["surfaces"]) {
-      for (const auto& c : options.checks) {
-        if (c.surface == s["name"]) s["requirements"].push_back(check_to_json(c));
-      }
-    }
-    j["requirements_met"] = all_met(options.checks);
-  }
-  write_file_streamed(folder.file(kResultsFile),
-                      [&](std::ostream& out) { write_results_json(out, j, results); });
   write_text_file(folder.file(kTimingFile), timing_to_json(results).dump(1) + "\n");
   return warnings;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <thread>
@@ -493,20 +494,25 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
   for (int i = 0; i < n; ++i)
     if (class_measure[i] > 0.0f) todo.push_back(i);
   std::vector<Probe::Rungs> rungs(n);
-  // Directions in parallel (the nearfield library has no TBB; the samples are independent).
+  // Directions in parallel (the nearfield library has no TBB; the samples are independent),
+  // the calling thread one of the workers. Each takes the next direction not yet taken: their
+  // costs differ by orders of magnitude (a direction whose far field holds at the first rung,
+  // one that climbs the whole ladder), so a fixed share per thread left one thread working
+  // alone for much of the map.
   if (threads == 0) threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
   threads = std::max(1u, std::min(threads, static_cast<unsigned>(todo.size())));
+  std::atomic<std::size_t> next{0};
+  const auto work = [&] {
+    for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < todo.size();) {
+      const int i = todo[k];
+      rungs[i] =
+          probe.distances_over_D(direction_of_sample(i / kCSamples, i % kCSamples),
+                                 last_rung_for(class_measure[i]), fixed_last_for(class_fixed[i]));
+    }
+  };
   std::vector<std::thread> pool;
-  for (unsigned t = 0; t < threads; ++t) {
-    pool.emplace_back([&, t] {
-      for (std::size_t k = t; k < todo.size(); k += threads) {
-        const int i = todo[k];
-        rungs[i] =
-            probe.distances_over_D(direction_of_sample(i / kCSamples, i % kCSamples),
-                                   last_rung_for(class_measure[i]), fixed_last_for(class_fixed[i]));
-      }
-    });
-  }
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
   for (auto& th : pool) th.join();
   bound->samples_measured = static_cast<int>(todo.size());
   std::vector<Probe::Measured> measured(n);

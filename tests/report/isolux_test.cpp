@@ -130,6 +130,38 @@ TEST(Html, Base64MatchesRfc4648Vectors) {
   EXPECT_EQ(html_escape("<a&\"b\">"), "&lt;a&amp;&quot;b&quot;&gt;");
 }
 
+// The page's images are encoded a few kilobytes at a time (base64_to, 12 288 bytes a piece):
+// pieces that end inside an image and a last group of one or two bytes must give the same text
+// as encoding it whole.
+// The reference is RFC 4648's definition, six bits at a time from a bit stream.
+TEST(Html, Base64InPiecesMatchesTheBitStreamDefinition) {
+  static constexpr char kAlphabet[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  for (const std::size_t size : {std::size_t{12287}, std::size_t{12288}, std::size_t{12289},
+                                 std::size_t{50000}, std::size_t{50001}}) {
+    std::string bytes(size, '\0');
+    std::uint32_t state = 12345;
+    for (char& c : bytes) c = static_cast<char>((state = state * 1103515245u + 12345u) >> 24);
+    std::string expected;
+    std::uint32_t bits = 0;
+    int count = 0;
+    for (const char c : bytes) {
+      bits = (bits << 8) | static_cast<unsigned char>(c), count += 8;
+      for (; count >= 6; count -= 6) expected += kAlphabet[(bits >> (count - 6)) & 63];
+    }
+    if (count > 0) expected += kAlphabet[(bits << (6 - count)) & 63];
+    while (expected.size() % 4) expected += '=';
+    std::string streamed;
+    int pieces = 0;
+    base64_to(bytes, [&](std::string_view piece) { streamed += piece, ++pieces; });
+    EXPECT_EQ(streamed, expected) << size << " bytes";
+    EXPECT_EQ(base64(bytes), expected) << size << " bytes";
+    if (size > 12288) {
+      EXPECT_GT(pieces, 1) << size << " bytes: encoded in one piece";
+    }
+  }
+}
+
 TEST(Html, ReportIsSelfContainedAndPrintsTheStatistics) {
   calc::Results r;
   r.project = "demo <1>";
@@ -144,6 +176,10 @@ TEST(Html, ReportIsSelfContainedAndPrintsTheStatistics) {
   in.version = "0.1.0";
   in.png["wp"] = "PNGDATA";
   const std::string h = html_report(in);
+  // The page handed out in pieces is the same page.
+  std::string pieces;
+  write_html_report(in, [&](std::string_view piece) { pieces += piece; });
+  EXPECT_EQ(pieces, h);
   EXPECT_NE(h.find("demo &lt;1&gt;"), std::string::npos);
   EXPECT_NE(h.find("data-stat=\"Eavg\">500.0 lx<"), std::string::npos);
   EXPECT_NE(h.find("data-stat=\"U0\">0.800<"), std::string::npos);
