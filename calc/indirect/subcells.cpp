@@ -1,5 +1,7 @@
 #include "calc/indirect/subcells.h"
 
+#include <tbb/parallel_for.h>
+
 namespace luxgrid::calc::indirect {
 
 SubcellCorners subcell_corners(const Patch& p, int a, int b) {
@@ -13,32 +15,39 @@ SubcellCorners subcell_corners(const Patch& p, int a, int b) {
 CellMesh cell_mesh(const PatchMesh& mesh, const std::vector<char>& refine) {
   CellMesh out;
   out.mesh.patch_size_m = mesh.patch_size_m / kSubcellsPerSide;
-  // Reserved at once: thousands of cells grown by doubling would touch twice their memory for
-  // the first time, a page fault a page (docs/performance.md, "Memory touched for the first time").
-  const auto refined = [&](size_t i) { return refine[i] && mesh.patches[i].has_quarters; };
-  size_t cells = 0;
+  constexpr size_t kCells = kSubcellsPerSide * kSubcellsPerSide;
+  // The refined patches in mesh order (rooms are consecutive in the mesh, so their cells are
+  // too), then their cells made in parallel, each patch's kCells at their place: a cell's corner
+  // list is an allocation of its own, thousands of them touching fresh memory (a page fault a
+  // page, docs/performance.md, "Memory touched for the first time"), which one thread alone took
+  // milliseconds for.
+  std::vector<size_t> refined;
   for (size_t i = 0; i < mesh.patches.size(); ++i)
-    cells += refined(i) ? kSubcellsPerSide * kSubcellsPerSide : 0;
-  out.mesh.patches.reserve(cells);
-  out.patch.reserve(cells);
+    if (refine[i] && mesh.patches[i].has_quarters) refined.push_back(i);
+  out.mesh.patches.resize(refined.size() * kCells);
+  out.patch.resize(refined.size() * kCells);
+  tbb::parallel_for(size_t(0), refined.size(), [&](size_t k) {
+    const size_t i = refined[k];
+    const Patch& p = mesh.patches[i];
+    for (int a = 0; a < kSubcellsPerSide; ++a)
+      for (int b = 0; b < kSubcellsPerSide; ++b) {
+        const size_t at = k * kCells + static_cast<size_t>(a * kSubcellsPerSide + b);
+        Patch& c = out.mesh.patches[at];
+        c = p;
+        const SubcellCorners corners = subcell_corners(p, a, b);
+        c.polygon.assign(corners.begin(), corners.end());
+        c.centroid = 0.25 * (corners[0] + corners[1] + corners[2] + corners[3]);
+        c.area_m2 = p.area_m2 / (kSubcellsPerSide * kSubcellsPerSide);
+        c.diameter_m = p.diameter_m / kSubcellsPerSide;
+        for (int q = 0; q < 4; ++q) c.quarter_centroid[q] = 0.5 * (corners[q] + c.centroid);
+        out.patch[at] = i;
+      }
+  });
+  // Room r's cells: those of its refined patches, [room_begin[r], room_begin[r + 1]).
+  size_t k = 0;
   for (size_t r = 0; r + 1 < mesh.room_begin.size(); ++r) {
-    out.mesh.room_begin.push_back(out.mesh.patches.size());
-    for (size_t i = mesh.room_begin[r]; i < mesh.room_begin[r + 1]; ++i) {
-      if (!refined(i)) continue;
-      const Patch& p = mesh.patches[i];
-      for (int a = 0; a < kSubcellsPerSide; ++a)
-        for (int b = 0; b < kSubcellsPerSide; ++b) {
-          Patch c = p;
-          const SubcellCorners corners = subcell_corners(p, a, b);
-          c.polygon.assign(corners.begin(), corners.end());
-          c.centroid = 0.25 * (corners[0] + corners[1] + corners[2] + corners[3]);
-          c.area_m2 = p.area_m2 / (kSubcellsPerSide * kSubcellsPerSide);
-          c.diameter_m = p.diameter_m / kSubcellsPerSide;
-          for (int q = 0; q < 4; ++q) c.quarter_centroid[q] = 0.5 * (corners[q] + c.centroid);
-          out.mesh.patches.push_back(std::move(c));
-          out.patch.push_back(i);
-        }
-    }
+    while (k < refined.size() && refined[k] < mesh.room_begin[r]) ++k;
+    out.mesh.room_begin.push_back(k * kCells);
   }
   out.mesh.room_begin.push_back(out.mesh.patches.size());
   return out;
