@@ -23,12 +23,14 @@ namespace {
 constexpr std::array<unsigned char, 8> kSignature = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
 
 // Plots are smooth colour ramps, flat margins and a little text. Row filters cost time and gain
-// nothing on them (every row is written with filter 0, none), and libdeflate's level 1 compresses
-// them faster than zlib's level 3 did (through libpng) and a little smaller: the office's 9 plots
-// as 921 kB in 1.9 x 10^8 instructions, against 959 kB in 3.7 x 10^8 (docs/performance.md, "The
-// plots: pixels, colours and the PNG file").
+// nothing on them (every row is written with filter 0, none). libdeflate's level 2 compresses
+// them faster than zlib's level 3 did (through libpng), and faster and smaller than its own
+// level 1, whose fastest matcher is slow on the plots' long runs of one colour (a megabyte of
+// one colour: 3.3 ms at level 1, 1.4 ms at level 2): the office's 9 plots as 822 kB in 27 ms
+// against 922 kB in 30 ms at level 1 (libdeflate 1.14; docs/performance.md, "The plots: pixels,
+// colours and the PNG file").
 // The pixels are the same at any level (tests/report/png_plot_test.cpp decodes them).
-constexpr int kDeflateLevel = 1;
+constexpr int kDeflateLevel = 2;
 
 void put_u32(std::string& out, std::uint32_t v) {
   const char bytes[4] = {static_cast<char>(v >> 24), static_cast<char>(v >> 16),
