@@ -8,8 +8,8 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 #include <tbb/partitioner.h>
+#include <tbb/task_group.h>
 
 #include "calc/statistics.h"
 #include "report/csv.h"
@@ -208,7 +208,19 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
     write_file_streamed(folder.file(kResultsFile),
                         [&](std::ostream& out) { write_results_json(out, j, results); });
   };
-  tbb::parallel_invoke(write_html, write_json);
+  // results.json on this thread, whose allocator arena holds the memory the calculation freed
+  // (on another thread its text would be fresh memory, a page fault a page); the page, written
+  // a few kilobytes at a time, on a worker.
+  // Either one's error is thrown once both have stopped.
+  tbb::task_group html;
+  html.run(write_html);
+  try {
+    write_json();
+  } catch (...) {
+    html.wait();
+    throw;
+  }
+  html.wait();
   results.timing_s.emplace_back(
       "report", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   write_text_file(folder.file(kTimingFile), timing_to_json(results).dump(1) + "\n");

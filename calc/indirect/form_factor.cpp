@@ -4,6 +4,7 @@
 #include <array>
 #include <vector>
 
+#include "geometry/quad_projected_solid_angle.h"
 #include "geometry/spherical.h"
 
 namespace luxgrid::calc::indirect {
@@ -24,10 +25,12 @@ double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Vec3* corne
     for (size_t k = 0; k < clipped.size(); ++k) rel[k] = clipped[k] - x;
     psa = geometry::projected_solid_angle(rel.data(), rel.size(), n);
   } else {
-    // Most near patches lie wholly above the horizon, where the clip changes nothing.
+    // Most near patches lie wholly above the horizon, where the clip changes nothing; nearly
+    // all of them are parallelograms, whose four edges are taken at once.
     std::array<Vec3, kMaxStack> rel;
     if (geometry::relative_if_wholly_above(corners, m, x, n, rel)) {
-      psa = geometry::projected_solid_angle(rel.data(), static_cast<size_t>(m), n);
+      psa = m == 4 ? geometry::quad_projected_solid_angle(rel.data(), n)
+                   : geometry::projected_solid_angle(rel.data(), static_cast<size_t>(m), n);
     } else {
       const auto clipped = geometry::clip_to_half_space_relative<2 * kMaxStack>(corners, m, x, n);
       psa = geometry::projected_solid_angle(clipped.v.data(), static_cast<size_t>(clipped.n), n);
