@@ -54,6 +54,27 @@ double dot(const float* row, const double* v, size_t b, size_t e) {
 
 // Tile size of the source chunks, in units of the largest patch diameter of a coplanar run.
 constexpr double kChunkTile = 4.0;
+
+// Sources of a chunk whose far form factors are computed at once (far_form_factors).
+constexpr size_t kFarBlock = 32;
+
+// The far form factors of sources [0, count) of the centroid arrays for the receiver (centroid
+// dc, normal dn, area) and the sources' normal sn: area x point_kernel_pi_per_m2 / pi, as the
+// caller's tests have made sure every term is (all far, in front of each other). A loop without
+// branches or scattered stores, which the compiler vectorises (four divisions at once with
+// AVX2); the caller puts the terms in their places in the row.
+[[gnu::target_clones("avx2", "default")]] void far_form_factors(const double* ox, const double* oy,
+                                                                const double* oz, size_t count,
+                                                                Vec3 dc, Vec3 dn, Vec3 sn,
+                                                                double area_m2, double* out) {
+  for (size_t k = 0; k < count; ++k) {
+    const double dx = dc.x - ox[k], dy = dc.y - oy[k], dz = dc.z - oz[k];
+    const double h_dst = -(dn.x * dx + dn.y * dy + dn.z * dz);
+    const double h_src = sn.x * dx + sn.y * dy + sn.z * dz;
+    const double d2 = dx * dx + dy * dy + dz * dz;
+    out[k] = area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi;
+  }
+}
 }  // namespace
 
 FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
@@ -165,13 +186,12 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
         if (!visibility && box_min_height(dn, dc, c.lo, c.hi) > kEdgeOnDistance_m &&
             glm::dot(sn, dc) - c.max_offset > 0.0 && box_distance2(dc, c.lo, c.hi) > near_d2) {
           // All far, h_dst > kEdgeOnDistance_m and h_src > 0: the kernel for every source.
-          for (size_t k = c.begin; k < c.end; ++k) {
-            const double dx = dc.x - ox[k], dy = dc.y - oy[k], dz = dc.z - oz[k];
-            const double h_dst = -(dn.x * dx + dn.y * dy + dn.z * dz);
-            const double h_src = sn.x * dx + sn.y * dy + sn.z * dz;
-            const double d2 = dx * dx + dy * dy + dz * dz;
-            row[order[k]] =
-                static_cast<float>(area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi);
+          for (size_t k = c.begin; k < c.end; k += kFarBlock) {
+            const size_t count = std::min(kFarBlock, c.end - k);
+            double terms[kFarBlock];
+            far_form_factors(ox.data() + k, oy.data() + k, oz.data() + k, count, dc, dn, sn,
+                             area_m2, terms);
+            for (size_t q = 0; q < count; ++q) row[order[k + q]] = static_cast<float>(terms[q]);
           }
           continue;
         }

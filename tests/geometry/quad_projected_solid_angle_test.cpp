@@ -24,7 +24,7 @@ TEST(QuadProjectedSolidAngle, SameBitsAsTheEdgesOneByOne) {
     const Vec3 o(u(rng), u(rng), 0.1 * u(rng));
     const Vec3 e1(0.3 * u(rng), 0.3 * u(rng), 0.05 * u(rng));
     Vec3 e2(0.3 * u(rng), 0.3 * u(rng), 0.05 * u(rng));
-    if (t % 7 == 0) e2 = 1e-9 * e1;                             // a sliver
+    if (t % 7 == 0) e2 = 1e-9 * e1;                            // a sliver
     if (t % 11 == 0) x = o + 0.5 * e1 + Vec3(0.0, 0.0, 1e-7);  // almost on it
     const Vec3 corners[4] = {o, o + e1, o + e1 + e2, o + e2};
     const Vec3 n = glm::normalize(Vec3(0.3 * u(rng), 0.3 * u(rng), -1.0));
