@@ -33,7 +33,9 @@ double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Vec3* corne
                    : geometry::projected_solid_angle(rel.data(), static_cast<size_t>(m), n);
     } else {
       const auto clipped = geometry::clip_to_half_space_relative<2 * kMaxStack>(corners, m, x, n);
-      psa = geometry::projected_solid_angle(clipped.v.data(), static_cast<size_t>(clipped.n), n);
+      psa = clipped.n == 4 ? geometry::quad_projected_solid_angle(clipped.v.data(), n)
+                           : geometry::projected_solid_angle(clipped.v.data(),
+                                                             static_cast<size_t>(clipped.n), n);
     }
   }
   return std::clamp(psa / kPi, 0.0, 1.0);
