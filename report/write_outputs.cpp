@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <ctime>
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
 #include "calc/statistics.h"
@@ -151,10 +152,15 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
       }
     }
   };
+  // Each thread takes the next task not yet taken, in the list's order (a parallel loop would
+  // split the list in halves, and the plots of one half could be left to one thread at the end).
+  std::atomic<std::size_t> next{0};
+  const int threads = std::max(1, tbb::this_task_arena::max_concurrency());
   tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, jobs.size(), 1),
-      [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t n = range.begin(); n != range.end(); ++n) run_job(jobs[n]);
+      0, threads,
+      [&](int) {
+        for (std::size_t n; (n = next.fetch_add(1, std::memory_order_relaxed)) < jobs.size();)
+          run_job(jobs[n]);
       },
       tbb::simple_partitioner());
   for (Job& job : jobs) {
