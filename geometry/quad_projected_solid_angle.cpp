@@ -62,7 +62,8 @@ constexpr long long kSignBit = static_cast<long long>(0x8000000000000000ULL);
   const D4 bins = u * (kAngleTableBins * 1.4142135623730951);
   D4 row_sin, row_cos, row_angle;
   for (int k = 0; k < 4; ++k) {
-    const int j = std::min(static_cast<int>(bins[k]), kAngleTableBins - 1);
+    // A lane whose value is not used (NaN there) reads row 0 rather than converting NaN.
+    const int j = bins[k] >= 0.0 ? std::min(static_cast<int>(bins[k]), kAngleTableBins - 1) : 0;
     row_sin[k] = kAngleTable[j].sin, row_cos[k] = kAngleTable[j].cos;
     row_angle[k] = kAngleTable[j].angle;
   }

@@ -11,6 +11,7 @@
 #include "calc/scaled_distribution.h"
 #include "geometry/box3.h"
 #include "geometry/spherical.h"
+#include "geometry/triangle_solid_angles4.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -47,9 +48,25 @@ struct Sampler {
   double triangle(const Vec3& a, const Vec3& b, const Vec3& c, int level) const {
     if (level > 0) {
       const Vec3 ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
-      return triangle(a, ab, ca, level - 1) + triangle(ab, b, bc, level - 1) +
-             triangle(ca, bc, c, level - 1) + triangle(ab, bc, ca, level - 1);
+      if (level > 1)
+        return triangle(a, ab, ca, level - 1) + triangle(ab, b, bc, level - 1) +
+               triangle(ca, bc, c, level - 1) + triangle(ab, bc, ca, level - 1);
+      // The four halves are the pieces: their solid angles at once, added in the same order.
+      double t[4];
+      leaves({a, ab, ca, ab}, {ab, b, bc, bc}, {ca, bc, c, ca}, t);
+      return t[0] + t[1] + t[2] + t[3];
     }
+    return leaf(a, b, c, geometry::triangle_solid_angle_from(src.position, a, b, c));
+  }
+  // Four pieces: their solid angles in the lanes of one computation
+  // (geometry/triangle_solid_angles4.h), visibility and intensity one by one.
+  void leaves(const Vec3 (&a)[4], const Vec3 (&b)[4], const Vec3 (&c)[4], double (&t)[4]) const {
+    double omega[4];
+    geometry::triangle_solid_angles_from4(src.position, a, b, c, omega);
+    for (int k = 0; k < 4; ++k) t[k] = leaf(a[k], b[k], c[k], omega[k]);
+  }
+  // One piece of solid angle omega: I towards its centre x omega, unless the centre is hidden.
+  double leaf(const Vec3& a, const Vec3& b, const Vec3& c, double omega) const {
     const Vec3 s = src.position;
     const Vec3 centre = (a + b + c) / 3.0;
     if (geometry::blocked(visibility, s, centre + normal * kSampleLift_m)) {
@@ -57,7 +74,6 @@ struct Sampler {
       return 0.0;
     }
     ++visible;
-    const double omega = geometry::triangle_solid_angle_from(s, a, b, c);
     const Vec3 dir = glm::normalize(centre - s);
     const Vec3 local = glm::transpose(src.lum->pose.rotation) * dir;
     return src.weight * src.intensity->intensity(local) * omega;
@@ -118,7 +134,16 @@ double patch_flux(const Source& src, const Patch& p, const geometry::Visibility*
   Sampler sampler{src, visibility, p.normal};
   auto integrate = [&](int lv) {
     double flux = 0.0;
-    for (size_t k = 0, n = p.polygon.size(); k < n; ++k)
+    const size_t n = p.polygon.size();
+    if (lv == 0 && n == 4) {  // the fan's four triangles are the pieces
+      const Polygon3& q = p.polygon;
+      const Vec3 o = p.centroid;
+      double t[4];
+      sampler.leaves({o, o, o, o}, {q[0], q[1], q[2], q[3]}, {q[1], q[2], q[3], q[0]}, t);
+      for (int k = 0; k < 4; ++k) flux += t[k];
+      return flux;
+    }
+    for (size_t k = 0; k < n; ++k)
       flux += sampler.triangle(p.centroid, p.polygon[k], p.polygon[(k + 1) % n], lv);
     return flux;
   };
