@@ -2,17 +2,13 @@
 
 #include <cmath>
 
-#include "util/table_angle.h"
+#include "geometry/table_angle_lanes.h"
 
 namespace luxgrid::geometry {
 
-namespace {
-// Four doubles, one per triangle (GCC's vector extension: one AVX2 register or two SSE2 ones);
-// every operation is the IEEE operation of each lane.
-using D4 = double __attribute__((vector_size(32)));
-using L4 = long long __attribute__((vector_size(32)));
-constexpr long long kSignBit = static_cast<long long>(0x8000000000000000ULL);
-}  // namespace
+using lanes::D4;
+using lanes::kSignBit;
+using lanes::L4;
 
 [[gnu::target_clones("avx2", "default")]] void triangle_solid_angles_from4(
     const Vec3& s, const Vec3 (&a)[4], const Vec3 (&b)[4], const Vec3 (&c)[4], double (&out)[4]) {
@@ -53,26 +49,10 @@ constexpr long long kSignBit = static_cast<long long>(0x8000000000000000ULL);
   const D4 one = {1.0, 1.0, 1.0, 1.0};
   const L4 flat = ay_ <= ax_;
   const D4 qs = (flat ? t : one) * cosine, qc = (flat ? one : t) * cosine;
-  // quadrant_angle(qs, qc) = octant_table_angle(qs, qc, false): octant 0 or 2.
-  const D4 u = qc < qs ? qc : qs;  // std::min(qs, qc)
-  const D4 v = qs < qc ? qc : qs;  // std::max(qs, qc)
-  const L4 steep = qs > qc;
-  const D4 bins = u * (kAngleTableBins * 1.4142135623730951);
-  D4 row_sin, row_cos, row_angle;
-  for (int k = 0; k < 4; ++k) {
-    // A lane whose value is not used (NaN there) reads row 0 rather than converting NaN.
-    const int j = bins[k] >= 0.0 ? std::min(static_cast<int>(bins[k]), kAngleTableBins - 1) : 0;
-    row_sin[k] = kAngleTable[j].sin, row_cos[k] = kAngleTable[j].cos;
-    row_angle[k] = kAngleTable[j].angle;
-  }
-  const D4 w = 1.0 * (u * row_cos - v * row_sin), w2 = w * w, w4 = w2 * w2, w8 = w4 * w4;
-  const D4 series = w * ((1.0 + w2 * (1.0 / 6)) + w4 * (3.0 / 40 + w2 * (15.0 / 336)) +
-                         w8 * (105.0 / 3456 + w2 * (945.0 / 42240)));
-  const D4 zero = {0.0, 0.0, 0.0, 0.0};
-  const D4 half_pi = {0.5 * kPi, 0.5 * kPi, 0.5 * kPi, 0.5 * kPi};
-  const D4 base = steep ? half_pi : zero;
-  const D4 sign = steep ? -one : one;
-  const D4 angle = base + sign * (row_angle + series);
+  // quadrant_angle(qs, qc) = octant_table_angle(qs, qc, false, 1.0).
+  const L4 front = {0, 0, 0, 0};
+  D4 angle;
+  lanes::octant_table_angle(qs, qc, front, one, angle);
   const D4 q = denominator < 0.0 ? kPi - angle : angle;
   const D4 omega = 2.0 * q;
   for (int k = 0; k < 4; ++k) out[k] = valid[k] && some[k] ? omega[k] : 0.0;
