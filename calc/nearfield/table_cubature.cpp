@@ -36,6 +36,7 @@
 #include "calc/nearfield/receiver_fan.h"
 #include "calc/nearfield/receiver_kernel.h"
 #include "calc/nearfield/table_cells.h"
+#include "geometry/table_angle_lanes.h"
 #include "photometry/tabular_distribution.h"
 #include "util/table_angle.h"
 
@@ -353,6 +354,56 @@ struct RayEnds {
   bool ok;
   double sin_near, cos_near, sin_far, cos_far, tan_near, tan_far, g_near, g_far;
 };
+
+// The ends of four rays that enter and leave through known edges (job.near_edge >= 0), in the
+// lanes of one computation (geometry/table_angle_lanes.h): each lane what table_rung's second
+// pass computes for its ray, the same operations in the same order, so the same bits.
+[[gnu::target_clones("avx2", "default")]] void ends_by_edges4(const Polygon2& poly,
+                                                              const RayJob* jobs, double inv_sigma,
+                                                              RayEnds* ends) {
+  using geometry::lanes::D4;
+  using geometry::lanes::L4;
+  D4 cp, sp, nx, ny, fx, fy, cross_near, cross_far;
+  for (int l = 0; l < 4; ++l) {
+    const RayJob& job = jobs[l];
+    cp[l] = job.c, sp[l] = job.s;
+    nx[l] = poly.edge[job.near_edge].x, ny[l] = poly.edge[job.near_edge].y;
+    fx[l] = poly.edge[job.far_edge].x, fy[l] = poly.edge[job.far_edge].y;
+    cross_near[l] = poly.cross[job.near_edge], cross_far[l] = poly.cross[job.far_edge];
+  }
+  // edge_det, rho = cross / det, and (sin, cos) = (|x|, |det|) / sqrt(x^2 + det^2).
+  const D4 det_near = -cp * ny + sp * nx, det_far = -cp * fy + sp * fx;
+  const D4 rho_min = cross_near / det_near, rho_max = cross_far / det_far;
+  const L4 ok = (rho_max > rho_min) & (rho_min >= 0.0);
+  const D4 x_near = cross_near * inv_sigma, x_far = cross_far * inv_sigma;
+  const D4 r_near = x_near * x_near + det_near * det_near,
+           r_far = x_far * x_far + det_far * det_far;
+  const D4 root_near = {std::sqrt(r_near[0]), std::sqrt(r_near[1]), std::sqrt(r_near[2]),
+                        std::sqrt(r_near[3])};
+  const D4 root_far = {std::sqrt(r_far[0]), std::sqrt(r_far[1]), std::sqrt(r_far[2]),
+                       std::sqrt(r_far[3])};
+  const D4 inv_near = 1.0 / root_near, inv_far = 1.0 / root_far;
+  const long long magnitude = ~geometry::lanes::kSignBit;  // |v|: the sign bit cleared
+  const D4 cos_near = (D4)((L4)det_near & magnitude) * inv_near,
+           sin_near = (D4)((L4)x_near & magnitude) * inv_near;
+  const D4 cos_far = (D4)((L4)det_far & magnitude) * inv_far,
+           sin_far = (D4)((L4)x_far & magnitude) * inv_far;
+  // quadrant_angle(sin, cos) = octant_table_angle(sin, cos, false, 1.0).
+  const L4 front = {0, 0, 0, 0};
+  const D4 one = {1.0, 1.0, 1.0, 1.0};
+  D4 g_near, g_far;
+  geometry::lanes::octant_table_angle(sin_near, cos_near, front, one, g_near);
+  geometry::lanes::octant_table_angle(sin_far, cos_far, front, one, g_far);
+  const D4 tan_near = rho_min * inv_sigma, tan_far = rho_max * inv_sigma;
+  for (int l = 0; l < 4; ++l) {
+    if (!ok[l]) {
+      ends[l].ok = false;
+      continue;
+    }
+    ends[l] = {true,        sin_near[l], cos_near[l], sin_far[l], cos_far[l],
+               tan_near[l], tan_far[l],  g_near[l],   g_far[l]};
+  }
+}
 
 // The psi cells of one receiver: the angular range of the polygon seen from F (all around when
 // F is inside), cut at the polygon's vertex directions (rho(psi) has a corner there), at the
@@ -693,8 +744,9 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
                            by_edges ? near_edge : -1,
                            far_edge};
   }
-  // 2. Each ray's reach [rho_min, rho_max] and the sines, cosines and table angles at its ends.
-  for (std::size_t r = 0; r < ray_count; ++r) {
+  // 2. Each ray's reach [rho_min, rho_max] and the sines, cosines and table angles at its ends;
+  //    four rays at once where all four go through known edges (ends_by_edges4).
+  const auto ray_ends = [&](std::size_t r) {
     const RayJob& job = jobs[r];
     RayEnds& end = ends[r];
     const double cp = job.c, sp = job.s;
@@ -710,7 +762,7 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
                    det_far = edge_det(poly, far_edge, cp, sp);
       rho_min = poly.cross[near_edge] / det_near;
       rho_max = poly.cross[far_edge] / det_far;
-      if (!(rho_max > rho_min && rho_min >= 0.0)) continue;
+      if (!(rho_max > rho_min && rho_min >= 0.0)) return;
       const double x_near = poly.cross[near_edge] * inv_sigma,
                    x_far = poly.cross[far_edge] * inv_sigma;
       const double inv_near = 1.0 / std::sqrt(x_near * x_near + det_near * det_near),
@@ -718,7 +770,7 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
       cos_near = std::abs(det_near) * inv_near, sin_near = std::abs(x_near) * inv_near;
       cos_far = std::abs(det_far) * inv_far, sin_far = std::abs(x_far) * inv_far;
     } else {
-      if (!ray_interval(poly, cp, sp, inside, rho_min, rho_max)) continue;
+      if (!ray_interval(poly, cp, sp, inside, rho_min, rho_max)) return;
       const double t_near = rho_min * inv_sigma, t_far = rho_max * inv_sigma;
       cos_near = 1.0 / std::sqrt(1.0 + t_near * t_near);
       cos_far = 1.0 / std::sqrt(1.0 + t_far * t_far);
@@ -733,7 +785,18 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
            rho_max * inv_sigma,
            quadrant_angle(sin_near, cos_near),
            quadrant_angle(sin_far, cos_far)};
+  };
+  std::size_t r = 0;
+  while (r + 4 <= ray_count) {
+    if (jobs[r].near_edge >= 0 && jobs[r + 1].near_edge >= 0 && jobs[r + 2].near_edge >= 0 &&
+        jobs[r + 3].near_edge >= 0) {
+      ends_by_edges4(poly, jobs + r, inv_sigma, ends + r);
+      r += 4;
+    } else {
+      ray_ends(r++);
+    }
   }
+  for (; r < ray_count; ++r) ray_ends(r);
   // 3. The integral along each ray that reaches the opening, added in the rays' order.
   // The lines strictly inside each ray's range of table angles: a ray's ends cross a line only
   // where that line's circle crosses the outline, a psi break, so the rays of a cell have the
