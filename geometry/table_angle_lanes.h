@@ -1,8 +1,10 @@
 #pragma once
-// util/table_angle.h's octant_table_angle on four lanes at once, for the SIMD kernels of
-// geometry/quad_projected_solid_angle and geometry/triangle_solid_angles4: GCC's vector
-// extension (four doubles: one AVX2 register, or two SSE2 ones), each lane the same IEEE
-// operations as the scalar function, in the same order, so the same bits.
+// Four doubles as the lanes of one computation (GCC's vector extension: one AVX2 register in a
+// function built for AVX2 by target_clones, two SSE2 ones in its default build), and
+// util/table_angle.h's octant_table_angle on them: each lane the same IEEE operations as the
+// scalar code, in the same order, so the same bits. Used by luxgrid's four-at-once kernels
+// (geometry/quad_projected_solid_angle, geometry/triangle_solid_angles4, the radiosity sweep's
+// row sums, the table rung's ray ends).
 #include <algorithm>
 
 #include "util/table_angle.h"

@@ -9,6 +9,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "geometry/table_angle_lanes.h"
 #include "util/error.h"
 
 namespace luxgrid::calc::indirect {
@@ -39,11 +40,12 @@ double l1(const std::vector<double>& v) {
 
 // sum of row[j] v[j] over [b, e), in double, with four independent partial sums: a single sum
 // is one long chain of dependent additions, which (not the memory) limits a sweep. The four sums
-// are the lanes of one vector (GCC's vector extension: one AVX2 register, or two SSE2 ones), each
-// lane adding what its partial sum adds, in the same order: the same bits as four scalars.
+// are the lanes of one vector (geometry/table_angle_lanes.h's: one AVX2 register, or two SSE2
+// ones), each lane adding what its partial sum adds, in the same order: the same bits as four
+// scalars.
 [[gnu::target_clones("avx2", "default")]] double dot(const float* row, const double* v, size_t b,
                                                      size_t e) {
-  using D4 = double __attribute__((vector_size(32)));
+  using geometry::lanes::D4;
   D4 s = {0.0, 0.0, 0.0, 0.0};
   size_t j = b;
   for (; j + 4 <= e; j += 4) {
