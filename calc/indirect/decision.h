@@ -1,7 +1,7 @@
 #pragma once
 // Whether a scene needs reflected light, and why: the rule the plan applies (calc/plan.cpp,
 // make_plan), so the plan states its decision before anything is computed (docs/indirect.md,
-// "When it runs").
+// "Pipeline", its item "Decision").
 #include <map>
 #include <string>
 
