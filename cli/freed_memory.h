@@ -1,6 +1,5 @@
 #pragma once
-// How the process's allocator keeps memory it has freed (docs/performance.md, "Memory
-// touched for the first time").
+// How the process's allocator keeps memory it has freed (docs/performance.md, "Memory").
 
 namespace luxgrid::cli {
 

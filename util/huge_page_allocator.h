@@ -4,7 +4,7 @@
 // transparent huge pages requested (madvise), and elements are default-initialised (no zeroing:
 // the owners write every entry). A page fault costs about 11 us on the virtual machines this runs
 // on, so a megabyte in 4 kB pages costs 2.7 ms the first time it is touched, in huge pages 0.1 to
-// 0.2 ms (docs/performance.md, "6 December"); a block of 512 KiB rounded up to one huge page
+// 0.2 ms (a program writing fresh blocks once); a block of 512 KiB rounded up to one huge page
 // still costs less than its 128 small ones. Smaller blocks come from malloc as usual, and so does
 // every block where the system offers no transparent huge pages (then a mapping of its own would
 // fault its small pages in afresh each time, where malloc's arenas reuse what was freed).

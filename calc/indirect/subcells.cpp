@@ -19,8 +19,7 @@ CellMesh cell_mesh(const PatchMesh& mesh, const std::vector<char>& refine) {
   // The refined patches in mesh order (rooms are consecutive in the mesh, so their cells are
   // too), then their cells made in parallel, each patch's kCells at their place: a cell's corner
   // list is an allocation of its own, thousands of them touching fresh memory (a page fault a
-  // page, docs/performance.md, "Memory touched for the first time"), which one thread alone took
-  // milliseconds for.
+  // page, docs/performance.md, "Memory"), which one thread alone took milliseconds for.
   std::vector<size_t> refined;
   for (size_t i = 0; i < mesh.patches.size(); ++i)
     if (refine[i] && mesh.patches[i].has_quarters) refined.push_back(i);
