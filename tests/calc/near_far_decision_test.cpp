@@ -1,6 +1,6 @@
 // The near/far decision by an error bound (calc/nearfield/far_field_bound.h, docs/nearfield.md,
-// "The near/far decision"): real luminaires tilted and aimed at a floor and a wall from 1 to 12 D; the
-// hybrid of `standard` is within 1 % of `reference` at every point brighter than 1 % of its
+// "The near/far decision"): real luminaires tilted and aimed at a floor and a wall from 1 to 12 D;
+// the hybrid of `standard` is within 1 % of `reference` at every point brighter than 1 % of its
 // surface's maximum, and `high` within 0.3 % (the promises of docs/project-format.md).
 #include <gtest/gtest.h>
 
