@@ -12,7 +12,8 @@
    of that page by GitHub's rule (lower case, punctuation dropped, spaces to hyphens, -1, -2 ...
    for repeats).
 3. A section cited by its title in the docs or in a source comment (`docs/nearfield.md, "The
-   table rung"`) exists in that page: the title begins one of its headings or bold or italic lead-ins.
+   table rung"`) exists in that page: the title begins one of its headings or of its bold or
+   italic lead-ins.
 
 Prints each failure with its file and line and exits 1 if there is one.
 """
@@ -41,7 +42,8 @@ failures = []
 
 
 def fail(path, line, message):
-    failures.append(f"{os.path.relpath(path, ROOT)}:{line}: {message}")
+    rel = os.path.relpath(path, ROOT) if os.path.isabs(path) else path
+    failures.append(f"{rel}:{line}: {message}")
 
 
 def tree_files():
