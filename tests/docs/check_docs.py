@@ -111,7 +111,8 @@ def check_architecture():
             fail(path, line_of(text, m.start()), f"names '{m.group(1)}', which is not in the tree")
     for m in re.finditer(r"(?<![\w/.*-])([\w-]+\.(?:h|cpp|py|sh))\b", text):
         if m.group(1) not in BASENAMES:
-            fail(path, line_of(text, m.start()), f"names the file '{m.group(1)}', which no folder has")
+            fail(path, line_of(text, m.start()),
+                 f"names the file '{m.group(1)}', which no folder has")
     targets, options = cmake_targets()
     for m in re.finditer(r"\b(luxgrid_\w+|\w+_tests)\b", text):
         if m.group(1) not in targets:
