@@ -92,6 +92,7 @@ std::vector<geometry::SurfaceGrid> parse_emergency_surface(const JsonValue& s, c
     const double z = r->has("floor_z") ? coordinate(r->at("floor_z")) : 0.0;
     const double spacing = parse_spacing(s, s.find("spacing"), path_length(path));
     budget.spend(s, escape_route_point_count(path, width, spacing), "escape route");
+    if (budget.count_only()) return {};
     const EscapeRoutePoints points = escape_route_points(path, width, spacing);
     return grids_of(floor_points_grid(name + " centre line", points.centre_line, z),
                     floor_points_grid(name + " band", points.band, z));
@@ -118,6 +119,7 @@ std::vector<geometry::SurfaceGrid> parse_emergency_surface(const JsonValue& s, c
   const double su = box.hi.x - box.lo.x, sv = box.hi.y - box.lo.y;
   const double spacing = parse_spacing(s, s.find("spacing"), std::max(su, sv));
   budget.spend_cells(s, su, sv, spacing);
+  if (budget.count_only()) return {};
   auto g = geometry::make_region_grid(name, region, room.floor_z, spacing, room.obstacles);
   g.quantity = geometry::Quantity::horizontal;
   if (active_points(g) == 0)

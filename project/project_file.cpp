@@ -19,8 +19,8 @@ using namespace calc;
 using namespace parts;
 
 Project parse_project(const nlohmann::json& doc, const std::string& label,
-                      const std::filesystem::path& base_dir) {
-  const JsonDocument document(doc, label);
+                      const std::filesystem::path& base_dir, const JsonPositions* positions) {
+  const JsonDocument document(doc, label, positions);
   const JsonValue root = document.root();
   root.expect_object();
   const auto format = root.at("format");
@@ -77,6 +77,10 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
   warn_about_luminaires(scene);
   const auto surfaces = root.at("surfaces");
   check_count(surfaces, kMaxSurfaces, "surfaces");
+  // Every surface is charged its points from its definition before any grid is built, so a
+  // project refused for its total builds none (kMaxTotalGridPoints: 8 million points, 640 MB).
+  GridBudget count(scene.luminaires.size(), GridBudget::Mode::count_only);
+  for (const auto& s : surfaces.items()) (void)parse_surface(s, scene, count);
   GridBudget budget(scene.luminaires.size());
   OutputNames outputs;
   std::set<std::string> names;
@@ -111,15 +115,18 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
 
 Project parse_project_text(std::string_view text, const std::string& label,
                            const std::filesystem::path& base_dir) {
-  return parse_project(parse_json_text(text, label), label, base_dir);
+  JsonPositions positions;
+  const nlohmann::json doc = parse_json_text(text, label, &positions);
+  return parse_project(doc, label, base_dir, &positions);
 }
 
 Project load_project(const std::filesystem::path& file) {
   // JSON-level messages name the file as given; the scene's name only its file name. The bytes
   // are read once: the hash in results.json is of exactly what was parsed.
   const std::string text = read_bounded_file(file);
-  Project project = parse_project(parse_json_text(text, file.string()), file.filename().string(),
-                                  file.parent_path());
+  JsonPositions positions;
+  const nlohmann::json doc = parse_json_text(text, file.string(), &positions);
+  Project project = parse_project(doc, file.filename().string(), file.parent_path(), &positions);
   project.scene.project_file = file;
   project.scene.project_sha256 = sha256_hex(text);
   return project;

@@ -92,10 +92,16 @@ void warn_about_luminaires(calc::Scene& scene);
 // surfaces (project_surfaces.cpp).
 // Grid points promised so far over all surfaces. Each surface is charged its point count,
 // computed in double, before its grid is built: nothing is allocated for a refused grid. The
-// luminaire-point pairs (the direct calculation's work) are charged at the same time.
+// luminaire-point pairs (the direct calculation's work) are charged at the same time. A budget
+// that only counts makes the surface readers stop once a surface is charged, before its grid is
+// built: the loader charges every surface so, then builds them (the total is known before the
+// first point is allocated).
 class GridBudget {
  public:
-  explicit GridBudget(size_t luminaires) : luminaires_(static_cast<double>(luminaires)) {}
+  enum class Mode { build, count_only };
+  explicit GridBudget(size_t luminaires, Mode mode = Mode::build)
+      : luminaires_(static_cast<double>(luminaires)), mode_(mode) {}
+  bool count_only() const { return mode_ == Mode::count_only; }
   void spend(const JsonValue& where, double points, const char* grids = "grid") {
     if (!(points <= kMaxGridPoints)) {
       where.fail(std::string("the ") + grids + " would have " + count_text(points) +
@@ -133,6 +139,7 @@ class GridBudget {
 
  private:
   double luminaires_;
+  Mode mode_;
   double used_ = 0.0;
   double views_ = 0.0;
 };

@@ -132,6 +132,7 @@ geometry::SurfaceGrid parse_observers(const JsonValue& s, const JsonValue& obs,
     }
     budget.spend(dirs, static_cast<double>(views.size()), "observers surface");
     budget.spend_views(dirs, static_cast<double>(views.size()));
+    if (budget.count_only()) continue;
     for (const Vec3& v : views) {
       g.points.push_back(at);
       g.normals.push_back(v);
@@ -163,6 +164,7 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
     const double su = box.hi.x - box.lo.x, sv = box.hi.y - box.lo.y;
     const double spacing = parse_spacing(s, s.find("spacing"), std::max(su, sv));
     budget.spend_cells(s, su, sv, spacing);
+    if (budget.count_only()) return {};
     auto g =
         geometry::make_region_grid(name, region, room.floor_z + height, spacing, room.obstacles);
     if (active_points(g) == 0) {
@@ -186,7 +188,6 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
     }
     // Budget over all faces at the finest spacing any face gets (auto: the smaller of the
     // floor's and the shortest face side's rule; a wall's grid is at least one cell long).
-    const auto shape = room_shape(room);
     const auto box = geometry::bounds({room.outline});
     double wall_length = 0.0;
     for (size_t k = 0; k < room.outline.size(); ++k) {
@@ -200,6 +201,8 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
         std::ceil(wall_length / p + static_cast<double>(room.outline.size())) *
             std::ceil(room.height / p);
     budget.spend(s, points, "grids");
+    if (budget.count_only()) return {};
+    const auto shape = room_shape(room);
     return geometry::make_room_surface_grids(name, shape, spacing, room.obstacles);
   }
   if (auto p = s.find("plane")) {
@@ -216,6 +219,7 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
     if (!(size.x > 0.0 && size.y > 0.0)) size_v.fail("expected two positive sizes in metres");
     const double spacing = parse_spacing(s, s.find("spacing"), std::max(size.x, size.y));
     budget.spend_cells(s, size.x, size.y, spacing);
+    if (budget.count_only()) return {};
     return grids_of(geometry::make_plane_grid(name, origin, un, vn, size.x, size.y, spacing));
   }
   if (auto obs = s.find("observers")) return grids_of(parse_observers(s, *obs, name, budget));
@@ -224,6 +228,7 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
   const auto pts = s.at("points");
   if (s.has("spacing")) s.at("spacing").fail("a points surface has no spacing");
   if (pts.is_array()) budget.spend(pts, static_cast<double>(pts.raw().size()), "points surface");
+  if (budget.count_only()) return {};
   geometry::SurfaceGrid g;
   g.name = name;
   g.kind = geometry::SurfaceGrid::Kind::points;
