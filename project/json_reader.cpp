@@ -77,7 +77,11 @@ constexpr std::size_t kMisspeltEdits = 2;
 }  // namespace
 
 SourceLocation JsonValue::location() const {
-  return SourceLocation{doc_->file(), 0, 0, pointer_.empty() ? std::string("/") : pointer_};
+  TextPosition at;
+  if (doc_->positions_)
+    at = pointer_.empty() ? doc_->positions_->root() : doc_->positions_->of(*value_);
+  return SourceLocation{doc_->file(), at.line, at.column,
+                        pointer_.empty() ? std::string("/") : pointer_};
 }
 
 void JsonValue::fail(const std::string& what) const { throw InputError(location(), what); }
@@ -137,11 +141,10 @@ void JsonValue::report_unqueried() const {
     std::sort(expected.begin(), expected.end());
     std::string list;
     for (const auto& k : expected) list += (list.empty() ? "" : ", ") + k;
-    const std::string pointer = pointer_ + "/" + json_pointer_escape(key);
-    throw InputError(SourceLocation{doc_->file(), 0, 0, pointer},
-                     "unknown key \"" + key + "\"" +
-                         (list.empty() ? std::string(" (nothing is read here)")
-                                       : " (expected one of: " + list + ")"));
+    const JsonValue unknown(v, *doc_, pointer_ + "/" + json_pointer_escape(key));
+    throw InputError(unknown.location(), "unknown key \"" + key + "\"" +
+                                             (list.empty() ? std::string(" (nothing is read here)")
+                                                           : " (expected one of: " + list + ")"));
   }
   for (const auto& [key, v] : value_->items()) member(key).report_unqueried();
 }

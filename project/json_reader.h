@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "project/json_positions.h"
 #include "util/error.h"
 #include "util/robust_math.h"
 
@@ -25,9 +26,12 @@ class JsonValue;
 // pbrt-v4's ParameterDictionary::ReportUnused and Mitsuba 3's Properties::unqueried).
 class JsonDocument {
  public:
-  // `root` must outlive the document, and the document every value taken from it.
-  JsonDocument(const nlohmann::json& root, std::string file)
-      : root_(&root), file_(std::move(file)) {}
+  // `root` must outlive the document, and the document every value taken from it. Given the
+  // positions the parse recorded for `root` (project/json_positions.h), every value's location
+  // has its line and column too.
+  JsonDocument(const nlohmann::json& root, std::string file,
+               const JsonPositions* positions = nullptr)
+      : root_(&root), file_(std::move(file)), positions_(positions) {}
   JsonDocument(const JsonDocument&) = delete;
   JsonDocument& operator=(const JsonDocument&) = delete;
 
@@ -44,6 +48,7 @@ class JsonDocument {
 
   const nlohmann::json* root_;
   std::string file_;
+  const JsonPositions* positions_;
   mutable std::unordered_set<const nlohmann::json*> queried_;  // member values read
   // Keys asked of an object that it lacks (for the list of keys a message offers), by name
   // interned once per document: a 20 000-luminaire project asks each for the same few keys.
@@ -59,7 +64,9 @@ class JsonValue {
 
   const nlohmann::json& raw() const { return *value_; }
   const std::string& pointer() const { return pointer_; }
-  SourceLocation location() const;  // the file and this value's pointer ("/" for the root)
+  // The file, the line and column where this value begins (when the document has positions) and
+  // its pointer ("/" for the root).
+  SourceLocation location() const;
   [[noreturn]] void fail(const std::string& what) const;
 
   bool is_object() const { return value_->is_object(); }

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "calc/scene.h"
+#include "project/json_positions.h"
 #include "project/requirements.h"
 
 namespace luxgrid::project {
@@ -32,8 +33,10 @@ Project parse_project_text(std::string_view text, const std::string& label,
 
 // Parses an already-read document (read it with read_json_file or parse_json_text, which
 // bound its size and depth). `label` names it in messages; relative photometry paths are
-// resolved against `base_dir`.
+// resolved against `base_dir`. With the positions its parse recorded, messages name each value's
+// line and column too.
 Project parse_project(const nlohmann::json& doc, const std::string& label,
-                      const std::filesystem::path& base_dir);
+                      const std::filesystem::path& base_dir,
+                      const JsonPositions* positions = nullptr);
 
 }  // namespace luxgrid::project

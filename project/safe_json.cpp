@@ -60,30 +60,43 @@ std::pair<int, int> line_column(std::string_view text, std::size_t consumed) {
 
 // nlohmann's DOM builder with three checks in front of it. It tracks where it is (one frame per
 // open object or array: the key or index of the child being read, and an object's keys so far
-// with where each was read), so the checks can name the JSON pointer.
+// with where each was read), so the checks can name the JSON pointer. Given JsonPositions, it
+// records where each value begins (project/json_positions.h).
 class CheckedDomBuilder {
  public:
   using json = nlohmann::json;
 
   CheckedDomBuilder(json& root, std::string_view text, const std::string& label,
-                    const char* const* read)
-      : dom_(root), text_(text), label_(label), read_(read) {}
+                    const char* const* read, JsonPositions* positions)
+      : dom_(root), root_(root), text_(text), label_(label), read_(read), positions_(positions) {}
 
-  bool null() { return next_value() && dom_.null(); }
-  bool boolean(bool v) { return next_value() && dom_.boolean(v); }
-  bool number_integer(json::number_integer_t v) { return next_value() && dom_.number_integer(v); }
+  bool null() {
+    return scalar(consumed() - 4, [&] { return dom_.null(); });
+  }
+  bool boolean(bool v) {
+    return scalar(consumed() - (v ? 4 : 5), [&] { return dom_.boolean(v); });
+  }
+  bool number_integer(json::number_integer_t v) {
+    return scalar(start_of_number(), [&] { return dom_.number_integer(v); });
+  }
   bool number_unsigned(json::number_unsigned_t v) {
-    return next_value() && dom_.number_unsigned(v);
+    return scalar(start_of_number(), [&] { return dom_.number_unsigned(v); });
   }
   bool number_float(json::number_float_t v, const std::string& s) {
-    return next_value() && dom_.number_float(v, s);
+    return scalar(start_of_number(), [&] { return dom_.number_float(v, s); });
   }
-  bool string(std::string& v) { return next_value() && dom_.string(v); }
-  bool binary(json::binary_t& v) { return next_value() && dom_.binary(v); }
+  bool string(std::string& v) {
+    return scalar(start_of_string(), [&] { return dom_.string(v); });
+  }
+  bool binary(json::binary_t& v) {
+    return scalar(consumed(), [&] { return dom_.binary(v); });
+  }
 
   bool start_object(std::size_t n) {
-    open(false);
-    return dom_.start_object(n);
+    open();
+    const bool ok = dom_.start_object(n);
+    push(false);
+    return ok;
   }
   bool key(std::string& k) {
     Frame& f = frames_.back();
@@ -94,17 +107,25 @@ class CheckedDomBuilder {
            "duplicate key \"" + k + "\" (first given on line " +
                std::to_string(line_column(text_, it->second).first) + ")");
     }
-    return dom_.key(k);
+    const bool ok = dom_.key(k);
+    if (positions_) f.member = &(*f.container)[k];  // the member's node: it stays where it is
+    return ok;
   }
   bool end_object() {
     frames_.pop_back();
     return dom_.end_object();
   }
   bool start_array(std::size_t n) {
-    open(true);
-    return dom_.start_array(n);
+    open();
+    const bool ok = dom_.start_array(n);
+    push(true);
+    return ok;
   }
   bool end_array() {
+    // The array is complete: its elements no longer move.
+    Frame& f = frames_.back();
+    for (std::size_t i = 0; i < f.elements.size(); ++i)
+      positions_->add(&(*f.container)[i], f.elements[i]);
     frames_.pop_back();
     return dom_.end_array();
   }
@@ -135,6 +156,11 @@ class CheckedDomBuilder {
     std::size_t next_index = 0;
     std::string child;                        // escaped key or index of the value being read
     std::map<std::string, std::size_t> keys;  // object keys so far -> characters read at each
+    // With positions only: the object or array itself, the member being read (objects) and
+    // where each element began (arrays: their addresses are known once the array is complete).
+    json* container = nullptr;
+    json* member = nullptr;
+    std::vector<TextPosition> elements;
   };
 
   std::size_t consumed() const { return static_cast<std::size_t>(*read_ - text_.data()); }
@@ -152,14 +178,82 @@ class CheckedDomBuilder {
     return true;
   }
 
-  void open(bool is_array) {
+  // A scalar value that began at byte `start`, added to the DOM by `add`.
+  template <class Add>
+  bool scalar(std::size_t start, Add&& add) {
+    next_value();
+    if (!add()) return false;
+    place(start);
+    return true;
+  }
+
+  void open() {
     next_value();
     if (frames_.size() >= static_cast<std::size_t>(kMaxJsonDepth)) {
       fail(consumed(), "",
            "objects and arrays nested deeper than the limit of " + std::to_string(kMaxJsonDepth) +
                " levels");
     }
-    frames_.push_back(Frame{is_array, 0, {}, {}});
+  }
+  // After the DOM has the new object or array: its frame, and its place (its '{' or '[').
+  void push(bool is_array) {
+    json* self = nullptr;
+    if (positions_) {
+      self = frames_.empty()           ? &root_
+             : frames_.back().is_array ? &frames_.back().container->back()
+                                       : frames_.back().member;
+      place(consumed() - 1);
+    }
+    frames_.push_back(Frame{is_array, 0, {}, {}, self, nullptr, {}});
+  }
+
+  // Records that the value just added to the DOM began at byte `start`.
+  void place(std::size_t start) {
+    if (!positions_) return;
+    const TextPosition at = position_of(start);
+    if (frames_.empty()) {
+      positions_->set_root(at);
+    } else if (frames_.back().is_array) {
+      frames_.back().elements.push_back(at);
+    } else {
+      positions_->add(frames_.back().member, at);
+    }
+  }
+  // The line and column of byte `start`: values come in text order, so the lines are counted
+  // once over the whole text.
+  TextPosition position_of(std::size_t start) {
+    if (start < line_scanned_) line_scanned_ = 0, line_ = 1, line_start_ = 0;
+    for (; line_scanned_ < start && line_scanned_ < text_.size(); ++line_scanned_) {
+      if (text_[line_scanned_] == '\n') {
+        ++line_;
+        line_start_ = line_scanned_ + 1;
+      }
+    }
+    return {line_, static_cast<int>(start - line_start_ + 1)};
+  }
+  // Where the string just read began: its closing quote was the last byte read, its opening
+  // quote is the nearest quote before it that no backslash escapes (an even run of backslashes).
+  std::size_t start_of_string() const {
+    std::size_t i = consumed() - 1;
+    while (i > 0) {
+      --i;
+      if (text_[i] != '"') continue;
+      std::size_t slashes = 0;
+      while (i > slashes && text_[i - 1 - slashes] == '\\') ++slashes;
+      if (slashes % 2 == 0) return i;
+    }
+    return 0;
+  }
+  // Where the number just read began: the lexer has read one byte past it (unless it ended the
+  // text), and what precedes a number is never part of one.
+  std::size_t start_of_number() const {
+    const auto in_number = [](char c) {
+      return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
+    };
+    std::size_t i = consumed();
+    if (i > 0 && !in_number(text_[i - 1])) --i;
+    while (i > 0 && in_number(text_[i - 1])) --i;
+    return i;
   }
 
   std::string pointer() const {
@@ -176,10 +270,15 @@ class CheckedDomBuilder {
   }
 
   nlohmann::detail::json_sax_dom_parser<json> dom_;
+  json& root_;
   std::string_view text_;
   const std::string& label_;
   const char* const* read_;
+  JsonPositions* positions_;
   std::vector<Frame> frames_;
+  std::size_t line_scanned_ = 0;  // position_of's count: bytes scanned, the line and its start
+  int line_ = 1;
+  std::size_t line_start_ = 0;
 };
 
 // JSON is UTF-8 text (RFC 8259 section 8.1): say so for a UTF-16 or UTF-32 file (what Windows
@@ -200,13 +299,15 @@ void check_is_utf8_text(std::string_view text, const std::string& label) {
 
 }  // namespace
 
-nlohmann::json parse_json_text(std::string_view text, const std::string& label) {
+nlohmann::json parse_json_text(std::string_view text, const std::string& label,
+                               JsonPositions* positions) {
   check_is_utf8_text(text, label);
   nlohmann::json doc;
   const char* read = text.data();
-  CheckedDomBuilder builder(doc, text, label, &read);
+  CheckedDomBuilder builder(doc, text, label, &read, positions);
   nlohmann::json::sax_parse(CountingIterator(text.data(), &read),
                             CountingIterator(text.data() + text.size(), &read), &builder);
+  if (positions) positions->finish();
   return doc;
 }
 

@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "project/json_positions.h"
+
 namespace luxgrid::project {
 
 // The largest project file read, bytes. A big real project (20 000 luminaires written out one by
@@ -25,8 +27,10 @@ inline constexpr int kMaxJsonDepth = 64;
 
 // Parses JSON text. Throws InputError naming `label` and line:column for malformed JSON,
 // nesting deeper than kMaxJsonDepth, a key repeated in one object (with its JSON pointer and the
-// line of the first one) and numbers beyond the range of a double (with their pointer).
-nlohmann::json parse_json_text(std::string_view text, const std::string& label);
+// line of the first one) and numbers beyond the range of a double (with their pointer). Given
+// `positions`, records where each value begins (project/json_positions.h).
+nlohmann::json parse_json_text(std::string_view text, const std::string& label,
+                               JsonPositions* positions = nullptr);
 
 // The largest results.json read back (`luxgrid diff`), bytes: about 1.6 million points.
 inline constexpr std::uintmax_t kMaxResultsFileBytes = 256u << 20;

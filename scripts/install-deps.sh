@@ -3,7 +3,7 @@
 # Run as root on Debian 12 (bookworm). Quiet when everything is there already.
 set -euo pipefail
 packages=(cmake make g++ pkg-config
-          libcgal-dev libglm-dev libdeflate-dev libpng-dev libfreetype-dev nlohmann-json3-dev libtbb-dev libcli11-dev
+          libcgal-dev libglm-dev libdeflate-dev libpng-dev libfreetype-dev nlohmann-json3-dev libtbb-dev libcli11-dev nettle-dev
           libgtest-dev libbenchmark-dev fonts-dejavu-core python3 chromium poppler-utils clang-format ${LUXGRID_EXTRA_PACKAGES:-})
 missing=()
 for p in "${packages[@]}"; do

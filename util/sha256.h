@@ -1,71 +1,29 @@
 #pragma once
 // SHA-256 [FIPS180-4] of a byte string, as 64 lower-case hex digits: results.json records the
 // hash of the project file it was calculated from, so a result can be matched to its input.
-#include <array>
+// The digest is Nettle's (Debian's nettle-dev; docs/architecture.md, "Dependencies", says why
+// Nettle rather than OpenSSL's libcrypto). Whoever calls it links PkgConfig::NETTLE.
 #include <cstdint>
 #include <string>
 #include <string_view>
 
+#include <nettle/sha2.h>
+
 namespace luxgrid {
 
 inline std::string sha256_hex(std::string_view bytes) {
-  // FIPS 180-4, section 4.2.2: the first 32 bits of the fractional parts of the cube roots of
-  // the first 64 primes.
-  static constexpr std::array<std::uint32_t, 64> k = {
-      0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4,
-      0xab1c5ed5, 0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe,
-      0x9bdc06a7, 0xc19bf174, 0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f,
-      0x4a7484aa, 0x5cb0a9dc, 0x76f988da, 0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7,
-      0xc6e00bf3, 0xd5a79147, 0x06ca6351, 0x14292967, 0x27b70a85, 0x2e1b2138, 0x4d2c6dfc,
-      0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85, 0xa2bfe8a1, 0xa81a664b,
-      0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070, 0x19a4c116,
-      0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
-      0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7,
-      0xc67178f2};
-  // Section 5.3.3: the initial hash value.
-  std::array<std::uint32_t, 8> h = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
-                                    0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
-  auto rotr = [](std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); };
-  // Section 5.1.1: the message, a 1 bit, zeros, and its length in bits as 64 bits big-endian,
-  // in 64-byte blocks.
-  std::string m(bytes);
-  const std::uint64_t bit_length = static_cast<std::uint64_t>(bytes.size()) * 8u;
-  m.push_back(static_cast<char>(0x80));
-  while (m.size() % 64 != 56) m.push_back('\0');
-  for (int i = 7; i >= 0; --i) m.push_back(static_cast<char>((bit_length >> (8 * i)) & 0xffu));
-  std::array<std::uint32_t, 64> w{};
-  for (size_t block = 0; block < m.size(); block += 64) {
-    for (size_t t = 0; t < 16; ++t) {
-      w[t] = 0;
-      for (size_t b = 0; b < 4; ++b)
-        w[t] = (w[t] << 8) | static_cast<unsigned char>(m[block + 4 * t + b]);
-    }
-    for (size_t t = 16; t < 64; ++t) {
-      const std::uint32_t s0 = rotr(w[t - 15], 7) ^ rotr(w[t - 15], 18) ^ (w[t - 15] >> 3);
-      const std::uint32_t s1 = rotr(w[t - 2], 17) ^ rotr(w[t - 2], 19) ^ (w[t - 2] >> 10);
-      w[t] = w[t - 16] + s0 + w[t - 7] + s1;
-    }
-    std::uint32_t a = h[0], b = h[1], c = h[2], d = h[3], e = h[4], f = h[5], g = h[6], hh = h[7];
-    for (size_t t = 0; t < 64; ++t) {  // section 6.2.2
-      const std::uint32_t t1 =
-          hh + (rotr(e, 6) ^ rotr(e, 11) ^ rotr(e, 25)) + ((e & f) ^ (~e & g)) + k[t] + w[t];
-      const std::uint32_t t2 =
-          (rotr(a, 2) ^ rotr(a, 13) ^ rotr(a, 22)) + ((a & b) ^ (a & c) ^ (b & c));
-      hh = g;
-      g = f;
-      f = e;
-      e = d + t1;
-      d = c;
-      c = b;
-      b = a;
-      a = t1 + t2;
-    }
-    h[0] += a, h[1] += b, h[2] += c, h[3] += d, h[4] += e, h[5] += f, h[6] += g, h[7] += hh;
-  }
+  sha256_ctx ctx;
+  sha256_init(&ctx);
+  sha256_update(&ctx, bytes.size(), reinterpret_cast<const std::uint8_t*>(bytes.data()));
+  std::uint8_t digest[SHA256_DIGEST_SIZE];
+  sha256_digest(&ctx, SHA256_DIGEST_SIZE, digest);
   static constexpr char digits[] = "0123456789abcdef";
   std::string out;
-  for (std::uint32_t v : h)
-    for (int i = 7; i >= 0; --i) out.push_back(digits[(v >> (4 * i)) & 0xfu]);
+  out.reserve(2 * SHA256_DIGEST_SIZE);
+  for (std::uint8_t b : digest) {
+    out.push_back(digits[b >> 4]);
+    out.push_back(digits[b & 0xfu]);
+  }
   return out;
 }
 

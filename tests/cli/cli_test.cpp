@@ -72,7 +72,7 @@ TEST(Cli, BadInputExitsTwoWithOneMessageAndNoOutput) {
       run("calc " + (dir / "p.json").string() + " -o " + (dir / "out").string());
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(r.output,
-            "luxgrid: error: p.json /rooms/0/height: expected a positive number, got -3\n");
+            "luxgrid: error: p.json:4:77 /rooms/0/height: expected a positive number, got -3\n");
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 

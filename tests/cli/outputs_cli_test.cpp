@@ -199,10 +199,11 @@ TEST(Outputs, AnOfficeInMillimetresIsRefusedBeforeItIsCalculated) {
         luxgrid::test::luxgrid("calc " + quote(dir / "mm.json") + " -o " + quote(dir / "out"));
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     EXPECT_EQ(r.code, 2) << indirect << ": " << r.output;
-    EXPECT_NE(r.output.find("luxgrid: error: mm.json /rooms/0/height: the room \"office\" is 2800 "
-                            "m high, more than "
-                            "the limit of 1000 m for a room; the lengths look like millimetres"),
-              std::string::npos)
+    EXPECT_NE(
+        r.output.find("luxgrid: error: mm.json:5:103 /rooms/0/height: the room \"office\" is 2800 "
+                      "m high, more than "
+                      "the limit of 1000 m for a room; the lengths look like millimetres"),
+        std::string::npos)
         << r.output;
     EXPECT_FALSE(fs::exists(dir / "out"));  // nothing written
     // Refused while loading, before anything is sized by the room: well under the 64 s the

@@ -138,7 +138,7 @@ TEST(ReportCli, WallsAndCeilingsThroughTheBinary) {
   write(dir / "both.json", both);
   const Outcome b = luxgrid("calc " + quote(dir / "both.json") + " -o " + quote(dir / "both"));
   EXPECT_EQ(b.code, 2);
-  EXPECT_NE(b.output.find("both.json /settings/maintenance: give either \"maintenance\" or "
+  EXPECT_NE(b.output.find("both.json:3:51 /settings/maintenance: give either \"maintenance\" or "
                           "\"maintenance_factor\", not both"),
             std::string::npos)
       << b.output;
@@ -191,10 +191,11 @@ TEST(ReportCli, UnknownRequirementIsBadInputNamingTheKey) {
   write(dir / "p.json", project(R"(, "requirements": { "Eavg": 500 })"));
   const Outcome r = luxgrid("calc " + quote(dir / "p.json") + " --check");
   EXPECT_EQ(r.code, 2);
-  EXPECT_EQ(r.output,
-            "luxgrid: error: p.json /surfaces/0/requirements/Eavg: unknown quantity \"Eavg\", "
-            "expected Em, U0, Emin, Emax, Ez, Esc, UGR_L, Ra, modelling, "
-            "preset, glare_observers, cylindrical or horizontal\n");
+  EXPECT_EQ(
+      r.output,
+      "luxgrid: error: p.json:7:133 /surfaces/0/requirements/Eavg: unknown quantity \"Eavg\", "
+      "expected Em, U0, Emin, Emax, Ez, Esc, UGR_L, Ra, modelling, "
+      "preset, glare_observers, cylindrical or horizontal\n");
   EXPECT_FALSE(fs::exists(dir / "p.out"));
 }
 
