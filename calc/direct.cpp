@@ -12,6 +12,7 @@
 
 #include "calc/nearfield/models.h"
 #include "photometry/distribution_texture.h"
+#include "util/simd.h"
 
 namespace luxgrid::calc {
 
@@ -24,17 +25,15 @@ nearfield::Receiver receiver_of(geometry::Quantity q, const Vec3& normal) {
 }
 
 namespace {
-// Points per run of the far-field loop below: the run's sums stay in L1 while every luminaire
-// passes over it, and neighbouring points read neighbouring texels of the luminaire's texture.
-constexpr size_t kFarFieldRun = 64;
 
 // E_direct of the points [begin, end) of one zone when every pair is the far-field point model
 // on a plane without a visibility test (near_field "never", draft): luminaires outside, points
 // inside, each point's sum over the luminaires in the zone's order (the same sums as the
 // general loop, added in the same order). A texture is looked up without the virtual call.
-[[gnu::target_clones("avx2", "default")]] void far_field_run(
-    const std::vector<nearfield::Emitter>& emitters, const std::vector<uint32_t>& luminaires,
-    const geometry::SurfaceGrid& grid, size_t begin, size_t end, std::vector<double>& E) {
+LUXGRID_LANE void far_field_run_kernel(const std::vector<nearfield::Emitter>& emitters,
+                                       const std::vector<uint32_t>& luminaires,
+                                       const geometry::SurfaceGrid& grid, size_t begin, size_t end,
+                                       std::vector<double>& E) {
   // The run's active points packed once (the luminaires then read contiguous arrays).
   Vec3 point[kFarFieldRun], normal[kFarFieldRun];
   size_t index[kFarFieldRun];
@@ -45,26 +44,19 @@ constexpr size_t kFarFieldRun = 64;
     ++n;
   }
   double sum[kFarFieldRun] = {};
-  const auto over_points = [&](const auto& lookup, const nearfield::Emitter& e) {
-    for (size_t k = 0; k < n; ++k)
-      sum[k] += nearfield::point_source_illuminance_with(
-          lookup, e.world_to_local, e.centroid, point[k], nearfield::Receiver::planar(normal[k]));
-  };
-  // The texture's lookups of a run at once (structure of arrays): the directions and the
-  // receiver factors first, then the batch lookup, then the sums; the same operations on the
-  // same values as point_source_illuminance_with, so the same sums to the last bit.
+  // The texture's lookups of a run at once (structure of arrays): the pairs' geometry first, then
+  // the batch lookup, then the sums: point_source_illuminance_with's two steps (nearfield::
+  // far_pair, far_pair_illuminance) on the same values, so the same sums to the last bit.
   double lx[kFarFieldRun], ly[kFarFieldRun], lz[kFarFieldRun], weight[kFarFieldRun],
       d2[kFarFieldRun], cd[kFarFieldRun];
   for (const uint32_t k : luminaires) {
     const nearfield::Emitter& e = emitters[k];
     if (e.far_texture) {
       for (size_t q = 0; q < n; ++q) {
-        const Vec3 r = e.centroid - point[q];
-        d2[q] = glm::dot(r, r);
-        const double inv_d = 1.0 / std::sqrt(d2[q]);
-        // At d2 = 0 the direction is NaN and the weight 0 (max(0, NaN)); the sum skips it.
-        weight[q] = nearfield::receiver_weight(nearfield::Receiver::planar(normal[q]), r * inv_d);
-        const Vec3 local = e.world_to_local * -r;
+        const nearfield::FarPair pair =
+            nearfield::far_pair(e.centroid, point[q], nearfield::Receiver::planar(normal[q]));
+        d2[q] = pair.d2, weight[q] = pair.weight;
+        const Vec3 local = e.world_to_local * -pair.r;
         lx[q] = local.x, ly[q] = local.y, lz[q] = local.z;
       }
       e.far_texture->bilinear_batch(lx, ly, lz, static_cast<int>(n), cd);
@@ -72,19 +64,27 @@ constexpr size_t kFarFieldRun = 64;
       // Adding 0 where the pair gives nothing leaves the sum's bits as they are (it is >= +0),
       // and keeps the loop free of branches.
       for (size_t q = 0; q < n; ++q) {
-        const double pair = nearfield::sanitize_illuminance(factor * cd[q] * weight[q] / d2[q]);
-        sum[q] += d2[q] > 0.0 && weight[q] > 0.0 ? pair : 0.0;
+        const double lux = nearfield::far_pair_illuminance(factor * cd[q], weight[q], d2[q]);
+        sum[q] += nearfield::far_pair_lit(d2[q], weight[q]) ? lux : 0.0;
       }
     } else {
       const photometry::IntensityDistribution& d = e.far_lookup();
-      over_points(
-          [&](const Vec3& local, double inv_length) { return d.intensity(local * inv_length); }, e);
+      for (size_t q = 0; q < n; ++q)
+        sum[q] += nearfield::point_source_illuminance_with(
+            [&](const Vec3& local, double inv_length) { return d.intensity(local * inv_length); },
+            e.world_to_local, e.centroid, point[q], nearfield::Receiver::planar(normal[q]));
     }
   }
   for (size_t k = 0; k < n; ++k) E[index[k]] = sum[k];
 }
 
 }  // namespace
+
+LUXGRID_MULTIVERSION(void, far_field_run,
+                     (const std::vector<nearfield::Emitter>& emitters,
+                      const std::vector<uint32_t>& luminaires, const geometry::SurfaceGrid& grid,
+                      size_t begin, size_t end, std::vector<double>& E),
+                     (emitters, luminaires, grid, begin, end, E), far_field_run_kernel)
 
 double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3& normal) {
   // The rotation is orthonormal, so world -> luminaire frame is its transpose.

@@ -7,6 +7,7 @@
 #include "calc/direct_reach.h"
 #include "calc/plan.h"
 #include "calc/scene.h"
+#include "util/simd.h"
 
 namespace luxgrid::calc {
 
@@ -21,6 +22,21 @@ double far_field_illuminance(const Luminaire& lum, const Vec3& point, const Vec3
 // What a point of a grid measures. Horizontal and vertical are planes whose normals the loader
 // has set; a half cylinder faces the normal the loader set to its `facing` direction.
 nearfield::Receiver receiver_of(geometry::Quantity q, const Vec3& normal);
+
+// E_direct of the points [begin, end) of grid (a plane receiver per point, inactive points
+// skipped) from the luminaires (indices into emitters) when every pair is the far-field point
+// model without a visibility test, into E[begin, end): per point the sum over the luminaires in
+// their order of nearfield::point_source_illuminance, to the bit (the texture's lookups of a run
+// at once, structure of arrays). At most kFarFieldRun points. One version per target
+// (util/simd.h's LUXGRID_MULTIVERSION), each callable by name.
+// Points per run: the run's sums stay in L1 while every luminaire passes over it, and
+// neighbouring points read neighbouring texels of the luminaire's texture.
+inline constexpr size_t kFarFieldRun = 64;
+LUXGRID_MULTIVERSION_DECLARE(void, far_field_run,
+                             (const std::vector<nearfield::Emitter>& emitters,
+                              const std::vector<uint32_t>& luminaires,
+                              const geometry::SurfaceGrid& grid, size_t begin, size_t end,
+                              std::vector<double>& E))
 
 // The emitters of all luminaires, built once per run (calc/nearfield/emitter.h).
 std::vector<nearfield::Emitter> make_emitters(const Scene& scene);

@@ -10,9 +10,19 @@
 #include <cstddef>
 
 #include "util/robust_math.h"
+#include "util/simd.h"
 #include "util/table_angle.h"
 
 namespace luxgrid::geometry {
+
+// A Vec3 as the one-value V3 of the kernels below (util/simd.h), and four Vec3 as lanes.
+inline simd::V3<double> v3(const Vec3& a) { return {a.x, a.y, a.z}; }
+template <class F>
+LUXGRID_LANE simd::V3<simd::D4> v3_lanes(const F& corner) {
+  return {simd::make<simd::D4>([&](int l) { return corner(l).x; }),
+          simd::make<simd::D4>([&](int l) { return corner(l).y; }),
+          simd::make<simd::D4>([&](int l) { return corner(l).z; })};
+}
 
 // Solid angle (sr) of the triangle with corners a, b, c seen from the origin, given with their
 // lengths la, lb, lc: Van Oosterom and Strackee (1983) [VanOosterom1983], Luksch et al. 2020
@@ -23,13 +33,18 @@ namespace luxgrid::geometry {
 // Omega right above pi sr, where the denominator turns negative and plain atan would return
 // Omega - 2 pi; a degenerate triangle (two equal vertices) gives 0. By the table angle
 // (util/table_angle.h; the pair is of any length): this runs for every piece of the first
-// bounce.
+// bounce. Over T: one triangle or four (triangle_solid_angles_from4).
+template <class T>
+LUXGRID_LANE T triangle_solid_angle(const simd::V3<T>& a, const T& la, const simd::V3<T>& b,
+                                    const T& lb, const simd::V3<T>& c, const T& lc) {
+  const T numerator = simd::abs(simd::dot(a, simd::cross(b, c)));
+  const T denominator =
+      la * lb * lc + simd::dot(a, b) * lc + simd::dot(a, c) * lb + simd::dot(b, c) * la;
+  return 2.0 * direction_angle(numerator, denominator);
+}
 inline double triangle_solid_angle(const Vec3& a, double la, const Vec3& b, double lb,
                                    const Vec3& c, double lc) {
-  const double numerator = std::abs(glm::dot(a, glm::cross(b, c)));
-  const double denominator =
-      la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la;
-  return 2.0 * direction_angle(numerator, denominator);
+  return triangle_solid_angle(v3(a), la, v3(b), lb, v3(c), lc);
 }
 
 // The same for unit vectors a, b, c (the spherical triangle).
@@ -46,14 +61,41 @@ inline double triangle_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c) 
 // not) by arc_angle, from the pair scaled to unit length, and 1 / |a x b| is taken beside it
 // rather than after it: this runs for every edge of every exact form factor, where the library's
 // atan2 and the divisions of normalising each corner and each angle took a sixth of a whole
-// calculation (docs/performance.md).
+// calculation.
+//
+// Over T in two steps, so that one edge and four (quad_projected_solid_angle) share them: the
+// arc's terms, then the edge's value from the arc's angle (arc_angle's: the table's where
+// is_unit_pair holds, std::atan2 elsewhere, which only one value takes).
+template <class T>
+struct LambertArc {
+  simd::V3<T> c;  // a x b
+  T length, s, cos,
+      r2;  // |a x b|, the pair (sin, cos) of the arc scaled by inv_a inv_b, s^2 + cos^2
+};
+template <class T>
+LUXGRID_LANE LambertArc<T> lambert_arc(const simd::V3<T>& a, const T& inv_a, const simd::V3<T>& b,
+                                       const T& inv_b) {
+  LambertArc<T> arc;
+  arc.c = simd::cross(a, b);
+  arc.length = simd::length(arc.c);
+  const T scale = inv_a * inv_b;
+  arc.s = arc.length * scale, arc.cos = simd::dot(a, b) * scale;
+  arc.r2 = arc.s * arc.s + arc.cos * arc.cos;
+  return arc;
+}
+// n . (a x b) theta / |a x b|; 0 for an edge of zero length.
+template <class T>
+LUXGRID_LANE T lambert_edge_value(const LambertArc<T>& arc, const T& theta, const simd::V3<T>& n) {
+  return simd::select(arc.length > 0.0, simd::dot(n, arc.c) * (theta * (1.0 / arc.length)),
+                      simd::splat<T>(0.0));
+}
 inline double lambert_edge(const Vec3& a, double inv_a, const Vec3& b, double inv_b,
                            const Vec3& n) {
-  const Vec3 c = glm::cross(a, b);
-  const double length = glm::length(c);
-  if (!(length > 0.0)) return 0.0;
-  const double scale = inv_a * inv_b;
-  return glm::dot(n, c) * (arc_angle(length * scale, glm::dot(a, b) * scale) * (1.0 / length));
+  const LambertArc<double> arc = lambert_arc(v3(a), inv_a, v3(b), inv_b);
+  if (!(arc.length > 0.0)) return 0.0;
+  const double theta = is_unit_pair(arc.s, arc.r2) ? unit_pair_angle(arc.s, arc.cos, arc.r2)
+                                                   : std::atan2(arc.s, arc.cos);
+  return lambert_edge_value(arc, theta, v3(n));
 }
 
 // Projected solid angle (sr) of the spherical triangle a, b, c (unit vectors) for the receiver
@@ -65,13 +107,19 @@ inline double triangle_projected_solid_angle(const Vec3& a, const Vec3& b, const
                         lambert_edge(c, 1.0, a, 1.0, n));
 }
 
-// Solid angle (sr) of the planar triangle abc seen from s; 0 when s is a vertex.
+// Solid angle (sr) of the planar triangle abc seen from s; 0 when s is a vertex. Over T: one
+// triangle or four.
+template <class T>
+LUXGRID_LANE T triangle_solid_angle_from(const simd::V3<T>& s, const simd::V3<T>& a,
+                                         const simd::V3<T>& b, const simd::V3<T>& c) {
+  const simd::V3<T> ra = a - s, rb = b - s, rc = c - s;
+  const T la = simd::length(ra), lb = simd::length(rb), lc = simd::length(rc);
+  const simd::Mask<T> valid = simd::logical_and(simd::logical_and(la > 0.0, lb > 0.0), lc > 0.0);
+  return simd::select(valid, triangle_solid_angle(ra, la, rb, lb, rc, lc), simd::splat<T>(0.0));
+}
 inline double triangle_solid_angle_from(const Vec3& s, const Vec3& a, const Vec3& b,
                                         const Vec3& c) {
-  const Vec3 ra = a - s, rb = b - s, rc = c - s;
-  const double la = glm::length(ra), lb = glm::length(rb), lc = glm::length(rc);
-  if (!(la > 0.0 && lb > 0.0 && lc > 0.0)) return 0.0;
-  return triangle_solid_angle(ra, la, rb, lb, rc, lc);
+  return triangle_solid_angle_from(v3(s), v3(a), v3(b), v3(c));
 }
 
 // Corners closer than this to the viewpoint are left out of projected_solid_angle: their edges

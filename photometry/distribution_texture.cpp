@@ -74,61 +74,30 @@ DistributionTexture::DistributionTexture(int c_cells, int gamma_cells, std::vect
 }
 
 namespace {
-// DistributionTexture::bilinear_batch on the texels (row-major by gamma row, nu per row): a
-// function of this file alone, so that it is compiled twice (AVX2 and the baseline) and the one
-// for the processor is picked when the program is loaded, while callers see one ordinary symbol
-// (a multiversioned member function would need the attribute on every declaration in clang).
-[[gnu::target_clones("avx2", "default")]] void bilinear_batch_texels(const float* texels, int nu,
-                                                                     int nv, const double* x,
-                                                                     const double* y,
-                                                                     const double* z, int n,
-                                                                     double* out) {
-  const auto texel = [&](int i, int j) {
-    return static_cast<double>(texels[static_cast<std::size_t>(j) * static_cast<std::size_t>(nu) +
-                                      static_cast<std::size_t>(i)]);
-  };
+// DistributionTexture::bilinear_batch on the texels: the texel positions of a chunk first, in a
+// loop without branches that the compiler turns into vector instructions (texel_position, the
+// template bilinear() takes for one direction), then the texels are read (cell_at, bilinear_in,
+// bilinear()'s too), so the same values to the last bit.
+LUXGRID_LANE void bilinear_batch_kernel(const float* texels, int nu, int nv, const double* x,
+                                        const double* y, const double* z, int n, double* out) {
   // Chunks whose coordinates stay in L1 between the two loops.
   constexpr int kChunk = 64;
   double fu[kChunk], fv[kChunk];
-  const double u_scale = nu / 4.0, v_scale = nv / 2.0;
-  const double u_max = static_cast<double>(nu), v_max = static_cast<double>(nv);
   for (int begin = 0; begin < n; begin += kChunk) {
     const int m = std::min(kChunk, n - begin);
-    // diamond_angles and cell_of's clamps, every branch computed and selected: the same
-    // operations on the same operands, so the same values. At a pole (sxy = 0) the quotients
-    // are NaN and not selected.
-    for (int k = 0; k < m; ++k) {
-      const double dx = x[begin + k], dy = y[begin + k], a = -z[begin + k];
-      const double sxy = std::abs(dx) + std::abs(dy);
-      const double h = std::sqrt(dx * dx + dy * dy);
-      const double s = h + std::abs(a);
-      const double inv = 1.0 / (sxy * s);
-      const double t = dy * s * inv;
-      const double q = h * sxy * inv;
-      const bool pole = !(sxy > 0.0), up = a >= 0.0;
-      const double u_right = t >= 0.0 ? t : 4.0 + t;  // quadrants 1 and 4
-      const double u_any = dx >= 0.0 ? u_right : 2.0 - t;
-      const double u = pole ? 0.0 : u_any;
-      const double v_up = up ? q : 2.0 - q, v_pole = up ? 0.0 : 2.0;
-      const double v = pole ? v_pole : v_up;
-      // std::max(0.0, x) and std::min(x, m) spelled out: (0 < x ? x : 0) and (m < x ? m : x).
-      const double fu0 = u * u_scale, fv0 = v * v_scale;
-      const double fu1 = 0.0 < fu0 ? fu0 : 0.0, fv1 = 0.0 < fv0 ? fv0 : 0.0;
-      fu[k] = u_max < fu1 ? u_max : fu1;
-      fv[k] = v_max < fv1 ? v_max : fv1;
-    }
-    for (int k = 0; k < m; ++k) {
-      const int i = std::min(static_cast<int>(fu[k]), nu - 1);
-      const int j = std::min(static_cast<int>(fv[k]), nv - 1);
-      const double su = fu[k] - i, sv = fv[k] - j;
-      const int i1 = i + 1 == nu ? 0 : i + 1;
-      const double a = texel(i, j) + su * (texel(i1, j) - texel(i, j));
-      const double b = texel(i, j + 1) + su * (texel(i1, j + 1) - texel(i, j + 1));
-      out[begin + k] = a + sv * (b - a);
-    }
+    for (int k = 0; k < m; ++k)
+      texel_position(x[begin + k], y[begin + k], z[begin + k], nu, nv, fu[k], fv[k]);
+    for (int k = 0; k < m; ++k)
+      out[begin + k] = DistributionTexture::bilinear_in(
+          texels, nu, DistributionTexture::cell_at(fu[k], fv[k], nu, nv));
   }
 }
 }  // namespace
+
+LUXGRID_MULTIVERSION(void, bilinear_batch_texels,
+                     (const float* texels, int nu, int nv, const double* x, const double* y,
+                      const double* z, int n, double* out),
+                     (texels, nu, nv, x, y, z, n, out), bilinear_batch_kernel)
 
 void DistributionTexture::bilinear_batch(const double* x, const double* y, const double* z, int n,
                                          double* out) const {

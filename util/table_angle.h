@@ -19,6 +19,7 @@
 #include <cmath>
 
 #include "util/robust_math.h"
+#include "util/simd.h"
 
 namespace luxgrid {
 
@@ -99,34 +100,71 @@ inline constexpr std::array<AngleTableRow, kAngleTableBins> kAngleTable = {{
     {0x1.6461bece53eddp-1, 0x1.6f9bc5d45947ap-1, 0x1.8a2f61e1b3b5dp-1},  // 63
 }};
 
+// The table's rows j = floor(bins) (at most the last) for one value or for lanes (T = double or
+// simd::D4): each lane reads its own row. A value whose angle is not used (NaN: a pair the caller
+// does not select) reads row 0 rather than converting NaN.
+LUXGRID_LANE void angle_table_rows(double bins, double& row_sin, double& row_cos,
+                                   double& row_angle) {
+  const int j = bins >= 0.0 ? std::min(static_cast<int>(bins), kAngleTableBins - 1) : 0;
+  row_sin = kAngleTable[j].sin, row_cos = kAngleTable[j].cos, row_angle = kAngleTable[j].angle;
+}
+LUXGRID_LANE void angle_table_rows(const simd::D4& bins, simd::D4& row_sin, simd::D4& row_cos,
+                                   simd::D4& row_angle) {
+  for (int l = 0; l < simd::kLanes; ++l) {
+    const int j = bins[l] >= 0.0 ? std::min(static_cast<int>(bins[l]), kAngleTableBins - 1) : 0;
+    row_sin[l] = kAngleTable[j].sin, row_cos[l] = kAngleTable[j].cos;
+    row_angle[l] = kAngleTable[j].angle;
+  }
+}
+
+// The octant's base angle and sign (steep: s > c; back: a negative cosine): {0, pi, pi / 2,
+// pi / 2} and {1, -1, -1, 1} by octant 2 steep + back. One value reads them from a table, so
+// there is no branch: in Lambert's formula the octants are equally likely, and a mispredicted
+// branch costs as much as the rest; lanes select them.
+LUXGRID_LANE void octant_base_sign(bool steep, bool back, double& base, double& sign) {
+  static constexpr double kBase[4] = {0.0, kPi, 0.5 * kPi, 0.5 * kPi};
+  static constexpr double kSign[4] = {1.0, -1.0, -1.0, 1.0};
+  const int octant = 2 * steep + back;
+  base = kBase[octant], sign = kSign[octant];
+}
+LUXGRID_LANE void octant_base_sign(const simd::L4& steep, const simd::L4& back, simd::D4& base,
+                                   simd::D4& sign) {
+  const simd::D4 zero = simd::splat<simd::D4>(0.0), one = simd::splat<simd::D4>(1.0);
+  base = steep ? simd::splat<simd::D4>(0.5 * kPi) : (back ? simd::splat<simd::D4>(kPi) : zero);
+  sign = (steep ^ back) ? -one : one;
+}
+
+// asin(w) / w - 1 = w^2 / 6 + 3 w^4 / 40 + ... as a polynomial in w^2, to w^10 (the series to
+// w^11): the coefficients (2k)! / (4^k (k!)^2 (2k + 1)).
+inline constexpr double kArcsineSeries[6] = {1.0,        1.0 / 6,      3.0 / 40,
+                                             15.0 / 336, 105.0 / 3456, 945.0 / 42240};
+
 // The angle in [0, pi] of the direction (cos, sin) = (back ? -c : c, s), from s >= 0 and c >= 0
 // of unit length to rounding, with w scaled by k (arc_angle's correction of the length; 1 for a
 // pair of unit length). Below 45 degrees it is the table angle a of (u, v) = (s, c), to 90
-// pi / 2 - a of the swapped pair, to 135 pi / 2 + a, beyond pi - a. The octant's base and sign
-// come from a table, so there is no branch: in Lambert's formula the octants are equally likely,
-// and a mispredicted branch costs as much as the rest. asin(w) is its Taylor series to w^11: the
-// first omitted term, (63 / 2816) w^13, is below 1e-25, far below the rounding of theta_j
-// (1e-16). It is evaluated in Estrin's form, three independent products instead of Horner's
-// chain of five: the near field's table rung waits for these angles at both ends of every ray,
-// and took 6 % less time so.
-inline double octant_table_angle(double s, double c, bool back, double k = 1.0) {
-  static constexpr double kBase[4] = {0.0, kPi, 0.5 * kPi, 0.5 * kPi};
-  static constexpr double kSign[4] = {1.0, -1.0, -1.0, 1.0};
-  const int octant = 2 * (s > c) + back;
-  const double u = std::min(s, c), v = std::max(s, c);
-  const int j =
-      std::min(static_cast<int>(u * (kAngleTableBins * 1.4142135623730951)), kAngleTableBins - 1);
-  const AngleTableRow& row = kAngleTable[j];
-  const double w = k * (u * row.cos - v * row.sin), w2 = w * w, w4 = w2 * w2, w8 = w4 * w4;
-  const double series = w * ((1.0 + w2 * (1.0 / 6)) + w4 * (3.0 / 40 + w2 * (15.0 / 336)) +
-                             w8 * (105.0 / 3456 + w2 * (945.0 / 42240)));
-  return kBase[octant] + kSign[octant] * (row.angle + series);
+// pi / 2 - a of the swapped pair, to 135 pi / 2 + a, beyond pi - a (octant_base_sign). asin(w) is
+// its Taylor series to w^11: the first omitted term, (63 / 2816) w^13, is below 1e-25, far below
+// the rounding of theta_j (1e-16). It is evaluated in Estrin's form (simd::estrin), three
+// independent products instead of Horner's chain of five: the near field's table rung waits for
+// these angles at both ends of every ray, and took 6 % less time so. Written once for one value
+// and for four lanes (T = double or simd::D4: the four-lane kernels of geometry/ and the table
+// rung), the same bits in each lane (tests/util/simd_test.cpp).
+template <class T>
+LUXGRID_LANE T octant_table_angle(const T& s, const T& c, const simd::Mask<T>& back, const T& k) {
+  const T u = simd::min(s, c), v = simd::max(s, c);
+  T base, sign, row_sin, row_cos, row_angle;
+  octant_base_sign(s > c, back, base, sign);
+  angle_table_rows(u * (kAngleTableBins * 1.4142135623730951), row_sin, row_cos, row_angle);
+  const T w = k * (u * row_cos - v * row_sin);
+  const T series = w * simd::estrin(w * w, kArcsineSeries);
+  return base + sign * (row_angle + series);
 }
 
 // The angle in [0, pi / 2] of (cos, sin) = (cos_a, sin_a), both >= 0 and of unit length to
 // rounding: what std::atan2(sin_a, cos_a) gives, within 4 units in the last place.
-inline double quadrant_angle(double sin_a, double cos_a) {
-  return octant_table_angle(sin_a, cos_a, false);
+template <class T>
+LUXGRID_LANE T quadrant_angle(const T& sin_a, const T& cos_a) {
+  return octant_table_angle(sin_a, cos_a, simd::Mask<T>{}, simd::splat<T>(1.0));
 }
 
 // A pair (sin, cos) counts as of unit length when |sin^2 + cos^2 - 1| is at most this: then
@@ -134,6 +172,18 @@ inline double quadrant_angle(double sin_a, double cos_a) {
 // unit length within (3 / 8) (2^-27)^2 = 2e-17, a tenth of a unit in the last place. (Only w is
 // scaled: the bin and the octant need the pair to rounding only.)
 inline constexpr double kUnitPairTolerance = 0x1p-27;
+
+// Whether the table gives arc_angle's angle of the pair (sin_a, cos_a), r2 = sin_a^2 + cos_a^2:
+// of unit length (kUnitPairTolerance) and sin_a >= +0; and that angle.
+template <class T>
+LUXGRID_LANE simd::Mask<T> is_unit_pair(const T& sin_a, const T& r2) {
+  return simd::logical_and(simd::abs(r2 - 1.0) <= kUnitPairTolerance,
+                           simd::logical_not(simd::signbit(sin_a)));
+}
+template <class T>
+LUXGRID_LANE T unit_pair_angle(const T& sin_a, const T& cos_a, const T& r2) {
+  return octant_table_angle(sin_a, simd::abs(cos_a), cos_a < 0.0, 1.5 - 0.5 * r2);
+}
 
 // The angle in [0, pi] of (cos, sin) = (cos_a, sin_a), sin_a >= +0: std::atan2(sin_a, cos_a)
 // within 4 units in the last place. Meant for a sine and cosine computed from unit vectors (the
@@ -143,24 +193,26 @@ inline constexpr double kUnitPairTolerance = 0x1p-27;
 // (not of unit length, a negative sin_a (-0 too) or NaN) takes std::atan2 itself.
 inline double arc_angle(double sin_a, double cos_a) {
   const double r2 = sin_a * sin_a + cos_a * cos_a;
-  if (!(std::abs(r2 - 1.0) <= kUnitPairTolerance) || std::signbit(sin_a))
-    return std::atan2(sin_a, cos_a);
-  return octant_table_angle(sin_a, std::abs(cos_a), cos_a < 0.0, 1.5 - 0.5 * r2);
+  if (!is_unit_pair(sin_a, r2)) return std::atan2(sin_a, cos_a);
+  return unit_pair_angle(sin_a, cos_a, r2);
 }
 
 // The direction of the in-plane vector (x, y) in (-pi, pi]: std::atan2(y, x) to a few units in
 // the last place, from the same table, for any length. (0, 0) gives 0; a negative zero y gives
-// +pi where atan2 gives -pi (the same direction).
-inline double direction_angle(double y, double x) {
-  const double ax = std::abs(x), ay = std::abs(y);
-  const double big = std::max(ax, ay);
-  if (!(big > 0.0)) return 0.0;
-  const double t = std::min(ax, ay) / big;  // tan of the angle to the nearer axis, <= 1
-  const double c = 1.0 / std::sqrt(1.0 + t * t);
+// +pi where atan2 gives -pi (the same direction). Over T (one value or lanes): the lanes of (0, 0)
+// compute a NaN that is not selected.
+template <class T>
+LUXGRID_LANE T direction_angle(const T& y, const T& x) {
+  const T ax = simd::abs(x), ay = simd::abs(y);
+  const T big = simd::max(ax, ay);
+  const T t = simd::min(ax, ay) / big;  // tan of the angle to the nearer axis, <= 1
+  const T c = 1.0 / simd::sqrt(1.0 + t * t);
   // (|y|, |x|) / |(x, y)| is (t c, c) or (c, t c).
-  const double a = quadrant_angle((ay <= ax ? t : 1.0) * c, (ay <= ax ? 1.0 : t) * c);
-  const double q = x < 0.0 ? kPi - a : a;
-  return y < 0.0 ? -q : q;
+  const simd::Mask<T> flat = ay <= ax;
+  const T one = simd::splat<T>(1.0);
+  const T a = quadrant_angle(simd::select(flat, t, one) * c, simd::select(flat, one, t) * c);
+  const T q = simd::select(x < 0.0, kPi - a, a);
+  return simd::select(big > 0.0, simd::select(y < 0.0, -q, q), simd::splat<T>(0.0));
 }
 
 // The direction of the unit vector (x, y) (of unit length to rounding) in (-pi, pi]: what

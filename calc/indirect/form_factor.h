@@ -42,7 +42,9 @@ double point_polygon_form_factor(const Vec3& x, const Vec3& n, const Vec3* corne
 // Symmetric in the two heights; both must be >= 0 (the callers test it: behind either plane the
 // term is 0). The one copy of this formula: the gather, the form-factor matrix and the quarter
 // rule call it, and multiply by the area and divide by pi themselves (once per sum).
-inline double point_kernel_pi_per_m2(double h_source_m, double h_receiver_m, double d2_m2) {
+// Over one value or lanes (T; far_kernels.h's loops).
+template <class T>
+inline T point_kernel_pi_per_m2(const T& h_source_m, const T& h_receiver_m, const T& d2_m2) {
   return h_source_m * h_receiver_m / (d2_m2 * d2_m2);
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "calc/indirect/far_kernels.h"
 #include "calc/indirect/form_factor.h"
 #include "geometry/box3.h"
 
@@ -134,27 +135,6 @@ namespace {
 
 // Entries of a chunk whose far kernels are computed at once (far_terms).
 constexpr size_t kTermBlock = 32;
-
-// The far kernel of entries [0, count) of the arrays for the receiver (x, n) and the group's
-// normal m: flux x point_kernel_pi_per_m2 where the centroid lies in the band [inner2, outer2),
-// +0 elsewhere. A loop without a sum, which the compiler vectorises (four divisions at once with
-// AVX2); the caller adds the terms in order, so the sum has the bits of adding each as it was made
-// (every term is >= +0: the callers have checked that x is in front of every patch and every
-// centroid in front of x, so adding a +0 changes nothing).
-[[gnu::target_clones("avx2", "default")]] void far_terms(const double* cx, const double* cy,
-                                                         const double* cz, const double* flux,
-                                                         size_t count, Vec3 x, Vec3 n, Vec3 m,
-                                                         double inner2, double outer2,
-                                                         double* out) {
-  for (size_t k = 0; k < count; ++k) {
-    const double dx = x.x - cx[k], dy = x.y - cy[k], dz = x.z - cz[k];
-    const double hm = m.x * dx + m.y * dy + m.z * dz;
-    const double hn = -(n.x * dx + n.y * dy + n.z * dz);
-    const double d2 = dx * dx + dy * dy + dz * dz;
-    const double term = flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
-    out[k] = d2 >= inner2 && d2 < outer2 ? term : 0.0;
-  }
-}
 
 // Form factor from the point (x, n) to patch p in the final gather: the point kernel when the
 // patch is far (`far`: beyond far_ratio x its diameter), the kernel on its quarters between

@@ -9,7 +9,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "geometry/table_angle_lanes.h"
+#include "calc/indirect/far_kernels.h"
 #include "util/error.h"
 
 namespace luxgrid::calc::indirect {
@@ -38,50 +38,12 @@ double l1(const std::vector<double>& v) {
   return s;
 }
 
-// sum of row[j] v[j] over [b, e), in double, with four independent partial sums: a single sum
-// is one long chain of dependent additions, which (not the memory) limits a sweep. The four sums
-// are the lanes of one vector (geometry/table_angle_lanes.h's: one AVX2 register, or two SSE2
-// ones), each lane adding what its partial sum adds, in the same order: the same bits as four
-// scalars.
-[[gnu::target_clones("avx2", "default")]] double dot(const float* row, const double* v, size_t b,
-                                                     size_t e) {
-  using geometry::lanes::D4;
-  D4 s = {0.0, 0.0, 0.0, 0.0};
-  size_t j = b;
-  for (; j + 4 <= e; j += 4) {
-    const D4 r = {static_cast<double>(row[j]), static_cast<double>(row[j + 1]),
-                  static_cast<double>(row[j + 2]), static_cast<double>(row[j + 3])};
-    const D4 x = {v[j], v[j + 1], v[j + 2], v[j + 3]};
-    s += r * x;
-  }
-  double s0 = s[0];
-  for (; j < e; ++j) s0 += static_cast<double>(row[j]) * v[j];
-  return (s0 + s[1]) + (s[2] + s[3]);
-}
-
 // Tile size of the source chunks, in units of the largest patch diameter of a coplanar run.
 constexpr double kChunkTile = 4.0;
 
 // Sources of a chunk whose far form factors are computed at once (far_form_factors).
 constexpr size_t kFarBlock = 32;
 
-// The far form factors of sources [0, count) of the centroid arrays for the receiver (centroid
-// dc, normal dn, area) and the sources' normal sn: area x point_kernel_pi_per_m2 / pi, as the
-// caller's tests have made sure every term is (all far, in front of each other). A loop without
-// branches or scattered stores, which the compiler vectorises (four divisions at once with
-// AVX2); the caller puts the terms in their places in the row.
-[[gnu::target_clones("avx2", "default")]] void far_form_factors(const double* ox, const double* oy,
-                                                                const double* oz, size_t count,
-                                                                Vec3 dc, Vec3 dn, Vec3 sn,
-                                                                double area_m2, double* out) {
-  for (size_t k = 0; k < count; ++k) {
-    const double dx = dc.x - ox[k], dy = dc.y - oy[k], dz = dc.z - oz[k];
-    const double h_dst = -(dn.x * dx + dn.y * dy + dn.z * dz);
-    const double h_src = sn.x * dx + sn.y * dy + sn.z * dz;
-    const double d2 = dx * dx + dy * dy + dz * dz;
-    out[k] = area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi;
-  }
-}
 }  // namespace
 
 FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
@@ -240,7 +202,7 @@ RadiosityResult solve_radiosity(const FormFactorMatrix& F, const std::vector<dou
       // Entries [zero_begin, zero_end) are 0 (coplanar patches): skipped.
       const size_t zb = F.zero_begin.empty() ? n : F.zero_begin[i];
       const size_t ze = F.zero_begin.empty() ? n : F.zero_end[i];
-      received[i] = dot(row, shot.data(), 0, zb) + dot(row, shot.data(), ze, n);
+      received[i] = row_dot(row, shot.data(), 0, zb) + row_dot(row, shot.data(), ze, n);
     });
   };
   return solve_bounce_series(n, transfer, reflectance, incident_flux_lm, bounces, tolerance,

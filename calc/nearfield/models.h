@@ -27,17 +27,35 @@ double point_source_illuminance(const photometry::IntensityDistribution& distrib
 // vector local x inv_length (the function above passes it); the texture's coordinates do not
 // depend on the length (photometry/distribution_texture.h), so calc/direct.cpp's far-field loop
 // looks `local` up as it is, and the lookup does not wait for the square root and the division.
+// The formula in two steps, which calc/direct.cpp's far-field loop takes one at a time for a run
+// of points (every point's geometry, then one batch lookup, then every pair's illuminance):
+// the pair's geometry (r = source - point, d^2, the receiver's weight of the unit direction; at
+// d^2 = 0 the direction is NaN and the weight 0 or NaN), and E = I weight / d^2 from the
+// intensity I (cd) of the direction -r in the luminaire frame, where d^2 > 0 and weight > 0
+// (else 0, which the callers add as +0).
+struct FarPair {
+  Vec3 r;
+  double d2, inv_d, weight;
+};
+inline FarPair far_pair(const Vec3& source, const Vec3& point, const Receiver& receiver) {
+  FarPair p;
+  p.r = source - point;
+  p.d2 = glm::dot(p.r, p.r);
+  p.inv_d = 1.0 / std::sqrt(p.d2);
+  p.weight = receiver_weight(receiver, p.r * p.inv_d);
+  return p;
+}
+inline bool far_pair_lit(double d2, double weight) { return d2 > 0.0 && weight > 0.0; }
+inline double far_pair_illuminance(double intensity_cd, double weight, double d2) {
+  return sanitize_illuminance(intensity_cd * weight / d2);
+}
 template <class Lookup>
 inline double point_source_illuminance_with(const Lookup& intensity,
                                             const glm::dmat3& world_to_local, const Vec3& source,
                                             const Vec3& point, const Receiver& receiver) {
-  const Vec3 r = source - point;
-  const double d2 = glm::dot(r, r);
-  if (!(d2 > 0.0)) return 0.0;
-  const double inv_d = 1.0 / std::sqrt(d2);
-  const double weight = receiver_weight(receiver, r * inv_d);
-  if (!(weight > 0.0)) return 0.0;
-  return sanitize_illuminance(intensity(world_to_local * -r, inv_d) * weight / d2);
+  const FarPair p = far_pair(source, point, receiver);
+  if (!far_pair_lit(p.d2, p.weight)) return 0.0;
+  return far_pair_illuminance(intensity(world_to_local * -p.r, p.inv_d), p.weight, p.d2);
 }
 
 // Far-field point at the emitter centroid: E = I(-w) cos(theta_x) / d^2, finite and >= 0.

@@ -13,8 +13,11 @@ namespace {
 
 // Four at once must give triangle_solid_angle_from's values to the bit (the first bounce does
 // not change with it): triangles in front of and behind the point, slivers with two equal
-// corners, the point on a corner (0 sr), and triangles seen under more than pi sr.
-TEST(TriangleSolidAngles4, SameBitsAsOneByOne) {
+// corners, the point on a corner (0 sr), and triangles seen under more than pi sr. Each version
+// of the kernel (util/simd.h's LUXGRID_MULTIVERSION) is called by name.
+using Four = void (*)(const Vec3&, const Vec3 (&)[4], const Vec3 (&)[4], const Vec3 (&)[4],
+                      double (&)[4]);
+void expect_same_bits_as_one_by_one(Four four_at_once) {
   std::mt19937_64 rng(612);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int differ = 0, nonzero = 0;
@@ -27,11 +30,12 @@ TEST(TriangleSolidAngles4, SameBitsAsOneByOne) {
       a[k] = Vec3(u(rng), u(rng), 0.1 * u(rng));
       b[k] = a[k] + 0.3 * Vec3(u(rng), u(rng), u(rng));
       c[k] = a[k] + 0.3 * Vec3(u(rng), u(rng), u(rng));
-      if ((t + k) % 17 == 0) c[k] = b[k];  // a sliver
-      if ((t + k) % 19 == 0) a[k] = s;     // the point on a corner
+      if ((t + k) % 17 == 0) c[k] = b[k];                         // a sliver
+      if ((t + k) % 19 == 0) a[k] = s;                            // the point on a corner
+      if ((t + k) % 23 == 0) c[k] = a[k] + 1e-9 * (b[k] - a[k]);  // a needle
     }
     double four[4];
-    triangle_solid_angles_from4(s, a, b, c, four);
+    four_at_once(s, a, b, c, four);
     for (int k = 0; k < 4; ++k) {
       const double one = triangle_solid_angle_from(s, a[k], b[k], c[k]);
       if (std::memcmp(&one, &four[k], sizeof(double)) != 0) ++differ;
@@ -40,6 +44,14 @@ TEST(TriangleSolidAngles4, SameBitsAsOneByOne) {
   }
   EXPECT_EQ(differ, 0) << "of " << 4 * kRounds;
   EXPECT_GT(nonzero, 3 * kRounds);  // the cases are not all trivial
+}
+
+TEST(TriangleSolidAngles4, SameBitsAsOneByOneAvx2) {
+  if (!simd::cpu_has_avx2()) GTEST_SKIP() << "this processor has no AVX2";
+  expect_same_bits_as_one_by_one(triangle_solid_angles_from4_avx2);
+}
+TEST(TriangleSolidAngles4, SameBitsAsOneByOneDefault) {
+  expect_same_bits_as_one_by_one(triangle_solid_angles_from4_default);
 }
 
 // The triangle through the three unit points on the axes, seen from the origin, spans one

@@ -284,9 +284,12 @@ TEST(Texture, AgreesWithTheTableAndIsContinuous) {
   EXPECT_NEAR(iso.intensity(glm::normalize(Vec3(0.3, -0.2, 0.5))), 7.0, 1e-6);
 }
 
-TEST(Texture, BatchLookupGivesTheSameBitsAsOneByOne) {
-  // The far-field loop looks a run of directions up at once (bilinear_batch, vectorised); its
-  // values must be bilinear()'s to the last bit, so that a run's sums do not depend on the path.
+// The far-field loop looks a run of directions up at once (bilinear_batch, vectorised); its
+// values must be bilinear()'s to the last bit, so that a run's sums do not depend on the path.
+// Each version of the batch (util/simd.h's LUXGRID_MULTIVERSION) is called by name.
+using Batch = void (*)(const float*, int, int, const double*, const double*, const double*, int,
+                       double*);
+void expect_batch_same_bits_as_one_by_one(Batch batch_lookup) {
   const Photometry p = load_photometry_file(std::filesystem::path(LUXGRID_SOURCE_DIR) /
                                             "tests/data/photometry/ldt/zumtobel_mirel_isym4.ldt");
   const DistributionTexture tex(*p.table, 1440, 720, Interpolation::bilinear);
@@ -304,12 +307,21 @@ TEST(Texture, BatchLookupGivesTheSameBitsAsOneByOne) {
   std::vector<double> x, y, z;
   for (const Vec3& v : d) x.push_back(v.x), y.push_back(v.y), z.push_back(v.z);
   std::vector<double> batch(d.size());
-  tex.bilinear_batch(x.data(), y.data(), z.data(), static_cast<int>(d.size()), batch.data());
+  batch_lookup(tex.texels().data(), tex.c_cells(), tex.gamma_cells(), x.data(), y.data(), z.data(),
+               static_cast<int>(d.size()), batch.data());
   for (size_t k = 0; k < d.size(); ++k) {
     const double one = tex.bilinear(d[k]);
     EXPECT_EQ(std::memcmp(&one, &batch[k], sizeof one), 0)
         << k << ": " << one << " against " << batch[k];
   }
+}
+
+TEST(Texture, BatchLookupGivesTheSameBitsAsOneByOneAvx2) {
+  if (!simd::cpu_has_avx2()) GTEST_SKIP() << "this processor has no AVX2";
+  expect_batch_same_bits_as_one_by_one(bilinear_batch_texels_avx2);
+}
+TEST(Texture, BatchLookupGivesTheSameBitsAsOneByOneDefault) {
+  expect_batch_same_bits_as_one_by_one(bilinear_batch_texels_default);
 }
 
 }  // namespace
