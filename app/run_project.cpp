@@ -72,7 +72,7 @@ RunOutcome run_project(const std::filesystem::path& project_file,
   const double load_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (options.on_load_warning)
-    for (const auto& w : scene.warnings) options.on_load_warning(w);
+    for (const auto& w : scene.warnings) options.on_load_warning(w.text());
 
   // Everything that can reject the input has run: only now does an output folder appear.
   report::OutputFolder folder(out_dir, input_files(scene));
@@ -100,7 +100,7 @@ RunOutcome run_project(const std::filesystem::path& project_file,
   out.cost = outcome.cost ? &*outcome.cost : nullptr;
   out.version = LUXGRID_VERSION;
   // Scene warnings (legal but suspicious input, naming the object) first, then the outputs'.
-  outcome.warnings = scene.warnings;
+  for (const auto& w : scene.warnings) outcome.warnings.push_back(w.text());
   outcome.scene_warnings = scene.warnings.size();
   // The plan's (an error estimate above the quality's promise): printed with the outputs'.
   for (const auto& w : outcome.results.plan.warnings) outcome.warnings.push_back(w);

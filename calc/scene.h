@@ -13,6 +13,7 @@
 #include "geometry/room.h"
 #include "geometry/surface_grid.h"
 #include "photometry/photometry.h"
+#include "util/error.h"
 
 namespace luxgrid::calc {
 
@@ -113,9 +114,10 @@ struct Scene {
   // What was done to the project before the calculation (the emergency scene's choices): the
   // pipeline copies them into the plan's notes.
   std::vector<std::string> notes;
-  // Legal but suspicious input, each naming the object ("room \"L\": the outline is clockwise;
-  // reversed to counter-clockwise"). The CLI prints them; results may list them.
-  std::vector<std::string> warnings;
+  // Legal but suspicious input, each at its place in the project file and naming the object
+  // (`p.json:5:16 /rooms/0/outline: room "L": the outline is clockwise; reversed to
+  // counter-clockwise`; util/error.h). The CLI prints them; results list them.
+  std::vector<Warning> warnings;
 };
 
 }  // namespace luxgrid::calc

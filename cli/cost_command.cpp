@@ -23,7 +23,7 @@ void add_cost_command(CLI::App& app, Runner& run) {
     run = [opt] {
       const project::Project loaded = project::load_project(opt->project);
       for (const auto& w : loaded.scene.warnings)
-        std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
+        std::fprintf(stderr, "luxgrid: warning: %s\n", w.text().c_str());
       const auto table = app::run_cost(loaded.scene, true);
       // Each level's surfaces whose estimated error exceeds its promise (the table marks them "!").
       for (const auto& level : table.levels)

@@ -45,8 +45,8 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
     const auto entry = ph.at(key.c_str());
     auto p = parse_photometry_entry(entry, files);
     entry.report_unqueried();
-    // The reader's warnings name the file; say which entry loaded it, once per entry.
-    for (const auto& w : p.warnings) scene.warnings.push_back("photometry \"" + key + "\": " + w);
+    // The reader's warnings name the file; the place says which entry loaded it, once per entry.
+    for (const auto& w : p.warnings) scene.warnings.push_back({entry.location(), w});
     scene.photometry.emplace(key, std::move(p));
   }
   const auto rooms = root.at("rooms");
@@ -71,10 +71,11 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
   }
   size_t index = 0;
   for (const auto& l : root.at("luminaires").items()) {
+    const std::size_t first = scene.luminaires.size();
     parse_luminaire(l, index++, scene, scene.luminaires);
     l.report_unqueried();
+    warn_about_luminaires(l, first, scene);
   }
-  warn_about_luminaires(scene);
   const auto surfaces = root.at("surfaces");
   check_count(surfaces, kMaxSurfaces, "surfaces");
   // Every surface is charged its points from its definition before any grid is built, so a

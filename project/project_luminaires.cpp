@@ -134,9 +134,10 @@ void parse_luminaire(const JsonValue& l, size_t index, const Scene& scene,
 
 // Luminaires outside every room or inside an obstacle are legal (light may enter through an
 // opening later) but usually a typo: warn, naming the luminaire.
-void warn_about_luminaires(Scene& scene) {
+void warn_about_luminaires(const JsonValue& entry, std::size_t first, Scene& scene) {
   if (scene.rooms.empty()) return;
-  for (const auto& l : scene.luminaires) {
+  for (std::size_t k = first; k < scene.luminaires.size(); ++k) {
+    const Luminaire& l = scene.luminaires[k];
     const Vec3& p = l.pose.position;
     bool inside = false;
     for (const auto& r : scene.rooms) {
@@ -145,12 +146,12 @@ void warn_about_luminaires(Scene& scene) {
       for (const auto& o : r.obstacles) {
         if (p.z > o.z0 && p.z < o.z1 &&
             geometry::locate(Vec2(p.x, p.y), o.footprint, 0.0) == geometry::Location::inside) {
-          scene.warnings.push_back(l.label + ": inside obstacle \"" + o.name + "\" of room \"" +
-                                   r.name + "\"");
+          scene.warnings.push_back({entry.location(), l.label + ": inside obstacle \"" + o.name +
+                                                          "\" of room \"" + r.name + "\""});
         }
       }
     }
-    if (!inside) scene.warnings.push_back(l.label + ": outside every room");
+    if (!inside) scene.warnings.push_back({entry.location(), l.label + ": outside every room"});
   }
 }
 

@@ -79,15 +79,16 @@ struct FilePolicy {
 photometry::Photometry parse_photometry_entry(const JsonValue& e, const FilePolicy& policy);
 
 // rooms (project_rooms.cpp). Warnings (a clockwise outline reversed) go to `warnings`.
-calc::Room parse_room(const JsonValue& r, std::vector<std::string>& warnings);
+calc::Room parse_room(const JsonValue& r, std::vector<Warning>& warnings);
 
 // luminaires (project_luminaires.cpp): luminaire number `index` of the file, appended to `out`
 // (an array gives many).
 void parse_luminaire(const JsonValue& l, std::size_t index, const calc::Scene& scene,
                      std::vector<calc::Luminaire>& out);
 // Luminaires outside every room or inside an obstacle are legal (light may enter through an
-// opening later) but usually a typo: warn, naming the luminaire.
-void warn_about_luminaires(calc::Scene& scene);
+// opening later) but usually a typo: warn at `entry`, naming the luminaire, for each luminaire
+// from number `first` on (those the entry gave).
+void warn_about_luminaires(const JsonValue& entry, std::size_t first, calc::Scene& scene);
 
 // surfaces (project_surfaces.cpp).
 // Grid points promised so far over all surfaces. Each surface is charged its point count,

@@ -9,7 +9,7 @@ namespace luxgrid::project::parts {
 using namespace calc;
 
 geometry::Obstacle parse_obstacle(const JsonValue& o, size_t index, const Room& room,
-                                  std::vector<std::string>& warnings) {
+                                  std::vector<Warning>& warnings) {
   o.expect_object();
   const std::string name =
       o.has("name") ? o.at("name").as_string() : "obstacle " + std::to_string(index);
@@ -36,8 +36,9 @@ geometry::Obstacle parse_obstacle(const JsonValue& o, size_t index, const Room& 
     out = at_place(outline_v,
                    [&] { return geometry::make_prism(name, outline, z0, z1, rho, &reversed); });
     if (reversed) {
-      warnings.push_back("obstacle \"" + name +
-                         "\": the outline is clockwise; reversed to counter-clockwise");
+      warnings.push_back(
+          {outline_v.location(),
+           "obstacle \"" + name + "\": the outline is clockwise; reversed to counter-clockwise"});
     }
   }
   const double top = room.floor_z + room.height;
@@ -48,7 +49,7 @@ geometry::Obstacle parse_obstacle(const JsonValue& o, size_t index, const Room& 
   return out;
 }
 
-Room parse_room(const JsonValue& r, std::vector<std::string>& warnings) {
+Room parse_room(const JsonValue& r, std::vector<Warning>& warnings) {
   r.expect_object();
   Room room;
   room.name = r.at("name").as_string();
@@ -62,8 +63,9 @@ Room parse_room(const JsonValue& r, std::vector<std::string>& warnings) {
     return geometry::normalize_outline(room.outline, "room \"" + room.name + "\"");
   });
   if (reversed) {
-    warnings.push_back("room \"" + room.name +
-                       "\": the outline is clockwise; reversed to counter-clockwise");
+    warnings.push_back(
+        {outline.location(),
+         "room \"" + room.name + "\": the outline is clockwise; reversed to counter-clockwise"});
   }
   if (auto z = r.find("floor_z")) room.floor_z = coordinate(*z);
   const auto height_v = r.at("height");

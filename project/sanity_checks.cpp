@@ -16,15 +16,14 @@ using namespace calc;
 
 namespace {
 
-// `/surfaces/2 "workplane"`: the pointer first (the place in the file), then the name.
-std::string object(const JsonValue& v, const std::string& name) {
-  return v.pointer() + " \"" + name + "\"";
-}
+// `surface "workplane"`: a warning's place is the entry's (file, line, column, pointer); its
+// message names the object as the user does.
+std::string surface_named(const std::string& name) { return "surface \"" + name + "\""; }
 
 std::string metres(double x) { return number_text(x) + " m"; }
 
 // Lengths in a room's plan or a plane that read as millimetres.
-void check_millimetres(const Scene& scene, const JsonValue& root, std::vector<std::string>& out) {
+void check_millimetres(const Scene& scene, const JsonValue& root, std::vector<Warning>& out) {
   if (auto rooms = root.find("rooms")) {
     const auto items = rooms->items();
     for (size_t i = 0; i < items.size() && i < scene.rooms.size(); ++i) {
@@ -33,9 +32,10 @@ void check_millimetres(const Scene& scene, const JsonValue& root, std::vector<st
       const double dx = box.hi.x - box.lo.x, dy = box.hi.y - box.lo.y;
       if (std::max(dx, dy) > kMillimetreSuspect_m) {
         out.push_back(
-            object(items[i], r.name) + ": the room is " + metres(dx) + " x " + metres(dy) +
-            " in plan, which looks like millimetres; luxgrid reads every length in metres "
-            "and calculated the room as given (divide the lengths by 1000)");
+            {items[i].location(),
+             "room \"" + r.name + "\": the room is " + metres(dx) + " x " + metres(dy) +
+                 " in plan, which looks like millimetres; luxgrid reads every length in metres "
+                 "and calculated the room as given (divide the lengths by 1000)"});
       }
     }
   }
@@ -45,10 +45,12 @@ void check_millimetres(const Scene& scene, const JsonValue& root, std::vector<st
       if (!plane) continue;
       const auto size = plane->at("size").as_vec2();
       if (std::max(size.x, size.y) > kMillimetreSuspect_m) {
-        out.push_back(object(s, s.at("name").as_string()) + ": the plane is " + metres(size.x) +
-                      " x " + metres(size.y) +
-                      ", which looks like millimetres; luxgrid reads every length in "
-                      "metres and calculated the plane as given (divide the lengths by 1000)");
+        out.push_back(
+            {s.location(),
+             surface_named(s.at("name").as_string()) + ": the plane is " + metres(size.x) + " x " +
+                 metres(size.y) +
+                 ", which looks like millimetres; luxgrid reads every length in "
+                 "metres and calculated the plane as given (divide the lengths by 1000)"});
       }
     }
   }
@@ -82,7 +84,7 @@ std::vector<SurfaceEntry> surface_entries(const Scene& scene, const JsonValue& r
 
 // A spacing larger than the surface, and grids too coarse for statistics.
 void check_grids(const std::vector<SurfaceEntry>& entries, const Scene& scene,
-                 std::vector<std::string>& out) {
+                 std::vector<Warning>& out) {
   for (const auto& e : entries) {
     const std::string name = e.value.at("name").as_string();
     const auto spacing = e.value.find("spacing");
@@ -105,9 +107,10 @@ void check_grids(const std::vector<SurfaceEntry>& entries, const Scene& scene,
       }
       const double p = spacing->as_number();
       if (longer > 0.0 && p > longer) {
-        out.push_back(spacing->pointer() + ": the spacing " + metres(p) + " of surface \"" + name +
-                      "\" is larger than the surface (" + extent +
-                      "); luxgrid used one cell across it (spacings are in metres)");
+        out.push_back({spacing->location(),
+                       "the spacing " + metres(p) + " of surface \"" + name +
+                           "\" is larger than the surface (" + extent +
+                           "); luxgrid used one cell across it (spacings are in metres)"});
       }
     }
     std::string coarse;
@@ -119,11 +122,12 @@ void check_grids(const std::vector<SurfaceEntry>& entries, const Scene& scene,
                 " x " + std::to_string(g->nv) + " points";
     }
     if (!coarse.empty()) {
-      out.push_back(object(e.value, name) + ": a grid of fewer than " +
-                    std::to_string(kMinGridPointsPerSide) + " x " +
-                    std::to_string(kMinGridPointsPerSide) + " points (" + coarse +
-                    "); luxgrid calculated it as given, but its Emin, U0 and map say little (use a "
-                    "smaller spacing)");
+      out.push_back(
+          {e.value.location(),
+           surface_named(name) + ": a grid of fewer than " + std::to_string(kMinGridPointsPerSide) +
+               " x " + std::to_string(kMinGridPointsPerSide) + " points (" + coarse +
+               "); luxgrid calculated it as given, but its Emin, U0 and map say little (use a "
+               "smaller spacing)"});
     }
   }
 }
@@ -131,7 +135,7 @@ void check_grids(const std::vector<SurfaceEntry>& entries, const Scene& scene,
 // A grid whose points all face away from every room: its receivers look at the outside of the
 // room's boundary (a wall plane with u and v swapped), where no luminaire of the room shines.
 void check_facing(const std::vector<SurfaceEntry>& entries, const Scene& scene,
-                  std::vector<std::string>& out) {
+                  std::vector<Warning>& out) {
   if (scene.rooms.empty()) return;
   auto in_some_room = [&](const Vec3& p) {
     return std::any_of(scene.rooms.begin(), scene.rooms.end(),
@@ -147,16 +151,18 @@ void check_facing(const std::vector<SurfaceEntry>& entries, const Scene& scene,
         back_inside = back_inside || in_some_room(g->points[i] - kFacingProbe_m * g->normals[i]);
       }
       if (front_inside || !back_inside) continue;  // faces a room, or lies outside all of them
-      out.push_back(object(e.value, e.value.at("name").as_string()) + ": grid \"" + g->name +
-                    "\" faces out of every room (its normals point through the room's boundary); "
-                    "luxgrid calculated the light arriving on that side, which no luminaire inside "
-                    "reaches (swap u and v, or turn the normal, to face into the room)");
+      out.push_back(
+          {e.value.location(),
+           surface_named(e.value.at("name").as_string()) + ": grid \"" + g->name +
+               "\" faces out of every room (its normals point through the room's boundary); "
+               "luxgrid calculated the light arriving on that side, which no luminaire inside "
+               "reaches (swap u and v, or turn the normal, to face into the room)"});
     }
   }
 }
 
 // flux_lm in kilolumens: far below what the file itself says the luminaire emits.
-void check_flux(const Scene& scene, const JsonValue& root, std::vector<std::string>& out) {
+void check_flux(const Scene& scene, const JsonValue& root, std::vector<Warning>& out) {
   const auto ph = root.find("photometry");
   if (!ph || !ph->is_object()) return;
   for (const auto& [key, _] : ph->raw().items()) {
@@ -168,11 +174,12 @@ void check_flux(const Scene& scene, const JsonValue& root, std::vector<std::stri
     const double target = flux->as_number();
     const double file_lm = luminous_flux(*it->second.table);
     if (target < kKilolumenSuspect_lm && file_lm >= kKilolumenRatio * target) {
-      out.push_back(flux->pointer() + ": flux_lm " + number_text(target) + " lm for photometry \"" +
-                    key + "\", whose file gives " + number_text(std::round(file_lm)) +
-                    " lm, looks like kilolumens; luxgrid scaled the luminaire to " +
-                    number_text(target) + " lm (for " + number_text(target * 1000.0) +
-                    " lm write " + number_text(target * 1000.0) + ")");
+      out.push_back(
+          {flux->location(), "flux_lm " + number_text(target) + " lm for photometry \"" + key +
+                                 "\", whose file gives " + number_text(std::round(file_lm)) +
+                                 " lm, looks like kilolumens; luxgrid scaled the luminaire to " +
+                                 number_text(target) + " lm (for " + number_text(target * 1000.0) +
+                                 " lm write " + number_text(target * 1000.0) + ")"});
     }
   }
 }
@@ -199,7 +206,7 @@ std::vector<std::pair<JsonValue, std::vector<const Luminaire*>>> luminaire_entri
 }
 
 // Rotations are in degrees; small non-whole values within one turn read as radians.
-void check_rotation(const JsonValue& l, std::vector<std::string>& out) {
+void check_rotation(const JsonValue& l, std::vector<Warning>& out) {
   const auto rot = l.find("rotation");
   if (!rot) return;
   const auto v = rot->as_numbers(3);
@@ -214,11 +221,12 @@ void check_rotation(const JsonValue& l, std::vector<std::string>& out) {
   for (double a : v)
     degrees +=
         (degrees.empty() ? "" : ", ") + number_text(std::round(a * kRadToDeg * 100.0) / 100.0);
-  out.push_back(rot->pointer() + ": the rotation [" + number_text(v[0]) + ", " + number_text(v[1]) +
-                ", " + number_text(v[2]) +
-                "] looks like radians; luxgrid reads degrees and turned the luminaire by "
-                "that many degrees (in degrees, these radians are [" +
-                degrees + "])");
+  out.push_back({rot->location(),
+                 "the rotation [" + number_text(v[0]) + ", " + number_text(v[1]) + ", " +
+                     number_text(v[2]) +
+                     "] looks like radians; luxgrid reads degrees and turned the luminaire by "
+                     "that many degrees (in degrees, these radians are [" +
+                     degrees + "])"});
 }
 
 // The nearest wall of `room` that the ray from `p` along unit `d` meets, m; infinity if none.
@@ -246,7 +254,7 @@ double distance_to_wall(const Room& room, const Vec3& p, const Vec3& d, size_t& 
 }
 
 void check_aim(const JsonValue& l, const std::vector<const Luminaire*>& members, const Scene& scene,
-               std::map<std::string, Vec3>& beams, std::vector<std::string>& out) {
+               std::map<std::string, Vec3>& beams, std::vector<Warning>& out) {
   const Luminaire* first = nullptr;
   size_t hits = 0;
   std::string what;
@@ -273,10 +281,11 @@ void check_aim(const JsonValue& l, const std::vector<const Luminaire*>& members,
   }
   if (!first) return;
   out.push_back(
-      l.pointer() + " \"" + first->label + "\"" +
-      (hits > 1 ? " and " + std::to_string(hits - 1) + " more of this entry" : std::string()) +
-      ": " + what +
-      "; luxgrid calculated it as placed and turned (check its position and rotation)");
+      {l.location(),
+       first->label +
+           (hits > 1 ? " and " + std::to_string(hits - 1) + " more of this entry" : std::string()) +
+           ": " + what +
+           "; luxgrid calculated it as placed and turned (check its position and rotation)"});
 }
 
 }  // namespace
@@ -304,7 +313,7 @@ Vec3 main_beam_direction(const photometry::IntensityDistribution& d) {
 }
 
 void add_sanity_warnings(Scene& scene, const JsonValue& root) {
-  std::vector<std::string> out;
+  std::vector<Warning> out;
   check_millimetres(scene, root, out);
   const auto entries = surface_entries(scene, root);
   check_grids(entries, scene, out);

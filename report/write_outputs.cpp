@@ -182,8 +182,9 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   const auto write_json = [&] {
     // The scene's warnings (legal but suspicious input) and the outputs', as the terminal shows
     // them.
-    std::vector<std::string> all_warnings =
-        options.scene ? options.scene->warnings : std::vector<std::string>{};
+    std::vector<std::string> all_warnings;
+    if (options.scene)
+      for (const auto& w : options.scene->warnings) all_warnings.push_back(w.text());
     all_warnings.insert(all_warnings.end(), warnings.begin(), warnings.end());
     ResultsOrigin origin;
     origin.version = options.version;

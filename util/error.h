@@ -42,6 +42,15 @@ inline std::string located_message(const SourceLocation& where, const std::strin
   return where.empty() ? message : where.text() + ": " + message;
 }
 
+// Legal input that is probably a mistake (lengths in millimetres, a clockwise outline): where it
+// is and what luxgrid assumed. It prints by the same rule as an InputError.
+struct Warning {
+  SourceLocation where;
+  std::string message;
+
+  std::string text() const { return located_message(where, message); }
+};
+
 // Input the user can fix (bad project file, unreadable photometry, impossible geometry).
 // The CLI maps it to exit code 2.
 class InputError : public std::runtime_error {

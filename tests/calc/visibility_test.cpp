@@ -135,7 +135,7 @@ TEST(Visibility, LShapeExampleLoads) {
   const Scene scene = project::load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) /
                                             "examples/lshape/project.json")
                           .scene;
-  EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+  EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front().text();
   std::string reason;
   const auto vis = make_visibility(scene, reason);
   ASSERT_TRUE(vis);

@@ -326,8 +326,9 @@ TEST(ProjectFile, LShapedRoomWithObstacles) {
   EXPECT_DOUBLE_EQ(s.rooms[0].obstacles[0].z1, 3.0);
   // The clockwise prism outline was reversed, with a warning.
   ASSERT_EQ(s.warnings.size(), 1u);
-  EXPECT_EQ(s.warnings[0],
-            "obstacle \"partition\": the outline is clockwise; reversed to counter-clockwise");
+  EXPECT_EQ(s.warnings[0].text(),
+            "p.json /rooms/0/obstacles/2/prism/outline: obstacle \"partition\": the outline is "
+            "clockwise; reversed to counter-clockwise");
   // Inset L: 5 x 5 cells of 1 m; 16 inside the L, (2, 2) inside the column; the table (0.7 m)
   // and the partition (its footprint holds no cell centre) remove nothing.
   const auto& g = s.surfaces[0];
@@ -343,7 +344,9 @@ TEST(ProjectFile, ClockwiseRoomIsReversedWithAWarning) {
   doc["rooms"][0]["outline"] = nlohmann::json::parse("[[0,3],[4,3],[4,0],[0,0]]");
   const Scene s = parse_project(doc, "p.json", ".").scene;
   ASSERT_EQ(s.warnings.size(), 1u);
-  EXPECT_EQ(s.warnings[0], "room \"r\": the outline is clockwise; reversed to counter-clockwise");
+  EXPECT_EQ(s.warnings[0].text(),
+            "p.json /rooms/0/outline: room \"r\": the outline is clockwise; reversed to "
+            "counter-clockwise");
   EXPECT_GT(geometry::signed_area(s.rooms[0].outline), 0.0);
   EXPECT_EQ(s.surfaces[0].points.front(), Vec3(0.75, 0.75, 0.8));  // the same grid as CCW
 }
@@ -355,8 +358,9 @@ TEST(ProjectFile, LuminaireOutsideEveryRoomOrInsideAnObstacleWarns) {
       {{"name", "in column"}, {"photometry", "iso"}, {"position", {2, 2, 2}}});
   const Scene s = parse_project(doc, "p.json", ".").scene;
   ASSERT_EQ(s.warnings.size(), 3u);
-  EXPECT_EQ(s.warnings[1], "luminaire 0: outside every room");
-  EXPECT_EQ(s.warnings[2], "in column: inside obstacle \"column\" of room \"r\"");
+  EXPECT_EQ(s.warnings[1].text(), "p.json /luminaires/0: luminaire 0: outside every room");
+  EXPECT_EQ(s.warnings[2].text(),
+            "p.json /luminaires/1: in column: inside obstacle \"column\" of room \"r\"");
 }
 
 TEST(ProjectFile, RoomSurfacesGiveOneGridPerFace) {
@@ -604,8 +608,8 @@ TEST(ProjectFile, PhotometryWarningsReachTheSceneOncePerEntry) {
   ASSERT_EQ(file_warnings.size(), 1u);
   ASSERT_EQ(s.warnings.size(), 2u);
   // Entries in key order (std::map): "again", then "lamp".
-  EXPECT_EQ(s.warnings[0], "photometry \"again\": " + file_warnings[0]);
-  EXPECT_EQ(s.warnings[1], "photometry \"lamp\": " + file_warnings[0]);
+  EXPECT_EQ(s.warnings[0].text(), "p.json /photometry/again: " + file_warnings[0]);
+  EXPECT_EQ(s.warnings[1].text(), "p.json /photometry/lamp: " + file_warnings[0]);
 }
 
 TEST(ProjectFile, PhotometryOutsideTheProjectFolderNeedsTheSetting) {

@@ -31,8 +31,11 @@ nlohmann::json office() {
   })");
 }
 
+// The warnings as printed (util/error.h: place, then message).
 std::vector<std::string> warnings_of(const nlohmann::json& doc, const std::string& base = ".") {
-  return parse_project(doc, "p.json", base).scene.warnings;
+  std::vector<std::string> out;
+  for (const auto& w : parse_project(doc, "p.json", base).scene.warnings) out.push_back(w.text());
+  return out;
 }
 
 // The one warning of `doc`, which must contain every piece of `expected`.
@@ -53,8 +56,8 @@ TEST(SanityChecks, ARoomInMillimetresInPlanWarns) {
   // 1500 x 4 m in plan, 2.8 m high: the plan is in millimetres, the height (wrongly) not.
   auto doc = office();
   doc["rooms"][0]["outline"] = nlohmann::json::parse("[[0,0],[1500,0],[1500,4],[0,4]]");
-  expect_one_warning(doc, {"/rooms/0 \"office\"", "1500 m x 4 m", "looks like millimetres",
-                           "luxgrid reads every length in metres"});
+  expect_one_warning(doc, {"p.json /rooms/0: room \"office\": the room is", "1500 m x 4 m",
+                           "looks like millimetres", "luxgrid reads every length in metres"});
 }
 
 TEST(SanityChecks, APlaneInMillimetresWarns) {
@@ -62,7 +65,8 @@ TEST(SanityChecks, APlaneInMillimetresWarns) {
   doc["surfaces"][1] = nlohmann::json::parse(
       R"({ "name": "sign", "plane": { "origin": [0, 0, 0], "u": [1, 0, 0], "v": [0, 1, 0], "size": [2000, 1000] },
            "spacing": 200 })");
-  expect_one_warning(doc, {"/surfaces/1 \"sign\"", "2000 m x 1000 m", "looks like millimetres"});
+  expect_one_warning(doc, {"p.json /surfaces/1: surface \"sign\": the plane is", "2000 m x 1000 m",
+                           "looks like millimetres"});
 }
 
 TEST(SanityChecks, ARoomHigherThanAnyHallIsRefusedAsMillimetres) {
@@ -89,12 +93,14 @@ TEST(SanityChecks, ASpacingLargerThanTheSurfaceWarnsAndSoDoesTheOnePointGrid) {
   doc["surfaces"][0]["spacing"] = 250;
   const auto w = warnings_of(doc);
   ASSERT_EQ(w.size(), 2u);
-  EXPECT_EQ(w[0],
-            "/surfaces/0/spacing: the spacing 250 m of surface \"wp\" is larger than the surface "
-            "(5 m x 3 m); "
-            "luxgrid used one cell across it (spacings are in metres)");
+  EXPECT_EQ(
+      w[0],
+      "p.json /surfaces/0/spacing: the spacing 250 m of surface \"wp\" is larger than the surface "
+      "(5 m x 3 m); "
+      "luxgrid used one cell across it (spacings are in metres)");
   EXPECT_EQ(w[1],
-            "/surfaces/0 \"wp\": a grid of fewer than 3 x 3 points (1 x 1 points); luxgrid "
+            "p.json /surfaces/0: surface \"wp\": a grid of fewer than 3 x 3 points (1 x 1 points); "
+            "luxgrid "
             "calculated it as "
             "given, but its Emin, U0 and map say little (use a smaller spacing)");
 }
@@ -102,7 +108,7 @@ TEST(SanityChecks, ASpacingLargerThanTheSurfaceWarnsAndSoDoesTheOnePointGrid) {
 TEST(SanityChecks, AGridOfTwoRowsWarnsAndThreeDoesNot) {
   auto doc = office();
   doc["surfaces"][0]["spacing"] = 1.5;  // 5 x 3 m: ceil(5/1.5) = 4 by ceil(3/1.5) = 2
-  expect_one_warning(doc, {"/surfaces/0 \"wp\"", "(4 x 2 points)"});
+  expect_one_warning(doc, {"p.json /surfaces/0: surface \"wp\": a grid", "(4 x 2 points)"});
   doc["surfaces"][0]["spacing"] = 1.0;  // 5 x 3 points
   EXPECT_EQ(warnings_of(doc), std::vector<std::string>{});
 }
@@ -114,8 +120,8 @@ TEST(SanityChecks, RoomSurfacesNameTheirCoarseGrids) {
   // Floor and ceiling 6 x 4 points, long walls 6 x 3, short walls 4 x 3: all at least 3 x 3.
   EXPECT_EQ(warnings_of(doc), std::vector<std::string>{});
   doc["surfaces"][2]["spacing"] = 1.5;  // height 2.8 m: 2 rows on every wall
-  expect_one_warning(
-      doc, {"/surfaces/2 \"room\"", "room wall 0 4 x 2 points", "room wall 3 3 x 2 points"});
+  expect_one_warning(doc, {"p.json /surfaces/2: surface \"room\": a grid",
+                           "room wall 0 4 x 2 points", "room wall 3 3 x 2 points"});
 }
 
 TEST(SanityChecks, FluxInKilolumensWarns) {
@@ -124,7 +130,7 @@ TEST(SanityChecks, FluxInKilolumensWarns) {
   auto doc = office();
   doc["photometry"]["down"] = {{"file", "photometry/zumtobel_mirel_isym4.ldt"}, {"flux_lm", 4.4}};
   expect_one_warning(doc,
-                     {"/photometry/down/flux_lm: flux_lm 4.4 lm", "looks like kilolumens",
+                     {"p.json /photometry/down/flux_lm: flux_lm 4.4 lm", "looks like kilolumens",
                       "luxgrid scaled the luminaire to 4.4 lm", "for 4400 lm write 4400"},
                      base);
   doc["photometry"]["down"]["flux_lm"] = 4400;  // a real value
@@ -134,8 +140,9 @@ TEST(SanityChecks, FluxInKilolumensWarns) {
 TEST(SanityChecks, RotationsInRadiansWarnWholeDegreesDoNot) {
   auto doc = office();
   doc["luminaires"][0]["rotation"] = {0, 0, 1.5708};
-  expect_one_warning(doc, {"/luminaires/0/rotation: the rotation [0, 0, 1.5708] looks like radians",
-                           "luxgrid reads degrees", "[0, 0, 90]"});
+  expect_one_warning(
+      doc, {"p.json /luminaires/0/rotation: the rotation [0, 0, 1.5708] looks like radians",
+            "luxgrid reads degrees", "[0, 0, 90]"});
   doc["luminaires"][0]["rotation"] = {0, 0, 5};  // 5 degrees, whole: meant
   EXPECT_EQ(warnings_of(doc), std::vector<std::string>{});
   doc["luminaires"][0]["rotation"] = {0, 0, 0};
@@ -150,8 +157,9 @@ TEST(SanityChecks, ALuminaireAimedIntoANearbyWallWarns) {
   auto doc = office();
   doc["luminaires"][0]["position"] = {0.3, 2, 2.0};
   doc["luminaires"][0]["rotation"] = {0, 90, 0};
-  expect_one_warning(doc, {"/luminaires/0 \"panel\"", "meets room \"office\" wall 3 0.3 m away",
-                           "luxgrid calculated it as placed and turned"});
+  expect_one_warning(
+      doc, {"p.json /luminaires/0: panel: its main beam", "meets room \"office\" wall 3 0.3 m away",
+            "luxgrid calculated it as placed and turned"});
   doc["luminaires"][0]["rotation"] = {0, -90, 0};  // the other way: across the room, 5.7 m
   EXPECT_EQ(warnings_of(doc), std::vector<std::string>{});
   doc["luminaires"][0]["rotation"] = {0, 0, 0};  // down: the floor, not a wall
@@ -165,7 +173,8 @@ TEST(SanityChecks, AnArrayNamesItsFirstMemberAimedIntoAWall) {
            "array": { "origin": [0.2, 1, 2], "count": [2, 3], "spacing": [3, 1] } })");
   // The members at x = 0.2 (three of them) face the west wall 0.2 m away; those at 3.2 do not.
   expect_one_warning(doc,
-                     {"/luminaires/0 \"row [0,0]\" and 2 more of this entry", "wall 3 0.2 m away"});
+                     {"p.json /luminaires/0: row [0,0] and 2 more of this entry: its main beam",
+                      "wall 3 0.2 m away"});
 }
 
 TEST(SanityChecks, AGridFacingOutOfEveryRoomWarns) {
@@ -173,8 +182,9 @@ TEST(SanityChecks, AGridFacingOutOfEveryRoomWarns) {
   auto doc = office();
   doc["surfaces"][1]["plane"]["u"] = {0, 0, 1};
   doc["surfaces"][1]["plane"]["v"] = {-1, 0, 0};
-  expect_one_warning(doc,
-                     {"/surfaces/1 \"south wall\": grid \"south wall\" faces out of every room"});
+  expect_one_warning(
+      doc,
+      {"p.json /surfaces/1: surface \"south wall\": grid \"south wall\" faces out of every room"});
   // A plane outside every room (a facade outdoors) is not a mistake of this kind.
   doc["surfaces"][1]["plane"]["origin"] = {6, -5, 0};
   EXPECT_EQ(warnings_of(doc), std::vector<std::string>{});

@@ -104,5 +104,24 @@ TEST(ValuePositions, EveryValueOfAParsedDocumentHasItsPosition) {
   EXPECT_EQ(positions.of(copy["c"]).line, 0);
 }
 
+TEST(ValuePositions, WarningsNameTheirPlaceByTheSameRule) {
+  // A clockwise room outline (line 6, its "[" at column 16) is legal: reversed, with a warning
+  // printed as errors are, file:line:column /pointer: message.
+  const std::string text = project_with_rooms(
+      "  \"luminaires\": [],\n"
+      "  \"rooms\": [{\"name\": \"A\", \"height\": 3,\n"
+      "    \"outline\": [[0, 3], [4, 3], [4, 0], [0, 0]]}],\n"
+      "  \"surfaces\": [{\"name\": \"p\", \"points\": [{\"at\": [1, 1, 0], \"normal\": [0, 0, "
+      "1]}]}]\n");
+  const auto warnings = parse_project_text(text, "p.json", ".").scene.warnings;
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].where.line, 6);
+  EXPECT_EQ(warnings[0].where.column, 16);
+  EXPECT_EQ(warnings[0].text(),
+            "p.json:6:16 /rooms/0/outline: room \"A\": the outline is clockwise; reversed to "
+            "counter-clockwise");
+  EXPECT_EQ(warnings[0].text(), InputError(warnings[0].where, warnings[0].message).what());
+}
+
 }  // namespace
 }  // namespace luxgrid::project
