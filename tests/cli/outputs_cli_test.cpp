@@ -228,7 +228,8 @@ TEST(Outputs, WarningsGoToStderrAndNameTheObjectAtOnce) {
   EXPECT_EQ(stdout_only.output.find("warning"), std::string::npos) << stdout_only.output;
   const CommandResult both = luxgrid::test::shell(calc);
   const std::string w =
-      "luxgrid: warning: /surfaces/0/spacing: the spacing 250 m of surface \"wp\" is larger than "
+      "luxgrid: warning: p.json:6:106 /surfaces/0/spacing: the spacing 250 m of surface \"wp\" is "
+      "larger than "
       "the surface (5 m x 3 m)";
   const auto at = both.output.find(w);
   ASSERT_NE(at, std::string::npos) << both.output;
