@@ -11,6 +11,7 @@
 #include "project/project_file.h"
 #include "report/colour_rendering.h"
 #include "report/output_folder.h"
+#include "report/plan_text.h"
 #include "report/requirements_en1838.h"
 #include "report/write_outputs.h"
 #include "util/error.h"
@@ -103,7 +104,7 @@ RunOutcome run_project(const std::filesystem::path& project_file,
   for (const auto& w : scene.warnings) outcome.warnings.push_back(w.text());
   outcome.scene_warnings = scene.warnings.size();
   // The plan's (an error estimate above the quality's promise): printed with the outputs'.
-  for (const auto& w : outcome.results.plan.warnings) outcome.warnings.push_back(w);
+  for (const auto& w : report::plan_warnings(outcome.results.plan)) outcome.warnings.push_back(w);
   for (auto& w : report::write_outputs(outcome.results, folder, out))
     outcome.warnings.push_back(std::move(w));
   // --no-report does not ask to delete the report of an earlier run into the same folder, nor
@@ -138,12 +139,12 @@ report::CostTable run_cost(const calc::Scene& base, bool show_progress) {
     report::CostLevel level;
     level.quality = calc::to_string(q);
     level.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    level.direct = runs.back().plan.direct;
-    level.indirect = runs.back().plan.indirect;
-    level.visibility = runs.back().plan.visibility;
-    level.promise = runs.back().plan.promise;
+    level.direct = report::direct_text(runs.back().plan);
+    level.indirect = report::indirect_text(runs.back().plan);
+    level.visibility = report::visibility_text(runs.back().plan);
+    level.promise = report::promise_text(q);
     level.promised_error = calc::promised_error(q);
-    level.warnings = runs.back().plan.warnings;
+    level.warnings = report::plan_warnings(runs.back().plan);
     table.levels.push_back(std::move(level));
   }
   const calc::Results& ref = runs.back();

@@ -100,11 +100,11 @@ std::unique_ptr<nearfield::MapDemand> demand_of(const Scene& scene, const Plan& 
 
 }  // namespace
 
-std::vector<std::string> attach_far_field_bounds(const Scene& scene, const Plan& plan,
+std::vector<NearFarPlan> attach_far_field_bounds(const Scene& scene, const Plan& plan,
                                                  std::vector<nearfield::Emitter>& emitters,
                                                  const DirectReach* reach,
                                                  const std::vector<std::vector<uint32_t>>* zones) {
-  std::vector<std::string> lines;
+  std::vector<NearFarPlan> lines;
   if (plan.near_switch != nearfield::NearFieldSwitch::automatic) return lines;
   const double tolerance = nearfield::promised_tolerance(plan.near_model);
   // The map's directions run on plain threads (the nearfield library has no TBB): as many as
@@ -133,10 +133,8 @@ std::vector<std::string> attach_far_field_bounds(const Scene& scene, const Plan&
     d.bound = nearfield::build_far_field_bound(emitters[d.members[0]], plan.near_model, tolerance,
                                                max_threads, demand.get());
     for (size_t i : d.members) emitters[i].far_bound = d.bound;
-    const std::string who = d.members.size() == 1
-                                ? scene.luminaires[d.members[0]].label
-                                : std::to_string(d.members.size()) + " luminaires";
-    lines.push_back("\"" + d.photometry + "\" (" + who + "): " + nearfield::describe(*d.bound));
+    lines.push_back({{d.photometry, d.members.size(), scene.luminaires[d.members[0]].label},
+                     nearfield::summarize(*d.bound)});
   }
   return lines;
 }

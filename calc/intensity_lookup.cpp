@@ -10,7 +10,6 @@
 #include "calc/plan_estimates.h"
 #include "calc/scaled_distribution.h"
 #include "photometry/tabular_distribution.h"
-#include "util/format.h"
 
 namespace luxgrid::calc {
 
@@ -114,9 +113,6 @@ double texture_limit(Quality quality) {
 }
 
 namespace {
-// Three digits: a bound just above the limit must not print as the limit.
-std::string percent(double fraction) { return format_double("%.3g %%", 100.0 * fraction); }
-
 // The texture of `source`, its texels sampled in parallel over rows.
 std::shared_ptr<const DistributionTexture> build_texture(
     const photometry::IntensityDistribution& source, int nu, int nv) {
@@ -132,24 +128,26 @@ std::shared_ptr<const DistributionTexture> build_texture(
 
 IntensityLookup choose_intensity_lookup(const photometry::DistributionPtr& distribution,
                                         Quality quality) {
+  using Kind = IntensityLookupChoice::Kind;
   IntensityLookup out;
   out.lookup = distribution;
+  out.choice.quality = quality;
   if (!dynamic_cast<const photometry::TabularDistribution*>(distribution.get())) {
     // An analytic profile (isotropic, Lambertian, ...) is exact and cheap as it is: the texture
     // exists to spare a table's two atan2, and would only add its float rounding.
-    out.description = "the distribution itself (analytic: exact, no table to look up)";
+    out.choice.kind = Kind::analytic;
     return out;
   }
   const double limit = texture_limit(quality);
+  out.choice.limit = limit;
+  out.choice.probe_fraction = kTextureProbeStride * kTextureProbeStride;
   if (!(limit > 0.0)) {
-    out.description = "the exact table (quality " + std::string(to_string(quality)) +
-                      " always looks the table up)";
+    out.choice.kind = Kind::table_by_quality;
     return out;
   }
-  const std::string quality_name = to_string(quality);
   int nu = kTextureCCells, nv = kTextureGammaCells;
   for (int raise = 0;; ++raise) {
-    const std::string grid = std::to_string(nu) + "x" + std::to_string(nv);
+    out.choice.c_cells = nu, out.choice.gamma_cells = nv;
     // Doubling the grid divides a smooth interpolant's error by 4 and a kink's by 2: a texture
     // whose probe (a subset of the measurement's directions, its floor from the texels it
     // reads) is beyond 4 x the limit is refused unbuilt,
@@ -158,18 +156,15 @@ IntensityLookup choose_intensity_lookup(const photometry::DistributionPtr& distr
     const TextureDeviation probe =
         sampled_texture_deviation(*distribution, nu, nv, kTextureProbeStride);
     out.c_cells = nu, out.gamma_cells = nv, out.bound = probe.bound;
+    out.choice.deviation = probe.bound;
     if (!std::isfinite(probe.bound)) {
       // Texels are floats (4 bytes, so the texture stays in the caches): intensities beyond
       // 3.4e38 cd would be infinite there. No quality takes that, draft included.
-      out.description =
-          "the exact table (its intensities exceed the range of a texture's float texels)";
+      out.choice.kind = Kind::table_float_range;
       return out;
     }
     if (probe.bound > (last ? 1.0 : 4.0) * limit) {
-      out.description = "the exact table (the intensity texture " + grid + " deviates from it by " +
-                        percent(probe.bound) + " on 1/" +
-                        std::to_string(kTextureProbeStride * kTextureProbeStride) +
-                        " of its texels; limit at " + quality_name + ": " + percent(limit) + ")";
+      out.choice.kind = Kind::table_probe_deviates;
       return out;
     }
     auto tex = build_texture(*distribution, nu, nv);
@@ -177,25 +172,20 @@ IntensityLookup choose_intensity_lookup(const photometry::DistributionPtr& distr
       // Draft takes the texture without a limit: the probe says how close it is.
       out.lookup = tex;
       out.texture = std::move(tex);
-      out.description = "intensity texture " + grid + ", within about " + percent(probe.bound) +
-                        " of the table (measured on 1/" +
-                        std::to_string(kTextureProbeStride * kTextureProbeStride) +
-                        " of its texels; draft takes it without a limit)";
+      out.choice.kind = Kind::texture_draft;
       return out;
     }
     const TextureDeviation dev = texture_deviation(*tex, *distribution);
     out.bound = dev.bound;
+    out.choice.deviation = dev.bound;
     if (dev.bound <= limit) {
       out.lookup = tex;
       out.texture = std::move(tex);
-      out.description = "intensity texture " + grid + ", within " + percent(dev.bound) +
-                        " of the table (limit at " + quality_name + ": " + percent(limit) + ")";
+      out.choice.kind = Kind::texture_within;
       return out;
     }
     if (last || dev.bound > 4.0 * limit) {
-      out.description = "the exact table (the intensity texture " + grid + " deviates up to " +
-                        percent(dev.bound) + " from it; limit at " + quality_name + ": " +
-                        percent(limit) + ")";
+      out.choice.kind = Kind::table_texture_deviates;
       return out;
     }
     nu *= 2, nv *= 2;
@@ -241,9 +231,9 @@ SceneLookups choose_intensity_lookups(const Scene& scene) {
       if (pairs < kTexturePayoffPairs && scene.settings.quality != Quality::reference &&
           dynamic_cast<const photometry::TabularDistribution*>(base.get())) {
         it->second.lookup = base;
-        it->second.description = "the exact table (" + std::to_string(static_cast<size_t>(pairs)) +
-                                 " luminaire-point pairs: too few for an intensity texture to "
-                                 "pay for its building)";
+        it->second.choice.kind = IntensityLookupChoice::Kind::table_few_pairs;
+        it->second.choice.quality = scene.settings.quality;
+        it->second.choice.pairs = static_cast<size_t>(pairs);
       } else {
         it->second = choose_intensity_lookup(base, scene.settings.quality);
       }
@@ -264,12 +254,9 @@ SceneLookups choose_intensity_lookups(const Scene& scene) {
                       chosen.texture.get(), factor};
     }
   }
-  for (const Distinct& d : distinct) {
-    const std::string who = d.members == 1 ? scene.luminaires[d.first].label
-                                           : std::to_string(d.members) + " luminaires";
-    out.plan_lines.push_back("\"" + d.photometry + "\" (" + who +
-                             "): " + out.by_base.at(d.base).description);
-  }
+  for (const Distinct& d : distinct)
+    out.plan.push_back({{d.photometry, d.members, scene.luminaires[d.first].label},
+                        out.by_base.at(d.base).choice});
   return out;
 }
 

@@ -77,13 +77,49 @@ inline constexpr int kTextureProbeStride = 8;
 // (never) at reference, kTexturePromiseShare x the promise otherwise.
 double texture_limit(Quality quality);
 
+// What a distribution's far-field pairs look up and why, with the numbers the reason quotes
+// (report/plan_text.h words it).
+struct IntensityLookupChoice {
+  enum class Kind {
+    analytic,                // an analytic profile: exact, no table to look up
+    table_by_quality,        // the quality always looks the table up (reference)
+    table_few_pairs,         // too few pairs for a texture to pay for its building
+    table_float_range,       // intensities beyond a float texel's range
+    table_probe_deviates,    // the probe of texture c x gamma deviates beyond the limit
+    texture_draft,           // draft takes the texture without a limit (the probe's deviation)
+    texture_within,          // the texture is within the limit (the full measurement)
+    table_texture_deviates,  // the texture's full measurement deviates beyond the limit
+  };
+  Kind kind = Kind::analytic;
+  Quality quality = Quality::standard;
+  int c_cells = 0, gamma_cells = 0;  // the texture measured
+  double deviation = 0.0;            // its measured bound, relative
+  double limit = 0.0;                // texture_limit(quality), relative
+  int probe_fraction = 0;            // the probe measures 1 / probe_fraction of the texels
+  size_t pairs = 0;                  // table_few_pairs: the luminaire-point pairs
+};
+
+// Luminaires the plan speaks of together: a photometry entry and how many luminaires share one
+// decision (and the label of the first, named when it is the only one).
+struct LuminaireGroup {
+  std::string photometry;
+  size_t luminaires = 0;
+  std::string label;
+};
+
+// The intensity lookup of one distinct distribution, for the plan.
+struct IntensityLookupPlan {
+  LuminaireGroup group;
+  IntensityLookupChoice choice;
+};
+
 struct IntensityLookup {
   // What far-field pairs and the first bounce look intensities up in: the texture or the source.
   photometry::DistributionPtr lookup;
   std::shared_ptr<const photometry::DistributionTexture> texture;  // set when `lookup` is one
   int c_cells = 0, gamma_cells = 0;  // of the last texture measured (0: none built)
   double bound = -1.0;               // its measured bound (-1: none built)
-  std::string description;           // for the plan
+  IntensityLookupChoice choice;      // for the plan
 };
 
 // The lookup of one distribution at a quality (see the top of this file). Only a table
@@ -107,7 +143,7 @@ struct LuminaireLookup {
 struct SceneLookups {
   std::map<const photometry::IntensityDistribution*, IntensityLookup> by_base;
   std::map<const photometry::IntensityDistribution*, LuminaireLookup> by_distribution;
-  std::vector<std::string> plan_lines;
+  std::vector<IntensityLookupPlan> plan;
 };
 SceneLookups choose_intensity_lookups(const Scene& scene);
 

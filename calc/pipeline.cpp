@@ -14,6 +14,7 @@
 #include "calc/indirect/clustered.h"
 #include "calc/indirect/indirect.h"
 #include "calc/indirect/patches.h"
+#include "calc/indirect/subcells.h"
 #include "calc/intensity_lookup.h"
 #include "calc/plan_estimates.h"
 #include "util/error.h"
@@ -41,8 +42,7 @@ DirectEstimateInputs run_direct(const Scene& scene, const SceneLookups& lookups,
   // The error-bound map measures the far-field model on the table; the texture's own deviation
   // (calc/intensity_lookup.h) is within a tenth of the promise on top of it. Each map measures
   // what the pairs below will ask of it.
-  results.plan.near_far_per_emitter =
-      attach_far_field_bounds(scene, results.plan, emitters, &reach, &zones);
+  results.plan.near_far = attach_far_field_bounds(scene, results.plan, emitters, &reach, &zones);
   attach_intensity_lookups(lookups, emitters);
   DirectCounts counts;
   size_t points_before = 0;
@@ -70,17 +70,13 @@ DirectEstimateInputs run_direct(const Scene& scene, const SceneLookups& lookups,
     points_before += grid.points.size();
     results.surfaces.push_back(std::move(r));
   }
-  results.plan.direct = describe_direct(results.plan, counts);
-  if (pairs_unreachable > 0) {
-    results.plan.direct +=
-        "; " + std::to_string(pairs_unreachable) +
-        " luminaire-point pairs not computed: the luminaire's opening lies in none of the "
-        "point's rooms, and light does not pass through a room's walls, floor or ceiling";
-  }
+  results.plan.direct_counts = counts;
+  results.plan.pairs_unreachable = pairs_unreachable;
   // The far field at every distance (near_field "never") has no map: its error is not estimated.
   const bool area =
       std::any_of(emitters.begin(), emitters.end(), [](const auto& e) { return !e.is_point(); });
   estimates.estimated = !(results.plan.near_switch == nearfield::NearFieldSwitch::never && area);
+  results.plan.direct_estimated = estimates.estimated;
   return estimates;
 }
 
@@ -194,19 +190,18 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
     gathered = std::move(w.everywhere);
     if (!(w.worst > kPatchShareOfPromise * promise)) return;
     const double size_m = solution->result.patch_size_m;
-    const std::string why = "the patch-size estimate at " + format_double("%.3g", size_m) + " m, " +
-                            format_double("%.2g", 100 * w.worst) + " % on surface '" + w.surface +
-                            "', is above half of " + to_string(scene.settings.quality) +
-                            "'s promise";
+    PatchRefinement step_taken;
+    step_taken.from_m = size_m;
+    step_taken.estimate = w.worst;
+    step_taken.surface = w.surface;
     options.patch_size_m = 0.5 * size_m;
+    step_taken.to_m = options.patch_size_m;
     const double work = refine_work(scene, options.patch_size_m);
     if (work > kRefineWorkLimit) {
-      results.plan.warnings.push_back(
-          "indirect: " + why + ", but a mesh at " + format_double("%.3g", options.patch_size_m) +
-          " m would cost " + format_double("%.2g", work) +
-          " form-factor pairs (a pair counting 8 where rays are traced), above the limit of " +
-          format_double("%.2g", kRefineWorkLimit) + "; the patch size stays " +
-          format_double("%.3g", size_m) + " m");
+      step_taken.outcome = PatchRefinement::Outcome::work_over_limit;
+      step_taken.work_pairs = work;
+      step_taken.work_limit_pairs = kRefineWorkLimit;
+      results.plan.refinements.push_back(std::move(step_taken));
       return;
     }
     std::unique_ptr<const indirect::IndirectSolution> finer;
@@ -214,16 +209,15 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
       finer = indirect::solve_indirect(scene, options);
     } catch (const InputError& e) {
       // The finer mesh is over the patch budget (checked before anything is meshed).
-      results.plan.warnings.push_back("indirect: " + why + ", but a mesh at " +
-                                      format_double("%.3g", options.patch_size_m) +
-                                      " m exceeds the patch budget (" + e.what() + ")");
+      step_taken.outcome = PatchRefinement::Outcome::over_budget;
+      step_taken.budget_error = e.what();
+      results.plan.refinements.push_back(std::move(step_taken));
       return;
     }
     est.coarse_lx = std::move(w.probe_lx);
     est.coarse_patch_size_m = size_m;
-    results.plan.notes.push_back("indirect: patch size refined from " +
-                                 format_double("%.3g", size_m) + " m to " +
-                                 format_double("%.3g", finer->result.patch_size_m) + " m: " + why);
+    step_taken.to_m = finer->result.patch_size_m;
+    results.plan.refinements.push_back(std::move(step_taken));
     solution = std::move(finer);
     gathered.reset();
   }
@@ -267,9 +261,28 @@ IndirectEstimateInputs run_indirect(const Scene& scene, const SceneLookups& look
       gathered ? std::move(*gathered) : indirect::gather_indirect(*solution, scene, scene.surfaces);
   for (size_t k = 0; k < results.surfaces.size(); ++k)
     results.surfaces[k].E_indirect = r.E_indirect_per_surface[k];
-  results.plan.indirect = r.summary;
-  for (const auto& n : r.notes) results.plan.notes.push_back(n);
-  for (const auto& w : r.warnings) results.plan.warnings.push_back(w);
+  IndirectRunPlan run;
+  run.bounces_asked = r.bounces_asked;
+  run.bounces_run = r.bounces_run;
+  run.tail_added = r.tail_added;
+  run.patches = r.patches;
+  run.patch_size_m = r.patch_size_m;
+  run.vpls = r.vpls;
+  run.residual = r.residual;
+  run.refined_patches = r.refined_patches;
+  run.subcell_reach = indirect::kSubcellReach;
+  run.subcells_per_side = indirect::kSubcellsPerSide;
+  run.received_flux_lm = r.received_flux_lm;
+  run.emitted_flux_lm = r.emitted_flux_lm;
+  run.luminaire_flux_lm = r.luminaire_flux_lm;
+  run.part_outside = r.part_outside;
+  run.clustered_rooms = r.clustered_rooms;
+  run.clustered_links = r.clustered_links;
+  run.visibility = r.visibility;
+  run.obstacles = r.obstacles;
+  results.plan.indirect_run = run;
+  results.plan.indirect_notes = r.notes;
+  results.plan.indirect_warnings = r.warnings;
   est.residual = r.residual;
   est.patch_size_m = r.patch_size_m;
   return est;
@@ -311,13 +324,12 @@ Results run_scene(const Scene& scene, const Progress& progress) {
   results.project = scene.name;
   results.plan = make_plan(scene);
   results.scene = scene.settings.scene;
-  for (const auto& n : scene.notes) results.plan.notes.push_back(n);
 
   // The intensity lookups of the far field and the first bounce, once per distribution (a
   // texture is built and measured against its table here: its own phase in timing.json).
   const auto t_lookup = std::chrono::steady_clock::now();
   const SceneLookups lookups = choose_intensity_lookups(scene);
-  results.plan.intensity_lookup_per_distribution = lookups.plan_lines;
+  results.plan.intensity_lookups = lookups.plan;
   results.timing_s.emplace_back("intensity_lookup", seconds_since(t_lookup));
 
   const auto t_direct = std::chrono::steady_clock::now();
@@ -328,7 +340,7 @@ Results run_scene(const Scene& scene, const Progress& progress) {
   IndirectEstimateInputs indirect_estimate = run_indirect(scene, lookups, results);
   if (scene.settings.scene == LightingScene::emergency) {
     // Not the project's "indirect" setting: the emergency scene switches reflections off [EN1838].
-    results.plan.indirect = "off: the emergency scene counts direct light only (EN 1838)";
+    results.plan.emergency_direct_only = true;
   }
   results.timing_s.emplace_back("indirect", seconds_since(t_indirect));
 
@@ -340,8 +352,8 @@ Results run_scene(const Scene& scene, const Progress& progress) {
     if (scene.settings.indirect == IndirectMode::off) {
       throw CalculationError("surface '" + r.grid.name +
                              "': UGR needs reflected light for the background "
-                             "luminance, but the indirect calculation did not run (" +
-                             results.plan.indirect + ")");
+                             "luminance, but the indirect calculation did not run (indirect is "
+                             "off in the settings)");
     }
     r.observers = glare::evaluate_observers(scene, results.plan, r.grid, r.E_indirect);
     r.UGR_max = glare::max_ugr(r.observers);

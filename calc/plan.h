@@ -1,7 +1,8 @@
 #pragma once
 // The plan: which effects this scene needs, which model computes each, and why. Every decision is
-// recorded in words, so results say what was simulated ("indirect: skipped, all reflectances are
-// 0"). Later capabilities add their decisions here.
+// a value (a model, counts, distances, estimates, the reason as a code with its numbers), so
+// results say what was simulated; report/plan_text.h turns the plan into words for the terminal,
+// report.html and results.json's summary, and results.json keeps the values themselves.
 #include <algorithm>
 #include <memory>
 #include <optional>
@@ -9,7 +10,10 @@
 #include <vector>
 
 #include "calc/indirect/decision.h"
+#include "calc/indirect/indirect_notes.h"
+#include "calc/intensity_lookup.h"
 #include "calc/near_model_name.h"
+#include "calc/nearfield/far_field_bound.h"
 #include "calc/nearfield/illuminance.h"
 #include "calc/scene.h"
 #include "calc/visibility.h"
@@ -31,42 +35,6 @@ struct SurfaceEstimate {
   }
 };
 
-struct Plan {
-  // Direct light: the near-field rung for area emitters and how the near/far switch is made.
-  nearfield::Model near_model = nearfield::Model::standard();
-  nearfield::NearFieldSwitch near_switch = nearfield::NearFieldSwitch::automatic;
-  // Occlusion test, or null when nothing in the scene can block light (calc/visibility.h).
-  std::shared_ptr<const geometry::Visibility> visibility_test;
-  std::string direct;  // e.g. "hybrid by an error bound ...: 1200 pairs near-field, ..."
-  // Per distinct emitter, the near-field distances the error bound chose and why
-  // (calc/far_field_bounds.h); filled by the pipeline, quoted in `direct`.
-  std::vector<std::string> near_far_per_emitter;
-  // Per distinct distribution, what far-field pairs and the first bounce look intensities up in
-  // and why (calc/intensity_lookup.h: the texture and its measured bound, or the table); filled
-  // by the pipeline, quoted in `direct`.
-  std::vector<std::string> intensity_lookup_per_distribution;
-  // Reflected light: whether it runs and why (calc/indirect/decision.h); `indirect` starts as
-  // the decision's reason and becomes the run's summary when it ran.
-  indirect::IndirectDecision indirect_decision;
-  std::string indirect;    // e.g. "skipped: all reflectances are 0"
-  std::string visibility;  // e.g. "off: ..."
-  std::vector<std::string> notes;
-  // What the quality promises and the plan's own error estimate per surface
-  // (calc/plan_estimates.h), filled by the pipeline once the illuminance is known.
-  std::string promise;                     // e.g. "within 1 % of reference at every point ..."
-  std::vector<SurfaceEstimate> estimates;  // one per surface, in the surfaces' order
-  // A surface whose estimate exceeds the promise, in words: the CLI prints these on stderr and
-  // results.json lists them with its other warnings.
-  std::vector<std::string> warnings;
-};
-
-// The near-field rung for a quality, or for settings.near_field_model when it is set. Throws
-// InputError at /settings/near_field_model for an unknown name (a scene built in code; a loaded
-// project has been checked).
-nearfield::Model near_model_for(const Settings& settings);
-
-Plan make_plan(const Scene& scene);
-
 // How many luminaire-point pairs each direct model served (filled by calc/direct).
 struct DirectCounts {
   size_t point_sources = 0;  // luminaires without an opening: the point model is exact
@@ -86,7 +54,96 @@ struct DirectCounts {
   }
 };
 
-// The plan's sentence about direct light, once the counts are known.
-std::string describe_direct(const Plan& plan, const DirectCounts& counts);
+// Why the near/far switch is what it is.
+enum class NearSwitchReason {
+  draft_quality,      // draft (without a near_field_model): the far field at every distance
+  setting_never,      // settings.near_field "never"
+  setting_always,     // settings.near_field "always"
+  reference_quality,  // reference (without a near_field_model): the near field everywhere
+  automatic,          // by the error-bound map, or by the five-times rule without one
+};
+
+// The near/far map of one distinct emitter (calc/far_field_bounds.h).
+struct NearFarPlan {
+  LuminaireGroup group;
+  nearfield::FarFieldBoundSummary bound;
+};
+
+// What reflected light's solve did, when it ran (calc/indirect/indirect.h).
+struct IndirectRunPlan {
+  int bounces_asked = 0;  // 1: one bounce; > 1 that many; 0: converged
+  int bounces_run = 0;
+  bool tail_added = false;
+  size_t patches = 0;
+  double patch_size_m = 0.0;
+  size_t vpls = 0;
+  double residual = 0.0;
+  size_t refined_patches = 0;  // cut into subcells_per_side^2 cells, seen closer than subcell_reach
+  double subcell_reach = 0.0;  // patch diameters
+  int subcells_per_side = 0;
+  double received_flux_lm = 0.0, emitted_flux_lm = 0.0, luminaire_flux_lm = 0.0;
+  bool part_outside = false;  // the openings send a share of their flux outside every room
+  size_t clustered_rooms = 0, clustered_links = 0;
+  bool visibility = false;  // an AABB tree of room and obstacle faces
+  size_t obstacles = 0;
+  // The plan's estimate of the run's error (calc/plan_estimates.h), when measured.
+  bool estimated = false;
+  double coarse_patch_size_m = 0.0;
+  size_t probe_points_per_surface = 0;
+  double worst_patch_size = 0.0, worst_bounces = 0.0;  // relative, over the surfaces
+};
+
+// One step of the patch-size refinement (calc/pipeline.cpp): the estimate at `from_m` was above
+// half the promise on `surface`; the mesh became `to_m`, or stayed for a reason.
+struct PatchRefinement {
+  enum class Outcome { refined, work_over_limit, over_budget };
+  Outcome outcome = Outcome::refined;
+  double from_m = 0.0, to_m = 0.0;
+  double estimate = 0.0;  // relative
+  std::string surface;
+  double work_pairs = 0.0, work_limit_pairs = 0.0;  // work_over_limit
+  std::string budget_error;                         // over_budget: the solver's refusal
+};
+
+struct Plan {
+  Quality quality = Quality::standard;
+  // Direct light: the near-field rung for area emitters and how the near/far switch is made.
+  nearfield::Model near_model = nearfield::Model::standard();
+  nearfield::NearFieldSwitch near_switch = nearfield::NearFieldSwitch::automatic;
+  NearSwitchReason near_switch_reason = NearSwitchReason::automatic;
+  // Occlusion test, or null when nothing in the scene can block light (calc/visibility.h).
+  std::shared_ptr<const geometry::Visibility> visibility_test;
+  VisibilityDecision visibility;
+  // What the direct calculation counted, once it ran.
+  DirectCounts direct_counts;
+  size_t pairs_unreachable = 0;  // the opening in none of the point's rooms
+  // Per distinct emitter, the near-field distances the error bound chose and why; empty when the
+  // switch is not automatic or no luminaire has an opening.
+  std::vector<NearFarPlan> near_far;
+  // Per distinct distribution, what far-field pairs and the first bounce look intensities up in.
+  std::vector<IntensityLookupPlan> intensity_lookups;
+  // Reflected light: whether it runs and why (calc/indirect/decision.h), what the run did.
+  indirect::IndirectDecision indirect_decision;
+  std::optional<IndirectRunPlan> indirect_run;
+  bool emergency_direct_only = false;  // the emergency scene counts direct light only [EN1838]
+  std::vector<PatchRefinement> refinements;
+  // The scene's notes, in words (the emergency scene's choices, calc/emergency_scene.h).
+  std::vector<std::string> scene_notes;
+  // What reflected light's solver noted and warned (calc/indirect/indirect_notes.h).
+  std::vector<indirect::IndirectNote> indirect_notes, indirect_warnings;
+  // What the quality promises (relative, 0: no number) and the plan's own error estimate per
+  // surface (calc/plan_estimates.h), filled once the illuminance is known.
+  double promise = 0.0;
+  bool direct_estimated = true;   // false: the far field at every distance, no map
+  bool errors_estimated = false;  // estimate_errors ran (the estimates below are the run's)
+  std::vector<SurfaceEstimate> estimates;  // one per surface, in the surfaces' order
+};
+
+// The near-field rung for a quality, or for settings.near_field_model when it is set. Throws
+// InputError at /settings/near_field_model for an unknown name (a scene built in code; a loaded
+// project has been checked).
+nearfield::Model near_model_for(const Settings& settings);
+
+Plan make_plan(const Scene& scene);
 
 }  // namespace luxgrid::calc

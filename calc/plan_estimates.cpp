@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "calc/nearfield/far_field_bound.h"
 
@@ -14,12 +13,6 @@ namespace {
 // allows, as report/diff.h's kRelativeFloor measures them.
 constexpr double kPromiseFloor = 0.01;
 
-std::string percent(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2g %%", 100.0 * v);
-  return buf;
-}
-
 }  // namespace
 
 double promised_error(Quality q) {
@@ -30,19 +23,6 @@ double promised_error(Quality q) {
     case Quality::reference: return 0.0;
   }
   return 0.0;
-}
-
-std::string describe_promise(Quality q) {
-  switch (q) {
-    case Quality::draft:
-      return "draft promises no accuracy (far field at every distance, one bounce)";
-    case Quality::reference:
-      return "reference is the yardstick the other qualities are measured against";
-    case Quality::standard:
-    case Quality::high: break;
-  }
-  return std::string(to_string(q)) + " promises within " + percent(promised_error(q)) +
-         " of reference at every point brighter than 1 % of its surface's maximum";
 }
 
 std::vector<size_t> probe_points(const geometry::SurfaceGrid& grid) {
@@ -120,7 +100,8 @@ void estimate_errors(Results& results, const DirectEstimateInputs& direct,
                      const IndirectEstimateInputs& indirect) {
   Plan& plan = results.plan;
   const double promise = promised_error(results.quality);
-  plan.promise = describe_promise(results.quality);
+  plan.promise = promise;
+  plan.errors_estimated = true;
   plan.estimates.clear();
   double worst_patch = 0.0, worst_bounces = 0.0;
   for (size_t s = 0; s < results.surfaces.size(); ++s) {
@@ -152,45 +133,16 @@ void estimate_errors(Results& results, const DirectEstimateInputs& direct,
       worst_patch = std::max(worst_patch, est.patch_size);
       worst_bounces = std::max(worst_bounces, est.bounces);
     }
-    std::string line =
-        "estimated error at surface '" + est.surface + "': " + percent(est.total()) + " (direct " +
-        (est.direct < 0.0 ? "not estimated: far field at every distance" : percent(est.direct));
-    if (indirect.ran) {
-      line += ", patch size " + percent(est.patch_size) + " on " +
-              std::to_string(est.probe_points) + " probe points, bounces " + percent(est.bounces);
-    }
-    line += ")";
-    if (promise > 0.0) line += " against the promise of " + percent(promise);
-    plan.notes.push_back(line);
-    if (promise > 0.0 && est.direct < 0.0)
-      plan.warnings.push_back("surface '" + est.surface +
-                              "': the far field at every distance (near_field never) "
-                              "has no error estimate; " +
-                              std::string(to_string(results.quality)) + "'s promise of " +
-                              percent(promise) + " is not checked");
-    if (promise > 0.0 && est.total() > promise) {
-      const char* largest = est.direct >= std::max(est.patch_size, est.bounces)
-                                ? "the far-field decision"
-                            : est.patch_size >= est.bounces ? "the interreflection patch size"
-                                                            : "the bounces not followed";
-      plan.warnings.push_back("surface '" + est.surface + "': the plan's estimated error " +
-                              percent(est.total()) + " exceeds " +
-                              std::string(to_string(results.quality)) + "'s promise of " +
-                              percent(promise) + " (largest part: " + largest + ")");
-    }
     plan.estimates.push_back(std::move(est));
   }
-  plan.notes.push_back(
-      "textures: none (one reflectance per face, no texture maps), so no texture-resolution error");
-  if (indirect.ran) {
-    char buf[256];
-    std::snprintf(buf, sizeof buf,
-                  "; estimated error: patch size %.3g m up to %s of E (against %.3g m at up to %zu "
-                  "probe points per "
-                  "surface), bounces not followed up to %s of E",
-                  indirect.patch_size_m, percent(worst_patch).c_str(), indirect.coarse_patch_size_m,
-                  kProbePointsPerSurface, percent(worst_bounces).c_str());
-    plan.indirect += buf;
+  if (indirect.ran && plan.indirect_run) {
+    IndirectRunPlan& run = *plan.indirect_run;
+    run.estimated = true;
+    run.patch_size_m = indirect.patch_size_m;
+    run.coarse_patch_size_m = indirect.coarse_patch_size_m;
+    run.probe_points_per_surface = kProbePointsPerSurface;
+    run.worst_patch_size = worst_patch;
+    run.worst_bounces = worst_bounces;
   }
 }
 

@@ -26,8 +26,6 @@ namespace luxgrid::calc {
 // The relative error a quality promises against `reference` at every point brighter than 1 % of
 // its surface's maximum; 0 when it promises no number (draft: none; reference: the yardstick).
 double promised_error(Quality q);
-// The same in words, for the plan and `luxgrid cost`.
-std::string describe_promise(Quality q);
 
 // Probe points per surface for the patch-size estimate: the coarse run gathers at these only,
 // so it costs the coarse mesh (a quarter of the patches, 1/16 of the form factors) and little more.
@@ -76,9 +74,9 @@ double patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
                                      const std::vector<double>& E_indirect_probe,
                                      const std::vector<double>& coarse_lx, double max_indirect_lx);
 
-// Fills results.plan.promise, .estimates, a note per surface, the estimates' sentence after
-// plan.indirect, and a warning per surface whose estimate exceeds the promise. Needs E,
-// E_direct and E_indirect of every surface (maintained).
+// Fills results.plan.promise, .estimates and the indirect run's estimate (report/plan_text.h
+// words them: a note per surface, a warning per surface whose estimate exceeds the promise).
+// Needs E, E_direct and E_indirect of every surface (maintained).
 void estimate_errors(Results& results, const DirectEstimateInputs& direct,
                      const IndirectEstimateInputs& indirect);
 

@@ -2,12 +2,6 @@
 
 namespace luxgrid::calc {
 
-namespace {
-std::string plural(size_t n, const std::string& one, const std::string& many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-}  // namespace
-
 geometry::RoomShape room_shape(const Room& room) {
   return geometry::RoomShape{room.name,
                              room.outline,
@@ -37,14 +31,13 @@ bool inside_room(const Room& room, const Vec3& p, double tolerance_m) {
   return geometry::locate(Vec2(p.x, p.y), room.outline, tolerance_m) != geometry::Location::outside;
 }
 
-std::unique_ptr<geometry::OcclusionTree> make_visibility(const Scene& scene, std::string& reason) {
-  std::vector<std::string> why;
-  size_t obstacles = 0;
-  for (const auto& r : scene.rooms) obstacles += r.obstacles.size();
-  if (obstacles > 0) why.push_back(plural(obstacles, "obstacle", "obstacles"));
-  if (scene.rooms.size() > 1) why.push_back(std::to_string(scene.rooms.size()) + " rooms");
+std::unique_ptr<geometry::OcclusionTree> make_visibility(const Scene& scene,
+                                                         VisibilityDecision& d) {
+  d = VisibilityDecision{};
+  for (const auto& r : scene.rooms) d.obstacles += r.obstacles.size();
+  if (scene.rooms.size() > 1) d.rooms = scene.rooms.size();
   for (const auto& r : scene.rooms) {
-    if (!geometry::is_convex(r.outline)) why.push_back("non-convex room '" + r.name + "'");
+    if (!geometry::is_convex(r.outline)) d.non_convex_rooms.push_back(r.name);
   }
   auto in_some_room = [&](const Vec3& p) {
     for (const auto& r : scene.rooms) {
@@ -53,18 +46,13 @@ std::unique_ptr<geometry::OcclusionTree> make_visibility(const Scene& scene, std
     return false;
   };
   if (!scene.rooms.empty()) {
-    size_t outside = 0;
-    std::string first;
     for (const auto& l : scene.luminaires) {
       if (!in_some_room(l.pose.position)) {
-        if (outside++ == 0) first = l.label;
+        if (d.luminaires_outside++ == 0) d.first_outside = l.label;
       }
     }
-    if (outside == 1) why.push_back(first + " outside every room");
-    if (outside > 1) why.push_back(std::to_string(outside) + " luminaires outside every room");
     // An opening that reaches through a wall: the walls must hide its part outside the room
     // (the corners of its bounding rectangle, in the luminaire's local z = 0 plane).
-    size_t reaching = 0;
     for (const auto& l : scene.luminaires) {
       if (l.opening.shape == photometry::LuminousOpening::Shape::point ||
           !in_some_room(l.pose.position))
@@ -77,30 +65,20 @@ std::unique_ptr<geometry::OcclusionTree> make_visibility(const Scene& scene, std
           out = out || !in_some_room(corner);
         }
       }
-      if (out && reaching++ == 0) first = l.label;
+      if (out && d.openings_reaching++ == 0) d.first_reaching = l.label;
     }
-    if (reaching == 1) why.push_back("the opening of " + first + " reaches outside its room");
-    if (reaching > 1)
-      why.push_back("the openings of " + std::to_string(reaching) +
-                    " luminaires reach outside their rooms");
-    size_t points_outside = 0;
     for (const auto& s : scene.surfaces) {
       for (size_t i = 0; i < s.points.size(); ++i) {
-        if ((s.active.empty() || s.active[i]) && !in_some_room(s.points[i])) ++points_outside;
+        if ((s.active.empty() || s.active[i]) && !in_some_room(s.points[i])) ++d.points_outside;
       }
     }
-    if (points_outside > 0) {
-      why.push_back(plural(points_outside, "surface point", "surface points") +
-                    " outside every room");
-    }
   }
-  if (why.empty()) {
-    reason = scene.rooms.empty() ? "off: no rooms and no obstacles, nothing can block light"
-                                 : "off: convex room, no obstacles, every luminaire inside";
+  d.on = d.obstacles > 0 || d.rooms > 0 || !d.non_convex_rooms.empty() ||
+         d.luminaires_outside > 0 || d.openings_reaching > 0 || d.points_outside > 0;
+  if (!d.on) {
+    d.no_rooms = scene.rooms.empty();
     return nullptr;
   }
-  reason = "on:";
-  for (size_t i = 0; i < why.size(); ++i) reason += (i ? ", " : " ") + why[i];
   return std::make_unique<geometry::OcclusionTree>(scene_faces(scene));
 }
 

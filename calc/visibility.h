@@ -19,14 +19,27 @@ geometry::RoomShape room_shape(const Room& room);
 // its obstacles' faces (normals outward). Also the input for indirect light.
 std::vector<geometry::Face> scene_faces(const Scene& scene);
 
+// Why the scene needs an occlusion test, or why not: each thing that can block light, counted
+// (report/plan_text.h words it: "on: 2 obstacles, non-convex room 'L'").
+struct VisibilityDecision {
+  bool on = false;
+  bool no_rooms = false;  // off: no rooms and no obstacles
+  size_t obstacles = 0;
+  size_t rooms = 0;  // more than one room counts
+  std::vector<std::string> non_convex_rooms;
+  size_t luminaires_outside = 0;              // outside every room
+  size_t openings_reaching = 0;               // reaching outside their room
+  std::string first_outside, first_reaching;  // the first such luminaire's label
+  size_t points_outside = 0;                  // active surface points outside every room
+};
+
 // The scene's AABB tree over scene_faces: visible(from, to) is true when nothing lies between;
 // hits within geometry::kOcclusionEndAllowance_m (1 um) of either end are ignored, so a luminaire
 // on the ceiling and a point on a floor, wall or obstacle top see each other. nullptr when nothing
 // can block light: at most one room, convex, no obstacles, every luminaire and every active surface
-// point inside it (or no rooms and no obstacles at all). `reason` is set for the plan either way,
-// e.g. "off: convex room, no obstacles, every luminaire inside" or "on: 2 obstacles, non-convex
-// room 'L'".
-std::unique_ptr<geometry::OcclusionTree> make_visibility(const Scene& scene, std::string& reason);
+// point inside it (or no rooms and no obstacles at all). `decision` is set for the plan either way.
+std::unique_ptr<geometry::OcclusionTree> make_visibility(const Scene& scene,
+                                                         VisibilityDecision& decision);
 
 // True when `p` lies in the closed volume of `room`, within `tolerance_m`. Points this close
 // outside a room still count as inside: luminaires are placed on ceilings and grid points on

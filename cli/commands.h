@@ -11,6 +11,7 @@ namespace luxgrid::cli {
 using Runner = std::function<int()>;
 
 void add_calc_command(CLI::App& app, Runner& run);      // cli/calc_command.cpp
+void add_report_command(CLI::App& app, Runner& run);    // cli/report_command.cpp
 void add_validate_command(CLI::App& app, Runner& run);  // cli/validate_command.cpp
 void add_info_command(CLI::App& app, Runner& run);      // cli/info_command.cpp
 void add_diff_command(CLI::App& app, Runner& run);      // cli/diff_command.cpp

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   app.fallthrough();
   luxgrid::cli::Runner run;
   luxgrid::cli::add_calc_command(app, run);
+  luxgrid::cli::add_report_command(app, run);
   luxgrid::cli::add_validate_command(app, run);
   luxgrid::cli::add_info_command(app, run);
   luxgrid::cli::add_diff_command(app, run);

@@ -60,7 +60,7 @@ struct CostLevel {
   std::string quality;
   double time_s = 0.0;  // wall time of the calculation (plan, direct, indirect)
   std::string direct, indirect, visibility;  // what this level simulated (the plan in words)
-  std::string promise;                       // what the level promises (calc::describe_promise)
+  std::string promise;                       // what the level promises (report::promise_text)
   double promised_error = 0.0;               // as a number; 0: no number promised
   std::vector<std::string> warnings;         // the plan's: estimates above the promise
   std::vector<CostSurface> surfaces;

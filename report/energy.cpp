@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "geometry/polygon.h"
-#include "report/luminaire_data.h"
 #include "report/map_frame.h"
 
 namespace luxgrid::report {
@@ -20,7 +19,9 @@ std::optional<double> RoomEnergy::W_per_m2_per_100lx() const {
   return *density / (*Eavg_lx / 100.0);
 }
 
-std::vector<RoomEnergy> room_energy(const calc::Scene& scene, const calc::Results& results,
+std::vector<RoomEnergy> room_energy(const calc::Scene& scene,
+                                    const std::vector<LuminaireType>& types,
+                                    const calc::Results& results,
                                     const std::vector<RequirementCheck>& checks) {
   std::vector<RoomEnergy> out;
   for (const auto& room : scene.rooms) {
@@ -34,9 +35,10 @@ std::vector<RoomEnergy> room_energy(const calc::Scene& scene, const calc::Result
           geometry::Location::outside)
         continue;
       ++e.luminaires;
-      const auto p = scene.photometry.find(l.photometry);
-      const auto power =
-          p == scene.photometry.end() ? std::nullopt : luminaire_data(p->second).power_W;
+      const auto t = std::find_if(types.begin(), types.end(), [&](const LuminaireType& type) {
+        return type.key == l.photometry;
+      });
+      const auto power = t == types.end() ? std::nullopt : t->power_W;
       if (power) {
         watts += *power;
       } else {

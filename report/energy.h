@@ -9,6 +9,7 @@
 
 #include "calc/results.h"
 #include "calc/scene.h"
+#include "report/luminaire_types.h"
 #include "report/requirements.h"
 
 namespace luxgrid::report {
@@ -28,7 +29,10 @@ struct RoomEnergy {
 
 // The reference surface of a room is the first horizontal, upward-facing grid in it that carries
 // an Em requirement, else the first such grid above the floor (a workplane), else its floor grid.
-std::vector<RoomEnergy> room_energy(const calc::Scene& scene, const calc::Results& results,
+// The power each luminaire's file states comes from `types` (report/luminaire_types.h).
+std::vector<RoomEnergy> room_energy(const calc::Scene& scene,
+                                    const std::vector<LuminaireType>& types,
+                                    const calc::Results& results,
                                     const std::vector<RequirementCheck>& checks);
 
 }  // namespace luxgrid::report

@@ -4,15 +4,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "calc/glare/ugr_table.h"
-#include "calc/scaled_distribution.h"
 #include "geometry/polygon.h"
-#include "photometry/derived_photometry.h"
 #include "report/compliance_table.h"
 #include "report/energy.h"
-#include "report/luminaire_data.h"
 #include "report/map_frame.h"
 #include "report/observers_html.h"
+#include "report/plan_text.h"
 #include "report/plan_view_svg.h"
 #include "report/png_file.h"
 #include "report/polar_diagram.h"
@@ -86,9 +83,7 @@ std::string stat_cell(const std::string& surface, const char* key, const std::st
 
 // The luminaire types (one row per photometry entry: the product as the file names it, count,
 // flux and power) with their polar diagrams, then every luminaire's position.
-std::string luminaire_sections(
-    const calc::Scene& scene,
-    const std::map<const photometry::IntensityDistribution*, double>& known_flux_lm) {
+std::string luminaire_sections(const std::vector<LuminaireType>& types, const calc::Scene& scene) {
   std::string h =
       "<h2>Luminaires</h2>\n<table class=\"types\"><tr><th>Type</th><th>Luminaire (from the "
       "file)</th>"
@@ -96,55 +91,31 @@ std::string luminaire_sections(
       "<th class=\"num\">Power each</th><th class=\"num\">LOR</th>"
       "<th class=\"num\">UGR 4H&times;8H<br>crosswise / endwise</th></tr>";
   std::string cards;
-  for (const auto& [key, p] : scene.photometry) {
-    int count = 0;
-    const calc::Luminaire* first = nullptr;
-    for (const auto& l : scene.luminaires) {
-      if (l.photometry != key) continue;
-      ++count;
-      if (!first) first = &l;
-    }
-    // As used: a project flux_lm or multiplier applied, and the project's "emitter", if any.
-    const photometry::IntensityDistribution* dist =
-        first && first->distribution ? first->distribution.get() : p.distribution.get();
-    const photometry::LuminousOpening* opening = first ? &first->opening : &p.opening;
-    const auto file = luminaire_data(p);
+  for (const LuminaireType& t : types) {
+    const std::string& key = t.key;
     std::string product;
-    if (!file.name.empty()) product += "<strong>" + html_escape(file.name) + "</strong>";
-    if (!file.manufacturer.empty())
-      product += (product.empty() ? "" : "<br>") + html_escape(file.manufacturer);
-    if (!file.article.empty())
-      product +=
-          (product.empty() ? "" : "<br>") + std::string("article ") + html_escape(file.article);
+    if (!t.name.empty()) product += "<strong>" + html_escape(t.name) + "</strong>";
+    if (!t.manufacturer.empty())
+      product += (product.empty() ? "" : "<br>") + html_escape(t.manufacturer);
+    if (!t.article.empty())
+      product += (product.empty() ? "" : "<br>") + std::string("article ") + html_escape(t.article);
     if (product.empty())
-      product = "<span class=\"muted\">" + html_escape(p.format) + ", no product data</span>";
-    const bool have_flux = dist != nullptr;
-    double flux_lm = 0.0;
-    if (have_flux) {
-      const auto known = known_flux_lm.find(dist);
-      flux_lm = known != known_flux_lm.end() ? known->second : calc::luminous_flux(*dist);
-    }
-    const auto d = photometry::derive(p);
-    const auto lor = d.lor ? d.lor : p.stated_lor;
-    // CIE 190's 4H x 8H value at 0.7/0.5/0.2 (crosswise / endwise) for the luminaire as used:
-    // the 1000 lm table plus 8 log10(F / 1000) is the UGR of the distribution itself.
-    std::string ugr = "&ndash;";
-    if (dist && opening->shape != photometry::LuminousOpening::Shape::point) {
-      const calc::glare::TableRoom room{4, 8};
-      const auto [c, e] =
-          calc::glare::table_ugrs(*dist, *opening, room, calc::glare::kTableReflectances[0]);
-      if (c && e) ugr = format_double("%.1f", *c) + " / " + format_double("%.1f", *e);
-    }
+      product = "<span class=\"muted\">" + html_escape(t.format) + ", no product data</span>";
+    const std::string ugr = t.ugr_crosswise && t.ugr_endwise
+                                ? format_double("%.1f", *t.ugr_crosswise) + " / " +
+                                      format_double("%.1f", *t.ugr_endwise)
+                                : std::string("&ndash;");
     h += "<tr data-type=\"" + html_escape(key) + "\"><td>" + html_escape(key) + "</td><td>" +
-         product + "</td><td>" + html_escape(std::filesystem::path(p.source).filename().string()) +
-         "</td><td class=\"num\">" + std::to_string(count) + "</td><td class=\"num\">" +
-         (have_flux ? format_double("%.0f", flux_lm) + " lm" : "&ndash;") +
+         product + "</td><td>" + html_escape(t.file) + "</td><td class=\"num\">" +
+         std::to_string(t.count) + "</td><td class=\"num\">" +
+         (t.flux_lm ? format_double("%.0f", *t.flux_lm) + " lm" : "&ndash;") +
          "</td><td class=\"num\" data-power=\"" + html_escape(key) + "\">" +
-         (file.power_W ? format_double("%.1f", *file.power_W) + " W" : std::string("not in file")) +
-         "</td><td class=\"num\">" + (lor ? format_double("%.2f", *lor) : std::string("&ndash;")) +
+         (t.power_W ? format_double("%.1f", *t.power_W) + " W" : std::string("not in file")) +
+         "</td><td class=\"num\">" +
+         (t.lor ? format_double("%.2f", *t.lor) : std::string("&ndash;")) +
          "</td><td class=\"num\" data-ugr-table=\"" + html_escape(key) + "\">" + ugr + "</td></tr>";
-    if (dist) {
-      const Raster polar = polar_diagram(*dist, key, 600);
+    if (t.polar) {
+      const Raster polar = polar_diagram(*t.polar, key, 600);
       cards += "<div class=\"luminaire-card\"><img class=\"polar\" alt=\"polar diagram of " +
                html_escape(key) + "\" src=\"data:image/png;base64," + base64(encode_png(polar)) +
                "\"></div>";
@@ -382,10 +353,9 @@ std::string base64(std::string_view bytes) {
   return out;
 }
 
-std::string luminaire_sections_html(
-    const calc::Scene& scene,
-    const std::map<const photometry::IntensityDistribution*, double>& known_flux_lm) {
-  return luminaire_sections(scene, known_flux_lm);
+std::string luminaire_sections_html(const std::vector<LuminaireType>& types,
+                                    const calc::Scene& scene) {
+  return luminaire_sections(types, scene);
 }
 
 std::string html_report(const ReportInput& in) {
@@ -438,8 +408,7 @@ void write_html_report(const ReportInput& in, const TextSink& put) {
   }
   h += "<tr><th>Calculated with</th><td>luxgrid " + html_escape(in.version) + "</td></tr>";
   h += "</table>\n";
-  std::vector<RoomEnergy> energy;
-  if (scene) energy = room_energy(*scene, r, in.checks);
+  const std::vector<RoomEnergy>& energy = in.energy;
   h += "</section>\n";
 
   // --- requirement checks ---------------------------------------------------------------------
@@ -492,8 +461,8 @@ void write_html_report(const ReportInput& in, const TextSink& put) {
   }
 
   // --- luminaires -----------------------------------------------------------------------------
-  if (scene && !scene->photometry.empty()) {
-    h += in.luminaires_html.empty() ? luminaire_sections(*scene, {}) : in.luminaires_html;
+  if (scene && !in.types.empty()) {
+    h += in.luminaires_html.empty() ? luminaire_sections(in.types, *scene) : in.luminaires_html;
   }
 
   // --- plan views -----------------------------------------------------------------------------
@@ -606,10 +575,11 @@ void write_html_report(const ReportInput& in, const TextSink& put) {
        "this calculation, for a lighting engineer who wants to check it (docs/accuracy.md explains "
        "the terms).</p>"
        "<table class=\"plan-text\">";
-  h += "<tr><th>Direct light</th><td>" + html_escape(r.plan.direct) + "</td></tr>";
-  h += "<tr><th>Reflected light</th><td>" + html_escape(r.plan.indirect) + "</td></tr>";
-  h += "<tr><th>Visibility</th><td>" + html_escape(r.plan.visibility) + "</td></tr>";
-  for (const auto& n : r.plan.notes) h += "<tr><th>Note</th><td>" + html_escape(n) + "</td></tr>";
+  h += "<tr><th>Direct light</th><td>" + html_escape(direct_text(r.plan)) + "</td></tr>";
+  h += "<tr><th>Reflected light</th><td>" + html_escape(indirect_text(r.plan)) + "</td></tr>";
+  h += "<tr><th>Visibility</th><td>" + html_escape(visibility_text(r.plan)) + "</td></tr>";
+  for (const auto& n : plan_notes(r.plan))
+    h += "<tr><th>Note</th><td>" + html_escape(n) + "</td></tr>";
   h += "</table>\n";
   h += "<p class=\"muted\">Generated by luxgrid " + html_escape(in.version) +
        ".</p>\n</body></html>\n";

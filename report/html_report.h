@@ -11,20 +11,25 @@
 #include "calc/results.h"
 #include "calc/scene.h"
 #include "report/diff.h"
+#include "report/energy.h"
 #include "report/html_text.h"
+#include "report/luminaire_types.h"
 #include "report/requirements.h"
 
 namespace luxgrid::report {
 
 struct ReportInput {
   const calc::Results* results = nullptr;
-  const calc::Scene* scene = nullptr;      // null: no plan view, no luminaire schedule
+  const calc::Scene* scene = nullptr;  // null: no plan view, no luminaire schedule
+  // Worked out before the page (luminaire_types, room_energy): the page only presents them.
+  std::vector<LuminaireType> types;        // one per photometry entry
+  std::vector<RoomEnergy> energy;          // per room
   std::map<std::string, std::string> png;  // surface name -> PNG file bytes (the maps)
   std::vector<RequirementCheck> checks;
   const CostTable* cost = nullptr;  // --with-cost
   std::string version;              // "0.1.0"
   std::string date;                 // "2024-05-01 14:03 UTC"
-  // luminaire_sections_html(*scene) when the caller made it already (write_outputs makes it
+  // luminaire_sections_html(types, *scene) when the caller made it already (write_outputs makes it
   // while the plots are drawn); empty: html_report makes it.
   std::string luminaires_html;
 };
@@ -39,12 +44,10 @@ void write_html_report(const ReportInput& in, const TextSink& put);
 std::string html_report(const ReportInput& in);
 
 // The report's luminaire types (product data, flux, power, LOR, CIE 190 UGR, polar diagrams) and
-// positions: the part of the page that computes the most, so it can be made beforehand.
-// `known_flux_lm`: the luminous flux of distributions the calculation integrated already
-// (calc::luminous_flux, by distribution), so the report does not integrate them again.
-std::string luminaire_sections_html(
-    const calc::Scene& scene,
-    const std::map<const photometry::IntensityDistribution*, double>& known_flux_lm = {});
+// positions: the part of the page that draws the most (the polar diagrams), so it can be made
+// beforehand.
+std::string luminaire_sections_html(const std::vector<LuminaireType>& types,
+                                    const calc::Scene& scene);
 
 // RFC 4648 base64 of `bytes`: to `put` in pieces, or as one string.
 void base64_to(std::string_view bytes, const TextSink& put);

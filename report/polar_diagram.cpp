@@ -12,7 +12,7 @@
 namespace luxgrid::report {
 
 namespace {
-constexpr double kStepDeg = 0.5;  // 721 samples per plane: smooth at 640 px, cheap to compute
+constexpr double kStepDeg = kPolarStepDeg;
 // The plane colours, the same in every diagram luxgrid draws.
 const Rgb kC0{0.12f, 0.25f, 0.56f}, kC90{0.75f, 0.22f, 0.17f};
 const Rgb kRing{0.78f, 0.78f, 0.78f}, kGreyText{0.33f, 0.33f, 0.33f}, kBlack{0, 0, 0},
@@ -21,8 +21,26 @@ const Rgb kRing{0.78f, 0.78f, 0.78f}, kGreyText{0.33f, 0.33f, 0.33f}, kBlack{0, 
 
 double polar_outer_ring_cd(double imax_cd) { return nice_ceil(imax_cd); }
 
+PolarCurves polar_curves(const photometry::IntensityDistribution& d) {
+  const int n = static_cast<int>(360.0 / kStepDeg);
+  PolarCurves out;
+  out.c0_cd.resize(n + 1);
+  out.c90_cd.resize(n + 1);
+  for (int i = 0; i <= n; ++i) {
+    const double s = -180.0 + i * kStepDeg;
+    out.c0_cd[i] = photometry::plane_intensity(d, 0.0, s);
+    out.c90_cd[i] = photometry::plane_intensity(d, 90.0, s);
+  }
+  return out;
+}
+
 Raster polar_diagram(const photometry::IntensityDistribution& d, const std::string& title,
                      int size_px, bool* font_ok) {
+  return polar_diagram(polar_curves(d), title, size_px, font_ok);
+}
+
+Raster polar_diagram(const PolarCurves& curves, const std::string& title, int size_px,
+                     bool* font_ok) {
   const double k = size_px / 640.0;  // everything below is laid out for 640 px and scaled
   const int title_h = static_cast<int>(std::lround(34 * k)),
             legend_h = static_cast<int>(std::lround(30 * k));
@@ -31,15 +49,11 @@ Raster polar_diagram(const photometry::IntensityDistribution& d, const std::stri
   const int font_px = std::max(9, size_px / 36);
   const double cx = size_px / 2.0, cy = title_h + (size_px - title_h - legend_h) / 2.0;
   const double radius = (size_px - title_h - legend_h) / 2.0 - 26 * k;
-  const int n = static_cast<int>(360.0 / kStepDeg);
-  std::vector<double> a(n + 1), b(n + 1);
+  const std::vector<double>& a = curves.c0_cd;
+  const std::vector<double>& b = curves.c90_cd;
+  const int n = static_cast<int>(std::min(a.size(), b.size())) - 1;
   double imax = 0.0;
-  for (int i = 0; i <= n; ++i) {
-    const double s = -180.0 + i * kStepDeg;
-    a[i] = photometry::plane_intensity(d, 0.0, s);
-    b[i] = photometry::plane_intensity(d, 90.0, s);
-    imax = std::max({imax, a[i], b[i]});
-  }
+  for (int i = 0; i <= n; ++i) imax = std::max({imax, a[i], b[i]});
   const double ring = polar_outer_ring_cd(imax);
   Raster img(size_px, size_px, kWhite);
   bool fonts = true;

@@ -10,6 +10,8 @@
 #include "report/chunked_text.h"
 #include "report/number_text_memo.h"
 #include "report/piece_buffer.h"
+#include "report/plan_json.h"
+#include "report/plan_text.h"
 
 namespace luxgrid::report {
 
@@ -130,27 +132,12 @@ nlohmann::json document(const calc::Results& results, const std::vector<std::str
   j["maintenance_factor"] = results.maintenance_factor;
   // Every E, E_direct and E_indirect below: E = E_direct + E_indirect, all times the factor.
   j["values"] = "maintained";
-  j["plan"] = {{"direct", results.plan.direct},
-               {"indirect", results.plan.indirect},
-               {"visibility", results.plan.visibility},
-               {"notes", results.plan.notes},
-               {"promise", results.plan.promise}};
-  // The plan's own error estimate per surface (calc/plan_estimates.h), relative; null where a
-  // part was not estimated (no reflected light; the far field everywhere).
-  json estimates = json::array();
-  const auto share = [](double v) { return v < 0.0 ? json(nullptr) : json(v); };
-  for (const auto& e : results.plan.estimates)
-    estimates.push_back({{"surface", e.surface},
-                         {"direct", share(e.direct)},
-                         {"patch_size", share(e.patch_size)},
-                         {"bounces", share(e.bounces)},
-                         {"probe_points", e.probe_points},
-                         {"total", e.total()}});
-  j["plan"]["estimates"] = std::move(estimates);
+  // The plan: every decision as a value, with a short summary in words (report/plan_json.h).
+  j["plan"] = plan_to_json(results.plan);
   // Warnings: the scene's and the outputs' (given), then the plan's (an estimate above the
   // promise).
   json all_warnings = warnings;
-  for (const auto& w : results.plan.warnings) all_warnings.push_back(w);
+  for (const auto& w : plan_warnings(results.plan)) all_warnings.push_back(w);
   j["warnings"] = std::move(all_warnings);
   j["surfaces"] = json::array();
   for (size_t k = 0; k < results.surfaces.size(); ++k)

@@ -14,8 +14,10 @@
 
 #include "calc/statistics.h"
 #include "report/csv.h"
+#include "report/energy.h"
 #include "report/false_colour.h"
 #include "report/html_report.h"
+#include "report/report_input_json.h"
 #include "report/results_json.h"
 #include "report/surface_npy.h"
 #include "util/error.h"
@@ -94,7 +96,10 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
     std::string png;                      // plots, for report.html: the total's file as written
   };
   std::vector<Job> jobs;
-  if (options.report && options.scene && !options.scene->photometry.empty())
+  // The luminaire types' data goes into results.json, and with the report their sections.
+  std::vector<LuminaireType> types = options.types ? *options.types : std::vector<LuminaireType>{};
+  const bool make_types = !options.types && options.scene && !options.scene->photometry.empty();
+  if (make_types || (options.report && options.scene && !types.empty()))
     jobs.push_back({0, Job::What::luminaires_html, {}, {}});
   for (std::size_t i = 0; i < results.surfaces.size(); ++i)
     if (results.surfaces[i].grid.kind == geometry::SurfaceGrid::Kind::grid)
@@ -117,8 +122,9 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   };
   const auto run_job = [&](Job& job) {
     if (job.what == Job::What::luminaires_html) {
-      report.luminaires_html =
-          luminaire_sections_html(*options.scene, results.plan.indirect_decision.luminous_flux_lm);
+      if (make_types)
+        types = luminaire_types(*options.scene, results.plan.indirect_decision.luminous_flux_lm);
+      if (options.report) report.luminaires_html = luminaire_sections_html(types, *options.scene);
       return;
     }
     const calc::SurfaceResult& s = results.surfaces[job.surface];
@@ -170,6 +176,8 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
     if (job.what == Job::What::plots && options.report)
       report.png[results.surfaces[job.surface].grid.name] = std::move(job.png);
   }
+  if (options.scene) report.energy = room_energy(*options.scene, types, results, options.checks);
+  report.types = types;
   // report.html and results.json side by side: neither reads the other.
   const auto write_html = [&] {
     if (options.report)
@@ -180,6 +188,8 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
       });
   };
   const auto write_json = [&] {
+    if (options.results_json)
+      return write_text_file(folder.file(kResultsFile), *options.results_json);
     // The scene's warnings (legal but suspicious input) and the outputs', as the terminal shows
     // them.
     std::vector<std::string> all_warnings;
@@ -212,6 +222,9 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
       }
       j["requirements_met"] = all_met(options.checks);
     }
+    // What `luxgrid report` needs to write every other output again from this file.
+    if (options.scene)
+      j["report_input"] = report_input_to_json(*options.scene, results, types, options.checks);
     write_file_streamed(folder.file(kResultsFile),
                         [&](std::ostream& out) { write_results_json(out, j, results); });
   };

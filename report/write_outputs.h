@@ -9,6 +9,7 @@
 #include "calc/scene.h"
 #include "report/colour_scale.h"
 #include "report/diff.h"
+#include "report/luminaire_types.h"
 #include "report/output_folder.h"
 #include "report/requirements.h"
 
@@ -23,8 +24,14 @@ struct OutputOptions {
   std::optional<ColourScale> scale;      // one fixed scale for every surface; default: per surface
   const calc::Scene* scene = nullptr;    // luminaire marks, plan view and schedule; null: left out
   std::vector<RequirementCheck> checks;  // also written into results.json per surface
-  const CostTable* cost = nullptr;       // the `luxgrid cost` table, into the report
-  std::string version;                   // luxgrid version for the report
+  // The luminaire types' data (report/luminaire_types.h) when known already (`luxgrid report`
+  // reads them from results.json); null: worked out from `scene`'s photometry.
+  const std::vector<LuminaireType>* types = nullptr;
+  // results.json as it is to be written, when it exists already (`luxgrid report`: the file it
+  // read); null: written from the results.
+  const std::string* results_json = nullptr;
+  const CostTable* cost = nullptr;  // the `luxgrid cost` table, into the report
+  std::string version;              // luxgrid version for the report
 };
 
 // Writes into folder.staging(); adds the "report" phase to results.timing_s. Returns warnings.

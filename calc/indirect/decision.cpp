@@ -13,7 +13,6 @@
 #include "calc/indirect/patches.h"
 #include "calc/scaled_distribution.h"
 #include "geometry/polygon.h"
-#include "util/format.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -40,7 +39,7 @@ double mean_reflectance(const Room& room) {
 IndirectDecision decide_indirect(const Scene& scene) {
   IndirectDecision d;
   if (scene.settings.indirect == IndirectMode::off) {
-    d.reason = "skipped: indirect is off in the settings";
+    d.reason = IndirectReason::off_in_settings;
     return d;
   }
   bool any = false;
@@ -50,11 +49,11 @@ IndirectDecision decide_indirect(const Scene& scene) {
     for (const auto& o : r.obstacles) any = any || o.reflectance > 0.0;
   }
   if (!any) {
-    d.reason = "skipped: all reflectances are 0";
+    d.reason = IndirectReason::no_reflectance;
     return d;
   }
   if (scene.luminaires.empty()) {
-    d.reason = "skipped: no luminaires";
+    d.reason = IndirectReason::no_luminaires;
     return d;
   }
   // Integrating-sphere estimate per room: rho Phi / (A (1 - rho)), rho area-weighted.
@@ -79,8 +78,7 @@ IndirectDecision decide_indirect(const Scene& scene) {
   }
   if (scene.settings.indirect == IndirectMode::on) {
     d.run = true;
-    d.reason = "on (forced by the settings); integrating-sphere estimate " +
-               format_double("%.4g", d.estimate_lx) + " lx";
+    d.reason = IndirectReason::forced_on;
     return d;
   }
   // UGR's background luminance is the indirect illuminance at the eye (calc/glare/ugr.h): with
@@ -88,10 +86,8 @@ IndirectDecision decide_indirect(const Scene& scene) {
   for (const auto& s : scene.surfaces) {
     if (s.kind != geometry::SurfaceGrid::Kind::observers) continue;
     d.run = true;
-    d.reason = "on: observers surface '" + s.name +
-               "' needs reflected light for UGR's background "
-               "luminance; integrating-sphere estimate " +
-               format_double("%.4g", d.estimate_lx) + " lx";
+    d.reason = IndirectReason::observers;
+    d.observers_surface = s.name;
     return d;
   }
   // Mean direct light on the calculation surfaces, far field, on a sample of points.
@@ -116,17 +112,13 @@ IndirectDecision decide_indirect(const Scene& scene) {
   for (double e : sample_e) sum += e;
   const size_t count = samples.size();
   d.mean_direct_lx = count ? sum / count : 0.0;
+  d.sampled = count > 0;
   if (count > 0 && d.estimate_lx < kAutoSkipFraction * d.mean_direct_lx) {
-    d.reason = "skipped: integrating-sphere estimate " + format_double("%.4g", d.estimate_lx) +
-               " lx is below 1 % of the mean direct illuminance " +
-               format_double("%.4g", d.mean_direct_lx) + " lx";
+    d.reason = IndirectReason::below_threshold;
     return d;
   }
   d.run = true;
-  d.reason = "on: integrating-sphere estimate " + format_double("%.4g", d.estimate_lx) + " lx" +
-             (count ? " against a mean direct illuminance of " +
-                          format_double("%.4g", d.mean_direct_lx) + " lx"
-                    : std::string());
+  d.reason = IndirectReason::estimate;
   return d;
 }
 

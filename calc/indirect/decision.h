@@ -9,9 +9,22 @@
 
 namespace luxgrid::calc::indirect {
 
+// Why reflected light runs or not (report/plan_text.h words it with the numbers below).
+enum class IndirectReason {
+  off_in_settings,  // skipped: "indirect": "off"
+  no_reflectance,   // skipped: every reflectance is 0
+  no_luminaires,    // skipped
+  forced_on,        // "indirect": "on"
+  observers,        // on: an observers surface needs it for UGR's background luminance
+  below_threshold,  // skipped: the estimate is below kAutoSkipFraction of the mean direct light
+  estimate,         // on: the estimate is not small against the direct light
+};
+
 struct IndirectDecision {
   bool run = false;
-  std::string reason;        // "skipped: all reflectances are 0", "on: ...", ...
+  IndirectReason reason = IndirectReason::off_in_settings;
+  std::string observers_surface;  // observers: its name
+  bool sampled = false;           // mean_direct_lx was measured (on at least one point)
   double estimate_lx = 0.0;  // integrating-sphere estimate rho Phi / (A (1 - rho)), max over rooms
   double mean_direct_lx = 0.0;  // mean far-field direct illuminance on the calculation surfaces
   // luminous_flux of each distinct distribution of the luminaires inside rooms (for

@@ -165,24 +165,22 @@ std::vector<RoomCells> emitter_cells(const Scene& scene, const Luminaire& lum) {
   return out;
 }
 
-std::string outside_note(const Luminaire& lum, const std::vector<RoomCells>& parts,
-                         const Scene& scene, double luminous_flux_lm) {
+std::optional<IndirectNote> outside_note(const Luminaire& lum, const std::vector<RoomCells>& parts,
+                                         const Scene& scene, double luminous_flux_lm) {
   double inside = 0.0;
   for (const auto& p : parts) inside += p.weight;
   const double outside = 1.0 - inside;
-  if (!(outside > kOutsideNoteFraction) || parts.empty()) return {};
-  char buf[256];
-  std::snprintf(
-      buf, sizeof buf,
-      "%s: %.4g %% of its luminous opening (%s %.4g x %.4g m) lies outside its room "
-      "or inside an obstacle; that light does not enter the room: %.6g lm of %.6g lm "
-      "enter",
-      lum.label.c_str(), 100.0 * outside,
-      lum.opening.shape == photometry::LuminousOpening::Shape::disk ? "disk" : "rectangle",
-      lum.opening.length, lum.opening.width, inside * luminous_flux_lm, luminous_flux_lm);
-  std::string note = buf;
-  for (size_t k = 0; k < parts.size(); ++k)
-    note += (k == 0 ? " room '" : ", '") + scene.rooms[parts[k].room].name + "'";
+  if (!(outside > kOutsideNoteFraction) || parts.empty()) return std::nullopt;
+  IndirectNote note;
+  note.kind = IndirectNote::Kind::opening_outside;
+  note.luminaire = lum.label;
+  note.fraction = outside;
+  note.disk = lum.opening.shape == photometry::LuminousOpening::Shape::disk;
+  note.length_m = lum.opening.length;
+  note.width_m = lum.opening.width;
+  note.entering_lm = inside * luminous_flux_lm;
+  note.flux_lm = luminous_flux_lm;
+  for (const auto& p : parts) note.rooms_entered.push_back(scene.rooms[p.room].name);
   return note;
 }
 

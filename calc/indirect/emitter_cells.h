@@ -11,9 +11,11 @@
 //
 // The opening polygon is the near field's (nearfield::make_emitter: rectangle, or the
 // area-preserving N-gon of a disk), so direct and reflected light see the same emitter.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "calc/indirect/indirect_notes.h"
 #include "calc/scene.h"
 
 namespace luxgrid::calc::indirect {
@@ -57,9 +59,11 @@ std::vector<RoomCells> emitter_cells(const Scene& scene, const Luminaire& lumina
 // the luminaire's rotation does not cut the opening away.
 inline constexpr double kOpeningOnFace_m = 1e-6;
 
-// "luminaire 1: 99.84 % of its luminous opening (100 x 100 m) lies outside room 'box' ..." when
-// part of the opening lies outside its rooms; empty otherwise.
-std::string outside_note(const Luminaire& luminaire, const std::vector<RoomCells>& parts,
-                         const Scene& scene, double luminous_flux_lm);
+// The plan's note when part of the opening lies outside its rooms (IndirectNote::opening_outside:
+// "luminaire 1: 99.84 % of its luminous opening (100 x 100 m) lies outside room 'box' ..."); none
+// otherwise.
+std::optional<IndirectNote> outside_note(const Luminaire& luminaire,
+                                         const std::vector<RoomCells>& parts, const Scene& scene,
+                                         double luminous_flux_lm);
 
 }  // namespace luxgrid::calc::indirect

@@ -284,7 +284,10 @@ FirstBounce first_bounce(
   for (const auto& lum : scene.luminaires) {
     const std::vector<RoomCells> parts = emitter_cells(scene, lum);
     if (parts.empty()) {
-      fb.notes.push_back(lum.label + ": not inside any room, its light is not reflected");
+      IndirectNote note;
+      note.kind = IndirectNote::Kind::luminaire_outside;
+      note.luminaire = lum.label;
+      fb.notes.push_back(std::move(note));
       continue;
     }
     auto [it, fresh] = flux_of.try_emplace(lum.distribution.get(), 0.0);
@@ -300,8 +303,7 @@ FirstBounce first_bounce(
       for (const EmitterCell& cell : part.cells)
         in_room[part.room].push_back({cell.position, &lum, cell.weight, intensity});
     }
-    if (std::string note = outside_note(lum, parts, scene, it->second); !note.empty())
-      fb.notes.push_back(std::move(note));
+    if (auto note = outside_note(lum, parts, scene, it->second)) fb.notes.push_back(*note);
   }
   // ...then one parallel loop over the patches, each adding its room's luminaires in that order
   // (one loop instead of one per luminaire; the same sums).

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "calc/indirect/form_factor.h"
+#include "calc/indirect/indirect_notes.h"
 #include "calc/indirect/patches.h"
 #include "calc/scene.h"
 #include "geometry/visibility.h"
@@ -30,10 +31,10 @@ struct FirstBounce {
   // Flux entering the rooms: each luminaire's luminous_flux times the fraction of its opening
   // inside a room (emitter_cells.h); light from the part outside never enters.
   double emitted_flux_lm = 0.0;
-  double luminaire_flux_lm = 0.0;  // sum of luminous_flux over luminaires reaching a room
-  double received_flux_lm = 0.0;   // sum of incident_flux_lm
-  size_t vpl_count = 0;            // patches with vpl flux > 0
-  std::vector<std::string> notes;  // e.g. luminaires outside every room
+  double luminaire_flux_lm = 0.0;   // sum of luminous_flux over luminaires reaching a room
+  double received_flux_lm = 0.0;    // sum of incident_flux_lm
+  size_t vpl_count = 0;             // patches with vpl flux > 0
+  std::vector<IndirectNote> notes;  // e.g. luminaires outside every room
 };
 
 // `visibility[r]` is room r's visibility test (null: nothing blocks; geometry/visibility.h).

@@ -117,6 +117,13 @@ std::string total_limit_text(size_t limit) {
   return std::to_string(limit) + " patches in all " +
          (limit == kMaxTotalPatches ? "rooms" : "clustered rooms");
 }
+IndirectNote raised(IndirectNote::Kind kind, double from_m, double to_m) {
+  IndirectNote n;
+  n.kind = kind;
+  n.from_m = from_m;
+  n.to_m = to_m;
+  return n;
+}
 
 // The patch size at which the rooms' patch counts are estimated (surface area / size^2, the
 // count of a box room) to fit the per-room budget and kMaxTotalPatches: checked before the mesh
@@ -124,7 +131,7 @@ std::string total_limit_text(size_t limit) {
 // 8 million patches, gigabytes, before the budget is checked). With an explicit size an excess
 // is an error naming the room or the total.
 double size_within_limits(const Scene& scene, const IndirectOptions& o, const RoomBudgets& b,
-                          double size, std::vector<std::string>& notes) {
+                          double size, std::vector<IndirectNote>& notes) {
   std::vector<double> count;
   for (const auto& room : scene.rooms) count.push_back(room_surface_area(room) / (size * size));
   const BudgetUse u = budget_use(b, count);
@@ -142,27 +149,29 @@ double size_within_limits(const Scene& scene, const IndirectOptions& o, const Ro
                      total_limit_text(u.limit));
   }
   const double grow = std::sqrt(std::max(u.worst_ratio, u.total_ratio));
-  notes.push_back(
-      (u.worst_ratio >= u.total_ratio
-           ? "room '" + scene.rooms[u.worst_room].name + "': patch size raised from "
-           : "all " + std::to_string(scene.rooms.size()) + " rooms: patch size raised from ") +
-      format_double("%.3g", size) + " m to " + format_double("%.3g", size * grow) +
-      " m to stay within " +
-      (u.worst_ratio >= u.total_ratio ? std::to_string(budget) + " patches per room"
-                                      : total_limit_text(u.limit)));
+  IndirectNote n = raised(u.worst_ratio >= u.total_ratio ? IndirectNote::Kind::room_raised
+                                                         : IndirectNote::Kind::rooms_raised,
+                          size, size * grow);
+  n.room = scene.rooms[u.worst_room].name;
+  n.rooms = scene.rooms.size();
+  n.budget = budget;
+  n.limit = u.limit;
+  n.clustered_limit = u.limit != kMaxTotalPatches;
+  notes.push_back(std::move(n));
   return size * grow;
 }
 
 // Rooms' patch mesh at the requested size, coarsened to fit the budget when the size was not
 // given explicitly.
 PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, const RoomBudgets& budgets_in,
-                             double size, std::vector<std::string>& notes) {
+                             double size, std::vector<IndirectNote>& notes) {
   if (o.max_patches_per_room > kMaxPatchesPerRoom) {
-    notes.push_back("indirect: the budget of " + std::to_string(o.max_patches_per_room) +
-                    " patches per room is above the limit of " +
-                    std::to_string(kMaxPatchesPerRoom) + " (a form-factor matrix of " +
-                    std::to_string(kMaxFormFactorMatrixBytes / kBytesPerMegabyte) + " MB); " +
-                    std::to_string(kMaxPatchesPerRoom) + " used");
+    IndirectNote n;
+    n.kind = IndirectNote::Kind::budget_above_limit;
+    n.asked = o.max_patches_per_room;
+    n.limit = kMaxPatchesPerRoom;
+    n.matrix_mb = kMaxFormFactorMatrixBytes / kBytesPerMegabyte;
+    notes.push_back(std::move(n));
     o.max_patches_per_room = kMaxPatchesPerRoom;
   }
   RoomBudgets b = budgets_in;
@@ -200,9 +209,10 @@ PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, const RoomBu
                          format_double("%.3g", size) + " m exceed the limit of " +
                          total_limit_text(u.limit));
       const double grow = std::sqrt(u.total_ratio) * 1.05;
-      notes.push_back("all rooms: patch size raised from " + format_double("%.3g", size) +
-                      " m to " + format_double("%.3g", size * grow) + " m to stay within " +
-                      total_limit_text(u.limit));
+      IndirectNote n = raised(IndirectNote::Kind::rooms_raised_meshed, size, size * grow);
+      n.limit = u.limit;
+      n.clustered_limit = u.limit != kMaxTotalPatches;
+      notes.push_back(std::move(n));
       size *= grow;
       continue;
     }
@@ -211,9 +221,10 @@ PatchMesh mesh_within_budget(const Scene& scene, IndirectOptions o, const RoomBu
                        " patches at a patch size of " + format_double("%.3g", size) +
                        " m exceed the budget of " + std::to_string(budget) + " patches per room");
     const double grow = std::sqrt(u.worst_ratio) * 1.05;
-    notes.push_back("room '" + scene.rooms[worst_room].name + "': patch size raised from " +
-                    format_double("%.3g", size) + " m to " + format_double("%.3g", size * grow) +
-                    " m to stay within " + std::to_string(budget) + " patches");
+    IndirectNote n = raised(IndirectNote::Kind::room_raised_meshed, size, size * grow);
+    n.room = scene.rooms[worst_room].name;
+    n.budget = budget;
+    notes.push_back(std::move(n));
     size *= grow;
   }
 }
@@ -373,15 +384,16 @@ std::unique_ptr<const IndirectSolution> solve_indirect(const Scene& scene,
       res.max_row_correction = std::max(res.max_row_correction, T.max_row_correction);
       // A wider ratio than the quality's is not what the quality's accuracy was measured with
       // (docs/indirect.md, "Large rooms"): a warning, not a note.
-      if (T.opening > cluster_opening(room_far[r]))
-        res.warnings.push_back(
-            "indirect: room '" + scene.rooms[r].name + "': clustered transfer with the " +
-            "opening ratio " + format_double("%.3g", T.opening) + " instead of " +
-            format_double("%.3g", cluster_opening(room_far[r])) + ": the links of " +
-            std::to_string(T.n) + " patches at the quality's ratio would exceed " +
-            std::to_string(kMaxClusteredLinkBytes / kBytesPerMegabyte) +
-            " MB; the reflected light near the room's edges may then be off by more than the "
-            "quality's figures");
+      if (T.opening > cluster_opening(room_far[r])) {
+        IndirectNote n;
+        n.kind = IndirectNote::Kind::clustered_wider;
+        n.room = scene.rooms[r].name;
+        n.opening = T.opening;
+        n.quality_opening = cluster_opening(room_far[r]);
+        n.patches = T.n;
+        n.limit_mb = kMaxClusteredLinkBytes / kBytesPerMegabyte;
+        res.warnings.push_back(std::move(n));
+      }
       res.clustered_rooms += 1;
       res.clustered_links += T.links();
       res.clustered_bytes = std::max(res.clustered_bytes, T.bytes());
@@ -504,34 +516,10 @@ IndirectResult gather_indirect(const IndirectSolution& solution, const Scene& sc
   }
   res.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  std::string what = bounces == 1 ? "one bounce (RSM-style)"
-                     : bounces > 1
-                         ? std::to_string(bounces) + " bounces"
-                         : "converged interreflection (" + std::to_string(res.bounces_run) +
-                               " bounces" + (res.tail_added ? " + geometric tail" : "") + ")";
-  res.summary =
-      what + ": " + std::to_string(res.patches) + " patches of " +
-      format_double("%.3g", res.patch_size_m) + " m, " + std::to_string(res.vpls) +
-      " virtual point lights, residual " + format_double("%.2g", res.residual) +
-      (res.refined_patches
-           ? "; " + std::to_string(res.refined_patches) + " patches seen from closer than " +
-                 format_double("%.3g", kSubcellReach) + " diameters refined into " +
-                 std::to_string(kSubcellsPerSide) + " x " + std::to_string(kSubcellsPerSide) +
-                 " cells"
-           : std::string()) +
-      "; direct flux on room faces " + format_double("%.6g", res.received_flux_lm) + " lm of " +
-      format_double("%.6g", res.emitted_flux_lm) + " lm emitted into the rooms" +
-      (res.emitted_flux_lm < res.luminaire_flux_lm * (1.0 - kOutsideFluxFraction)
-           ? " (of " + format_double("%.6g", res.luminaire_flux_lm) + " lm from the whole openings)"
-           : std::string()) +
-      (res.clustered_rooms ? "; clustered transfer (" + std::to_string(res.clustered_rooms) +
-                                 " room" + (res.clustered_rooms == 1 ? "" : "s") + ", " +
-                                 std::to_string(res.clustered_links) + " links)"
-                           : std::string()) +
-      (options.visibility ? "; visibility: AABB tree of room and obstacle faces" : "") +
-      (obstacle_count ? "; " + std::to_string(obstacle_count) + " obstacle" +
-                            (obstacle_count == 1 ? "" : "s") + " reflect and shade"
-                      : std::string());
+  res.bounces_asked = bounces;
+  res.part_outside = res.emitted_flux_lm < res.luminaire_flux_lm * (1.0 - kOutsideFluxFraction);
+  res.visibility = options.visibility != nullptr;
+  res.obstacles = obstacle_count;
   return res;
 }
 

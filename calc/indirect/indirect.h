@@ -23,6 +23,7 @@
 
 #include "calc/indirect/decision.h"
 #include "calc/indirect/form_factor.h"
+#include "calc/indirect/indirect_notes.h"
 #include "calc/indirect/limits.h"
 #include "calc/indirect/patches.h"
 #include "calc/scene.h"
@@ -67,18 +68,19 @@ IndirectOptions indirect_options(const Settings& settings);
 struct IndirectResult {
   std::vector<std::vector<double>>
       E_indirect_per_surface;  // lx, same order as the surfaces' points
-  std::string summary;         // one line for Plan::indirect
-  std::vector<std::string> notes;
-  std::vector<std::string> warnings;  // for Plan::warnings: what may break the quality's promise
+  std::vector<IndirectNote> notes;
+  std::vector<IndirectNote> warnings;  // for the plan's warnings: what may break the promise
   size_t patches = 0;
   size_t vpls = 0;
-  int bounces_run = 0;  // largest over rooms
+  int bounces_asked = 0;  // as IndirectSolution::bounces: 1 one bounce, 0 converged
+  int bounces_run = 0;    // largest over rooms
   bool tail_added = false;
   double residual = 0.0;  // largest over rooms, relative
   double patch_size_m = 0.0;
   size_t refined_patches = 0;      // patches gathered cell by cell (subcells.h)
   double emitted_flux_lm = 0.0;    // entering the rooms (the parts of the openings inside them)
   double luminaire_flux_lm = 0.0;  // of the luminaires that reach a room, whole
+  bool part_outside = false;       // a share of it (beyond rounding) falls outside every room
   double received_flux_lm = 0.0;   // direct lumens landing on patches
   double vpl_flux_lm = 0.0;        // sum over VPLs (= sum rho x received)
   double max_row_correction = 0.0;
@@ -86,6 +88,8 @@ struct IndirectResult {
   // one's memory (nodes and links).
   size_t clustered_rooms = 0, clustered_links = 0, clustered_bytes = 0;
   std::vector<char> clustered;  // per room: solved with the clustered transfer
+  bool visibility = false;      // rooms and obstacles block light (an AABB tree of their faces)
+  size_t obstacles = 0;         // that reflect and shade
   double seconds = 0.0;
 };
 

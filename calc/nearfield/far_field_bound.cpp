@@ -597,77 +597,45 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
   return bound;
 }
 
-std::string describe(const FarFieldBound& b) {
-  char buf[448];
-  char fixed[256];
-  char scope[320] = "";
-  const int all = kGammaSamples * kCSamples;
-  if (b.restricted) {
-    const int far_measured = b.samples_read - b.samples_capped;
-    if (b.samples_capped > 0 && far_measured > 0)
-      std::snprintf(scope, sizeof scope,
-                    "; measured over the %d of %d directions the scene's points lie in, each out "
-                    "to its farthest point (%d of them keep the near field out to it, up to %.1f "
-                    "D)",
-                    b.samples_read, all, b.samples_capped, b.capped_reach_over_D);
-    else if (far_measured > 0)
-      std::snprintf(scope, sizeof scope,
-                    "; measured over the %d of %d directions the scene's points lie in, each out "
-                    "to its farthest point",
-                    b.samples_read, all);
-  }
-  if (b.restricted && b.samples_read > 0 && b.samples_read == b.samples_capped) {
-    std::snprintf(buf, sizeof buf,
-                  "near field at every point: in each of the %d of %d directions the scene's "
-                  "points lie in the far field is not within %.2g %% out to the farthest of them "
-                  "(up to %.1f D, D = %.2f m)",
-                  b.samples_read, all, 100 * b.tolerance, b.capped_reach_over_D,
-                  b.largest_dimension_m);
-  } else if (b.restricted && b.samples_read == 0) {
-    std::snprintf(buf, sizeof buf, "no point of the scene in reach (D = %.2f m)",
-                  b.largest_dimension_m);
-    return buf;
-  } else {
-    // Up to 8 D the opening's geometry alone (slanted receivers) explains the distance (a
-    // Lambertian square measures 7.2 D); beyond, the table does.
-    const char* why = b.max_over_D <= 8.0 ? "smooth distribution (geometry of the opening)"
-                      : b.worst_gradient_per_deg > 0.05
-                          ? "sharp beam"
-                          : "kinks or curvature between measured angles";
-    if (b.near_everywhere_somewhere) {
-      std::snprintf(buf, sizeof buf,
-                    "%s: near field at every distance at C %.1f gamma %.0f deg, from %.1f D "
-                    "elsewhere (median %.1f D, D = %.2f m)%s; far field within %.2g %% beyond "
-                    "(measured at most %.2g %%)",
-                    why, b.worst_c_deg, b.worst_gamma_deg, b.min_over_D, b.median_over_D,
-                    b.largest_dimension_m, scope, 100 * b.tolerance, 100 * b.far_error_measured);
-    } else {
-      std::snprintf(buf, sizeof buf,
-                    "%s: near field out to %.1f D (at C %.1f gamma %.0f deg, intensity changing "
-                    "%.1f %%/deg), %.1f D at least, median %.1f D (D = %.2f m)%s; far field within "
-                    "%.2g %% beyond (measured at most %.2g %%)",
-                    why, b.max_over_D, b.worst_c_deg, b.worst_gamma_deg,
-                    100 * b.worst_gradient_per_deg, b.min_over_D, b.median_over_D,
-                    b.largest_dimension_m, scope, 100 * b.tolerance, 100 * b.far_error_measured);
-    }
-  }
-  if (b.restricted && b.fixed_samples_read == 0)
-    std::snprintf(fixed, sizeof fixed,
-                  "; the fixed rule serves none of the scene's pairs (cylinders, or planes facing "
-                  "the opening's axis, where the table rung is in closed form)");
-  else if (b.fixed_max_over_D >= kNearEverywhere)
-    std::snprintf(fixed, sizeof fixed,
-                  "; the fixed rule within %.2g %% beyond %.1f D (median), not at every direction "
-                  "(measured at "
-                  "most %.2g %%)",
-                  100 * b.tolerance, b.fixed_median_over_D, 100 * b.fixed_error_measured);
+FarFieldBoundSummary summarize(const FarFieldBound& b) {
+  using S = FarFieldBoundSummary;
+  S out;
+  const int far_measured = b.samples_read - b.samples_capped;
+  if (b.restricted && far_measured > 0)
+    out.scope = b.samples_capped > 0 ? S::Scope::demand_capped : S::Scope::demand;
+  if (b.restricted && b.samples_read > 0 && b.samples_read == b.samples_capped)
+    out.outcome = S::Outcome::near_at_every_point;
+  else if (b.restricted && b.samples_read == 0)
+    out.outcome = S::Outcome::no_point_in_reach;
+  else if (b.near_everywhere_somewhere)
+    out.outcome = S::Outcome::near_everywhere_somewhere;
   else
-    std::snprintf(fixed, sizeof fixed,
-                  "; the fixed rule within %.2g %% beyond %.1f D (median), %.1f D at most "
-                  "(measured at most %.2g %%)",
-                  100 * b.tolerance, b.fixed_median_over_D, b.fixed_max_over_D,
-                  100 * b.fixed_error_measured);
-  return std::string(buf) + fixed;
+    out.outcome = S::Outcome::near_out_to;
+  out.cause = b.max_over_D <= 8.0               ? S::Cause::smooth_distribution
+              : b.worst_gradient_per_deg > 0.05 ? S::Cause::sharp_beam
+                                                : S::Cause::kinks;
+  if (b.restricted && b.fixed_samples_read == 0)
+    out.fixed_rule = S::FixedRule::serves_none;
+  else if (b.fixed_max_over_D >= kNearEverywhere)
+    out.fixed_rule = S::FixedRule::not_every_direction;
+  else
+    out.fixed_rule = S::FixedRule::within;
+  out.samples_read = b.samples_read;
+  out.samples_capped = b.samples_capped;
+  out.capped_reach_over_D = b.capped_reach_over_D;
+  out.tolerance = b.tolerance;
+  out.largest_dimension_m = b.largest_dimension_m;
+  out.min_over_D = b.min_over_D;
+  out.max_over_D = b.max_over_D;
+  out.median_over_D = b.median_over_D;
+  out.worst_c_deg = b.worst_c_deg;
+  out.worst_gamma_deg = b.worst_gamma_deg;
+  out.worst_gradient_per_deg = b.worst_gradient_per_deg;
+  out.far_error_measured = b.far_error_measured;
+  out.fixed_median_over_D = b.fixed_median_over_D;
+  out.fixed_max_over_D = b.fixed_max_over_D;
+  out.fixed_error_measured = b.fixed_error_measured;
+  return out;
 }
 
 }  // namespace luxgrid::nearfield

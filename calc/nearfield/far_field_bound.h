@@ -161,8 +161,36 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& emitte
                                                            const MapDemand* demand = nullptr,
                                                            bool share_mirror_images = true);
 
-// The plan's line for one emitter: "near field out to 9.1 D (C 45, gamma 35), 2.0 D at least,
-// median 3.4 D (0.65 m opening), far field within 1 % beyond" with the reason.
-std::string describe(const FarFieldBound& bound);
+// What the plan reports of one map: its outcome and cause as codes, with the numbers they quote
+// (report/plan_text.h words them). The codes are the decisions summarize() takes from the map.
+struct FarFieldBoundSummary {
+  // Which directions the summary is over: the whole map, or the samples the scene's points lie in
+  // (a MapDemand), some of them capped (the near field out to their farthest point).
+  enum class Scope { whole_map, demand, demand_capped };
+  enum class Outcome {
+    near_at_every_point,        // every demanded direction keeps the near field to its farthest
+    no_point_in_reach,          // a demand with no sample read
+    near_everywhere_somewhere,  // some direction keeps the near field at every distance
+    near_out_to,                // every direction has a far-field distance
+  };
+  // Why the distance is as large as it is: up to 8 D the opening's geometry alone (slanted
+  // receivers) explains it (a Lambertian square measures 7.2 D); beyond, the table does, by a
+  // sharp beam (the intensity changing faster than 5 %/deg) or by kinks and curvature.
+  enum class Cause { smooth_distribution, sharp_beam, kinks };
+  enum class FixedRule { serves_none, not_every_direction, within };
+  Scope scope = Scope::whole_map;
+  Outcome outcome = Outcome::near_out_to;
+  Cause cause = Cause::smooth_distribution;
+  FixedRule fixed_rule = FixedRule::within;
+  int samples_all = kGammaSamples * kCSamples;
+  int samples_read = 0, samples_capped = 0;
+  double capped_reach_over_D = 0.0;
+  double tolerance = 0.0, largest_dimension_m = 0.0;
+  double min_over_D = 0.0, max_over_D = 0.0, median_over_D = 0.0;
+  double worst_c_deg = 0.0, worst_gamma_deg = 0.0, worst_gradient_per_deg = 0.0;
+  double far_error_measured = 0.0;
+  double fixed_median_over_D = 0.0, fixed_max_over_D = 0.0, fixed_error_measured = 0.0;
+};
+FarFieldBoundSummary summarize(const FarFieldBound& bound);
 
 }  // namespace luxgrid::nearfield

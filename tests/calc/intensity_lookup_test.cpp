@@ -87,14 +87,19 @@ TEST(IntensityLookup, SharpBeamKeepsTheTable) {
     const IntensityLookup l = choose_intensity_lookup(spot, q);
     EXPECT_EQ(l.lookup.get(), spot.get()) << to_string(q);
     EXPECT_EQ(l.texture, nullptr) << to_string(q);
-    EXPECT_EQ(l.description.rfind("the exact table", 0), 0u) << l.description;
+    EXPECT_TRUE(l.choice.kind == IntensityLookupChoice::Kind::table_by_quality ||
+                l.choice.kind == IntensityLookupChoice::Kind::table_probe_deviates ||
+                l.choice.kind == IntensityLookupChoice::Kind::table_texture_deviates)
+        << to_string(q);
   }
   // Draft promises nothing: it takes the texture and says how far off it is.
   const IntensityLookup draft = choose_intensity_lookup(spot, Quality::draft);
   ASSERT_NE(draft.texture, nullptr);
   EXPECT_EQ(draft.lookup.get(), draft.texture.get());
-  EXPECT_NE(draft.description.find("intensity texture 1440x720, within about"), std::string::npos)
-      << draft.description;
+  EXPECT_EQ(draft.choice.kind, IntensityLookupChoice::Kind::texture_draft);
+  EXPECT_EQ(draft.choice.c_cells, 1440);
+  EXPECT_EQ(draft.choice.gamma_cells, 720);
+  EXPECT_GT(draft.choice.deviation, texture_limit(Quality::standard));
 }
 
 TEST(IntensityLookup, IntensitiesBeyondAFloatKeepTheTable) {
@@ -108,7 +113,7 @@ TEST(IntensityLookup, IntensitiesBeyondAFloatKeepTheTable) {
     const IntensityLookup l = choose_intensity_lookup(huge, q);
     EXPECT_EQ(l.lookup.get(), huge.get()) << to_string(q);
     EXPECT_EQ(l.texture, nullptr);
-    EXPECT_NE(l.description.find("float texels"), std::string::npos) << l.description;
+    EXPECT_EQ(l.choice.kind, IntensityLookupChoice::Kind::table_float_range);
   }
 }
 
@@ -128,9 +133,9 @@ TEST(IntensityLookup, AcceptedTextureKeepsFarFieldWithinItsLimit) {
   photometry::LuminousOpening opening;  // a point: the far field at every distance
   for (Quality q : {Quality::standard, Quality::high}) {
     const IntensityLookup l = choose_intensity_lookup(table, q);
-    ASSERT_NE(l.texture, nullptr) << l.description;
+    ASSERT_NE(l.texture, nullptr) << to_string(q);
     EXPECT_LE(l.bound, texture_limit(q));
-    EXPECT_NE(l.description.find("intensity texture"), std::string::npos);
+    EXPECT_EQ(l.choice.kind, IntensityLookupChoice::Kind::texture_within);
     const glm::dmat3 turned = rotation_xyz(0.3, -0.2, 1.1);
     nearfield::Emitter with_table = nearfield::make_emitter(opening, Vec3(0, 0, 3), turned, table);
     nearfield::Emitter with_texture = with_table;
@@ -233,18 +238,20 @@ TEST(IntensityLookup, PlanSaysWhatEachFileUsed) {
       R"({ "name": "p", "points": [ {"at": [3, 2, 0.8], "normal": [0, 0, 1]} ] })";
   for (const char* quality : {"draft", "standard"}) {
     const Results r = run_scene(scene_of(quality, two, one_point));
-    const std::string expected =
-        "\"mirel\" (2 luminaires): the exact table (2 luminaire-point pairs: too few for an "
-        "intensity texture to pay for its building)";
-    EXPECT_NE(r.plan.direct.find(expected), std::string::npos) << r.plan.direct;
+    ASSERT_EQ(r.plan.intensity_lookups.size(), 1u);
+    const IntensityLookupPlan& l = r.plan.intensity_lookups[0];
+    EXPECT_EQ(l.group.photometry, "mirel");
+    EXPECT_EQ(l.group.luminaires, 2u);
+    EXPECT_EQ(l.choice.kind, IntensityLookupChoice::Kind::table_few_pairs);
+    EXPECT_EQ(l.choice.pairs, 2u);
   }
   const SceneLookups many = choose_intensity_lookups(scene_of(
       "draft", R"({"origin": [0.6, 0.5, 3], "count": [5, 6], "spacing": [1.2, 0.6]})",
       R"({"name": "wp", "workplane": {"room": "r", "height": 0.8, "border": 0.5}, "spacing": 0.01})"));
-  ASSERT_EQ(many.plan_lines.size(), 1u);
-  EXPECT_NE(many.plan_lines[0].find("\"mirel\" (30 luminaires): intensity texture 1440x720"),
-            std::string::npos)
-      << many.plan_lines[0];
+  ASSERT_EQ(many.plan.size(), 1u);
+  EXPECT_EQ(many.plan[0].group.luminaires, 30u);
+  EXPECT_EQ(many.plan[0].choice.kind, IntensityLookupChoice::Kind::texture_draft);
+  EXPECT_EQ(many.plan[0].choice.c_cells, 1440);
 }
 
 }  // namespace

@@ -37,10 +37,11 @@ double shadowed(const geometry::Visibility* vis, const Luminaire& lum, const Vec
 
 TEST(Visibility, LRoomPointSourceDarkBehindTheCorner) {
   const Scene scene = scene_from(kLRoom, "[1, 5, 2.9]");
-  std::string reason;
+  VisibilityDecision reason;
   const auto vis = make_visibility(scene, reason);
   ASSERT_TRUE(vis);
-  EXPECT_EQ(reason, "on: non-convex room 'L'");
+  EXPECT_TRUE(reason.on);
+  EXPECT_EQ(reason.non_convex_rooms, std::vector<std::string>{"L"});
   const Luminaire& lum = scene.luminaires[0];
   const double h = 2.9;
   // Visible: E = I h / d^3 (isotropic source, horizontal receiver).
@@ -60,10 +61,11 @@ TEST(Visibility, BoxBetweenSourceAndPointGivesZero) {
       scene_from(R"([ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3,
       "obstacles": [ { "name": "cabinet", "box": { "min": [1.5, 1.5, 0], "max": [2.5, 2.5, 1.8] } } ] } ])",
                  "[2, 2, 3]");
-  std::string reason;
+  VisibilityDecision reason;
   const auto vis = make_visibility(scene, reason);
   ASSERT_TRUE(vis);
-  EXPECT_EQ(reason, "on: 1 obstacle");
+  EXPECT_TRUE(reason.on);
+  EXPECT_EQ(reason.obstacles, 1u);
   const Luminaire& lum = scene.luminaires[0];
   EXPECT_EQ(shadowed(vis.get(), lum, Vec3(2, 2, 0)), 0.0);      // under the cabinet
   EXPECT_EQ(shadowed(vis.get(), lum, Vec3(2.6, 2.0, 0)), 0.0);  // in its shadow beside it
@@ -75,19 +77,22 @@ TEST(Visibility, BoxBetweenSourceAndPointGivesZero) {
 }
 
 TEST(Visibility, OffForAConvexEmptyRoomWithTheLuminaireInside) {
-  std::string reason;
+  VisibilityDecision reason;
   const Scene scene =
       scene_from(R"([ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3 } ])",
                  "[2, 2, 3]");  // on the ceiling: inside the closed room
   EXPECT_EQ(make_visibility(scene, reason), nullptr);
-  EXPECT_EQ(reason, "off: convex room, no obstacles, every luminaire inside");
+  EXPECT_FALSE(reason.on);
+  EXPECT_FALSE(reason.no_rooms);
   const Scene outside = scene_from(
       R"([ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 3 } ])", "[2, 2, 3.5]");
   EXPECT_NE(make_visibility(outside, reason), nullptr);
-  EXPECT_EQ(reason, "on: luminaire 0 outside every room");
+  EXPECT_EQ(reason.luminaires_outside, 1u);
+  EXPECT_EQ(reason.first_outside, "luminaire 0");
   const Scene no_rooms = scene_from("[]", "[2, 2, 3]");
   EXPECT_EQ(make_visibility(no_rooms, reason), nullptr);
-  EXPECT_EQ(reason, "off: no rooms and no obstacles, nothing can block light");
+  EXPECT_FALSE(reason.on);
+  EXPECT_TRUE(reason.no_rooms);
 }
 
 TEST(Visibility, Cie171Case57ShadowEdgesMatchTheDerivation) {
@@ -97,10 +102,11 @@ TEST(Visibility, Cie171Case57ShadowEdgesMatchTheDerivation) {
   const Scene scene = project::load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) /
                                             "cases/cie171_5_7_obstruction/project.json")
                           .scene;
-  std::string reason;
+  VisibilityDecision reason;
   const auto vis = make_visibility(scene, reason);
   ASSERT_TRUE(vis);
-  EXPECT_EQ(reason, "on: 1 obstacle");
+  EXPECT_TRUE(reason.on);
+  EXPECT_EQ(reason.obstacles, 1u);
   EXPECT_TRUE(scene.warnings.empty());
   // The emitter faces into the room: its nadir (local -z) is world -y.
   EXPECT_NEAR(glm::length(scene.luminaires[0].pose.rotation * Vec3(0, 0, -1) - Vec3(0, -1, 0)), 0.0,
@@ -126,8 +132,8 @@ TEST(Visibility, EarlierCasesNeedNone) {
     const Scene scene = project::load_project(std::filesystem::path(LUXGRID_SOURCE_DIR) / "cases" /
                                               c / "project.json")
                             .scene;
-    std::string reason;
-    EXPECT_EQ(make_visibility(scene, reason), nullptr) << c << ": " << reason;
+    VisibilityDecision reason;
+    EXPECT_EQ(make_visibility(scene, reason), nullptr) << c;
   }
 }
 
@@ -136,10 +142,11 @@ TEST(Visibility, LShapeExampleLoads) {
                                             "examples/lshape/project.json")
                           .scene;
   EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front().text();
-  std::string reason;
+  VisibilityDecision reason;
   const auto vis = make_visibility(scene, reason);
   ASSERT_TRUE(vis);
-  EXPECT_EQ(reason, "on: 2 obstacles, non-convex room 'L office'");
+  EXPECT_EQ(reason.obstacles, 2u);
+  EXPECT_EQ(reason.non_convex_rooms, std::vector<std::string>{"L office"});
   EXPECT_EQ(vis->triangle_count(), 20u + 2u * 12u);
   ASSERT_EQ(scene.surfaces.size(), 1u + 8u);
   const auto& wp = scene.surfaces[0];
@@ -173,9 +180,10 @@ TEST(Visibility, OpeningReachingThroughTheWallsIsClippedByThem) {
         .scene;
   };
   const Scene big = scene_with(6.0), filling = scene_with(4.0);
-  std::string reason;
+  VisibilityDecision reason;
   EXPECT_TRUE(make_visibility(big, reason));
-  EXPECT_EQ(reason, "on: the opening of luminaire 0 reaches outside its room");
+  EXPECT_EQ(reason.openings_reaching, 1u);
+  EXPECT_EQ(reason.first_reaching, "luminaire 0");
   EXPECT_FALSE(make_visibility(filling, reason));
   const Results rb = run_scene(big), rf = run_scene(filling);
   for (size_t i = 0; i < 2; ++i) {

@@ -168,11 +168,11 @@ TEST(Clustered, ALargeUnobstructedRoomKeepsItsPatchSize) {
   ASSERT_TRUE(use_clustered_transfer(s.rooms[0], 0.5));  // 5 600 m^2: 22 400 patches at 0.5 m
   IndirectOptions o;
   const IndirectResult r = compute_indirect(s, {}, o);
-  std::printf("%s (%.2f s)\n", r.summary.c_str(), r.seconds);
+  std::printf("%zu patches, %zu clustered links (%.2f s)\n", r.patches, r.clustered_links,
+              r.seconds);
   EXPECT_EQ(r.patch_size_m, 0.5);
   EXPECT_GT(r.patches, kClusteredAbovePatches);
   EXPECT_EQ(r.clustered_rooms, 1u);
-  EXPECT_NE(r.summary.find("clustered transfer (1 room, "), std::string::npos) << r.summary;
   // The totals: every patch's direct lumens reflected and carried without loss (uniform rho per
   // face, so only the sum of the first bounce is checked against the emitted flux).
   EXPECT_NEAR(r.received_flux_lm / r.emitted_flux_lm, 1.0, 1e-3);

@@ -177,10 +177,14 @@ TEST(EmitterExtent, AnOpeningPartlyOutsideItsRoomSaysSo) {
   const FirstBounce fb =
       first_bounce(scene, mesh, std::vector<const geometry::Visibility*>(1, nullptr));
   ASSERT_EQ(fb.notes.size(), 1u);
-  EXPECT_NE(fb.notes[0].find("99.84 % of its luminous opening (rectangle 100 x 100 m)"),
-            std::string::npos)
-      << fb.notes[0];
-  EXPECT_NE(fb.notes[0].find("room 'box'"), std::string::npos) << fb.notes[0];
+  const IndirectNote& n = fb.notes[0];
+  EXPECT_EQ(n.kind, IndirectNote::Kind::opening_outside);
+  // 99.84 % of the 100 x 100 m opening lies outside the room.
+  EXPECT_NEAR(100.0 * n.fraction, 99.84, 0.005);
+  EXPECT_FALSE(n.disk);
+  EXPECT_EQ(n.length_m, 100.0);
+  EXPECT_EQ(n.width_m, 100.0);
+  EXPECT_EQ(n.rooms_entered, std::vector<std::string>{"box"});
 }
 
 // A 0.6 m panel flush with the ceiling at 3 m, which is also the floor of a room above: it

@@ -36,7 +36,7 @@ TEST(FirstBounceLookup, TextureMovesPatchFluxWithinItsBound) {
   // choose_intensity_lookups: too few pairs for a texture to pay).
   const IntensityLookup chosen =
       choose_intensity_lookup(scene.luminaires[0].distribution, Quality::draft);
-  ASSERT_NE(chosen.texture, nullptr) << chosen.description;  // draft takes it
+  ASSERT_NE(chosen.texture, nullptr);  // draft takes it
   // The bound of the texture draft took, measured in full (draft states only the probe's).
   const photometry::IntensityDistribution& table = *scene.luminaires[0].distribution;
   const double bound = texture_deviation(*chosen.texture, table).bound;

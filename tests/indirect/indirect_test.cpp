@@ -403,9 +403,9 @@ TEST(EnergyBalance, GatheredFaceAveragesInTheBox) {
       const IndirectResult r = compute_indirect(s, grids, o);
       const double expect = bounces == 1 ? rho * flux / A : rho * flux / (A * (1 - rho));
       const double got = area_weighted(grids, r.E_indirect_per_surface);
-      std::printf("[ gather box rho %.1f %s ] %.4f lx vs %.4f (%+.3f %%); %s\n", rho,
+      std::printf("[ gather box rho %.1f %s ] %.4f lx vs %.4f (%+.3f %%); %zu patches\n", rho,
                   bounces ? "1 bounce" : "auto    ", got, expect, 100 * (got / expect - 1),
-                  r.summary.c_str());
+                  r.patches);
       EXPECT_NEAR(got / expect, 1.0, 0.005);
     }
   }
@@ -608,7 +608,7 @@ TEST(NonUniformReflectance, AgreesWithIndependentFinePatchSolve) {
         names[f], got[f], want[f], 100 * (got[f] / want[f] - 1));
     EXPECT_NEAR(got[f] / want[f], 1.0, 0.01) << names[f];
   }
-  std::printf("[ non-uniform ] reference %zu patches; luxgrid: %s\n", n, r.summary.c_str());
+  std::printf("[ non-uniform ] reference %zu patches; luxgrid: %zu\n", n, r.patches);
 }
 
 // Points near a corner see mostly the nearest part of the adjacent face's patches, where the
@@ -746,17 +746,18 @@ TEST(Decision, SkipsWhenNotNeeded) {
   Scene s = scene_of(box_room(4, 4, 3, 0, 0, 0), {isotropic_at({2, 2, 2}, 10000.0)});
   s.surfaces = {geometry::make_plane_grid("floor", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 4, 4, 0.5)};
   EXPECT_FALSE(decide_indirect(s).run);
-  EXPECT_EQ(decide_indirect(s).reason, "skipped: all reflectances are 0");
+  EXPECT_EQ(decide_indirect(s).reason, IndirectReason::no_reflectance);
   s.rooms[0].reflectance = {0.2, 0.5, 0.7};
   EXPECT_TRUE(decide_indirect(s).run);
   s.settings.indirect = IndirectMode::off;
   EXPECT_FALSE(decide_indirect(s).run);
-  EXPECT_EQ(decide_indirect(s).reason, "skipped: indirect is off in the settings");
+  EXPECT_EQ(decide_indirect(s).reason, IndirectReason::off_in_settings);
   // Auto: a nearly black room, estimate far below 1 % of the direct light.
   s.settings.indirect = IndirectMode::automatic;
   s.rooms[0].reflectance = {0.001, 0.001, 0.001};
   const IndirectDecision d = decide_indirect(s);
-  EXPECT_FALSE(d.run) << d.reason;
+  EXPECT_FALSE(d.run);
+  EXPECT_EQ(d.reason, IndirectReason::below_threshold);
   EXPECT_NEAR(d.estimate_lx, 0.001 * 10000 / (80 * 0.999), 1e-9);
   s.settings.indirect = IndirectMode::on;
   EXPECT_TRUE(decide_indirect(s).run);
@@ -789,7 +790,8 @@ TEST(Decision, PatchBudgetIsEnforced) {
   const IndirectResult r = compute_indirect(s, {}, o);
   EXPECT_LE(r.patches, 4000u);
   EXPECT_FALSE(r.notes.empty());
-  std::printf("[ budget ] 40 x 20 x 3 m: %s (%.2f s)\n", r.summary.c_str(), r.seconds);
+  std::printf("[ budget ] 40 x 20 x 3 m: %zu patches of %.3g m (%.2f s)\n", r.patches,
+              r.patch_size_m, r.seconds);
 }
 
 // ---------------------------------------------------------------------------------------------

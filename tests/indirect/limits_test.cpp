@@ -41,10 +41,12 @@ TEST(Limits, ABudgetAboveTheMatrixLimitIsLowered) {
   o.max_patches_per_room = 20000;
   const IndirectResult r = compute_indirect(s, {}, o);
   ASSERT_FALSE(r.notes.empty());
-  EXPECT_EQ(
-      r.notes[0],
-      "indirect: the budget of 20000 patches per room is above the limit of 10000 (a form-factor "
-      "matrix of 400 MB); 10000 used");
+  // The budget of 20000 patches per room is above the limit of 10000 (a form-factor matrix of
+  // 400 MB): 10000 used.
+  EXPECT_EQ(r.notes[0].kind, IndirectNote::Kind::budget_above_limit);
+  EXPECT_EQ(r.notes[0].asked, 20000u);
+  EXPECT_EQ(r.notes[0].limit, 10000u);
+  EXPECT_EQ(r.notes[0].matrix_mb, 400u);
 }
 
 TEST(Limits, TheSolverRefusesARoomAboveTheMatrixLimit) {
@@ -59,14 +61,16 @@ TEST(Limits, TheSolverRefusesARoomAboveTheMatrixLimit) {
 TEST(Limits, ManyRoomsCoarsenToTheTotalPatchLimit) {
   const IndirectResult r = compute_indirect(many_rooms(), {}, IndirectOptions{});
   std::printf("%zu patches of %.3g m\n", r.patches, r.patch_size_m);
-  for (const auto& n : r.notes) std::printf("note: %s\n", n.c_str());
+  for (const auto& n : r.notes) std::printf("note: %.3g m to %.3g m\n", n.from_m, n.to_m);
   EXPECT_LE(r.patches, kMaxTotalPatches);
   EXPECT_GT(r.patches, kMaxTotalPatches * 8 / 10);  // coarsened just enough, not to a few patches
   ASSERT_FALSE(r.notes.empty());
-  EXPECT_NE(r.notes[0].find("all 60 rooms: patch size raised from 0.5 m to"), std::string::npos)
-      << r.notes[0];
-  EXPECT_NE(r.notes[0].find("to stay within 100000 patches in all rooms"), std::string::npos)
-      << r.notes[0];
+  // All 60 rooms: the patch size raised from 0.5 m to stay within 100000 patches in all rooms.
+  EXPECT_EQ(r.notes[0].kind, IndirectNote::Kind::rooms_raised);
+  EXPECT_EQ(r.notes[0].rooms, 60u);
+  EXPECT_EQ(r.notes[0].from_m, 0.5);
+  EXPECT_EQ(r.notes[0].limit, 100000u);
+  EXPECT_FALSE(r.notes[0].clustered_limit);
 }
 
 TEST(Limits, AnExplicitPatchSizeOverTheTotalLimitIsRefused) {

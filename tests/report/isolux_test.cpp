@@ -165,7 +165,7 @@ TEST(Html, Base64InPiecesMatchesTheBitStreamDefinition) {
 TEST(Html, ReportIsSelfContainedAndPrintsTheStatistics) {
   calc::Results r;
   r.project = "demo <1>";
-  r.plan.direct = "far-field";
+  r.plan.near_switch = nearfield::NearFieldSwitch::never;
   calc::SurfaceResult s;
   s.grid = geometry::make_plane_grid("wp", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2.0, 1.0, 1.0);
   s.E = {400.0, 600.0};

@@ -13,10 +13,8 @@ namespace {
 calc::Results sample() {
   calc::Results r;
   r.project = "demo";
-  r.plan.direct = "far-field";
-  r.plan.indirect = "none";
-  r.plan.visibility = "off";
-  r.plan.notes = {"n1"};
+  r.plan.near_switch = nearfield::NearFieldSwitch::never;
+  r.plan.scene_notes = {"n1"};
   calc::SurfaceResult s;
   s.grid = geometry::make_plane_grid("wp", {0, 0, 0.8}, {1, 0, 0}, {0, 1, 0}, 2.0, 1.0, 0.5);
   s.E_direct.assign(s.grid.points.size(), 80.0);
@@ -33,8 +31,32 @@ TEST(ResultsJson, HasTheDocumentedShape) {
   EXPECT_EQ(j["format"], "luxgrid-results/2");
   EXPECT_EQ(j["project"], "demo");
   EXPECT_EQ(j["values"], "maintained");
-  for (const char* k : {"direct", "indirect", "visibility", "notes"})
+  // The plan as values (docs/project-format.md, "The plan"), with its summary in words.
+  for (const char* k : {"summary",
+                        "quality",
+                        "promise",
+                        "near_model",
+                        "near_switch",
+                        "near_switch_reason",
+                        "direct_counts",
+                        "pairs_unreachable",
+                        "near_far",
+                        "intensity_lookups",
+                        "indirect_decision",
+                        "indirect_run",
+                        "emergency_direct_only",
+                        "refinements",
+                        "visibility",
+                        "scene_notes",
+                        "indirect_notes",
+                        "indirect_warnings",
+                        "direct_estimated",
+                        "errors_estimated",
+                        "estimates"})
     EXPECT_TRUE(j["plan"].contains(k)) << k;
+  EXPECT_EQ(j["plan"].size(), 21u);
+  EXPECT_EQ(j["plan"]["near_switch"], "never");
+  EXPECT_EQ(j["plan"]["scene_notes"], nlohmann::json::array({"n1"}));
   const auto& s = j["surfaces"][0];
   EXPECT_EQ(s["name"], "wp");
   EXPECT_EQ(s["kind"], "grid");

@@ -1,0 +1,215 @@
+#include "report/plan_json.h"
+
+#include <limits>
+
+#include "report/plan_text.h"
+
+// The (de)serializers live in each type's namespace, where nlohmann::json finds them; the keys
+// are the fields' names.
+namespace luxgrid::nearfield {
+NLOHMANN_JSON_SERIALIZE_ENUM(ModelKind, {{ModelKind::far_field, "far_field"},
+                                         {ModelKind::paper_cubature, "paper_cubature"},
+                                         {ModelKind::subdivided, "subdivided"},
+                                         {ModelKind::lambert_subdivided, "lambert_subdivided"},
+                                         {ModelKind::adaptive, "adaptive"},
+                                         {ModelKind::standard, "standard"},
+                                         {ModelKind::high, "high"},
+                                         {ModelKind::reference, "reference"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(NearFieldSwitch, {{NearFieldSwitch::automatic, "automatic"},
+                                               {NearFieldSwitch::always, "always"},
+                                               {NearFieldSwitch::never, "never"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(FarFieldBoundSummary::Scope,
+                             {{FarFieldBoundSummary::Scope::whole_map, "whole_map"},
+                              {FarFieldBoundSummary::Scope::demand, "demand"},
+                              {FarFieldBoundSummary::Scope::demand_capped, "demand_capped"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(
+    FarFieldBoundSummary::Outcome,
+    {{FarFieldBoundSummary::Outcome::near_at_every_point, "near_at_every_point"},
+     {FarFieldBoundSummary::Outcome::no_point_in_reach, "no_point_in_reach"},
+     {FarFieldBoundSummary::Outcome::near_everywhere_somewhere, "near_everywhere_somewhere"},
+     {FarFieldBoundSummary::Outcome::near_out_to, "near_out_to"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(FarFieldBoundSummary::Cause,
+                             {{FarFieldBoundSummary::Cause::smooth_distribution,
+                               "smooth_distribution"},
+                              {FarFieldBoundSummary::Cause::sharp_beam, "sharp_beam"},
+                              {FarFieldBoundSummary::Cause::kinks, "kinks"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(FarFieldBoundSummary::FixedRule,
+                             {{FarFieldBoundSummary::FixedRule::serves_none, "serves_none"},
+                              {FarFieldBoundSummary::FixedRule::not_every_direction,
+                               "not_every_direction"},
+                              {FarFieldBoundSummary::FixedRule::within, "within"}})
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FarFieldBoundSummary, scope, outcome, cause, fixed_rule,
+                                   samples_all, samples_read, samples_capped, capped_reach_over_D,
+                                   tolerance, largest_dimension_m, min_over_D, max_over_D,
+                                   median_over_D, worst_c_deg, worst_gamma_deg,
+                                   worst_gradient_per_deg, far_error_measured, fixed_median_over_D,
+                                   fixed_max_over_D, fixed_error_measured)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Model, kind, level, tolerance)
+}  // namespace luxgrid::nearfield
+
+namespace luxgrid::calc::indirect {
+NLOHMANN_JSON_SERIALIZE_ENUM(IndirectNote::Kind,
+                             {{IndirectNote::Kind::budget_above_limit, "budget_above_limit"},
+                              {IndirectNote::Kind::room_raised, "room_raised"},
+                              {IndirectNote::Kind::rooms_raised, "rooms_raised"},
+                              {IndirectNote::Kind::rooms_raised_meshed, "rooms_raised_meshed"},
+                              {IndirectNote::Kind::room_raised_meshed, "room_raised_meshed"},
+                              {IndirectNote::Kind::luminaire_outside, "luminaire_outside"},
+                              {IndirectNote::Kind::opening_outside, "opening_outside"},
+                              {IndirectNote::Kind::clustered_wider, "clustered_wider"}})
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IndirectNote, kind, room, luminaire, rooms_entered, rooms,
+                                   budget, limit, asked, matrix_mb, patches, limit_mb,
+                                   clustered_limit, disk, from_m, to_m, fraction, length_m, width_m,
+                                   entering_lm, flux_lm, opening, quality_opening)
+NLOHMANN_JSON_SERIALIZE_ENUM(IndirectReason, {{IndirectReason::off_in_settings, "off_in_settings"},
+                                              {IndirectReason::no_reflectance, "no_reflectance"},
+                                              {IndirectReason::no_luminaires, "no_luminaires"},
+                                              {IndirectReason::forced_on, "forced_on"},
+                                              {IndirectReason::observers, "observers"},
+                                              {IndirectReason::below_threshold, "below_threshold"},
+                                              {IndirectReason::estimate, "estimate"}})
+}  // namespace luxgrid::calc::indirect
+
+namespace luxgrid::calc {
+NLOHMANN_JSON_SERIALIZE_ENUM(Quality, {{Quality::draft, "draft"},
+                                       {Quality::standard, "standard"},
+                                       {Quality::high, "high"},
+                                       {Quality::reference, "reference"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(NearSwitchReason,
+                             {{NearSwitchReason::draft_quality, "draft_quality"},
+                              {NearSwitchReason::setting_never, "setting_never"},
+                              {NearSwitchReason::setting_always, "setting_always"},
+                              {NearSwitchReason::reference_quality, "reference_quality"},
+                              {NearSwitchReason::automatic, "automatic"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(
+    IntensityLookupChoice::Kind,
+    {{IntensityLookupChoice::Kind::analytic, "analytic"},
+     {IntensityLookupChoice::Kind::table_by_quality, "table_by_quality"},
+     {IntensityLookupChoice::Kind::table_few_pairs, "table_few_pairs"},
+     {IntensityLookupChoice::Kind::table_float_range, "table_float_range"},
+     {IntensityLookupChoice::Kind::table_probe_deviates, "table_probe_deviates"},
+     {IntensityLookupChoice::Kind::texture_draft, "texture_draft"},
+     {IntensityLookupChoice::Kind::texture_within, "texture_within"},
+     {IntensityLookupChoice::Kind::table_texture_deviates, "table_texture_deviates"}})
+NLOHMANN_JSON_SERIALIZE_ENUM(PatchRefinement::Outcome,
+                             {{PatchRefinement::Outcome::refined, "refined"},
+                              {PatchRefinement::Outcome::work_over_limit, "work_over_limit"},
+                              {PatchRefinement::Outcome::over_budget, "over_budget"}})
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DirectCounts, point_sources, far, near, blended, fixed_rule,
+                                   fixed_blended)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LuminaireGroup, photometry, luminaires, label)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(NearFarPlan, group, bound)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IntensityLookupChoice, kind, quality, c_cells, gamma_cells,
+                                   deviation, limit, probe_fraction, pairs)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IntensityLookupPlan, group, choice)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IndirectRunPlan, bounces_asked, bounces_run, tail_added, patches,
+                                   patch_size_m, vpls, residual, refined_patches, subcell_reach,
+                                   subcells_per_side, received_flux_lm, emitted_flux_lm,
+                                   luminaire_flux_lm, part_outside, clustered_rooms,
+                                   clustered_links, visibility, obstacles, estimated,
+                                   coarse_patch_size_m, probe_points_per_surface, worst_patch_size,
+                                   worst_bounces)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PatchRefinement, outcome, from_m, to_m, estimate, surface,
+                                   work_pairs, work_limit_pairs, budget_error)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(VisibilityDecision, on, no_rooms, obstacles, rooms,
+                                   non_convex_rooms, luminaires_outside, openings_reaching,
+                                   first_outside, first_reaching, points_outside)
+}  // namespace luxgrid::calc
+
+namespace luxgrid::report {
+
+namespace {
+using nlohmann::json;
+
+// A number that may be infinite (the integrating-sphere estimate of a room whose reflectance is
+// 1): JSON has no infinity, so it is written as null and read back as +infinity.
+json maybe_infinite(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+double read_maybe_infinite(const json& j) {
+  return j.is_null() ? std::numeric_limits<double>::infinity() : j.get<double>();
+}
+// An estimate's part: null where it was not estimated (negative in calc::SurfaceEstimate).
+json share(double v) { return v < 0.0 ? json(nullptr) : json(v); }
+double read_share(const json& j) { return j.is_null() ? -1.0 : j.get<double>(); }
+}  // namespace
+
+json plan_to_json(const calc::Plan& plan) {
+  json j;
+  j["summary"] = plan_summary(plan);
+  j["quality"] = plan.quality;
+  j["near_model"] = plan.near_model;
+  j["near_model"]["name"] = nearfield::to_string(plan.near_model);
+  j["near_switch"] = plan.near_switch;
+  j["near_switch_reason"] = plan.near_switch_reason;
+  j["direct_counts"] = plan.direct_counts;
+  j["pairs_unreachable"] = plan.pairs_unreachable;
+  j["near_far"] = plan.near_far;
+  j["intensity_lookups"] = plan.intensity_lookups;
+  const auto& d = plan.indirect_decision;
+  j["indirect_decision"] = {{"run", d.run},
+                            {"reason", d.reason},
+                            {"observers_surface", d.observers_surface},
+                            {"sampled", d.sampled},
+                            {"estimate_lx", maybe_infinite(d.estimate_lx)},
+                            {"mean_direct_lx", d.mean_direct_lx}};
+  j["indirect_run"] = plan.indirect_run ? json(*plan.indirect_run) : json(nullptr);
+  j["emergency_direct_only"] = plan.emergency_direct_only;
+  j["refinements"] = plan.refinements;
+  j["visibility"] = plan.visibility;
+  j["scene_notes"] = plan.scene_notes;
+  j["indirect_notes"] = plan.indirect_notes;
+  j["indirect_warnings"] = plan.indirect_warnings;
+  j["promise"] = plan.promise;
+  j["direct_estimated"] = plan.direct_estimated;
+  j["errors_estimated"] = plan.errors_estimated;
+  json estimates = json::array();
+  for (const auto& e : plan.estimates)
+    estimates.push_back({{"surface", e.surface},
+                         {"direct", share(e.direct)},
+                         {"patch_size", share(e.patch_size)},
+                         {"bounces", share(e.bounces)},
+                         {"probe_points", e.probe_points},
+                         {"total", e.total()}});
+  j["estimates"] = std::move(estimates);
+  return j;
+}
+
+calc::Plan plan_from_json(const json& j) {
+  calc::Plan plan;
+  j.at("quality").get_to(plan.quality);
+  j.at("near_model").get_to(plan.near_model);
+  j.at("near_switch").get_to(plan.near_switch);
+  j.at("near_switch_reason").get_to(plan.near_switch_reason);
+  j.at("direct_counts").get_to(plan.direct_counts);
+  j.at("pairs_unreachable").get_to(plan.pairs_unreachable);
+  j.at("near_far").get_to(plan.near_far);
+  j.at("intensity_lookups").get_to(plan.intensity_lookups);
+  const json& d = j.at("indirect_decision");
+  d.at("run").get_to(plan.indirect_decision.run);
+  d.at("reason").get_to(plan.indirect_decision.reason);
+  d.at("observers_surface").get_to(plan.indirect_decision.observers_surface);
+  d.at("sampled").get_to(plan.indirect_decision.sampled);
+  plan.indirect_decision.estimate_lx = read_maybe_infinite(d.at("estimate_lx"));
+  d.at("mean_direct_lx").get_to(plan.indirect_decision.mean_direct_lx);
+  if (!j.at("indirect_run").is_null()) plan.indirect_run = j.at("indirect_run");
+  j.at("emergency_direct_only").get_to(plan.emergency_direct_only);
+  j.at("refinements").get_to(plan.refinements);
+  j.at("visibility").get_to(plan.visibility);
+  j.at("scene_notes").get_to(plan.scene_notes);
+  j.at("indirect_notes").get_to(plan.indirect_notes);
+  j.at("indirect_warnings").get_to(plan.indirect_warnings);
+  j.at("promise").get_to(plan.promise);
+  j.at("direct_estimated").get_to(plan.direct_estimated);
+  j.at("errors_estimated").get_to(plan.errors_estimated);
+  for (const json& e : j.at("estimates")) {
+    calc::SurfaceEstimate est;
+    e.at("surface").get_to(est.surface);
+    est.direct = read_share(e.at("direct"));
+    est.patch_size = read_share(e.at("patch_size"));
+    est.bounces = read_share(e.at("bounces"));
+    e.at("probe_points").get_to(est.probe_points);
+    plan.estimates.push_back(std::move(est));
+  }
+  return plan;
+}
+
+}  // namespace luxgrid::report

@@ -1,0 +1,396 @@
+#include "report/report_input_json.h"
+
+#include <optional>
+
+#include "project/safe_json.h"
+#include "report/plan_json.h"
+#include "report/results_json.h"
+#include "util/error.h"
+
+namespace luxgrid::report {
+
+namespace {
+using nlohmann::json;
+
+json vec2(const Vec2& v) { return json::array({v.x, v.y}); }
+json vec3(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
+Vec2 read_vec2(const json& j) { return {j.at(0).get<double>(), j.at(1).get<double>()}; }
+Vec3 read_vec3(const json& j) {
+  return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()};
+}
+json polygon(const std::vector<Vec2>& p) {
+  json out = json::array();
+  for (const Vec2& v : p) out.push_back(vec2(v));
+  return out;
+}
+std::vector<Vec2> read_polygon(const json& j) {
+  std::vector<Vec2> out;
+  for (const json& v : j) out.push_back(read_vec2(v));
+  return out;
+}
+json optional_number(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
+std::optional<double> read_optional(const json& j) {
+  if (j.is_null()) return std::nullopt;
+  return j.get<double>();
+}
+
+const char* shape_name(photometry::LuminousOpening::Shape s) {
+  using Shape = photometry::LuminousOpening::Shape;
+  return s == Shape::rectangle ? "rectangle" : s == Shape::disk ? "disk" : "point";
+}
+photometry::LuminousOpening::Shape read_shape(const json& j) {
+  using Shape = photometry::LuminousOpening::Shape;
+  const std::string s = j.get<std::string>();
+  if (s == "rectangle") return Shape::rectangle;
+  if (s == "disk") return Shape::disk;
+  if (s == "point") return Shape::point;
+  throw json::other_error::create(501, "unknown opening shape \"" + s + "\"", &j);
+}
+
+json room_json(const calc::Room& r) {
+  json obstacles = json::array();
+  for (const auto& o : r.obstacles)
+    obstacles.push_back({{"name", o.name},
+                         {"footprint", polygon(o.footprint)},
+                         {"z0", o.z0},
+                         {"z1", o.z1},
+                         {"reflectance", o.reflectance}});
+  return {{"name", r.name},
+          {"outline", polygon(r.outline)},
+          {"floor_z", r.floor_z},
+          {"height", r.height},
+          {"reflectance",
+           {{"floor", r.reflectance.floor},
+            {"walls", r.reflectance.walls},
+            {"ceiling", r.reflectance.ceiling}}},
+          {"obstacles", std::move(obstacles)}};
+}
+calc::Room read_room(const json& j) {
+  calc::Room r;
+  j.at("name").get_to(r.name);
+  r.outline = read_polygon(j.at("outline"));
+  j.at("floor_z").get_to(r.floor_z);
+  j.at("height").get_to(r.height);
+  const json& rho = j.at("reflectance");
+  rho.at("floor").get_to(r.reflectance.floor);
+  rho.at("walls").get_to(r.reflectance.walls);
+  rho.at("ceiling").get_to(r.reflectance.ceiling);
+  for (const json& o : j.at("obstacles")) {
+    geometry::Obstacle ob;
+    o.at("name").get_to(ob.name);
+    ob.footprint = read_polygon(o.at("footprint"));
+    o.at("z0").get_to(ob.z0);
+    o.at("z1").get_to(ob.z1);
+    o.at("reflectance").get_to(ob.reflectance);
+    r.obstacles.push_back(std::move(ob));
+  }
+  return r;
+}
+
+// The rotation by its columns (the luminaire frame's axes in the world).
+json luminaire_json(const calc::Luminaire& l) {
+  const auto& m = l.pose.rotation;
+  return {{"label", l.label},
+          {"photometry", l.photometry},
+          {"position", vec3(l.pose.position)},
+          {"rotation", json::array({vec3(m[0]), vec3(m[1]), vec3(m[2])})},
+          {"opening",
+           {{"shape", shape_name(l.opening.shape)},
+            {"length", l.opening.length},
+            {"width", l.opening.width},
+            {"height", l.opening.height},
+            {"description", l.opening.description}}}};
+}
+calc::Luminaire read_luminaire(const json& j) {
+  calc::Luminaire l;
+  j.at("label").get_to(l.label);
+  j.at("photometry").get_to(l.photometry);
+  l.pose.position = read_vec3(j.at("position"));
+  for (int c = 0; c < 3; ++c) l.pose.rotation[c] = read_vec3(j.at("rotation").at(c));
+  const json& o = j.at("opening");
+  l.opening.shape = read_shape(o.at("shape"));
+  o.at("length").get_to(l.opening.length);
+  o.at("width").get_to(l.opening.width);
+  o.at("height").get_to(l.opening.height);
+  o.at("description").get_to(l.opening.description);
+  return l;
+}
+
+json type_json(const LuminaireType& t) {
+  json j = {{"key", t.key},
+            {"name", t.name},
+            {"manufacturer", t.manufacturer},
+            {"article", t.article},
+            {"format", t.format},
+            {"file", t.file},
+            {"count", t.count},
+            {"flux_lm", optional_number(t.flux_lm)},
+            {"power_W", optional_number(t.power_W)},
+            {"lor", optional_number(t.lor)},
+            {"ugr_crosswise", optional_number(t.ugr_crosswise)},
+            {"ugr_endwise", optional_number(t.ugr_endwise)}};
+  j["polar"] = t.polar ? json{{"step_deg", kPolarStepDeg},
+                              {"c0_cd", t.polar->c0_cd},
+                              {"c90_cd", t.polar->c90_cd}}
+                       : json(nullptr);
+  return j;
+}
+LuminaireType read_type(const json& j) {
+  LuminaireType t;
+  j.at("key").get_to(t.key);
+  j.at("name").get_to(t.name);
+  j.at("manufacturer").get_to(t.manufacturer);
+  j.at("article").get_to(t.article);
+  j.at("format").get_to(t.format);
+  j.at("file").get_to(t.file);
+  j.at("count").get_to(t.count);
+  t.flux_lm = read_optional(j.at("flux_lm"));
+  t.power_W = read_optional(j.at("power_W"));
+  t.lor = read_optional(j.at("lor"));
+  t.ugr_crosswise = read_optional(j.at("ugr_crosswise"));
+  t.ugr_endwise = read_optional(j.at("ugr_endwise"));
+  if (const json& p = j.at("polar"); !p.is_null()) {
+    PolarCurves c;
+    p.at("c0_cd").get_to(c.c0_cd);
+    p.at("c90_cd").get_to(c.c90_cd);
+    t.polar = std::move(c);
+  }
+  return t;
+}
+
+json check_json(const RequirementCheck& c) {
+  return {{"surface", c.surface},
+          {"role", c.role},
+          {"quantity", c.quantity},
+          {"required", c.required},
+          {"required_max", optional_number(c.required_max)},
+          {"achieved", c.achieved},
+          {"achieved_max", optional_number(c.achieved_max)},
+          {"upper_limit", c.upper_limit},
+          {"calculated", c.calculated},
+          {"met", c.met},
+          {"margin", c.margin},
+          {"margin_rel", c.margin_rel},
+          {"source", c.source},
+          {"fixed_by_standard", c.fixed_by_standard},
+          {"note", c.note}};
+}
+RequirementCheck read_check(const json& j) {
+  RequirementCheck c;
+  j.at("surface").get_to(c.surface);
+  j.at("role").get_to(c.role);
+  j.at("quantity").get_to(c.quantity);
+  j.at("required").get_to(c.required);
+  c.required_max = read_optional(j.at("required_max"));
+  j.at("achieved").get_to(c.achieved);
+  c.achieved_max = read_optional(j.at("achieved_max"));
+  j.at("upper_limit").get_to(c.upper_limit);
+  j.at("calculated").get_to(c.calculated);
+  j.at("met").get_to(c.met);
+  j.at("margin").get_to(c.margin);
+  j.at("margin_rel").get_to(c.margin_rel);
+  j.at("source").get_to(c.source);
+  j.at("fixed_by_standard").get_to(c.fixed_by_standard);
+  j.at("note").get_to(c.note);
+  return c;
+}
+
+// The frame and outline of a surface, which results.json's surface object does not hold.
+json surface_frame_json(const geometry::SurfaceGrid& g) {
+  json region = json::array();
+  for (const auto& p : g.region) region.push_back(polygon(p));
+  return {{"origin", vec3(g.origin)},   {"u_dir", vec3(g.u_dir)}, {"v_dir", vec3(g.v_dir)},
+          {"size_u", g.size_u},         {"size_v", g.size_v},     {"observer", g.observer},
+          {"region", std::move(region)}};
+}
+
+geometry::SurfaceGrid::Kind read_kind(const json& j) {
+  using Kind = geometry::SurfaceGrid::Kind;
+  const std::string s = j.get<std::string>();
+  if (s == "grid") return Kind::grid;
+  if (s == "points") return Kind::points;
+  if (s == "observers") return Kind::observers;
+  throw json::other_error::create(501, "unknown surface kind \"" + s + "\"", &j);
+}
+geometry::Quantity read_quantity(const json& j) {
+  using Q = geometry::Quantity;
+  const std::string s = j.get<std::string>();
+  for (Q q : {Q::planar, Q::horizontal, Q::vertical, Q::cylindrical, Q::semi_cylindrical})
+    if (s == geometry::to_string(q)) return q;
+  throw json::other_error::create(501, "unknown quantity \"" + s + "\"", &j);
+}
+
+std::vector<calc::glare::ObserverResult> read_observers(const json& j) {
+  std::vector<calc::glare::ObserverResult> out;
+  for (const json& o : j) {
+    calc::glare::ObserverResult r;
+    r.at = read_vec3(o.at("at"));
+    for (const json& v : o.at("views")) {
+      calc::glare::ViewResult view;
+      view.direction = read_vec3(v.at("direction"));
+      view.UGR = read_optional(v.at("UGR"));
+      v.at("Lb").get_to(view.Lb_cd_m2);
+      v.at("E_indirect").get_to(view.E_indirect_lx);
+      for (const json& t : v.at("terms")) {
+        calc::glare::ViewTerm term;
+        t.at("luminaire").get_to(term.luminaire);
+        t.at("L").get_to(term.term.L_cd_m2);
+        t.at("omega").get_to(term.term.omega_sr);
+        t.at("p").get_to(term.term.p);
+        view.terms.push_back(std::move(term));
+      }
+      r.views.push_back(std::move(view));
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+calc::SurfaceResult read_surface(const json& s, const json& frame) {
+  calc::SurfaceResult r;
+  geometry::SurfaceGrid& g = r.grid;
+  s.at("name").get_to(g.name);
+  g.kind = read_kind(s.at("kind"));
+  s.at("size").at(0).get_to(g.nu);
+  s.at("size").at(1).get_to(g.nv);
+  if (g.kind == geometry::SurfaceGrid::Kind::grid) {
+    s.at("spacing").at(0).get_to(g.spacing_u);
+    s.at("spacing").at(1).get_to(g.spacing_v);
+  }
+  g.quantity = read_quantity(s.at("quantity"));
+  s.at("points_outside").get_to(g.points_outside);
+  s.at("points_in_obstacles").get_to(g.points_in_obstacles);
+  for (const json& p : s.at("points")) g.points.push_back(read_vec3(p));
+  for (const json& n : s.at("normals")) g.normals.push_back(read_vec3(n));
+  for (const json& a : s.at("active")) g.active.push_back(a.get<bool>());
+  g.origin = read_vec3(frame.at("origin"));
+  g.u_dir = read_vec3(frame.at("u_dir"));
+  g.v_dir = read_vec3(frame.at("v_dir"));
+  frame.at("size_u").get_to(g.size_u);
+  frame.at("size_v").get_to(g.size_v);
+  frame.at("observer").get_to(g.observer);
+  for (const json& p : frame.at("region")) g.region.push_back(read_polygon(p));
+  s.at("E").get_to(r.E);
+  s.at("E_direct").get_to(r.E_direct);
+  s.at("E_indirect").get_to(r.E_indirect);
+  const size_t n = g.points.size();
+  if (g.normals.size() != n || g.active.size() != n || r.E.size() != n || r.E_direct.size() != n ||
+      r.E_indirect.size() != n || n != static_cast<size_t>(g.nu) * static_cast<size_t>(g.nv))
+    throw json::other_error::create(
+        501, "the per-point arrays differ in length from each other or from size", &s);
+  const json& st = s.at("stats");
+  // A statistic results.json wrote as null (not finite) is refused by the type check.
+  st.at("Emin").get_to(r.stats.Emin);
+  st.at("Eavg").get_to(r.stats.Eavg);
+  st.at("Emax").get_to(r.stats.Emax);
+  st.at("U0").get_to(r.stats.U0);
+  st.at("Ud").get_to(r.stats.Ud);
+  if (g.kind == geometry::SurfaceGrid::Kind::observers) {
+    r.UGR_max = read_optional(s.at("UGR_max"));
+    r.observers = read_observers(s.at("observers"));
+  }
+  return r;
+}
+
+// nlohmann::json's message with JSON_DIAGNOSTICS names the value's place as "(/a/0/b) " after
+// the exception's id: that is the pointer, the rest the message.
+InputError located(const nlohmann::json::exception& e, const std::string& file) {
+  std::string what = e.what();
+  std::string pointer = "/";
+  const size_t id_end = what.find("] ");
+  if (id_end != std::string::npos) what = what.substr(id_end + 2);
+  if (what.rfind("(", 0) == 0) {
+    const size_t close = what.find(") ");
+    if (close != std::string::npos) {
+      pointer = what.substr(1, close - 1);
+      what = what.substr(close + 2);
+    }
+  }
+  return InputError(SourceLocation(file, 0, 0, pointer), what);
+}
+
+}  // namespace
+
+json report_input_to_json(const calc::Scene& scene, const calc::Results& results,
+                          const std::vector<LuminaireType>& types,
+                          const std::vector<RequirementCheck>& checks) {
+  json j;
+  j["project_file"] = scene.project_file.filename().string();
+  const auto& parts = scene.settings.maintenance_parts;
+  j["maintenance_parts"] = parts ? json{{"LLMF", parts->LLMF},
+                                        {"LSF", parts->LSF},
+                                        {"LMF", parts->LMF},
+                                        {"RSMF", parts->RSMF}}
+                                 : json(nullptr);
+  j["rooms"] = json::array();
+  for (const auto& r : scene.rooms) j["rooms"].push_back(room_json(r));
+  j["luminaires"] = json::array();
+  for (const auto& l : scene.luminaires) j["luminaires"].push_back(luminaire_json(l));
+  j["surfaces"] = json::array();
+  for (const auto& s : results.surfaces) j["surfaces"].push_back(surface_frame_json(s.grid));
+  j["luminaire_types"] = json::array();
+  for (const auto& t : types) j["luminaire_types"].push_back(type_json(t));
+  j["checks"] = json::array();
+  for (const auto& c : checks) j["checks"].push_back(check_json(c));
+  return j;
+}
+
+ResultsDocument read_results_document(const std::string& text, const std::string& file) {
+  // The checked parse of projects (project/safe_json.h): no repeated keys, bounded nesting.
+  const json doc = project::parse_json_text(text, file);
+  if (!doc.is_object() || !doc.contains("format") || doc["format"] != kResultsFormat)
+    throw InputError(
+        SourceLocation(file, 0, 0, "/format"),
+        std::string("not a luxgrid results file of format \"") + kResultsFormat + "\"");
+  if (!doc.contains("report_input"))
+    throw InputError(SourceLocation(file, 0, 0, "/report_input"),
+                     "missing: written by a luxgrid that did not keep what the report needs; "
+                     "calculate the project again");
+  ResultsDocument out;
+  try {
+    calc::Results& r = out.results;
+    doc.at("project").get_to(r.project);
+    doc.at("luxgrid_version").get_to(out.version);
+    const auto quality = calc::quality_from_string(doc.at("quality").get<std::string>());
+    if (!quality) throw json::other_error::create(501, "unknown quality", &doc.at("quality"));
+    r.quality = *quality;
+    const std::string scene = doc.at("scene").get<std::string>();
+    if (scene != "normal" && scene != "emergency")
+      throw json::other_error::create(501, "unknown scene \"" + scene + "\"", &doc.at("scene"));
+    r.scene = scene == "emergency" ? calc::LightingScene::emergency : calc::LightingScene::normal;
+    doc.at("maintenance_factor").get_to(r.maintenance_factor);
+    r.plan = plan_from_json(doc.at("plan"));
+    const json& in = doc.at("report_input");
+    const json& surfaces = doc.at("surfaces");
+    const json& frames = in.at("surfaces");
+    if (surfaces.size() != frames.size())
+      throw json::other_error::create(501, "one frame per surface expected", &frames);
+    for (size_t k = 0; k < surfaces.size(); ++k)
+      r.surfaces.push_back(read_surface(surfaces.at(k), frames.at(k)));
+
+    calc::Scene& s = out.scene;
+    s.name = r.project;
+    s.project_file = in.at("project_file").get<std::string>();
+    s.settings.quality = r.quality;
+    s.settings.scene = r.scene;
+    s.settings.maintenance_factor = r.maintenance_factor;
+    if (const json& p = in.at("maintenance_parts"); !p.is_null()) {
+      calc::MaintenanceFactors m;
+      p.at("LLMF").get_to(m.LLMF);
+      p.at("LSF").get_to(m.LSF);
+      p.at("LMF").get_to(m.LMF);
+      p.at("RSMF").get_to(m.RSMF);
+      s.settings.maintenance_parts = m;
+    }
+    for (const json& room : in.at("rooms")) s.rooms.push_back(read_room(room));
+    for (const json& l : in.at("luminaires")) s.luminaires.push_back(read_luminaire(l));
+    for (const auto& sr : r.surfaces) s.surfaces.push_back(sr.grid);
+    for (const json& t : in.at("luminaire_types")) out.types.push_back(read_type(t));
+    for (const json& c : in.at("checks")) out.checks.push_back(read_check(c));
+  } catch (const json::exception& e) {
+    throw located(e, file);
+  }
+  return out;
+}
+
+}  // namespace luxgrid::report

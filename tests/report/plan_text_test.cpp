@@ -1,0 +1,148 @@
+// The plan's words come from its values (report/plan_text.h), and results.json's plan keeps those
+// values: read back, they give the same words.
+#include "report/plan_text.h"
+
+#include <gtest/gtest.h>
+
+#include "report/plan_json.h"
+
+namespace luxgrid::report {
+namespace {
+
+calc::Plan sample_plan() {
+  calc::Plan p;
+  p.quality = calc::Quality::standard;
+  p.near_switch = nearfield::NearFieldSwitch::automatic;
+  p.direct_counts.near = 12;
+  p.direct_counts.far = 30;
+  p.direct_counts.point_sources = 2;
+  calc::NearFarPlan nf;
+  nf.group = {"mirel", 4, "luminaire 0"};
+  nf.bound.outcome = nearfield::FarFieldBoundSummary::Outcome::no_point_in_reach;
+  nf.bound.largest_dimension_m = 0.625;
+  p.near_far.push_back(nf);
+  calc::IntensityLookupPlan l;
+  l.group = {"mirel", 1, "luminaire 7"};
+  l.choice.kind = calc::IntensityLookupChoice::Kind::texture_within;
+  l.choice.c_cells = 1440, l.choice.gamma_cells = 720;
+  l.choice.deviation = 5.19e-5, l.choice.limit = 1e-3;
+  p.intensity_lookups.push_back(l);
+  p.visibility.on = true;
+  p.visibility.obstacles = 2;
+  p.visibility.non_convex_rooms = {"L office"};
+  p.indirect_decision.reason = calc::indirect::IndirectReason::below_threshold;
+  p.indirect_decision.estimate_lx = 1.5;
+  p.indirect_decision.mean_direct_lx = 400.0;
+  p.promise = 0.01;
+  p.errors_estimated = true;
+  calc::SurfaceEstimate e;
+  e.surface = "workplane";
+  e.direct = 0.02;
+  p.estimates.push_back(e);
+  return p;
+}
+
+TEST(PlanText, WordsEachDecisionFromItsValues) {
+  const calc::Plan p = sample_plan();
+  EXPECT_EQ(visibility_text(p),
+            "on: 2 obstacles, non-convex room 'L office'; near-field pairs test visibility per "
+            "quadrature node (soft shadows of area luminaires), far-field pairs from the centre "
+            "of the opening");
+  EXPECT_EQ(indirect_text(p),
+            "skipped: integrating-sphere estimate 1.5 lx is below 1 % of the mean direct "
+            "illuminance 400 lx");
+  const std::string direct = direct_text(p);
+  EXPECT_NE(direct.find(": 12 luminaire-point pairs near-field, 0 blended, 30 far-field, 2 from "
+                        "point sources"),
+            std::string::npos)
+      << direct;
+  EXPECT_NE(direct.find("; \"mirel\" (4 luminaires): no point of the scene in reach (D = 0.62 m)"),
+            std::string::npos)
+      << direct;
+  EXPECT_NE(direct.find("\"mirel\" (luminaire 7): intensity texture 1440x720, within 0.00519 % "
+                        "of the table (limit at standard: 0.1 %)"),
+            std::string::npos)
+      << direct;
+  // 2 % direct against the promise of 1 %: a note and a warning naming the largest part.
+  const auto notes = plan_notes(p);
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_EQ(notes[0],
+            "estimated error at surface 'workplane': 2 % (direct 2 %) against the promise of 1 %");
+  const auto warnings = plan_warnings(p);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0],
+            "surface 'workplane': the plan's estimated error 2 % exceeds standard's promise of "
+            "1 % (largest part: the far-field decision)");
+  EXPECT_EQ(promise_text(calc::Quality::high),
+            "high promises within 0.3 % of reference at every point brighter than 1 % of its "
+            "surface's maximum");
+}
+
+TEST(PlanText, WordsTheSolversNotes) {
+  using calc::indirect::IndirectNote;
+  IndirectNote budget;
+  budget.kind = IndirectNote::Kind::budget_above_limit;
+  budget.asked = 20000, budget.limit = 10000, budget.matrix_mb = 400;
+  EXPECT_EQ(indirect_note_text(budget),
+            "indirect: the budget of 20000 patches per room is above the limit of 10000 (a "
+            "form-factor matrix of 400 MB); 10000 used");
+  IndirectNote rooms;
+  rooms.kind = IndirectNote::Kind::rooms_raised;
+  rooms.rooms = 60, rooms.from_m = 0.5, rooms.to_m = 0.5477, rooms.limit = 100000;
+  EXPECT_EQ(indirect_note_text(rooms),
+            "all 60 rooms: patch size raised from 0.5 m to 0.548 m to stay within 100000 patches "
+            "in all rooms");
+  IndirectNote outside;
+  outside.kind = IndirectNote::Kind::opening_outside;
+  outside.luminaire = "luminaire 1";
+  outside.fraction = 0.9984, outside.length_m = 100, outside.width_m = 100;
+  outside.entering_lm = 16, outside.flux_lm = 10000;
+  outside.rooms_entered = {"box", "annex"};
+  EXPECT_EQ(indirect_note_text(outside),
+            "luminaire 1: 99.84 % of its luminous opening (rectangle 100 x 100 m) lies outside "
+            "its room or inside an obstacle; that light does not enter the room: 16 lm of 10000 "
+            "lm enter room 'box', 'annex'");
+  // The plan lists the solver's notes after the scene's, its warnings before the estimates'.
+  calc::Plan p;
+  p.scene_notes = {"scene note"};
+  p.indirect_notes = {rooms};
+  p.indirect_warnings = {budget};
+  EXPECT_EQ(plan_notes(p), (std::vector<std::string>{"scene note", indirect_note_text(rooms)}));
+  EXPECT_EQ(plan_warnings(p), std::vector<std::string>{indirect_note_text(budget)});
+}
+
+TEST(PlanText, ResultsJsonKeepsTheValuesTheWordsComeFrom) {
+  calc::Plan p = sample_plan();
+  calc::IndirectRunPlan run;
+  run.bounces_asked = 0, run.bounces_run = 7, run.patches = 1728, run.patch_size_m = 0.25;
+  run.estimated = true, run.worst_patch_size = 0.004;
+  p.indirect_run = run;
+  p.indirect_decision.estimate_lx = std::numeric_limits<double>::infinity();
+  calc::PatchRefinement r;
+  r.outcome = calc::PatchRefinement::Outcome::work_over_limit;
+  r.from_m = 0.5, r.to_m = 0.25, r.estimate = 0.008, r.surface = "floor";
+  r.work_pairs = 7.5e7, r.work_limit_pairs = 1e7;
+  p.refinements.push_back(r);
+  calc::indirect::IndirectNote raised;
+  raised.kind = calc::indirect::IndirectNote::Kind::room_raised_meshed;
+  raised.room = "hall", raised.from_m = 0.5, raised.to_m = 0.71, raised.budget = 4000;
+  p.indirect_notes.push_back(raised);
+  const nlohmann::json j = plan_to_json(p);
+  EXPECT_EQ(j.at("summary"), plan_summary(p));
+  // Through text, as results.json holds it.
+  const calc::Plan back = plan_from_json(nlohmann::json::parse(j.dump(1)));
+  EXPECT_EQ(direct_text(back), direct_text(p));
+  EXPECT_EQ(indirect_text(back), indirect_text(p));
+  EXPECT_EQ(visibility_text(back), visibility_text(p));
+  EXPECT_EQ(plan_notes(back), plan_notes(p));
+  EXPECT_EQ(plan_warnings(back), plan_warnings(p));
+  EXPECT_EQ(back.indirect_decision.estimate_lx, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(plan_to_json(back), j);
+  // A plan without one of its keys is refused.
+  nlohmann::json missing = j;
+  missing.erase("near_far");
+  EXPECT_THROW(plan_from_json(missing), nlohmann::json::exception);
+}
+
+}  // namespace
+}  // namespace luxgrid::report
