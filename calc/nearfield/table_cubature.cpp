@@ -43,8 +43,6 @@
 namespace luxgrid::nearfield {
 namespace {
 
-constexpr double kTwoPi = 2.0 * kPi;
-
 // Largest angular width of a psi cell (rad, 7.5 deg) when the table has no C line inside it
 // (rotationally symmetric files have none): the outline rho(psi) and the weight must still be
 // resolved. The gamma side's limits are in table_cells.h.
