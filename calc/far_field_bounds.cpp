@@ -5,7 +5,6 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/combinable.h>
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include "calc/direct.h"
@@ -107,10 +106,6 @@ std::vector<NearFarPlan> attach_far_field_bounds(const Scene& scene, const Plan&
   std::vector<NearFarPlan> lines;
   if (plan.near_switch != nearfield::NearFieldSwitch::automatic) return lines;
   const double tolerance = nearfield::promised_tolerance(plan.near_model);
-  // The map's directions run on plain threads (the nearfield library has no TBB): as many as
-  // the calculation may use (luxgrid --threads, LUXGRID_THREADS; cli/threads.h).
-  const auto max_threads = static_cast<unsigned>(
-      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
   std::vector<Distinct> distinct;
   for (size_t i = 0; i < emitters.size(); ++i) {
     const nearfield::Emitter& e = emitters[i];
@@ -131,7 +126,7 @@ std::vector<NearFarPlan> attach_far_field_bounds(const Scene& scene, const Plan&
     const std::unique_ptr<nearfield::MapDemand> demand =
         reach && zones ? demand_of(scene, plan, emitters, d.members, *reach, *zones) : nullptr;
     d.bound = nearfield::build_far_field_bound(emitters[d.members[0]], plan.near_model, tolerance,
-                                               max_threads, demand.get());
+                                               demand.get());
     for (size_t i : d.members) emitters[i].far_bound = d.bound;
     lines.push_back({{d.photometry, d.members.size(), scene.luminaires[d.members[0]].label},
                      nearfield::summarize(*d.bound)});

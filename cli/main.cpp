@@ -5,12 +5,12 @@
 #include <optional>
 
 #include "cli/commands.h"
-#include "cli/freed_memory.h"
 #include "cli/threads.h"
 #include "util/error.h"
+#include "util/process_setup.h"
 
 int main(int argc, char** argv) {
-  luxgrid::cli::keep_freed_memory();
+  luxgrid::set_up_process();
   CLI::App app{"luxgrid: illuminance grids from photometric files and a project description"};
   app.set_version_flag("--version", std::string("luxgrid ") + LUXGRID_VERSION);
   app.require_subcommand(1);

@@ -1,11 +1,18 @@
 #!/bin/sh
-# The sanitized job (fuzz/CMakeLists.txt), with clang: builds the readers and the project loader
-# with AddressSanitizer + UndefinedBehaviorSanitizer, runs their unit tests under both, then each
-# libFuzzer target for a fixed time on a corpus seeded from tests/data, examples/ and cases/.
+# The sanitized job, with clang: the main CMake project built with -DLUXGRID_SANITIZE=ON (every
+# target under AddressSanitizer + UndefinedBehaviorSanitizer, undefined behaviour aborts) in a
+# build folder of its own, then
+#   1. the photometric readers' and the project loader's unit tests under both;
+#   2. a small scene end to end through the sanitized `luxgrid calc` (examples/office: loading,
+#      direct light, the near field with its far-field bound, reflected light, glare, every
+#      output): exit code 0, and results.json parses with no NaN or infinity and null only where
+#      the format allows it (an observer's UGR outside the table's range);
+#   3. each libFuzzer target for a fixed time on a corpus seeded from tests/data, examples/ and
+#      cases/.
 # Skips (exit 0, saying so) when clang++ is missing.
 #   fuzz/run.sh [seconds-per-fuzzer=20] [build-dir=build-fuzz]
-# Exit status: non-zero if a sanitized test failed or a fuzzer found a crash (the reproducer is
-# left in the build dir).
+# Exit status: non-zero if a sanitized test or the scene failed or a fuzzer found a crash (the
+# reproducer is left in the build dir).
 set -eu
 SECONDS_PER_TARGET="${1:-20}"
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
@@ -17,13 +24,44 @@ if [ -z "$CXX_CLANG" ]; then
 fi
 LAUNCHER=""
 if command -v ccache >/dev/null 2>&1; then LAUNCHER="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"; fi
-cmake -S "$ROOT/fuzz" -B "$BUILD" -DCMAKE_CXX_COMPILER="$CXX_CLANG" -DCMAKE_BUILD_TYPE=RelWithDebInfo $LAUNCHER >/dev/null
-cmake --build "$BUILD" -j"$(nproc)"
+cmake -S "$ROOT" -B "$BUILD" -DCMAKE_CXX_COMPILER="$CXX_CLANG" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DLUXGRID_SANITIZE=ON -DLUXGRID_BUILD_BENCH=OFF $LAUNCHER >/dev/null
+cmake --build "$BUILD" -j"$(nproc)" --target luxgrid photometry_tests project_tests \
+  ies_reader_fuzz eulumdat_reader_fuzz project_loader_fuzz
+
+# Leak checking is on too (LeakSanitizer is part of ASan); UB aborts (-fno-sanitize-recover).
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1
 
 echo "== sanitized unit tests (ASan + UBSan): photometric readers and project loader"
-# Leak checking is on too (LeakSanitizer is part of ASan); UB aborts (-fno-sanitize-recover).
-ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1 \
-  "$BUILD/sanitized_tests" --gtest_brief=1
+"$BUILD/tests/photometry_tests" --gtest_brief=1
+"$BUILD/tests/project_tests" --gtest_brief=1
+
+echo "== sanitized scene end to end (ASan + UBSan): examples/office through luxgrid calc"
+scene_out="$BUILD/scene_office"
+rm -rf "$scene_out"
+"$BUILD/luxgrid" calc "$ROOT/examples/office/project.json" -o "$scene_out" --part-plots
+python3 - "$scene_out/results.json" <<'EOF'
+import json, math, sys
+# Keys whose value may be null (results.json writes null for a value that does not exist);
+# null anywhere else is a number the calculation did not give (results_json writes NaN as null).
+may_be_null = {"UGR"}
+def bad_constant(name):
+    raise ValueError(f"results.json holds {name}")
+def walk(value, key, where):
+    if value is None and key not in may_be_null:
+        sys.exit(f"results.json: null at {where}")
+    if isinstance(value, float) and not math.isfinite(value):
+        sys.exit(f"results.json: {value} at {where}")
+    if isinstance(value, dict):
+        for k, v in value.items():
+            walk(v, k, f"{where}/{k}")
+    elif isinstance(value, list):
+        for i, v in enumerate(value):
+            walk(v, key, f"{where}/{i}")
+with open(sys.argv[1]) as f:
+    walk(json.load(f, parse_constant=bad_constant), "", "")
+print("results.json: every number finite")
+EOF
 
 for target in ies_reader_fuzz eulumdat_reader_fuzz project_loader_fuzz; do
   corpus="$BUILD/corpus_$target"

@@ -1,6 +1,5 @@
 #include "geometry/polygon.h"
 
-#include <charconv>
 #include <cmath>
 
 namespace luxgrid::geometry {
@@ -26,6 +25,13 @@ double signed_area(const Polygon2& poly) {
     twice += a.x * b.y - b.x * a.y;
   }
   return 0.5 * twice;
+}
+
+double perimeter(const Polygon2& poly) {
+  double length = 0.0;
+  for (size_t k = 0, n = poly.size(); k < n; ++k)
+    length += glm::length(poly[(k + 1) % n] - poly[k]);
+  return length;
 }
 
 bool is_convex(const Polygon2& ccw) {
@@ -159,12 +165,6 @@ bool polygons_overlap(const Polygon2& a, const Polygon2& b) {
   }
   // No proper crossings: either one contains part of the other, or they only touch / are apart.
   return some_part_inside(a, b) || some_part_inside(b, a);
-}
-
-std::string format_number(double x) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
 }
 
 EdgeCoordinates edge_coordinates(const Polygon2& outline, size_t k, const Vec2& q) {

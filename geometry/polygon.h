@@ -18,6 +18,9 @@ using Polygon2 = std::vector<Vec2>;
 // Shoelace area: positive for counter-clockwise corners.
 double signed_area(const Polygon2& poly);
 
+// Length of the closed outline: its edges summed in order, the last back to the first corner.
+double perimeter(const Polygon2& poly);
+
 // True when every turn of a counter-clockwise polygon is a left turn or straight (collinear
 // corners are allowed: a wall split in two is still convex).
 bool is_convex(const Polygon2& ccw);
@@ -57,8 +60,5 @@ struct EdgeCoordinates {
   Vec2 inward{0.0};
 };
 EdgeCoordinates edge_coordinates(const Polygon2& outline, size_t k, const Vec2& q);
-
-// Shortest decimal that reads back to the same double (std::to_chars), for messages.
-std::string format_number(double x);
 
 }  // namespace luxgrid::geometry

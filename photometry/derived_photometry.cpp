@@ -11,7 +11,6 @@
 namespace luxgrid::photometry {
 
 namespace {
-constexpr double kTwoPi = 2.0 * kPi;
 // 4-point Gauss-Legendre nodes/weights on [-1, 1]: exact for cubics in C (bicubic cells) and,
 // on pieces of <= 2 deg, sin(gamma) times a cubic to ~1e-13 relative.
 constexpr double kGlX[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,

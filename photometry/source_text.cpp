@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 
 #include "photometry/file_bytes.h"
 #include "util/error.h"
@@ -74,12 +73,6 @@ bool try_parse_number(std::string_view s, double& out) {
   return true;
 }
 
-std::string format_number(double v) {
-  char buf[64];
-  auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return ec == std::errc() ? std::string(buf, ptr) : std::string("?");
-}
-
 std::string quote_word(std::string_view word, std::size_t max_chars) {
   const bool printable = std::all_of(word.begin(), word.end(), [](char ch) {
     return static_cast<unsigned char>(ch) > 0x20 && static_cast<unsigned char>(ch) < 0x7F;
@@ -128,10 +121,8 @@ void check_intensity(const SourceText& src, int line, const std::string& what, d
 
 void check_lamp_flux(const SourceText& src, int line, const std::string& what, double flux_lm) {
   if (!(flux_lm > 0) || (flux_lm >= kMinLampFluxLm && flux_lm <= kMaxLampFluxLm)) return;
-  char limit[32];
-  std::snprintf(limit, sizeof limit, "%.3g", kMaxLampFluxLm);
   src.fail(line, "expected " + what + " to be from " + format_number(kMinLampFluxLm) + " to " +
-                     limit + " lm (4 pi x the intensity limit of " +
+                     format_double("%.3g", kMaxLampFluxLm) + " lm (4 pi x the intensity limit of " +
                      format_number(kMaxIntensity_cd) + " cd), found " + format_number(flux_lm) +
                      " lm");
 }

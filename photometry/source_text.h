@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "photometry/limits.h"
+#include "util/format.h"  // format_number, for the readers' messages
 
 namespace luxgrid::photometry {
 
@@ -71,6 +72,5 @@ std::string describe_line(std::string_view line);
 // Latin-1, which is what cp1252 degree signs and no-break spaces in the corpus are), trimmed.
 std::string clean_text(std::string_view s);
 std::string_view trim(std::string_view s);
-std::string format_number(double v);  // shortest round-trip form, for messages
 
 }  // namespace luxgrid::photometry

@@ -11,7 +11,6 @@
 namespace luxgrid::photometry {
 
 namespace {
-constexpr double kTwoPi = 2.0 * kPi;
 // Angles closer than this (radians, ~6e-8 deg) are the same angle: files print angles with at
 // most 4 decimals, so this only absorbs degree-to-radian rounding.
 constexpr double kAngleEps = 1e-9;

@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <set>
 
+#include "util/format.h"
+
 namespace luxgrid::report {
 
 namespace {
@@ -16,12 +18,6 @@ std::string upper_without_spaces(const std::string& s) {
       out += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   }
   return out;
-}
-
-std::string number_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
 }
 
 }  // namespace
@@ -96,7 +92,7 @@ SceneColourRendering scene_colour_rendering(const calc::Scene& scene) {
     return out;
   }
   out.Ra = lowest;
-  out.source = "photometry \"" + lowest_entry + "\": Ra " + number_text(*lowest);
+  out.source = "photometry \"" + lowest_entry + "\": Ra " + format_double("%g", *lowest);
   return out;
 }
 

@@ -3,13 +3,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "util/format.h"
+
 namespace luxgrid::report {
 
 std::string format_ugr_value(const std::optional<double>& ugr) {
   if (!ugr) return "&ndash;";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", *ugr);
-  return buf;
+  return format_double("%.1f", *ugr);
 }
 
 std::string observers_html(const calc::SurfaceResult& s) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -64,7 +65,7 @@ struct Deflater {
 std::string encode(const Raster& raster) {
   thread_local Deflater deflater;
   if (!deflater.compressor) throw CalculationError("cannot encode an image: out of memory");
-  const Raster::Scanlines& rows = raster.scanlines();
+  const std::span<const std::uint8_t> rows = raster.scanlines();
   libdeflate_compressor* c = deflater.compressor.get();
   const std::size_t bound = libdeflate_zlib_compress_bound(c, rows.size());
   if (bound > deflater.capacity)

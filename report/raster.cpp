@@ -15,7 +15,7 @@ Raster::Raster(int width, int height, Rgb background) : width_(width), height_(h
   // A grey background (white, for the plots) is one byte repeated: filled as such at once, then
   // each row's filter-type byte.
   const std::size_t stride = static_cast<std::size_t>(width) * 3 + 1;
-  data_.assign(stride * static_cast<std::size_t>(height), r);
+  data_ = LargeBuffer<std::uint8_t>::filled(stride * static_cast<std::size_t>(height), r);
   for (int y = 0; y < height; ++y) {
     std::uint8_t* p = row(y);
     p[-1] = 0;

@@ -7,9 +7,10 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
-#include "util/huge_page_allocator.h"
+#include "util/large_buffer.h"
 
 namespace luxgrid::report {
 
@@ -34,9 +35,7 @@ class Raster {
   std::vector<std::uint8_t> pixels() const;
   // Each row, the top row first, as PNG filters it: a filter-type byte 0 (none), then the row's
   // pixels as pixels() has them.
-  // A plot's megabyte in huge pages where the system gives them (util/huge_page_allocator.h).
-  using Scanlines = std::vector<std::uint8_t, HugePageAllocator<std::uint8_t>>;
-  const Scanlines& scanlines() const { return data_; }
+  std::span<const std::uint8_t> scanlines() const { return data_.span(); }
   // Row y's first pixel byte (0 <= y < height()), for callers that fill whole rows of bytes.
   std::uint8_t* row(int y) { return data_.data() + offset(0, y); }
   const std::uint8_t* row(int y) const { return data_.data() + offset(0, y); }
@@ -71,7 +70,9 @@ class Raster {
            static_cast<std::size_t>(x) * 3;
   }
   int width_, height_;
-  Scanlines data_;  // scanlines()
+  // scanlines(): a plot's megabyte, in huge pages where the system gives them
+  // (util/large_buffer.h).
+  LargeBuffer<std::uint8_t> data_;
 };
 
 }  // namespace luxgrid::report

@@ -2,14 +2,11 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <ctime>
 
 #include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
-#include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
 #include "calc/statistics.h"
@@ -21,6 +18,7 @@
 #include "report/results_json.h"
 #include "report/surface_npy.h"
 #include "util/error.h"
+#include "util/ordered_tasks.h"
 #include "util/output_names.h"
 
 namespace luxgrid::report {
@@ -158,17 +156,9 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
       }
     }
   };
-  // Each thread takes the next task not yet taken, in the list's order (a parallel loop would
-  // split the list in halves, and the plots of one half could be left to one thread at the end).
-  std::atomic<std::size_t> next{0};
-  const int threads = std::max(1, tbb::this_task_arena::max_concurrency());
-  tbb::parallel_for(
-      0, threads,
-      [&](int) {
-        for (std::size_t n; (n = next.fetch_add(1, std::memory_order_relaxed)) < jobs.size();)
-          run_job(jobs[n]);
-      },
-      tbb::simple_partitioner());
+  // Taken in the list's order (util/ordered_tasks.h): a parallel loop would split the list in
+  // halves, and the plots of one half could be left to one thread at the end.
+  run_in_list_order(jobs.size(), [&](std::size_t n) { run_job(jobs[n]); });
   for (Job& job : jobs) {
     for (const std::string& w : job.warnings)
       if (!w.empty() && std::find(warnings.begin(), warnings.end(), w) == warnings.end())

@@ -64,9 +64,7 @@ double thread_seconds() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-std::string fmt(const char* f, double v) { return format_double(f, v); }
-
-std::string height_label(double h) { return fmt("%g", h); }
+std::string height_label(double h) { return format_double("%g", h); }
 
 }  // namespace
 
@@ -304,18 +302,19 @@ std::string format_accuracy_markdown(const AccuracyStudy& s, const std::string& 
     << op.heights.size() << " heights, " << s.points_per_cell << " receivers per cell (" << op.grid
     << " x " << op.grid << " over " << op.region << " x " << op.region
     << ", 5 orientations stitched). Truth: reference integrator at rel. tolerance "
-    << fmt("%.0e", op.reference_tolerance) << " (" << fmt("%.0f", s.reference_ns_per_eval / 1e3)
+    << format_double("%.0e", op.reference_tolerance) << " ("
+    << format_double("%.0f", s.reference_ns_per_eval / 1e3)
     << " us per point; largest reported relative error estimate "
-    << fmt("%.1e", s.reference_max_error_estimate) << ")";
+    << format_double("%.1e", s.reference_max_error_estimate) << ")";
   if (s.cosine_vs_lambert_max_rel >= 0.0)
     o << "; on the cosine data set it differs from the exact Lambert value by at most "
-      << fmt("%.1e", s.cosine_vs_lambert_max_rel) << " of the cell's maximum";
+      << format_double("%.1e", s.cosine_vs_lambert_max_rel) << " of the cell's maximum";
   o << ".\n\n";
 
   o << "### All models (mean over data sets and heights)\n\n"
     << "| model | ns / evaluation | mean NRMS | worst NRMS | worst error / max E | worst point "
        "error (E >= "
-    << fmt("%g", kPointErrorFloor)
+    << format_double("%g", kPointErrorFloor)
     << " max E) | centre error, cosine h = " << height_label(op.heights.front())
     << " |\n|---|---:|---:|---:|---:|---:|---:|\n";
   for (int m = 0; m < static_cast<int>(s.models.size()); ++m) {
@@ -325,10 +324,10 @@ std::string format_accuracy_markdown(const AccuracyStudy& s, const std::string& 
         worst = std::max(worst, c.nrms), worst_max = std::max(worst_max, c.max_rel),
         worst_point = std::max(worst_point, c.point_rel);
     const auto& cc = s.cell(s.data_sets.front(), op.heights.front(), m);
-    o << "| " << s.models[m].name << " | " << fmt("%.0f", s.mean_ns(m)) << " | "
-      << fmt("%.2e", s.mean_nrms(m)) << " | " << fmt("%.2e", worst) << " | "
-      << fmt("%.2e", worst_max) << " | " << fmt("%.2e", worst_point) << " | "
-      << fmt("%+.2f %%", 100 * cc.centre_rel) << " |\n";
+    o << "| " << s.models[m].name << " | " << format_double("%.0f", s.mean_ns(m)) << " | "
+      << format_double("%.2e", s.mean_nrms(m)) << " | " << format_double("%.2e", worst) << " | "
+      << format_double("%.2e", worst_max) << " | " << format_double("%.2e", worst_point) << " | "
+      << format_double("%+.2f %%", 100 * cc.centre_rel) << " |\n";
   }
 
   auto index_of = [&](const std::string& name) {
@@ -357,13 +356,13 @@ std::string format_accuracy_markdown(const AccuracyStudy& s, const std::string& 
   for (const auto& ds : s.data_sets) {
     for (double h : op.heights) {
       o << "| " << ds << " | " << height_label(h) << " |";
-      for (int m : cols) o << " " << fmt("%.2e", s.cell(ds, h, m).nrms) << " |";
+      for (int m : cols) o << " " << format_double("%.2e", s.cell(ds, h, m).nrms) << " |";
       if (paper >= 0) {
         const int mc = monte_carlo_at_time(s, ds, h, s.cell(ds, h, paper).ns_per_eval);
         if (mc >= 0) {
           const auto& c = s.cell(ds, h, mc);
-          o << " " << fmt("%.2e", c.nrms) << " (" << c.model << ", " << fmt("%.0f", c.ns_per_eval)
-            << " ns) |";
+          o << " " << format_double("%.2e", c.nrms) << " (" << c.model << ", "
+            << format_double("%.0f", c.ns_per_eval) << " ns) |";
         } else {
           o << " – |";
         }

@@ -15,11 +15,11 @@ using Vec3 = glm::dvec3;
 using Vec2 = glm::dvec2;
 
 inline constexpr double kPi = std::numbers::pi;
+inline constexpr double kTwoPi = 2.0 * kPi;
 inline constexpr double kDegToRad = kPi / 180.0;
 inline constexpr double kRadToDeg = 180.0 / kPi;
 
 inline double safe_sqrt(double x) { return std::sqrt(std::max(0.0, x)); }
-inline double safe_acos(double x) { return std::acos(std::clamp(x, -1.0, 1.0)); }
 inline double safe_asin(double x) { return std::asin(std::clamp(x, -1.0, 1.0)); }
 
 // Angle between two unit vectors from the half-chord: accurate near 0 and near pi, where

@@ -12,7 +12,7 @@
 #include "photometry/opening.h"
 #include "photometry/tabular_distribution.h"
 #include "util/error.h"
-#include "util/huge_page_allocator.h"
+#include "util/large_buffer.h"
 
 namespace luxgrid::calc::glare {
 
@@ -40,13 +40,11 @@ struct Landing {
   double dx_m, dy_m;
 };
 // The quadrature's arrays (2 MB, 1 MB) in huge pages where the system gives them: fresh 4 kB
-// pages cost more than the quadrature on a virtual machine (util/huge_page_allocator.h).
-template <class T>
-using CellArray = std::vector<T, HugePageAllocator<T>>;
-const CellArray<Landing>& landings() {
-  static const CellArray<Landing> made = [] {
-    CellArray<Landing> l;
-    l.reserve(static_cast<size_t>(kNadirSteps) * kAzimuthSteps);
+// pages cost more than the quadrature on a virtual machine (util/large_buffer.h).
+const LargeBuffer<Landing>& landings() {
+  static const LargeBuffer<Landing> made = [] {
+    auto l = LargeBuffer<Landing>::uninitialised(static_cast<size_t>(kNadirSteps) * kAzimuthSteps);
+    size_t cell = 0;
     std::array<double, kAzimuthSteps> cos_p, sin_p;  // once per azimuth, not per cell
     for (int k = 0; k < kAzimuthSteps; ++k) {
       const double p = (k + 0.5) * kAzimuthStep_rad;
@@ -54,7 +52,7 @@ const CellArray<Landing>& landings() {
     }
     for (int i = 0; i < kNadirSteps; ++i) {
       const double reach = kTableH_m * std::tan((i + 0.5) * kNadirStep_rad);
-      for (int k = 0; k < kAzimuthSteps; ++k) l.push_back({reach * cos_p[k], reach * sin_p[k]});
+      for (int k = 0; k < kAzimuthSteps; ++k) l[cell++] = {reach * cos_p[k], reach * sin_p[k]};
     }
     return l;
   }();
@@ -63,7 +61,7 @@ const CellArray<Landing>& landings() {
 
 struct Fluxes {
   double down_lm = 0.0, up_lm = 0.0;
-  CellArray<double> down_cell_lm;  // per lower cell, in the order of landings()
+  LargeBuffer<double> down_cell_lm;  // per lower cell, in the order of landings()
 };
 
 // `intensity_cd(hemisphere, i, k, world)`: the intensity of cell i (angle from nadir, or from
@@ -72,7 +70,9 @@ struct Fluxes {
 template <class IntensityOfCell>
 Fluxes flux_cells(const IntensityOfCell& intensity_cd) {
   Fluxes f;
-  f.down_cell_lm.resize(static_cast<size_t>(kNadirSteps) * kAzimuthSteps);
+  // Every lower cell is written below (hemisphere 0).
+  f.down_cell_lm =
+      LargeBuffer<double>::uninitialised(static_cast<size_t>(kNadirSteps) * kAzimuthSteps);
   std::array<double, kAzimuthSteps> cos_p, sin_p;
   for (int k = 0; k < kAzimuthSteps; ++k) {
     const double p = (k + 0.5) * kAzimuthStep_rad;
@@ -118,7 +118,7 @@ class CellIntensities {
     std::vector<photometry::TabularDistribution::CPosition> c(kAzimuthSteps);
     for (int k = 0; k < kAzimuthSteps; ++k)
       c[k] = view.table->c_position((k + 0.5) * kAzimuthStep_rad);
-    cd_.assign(static_cast<size_t>(2) * kNadirSteps * kAzimuthSteps, 0.0);
+    cd_ = LargeBuffer<double>::filled(static_cast<size_t>(2) * kNadirSteps * kAzimuthSteps, 0.0);
     for (int hemisphere = 0; hemisphere < 2; ++hemisphere)
       for (int i = 0; i < kNadirSteps; ++i) {
         const double t = (i + 0.5) * kNadirStep_rad;
@@ -146,7 +146,8 @@ class CellIntensities {
 
  private:
   const photometry::IntensityDistribution& d_;
-  CellArray<double> cd_;  // [hemisphere][nadir step][azimuth step], luminaire frame; empty: ask d_
+  LargeBuffer<double>
+      cd_;  // [hemisphere][nadir step][azimuth step], luminaire frame; empty: ask d_
 };
 
 // Luminaire centres along one side: n = L / S of them, S/2 from each end.
@@ -225,7 +226,7 @@ RoomDirect room_direct(const photometry::IntensityDistribution& d,
   // Direct flux of all luminaires onto the floor (the plane at eye level), walls and ceiling.
   const double n = static_cast<double>(xs.size() * ys.size());
   double floor_lm = 0.0;
-  const CellArray<Landing>& land = landings();
+  const LargeBuffer<Landing>& land = landings();
   const ShiftedCount across_x(xs), along_y(ys);
   for (size_t c = 0; c < land.size(); ++c) {
     const double flux = fluxes.down_cell_lm[c];

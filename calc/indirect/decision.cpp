@@ -22,11 +22,8 @@ constexpr size_t kDecisionSamplesPerSurface = 256;
 
 // Area-weighted mean reflectance of a room's faces (floor, ceiling, walls).
 double mean_reflectance(const Room& room) {
-  double perimeter = 0.0;
-  for (size_t k = 0; k < room.outline.size(); ++k)
-    perimeter += glm::length(room.outline[(k + 1) % room.outline.size()] - room.outline[k]);
   const double a_floor = std::abs(geometry::signed_area(room.outline));
-  const double a_walls = perimeter * room.height;
+  const double a_walls = geometry::perimeter(room.outline) * room.height;
   const double a = 2.0 * a_floor + a_walls;
   if (!(a > 0.0)) return 0.0;
   return (a_floor * (room.reflectance.floor + room.reflectance.ceiling) +

@@ -198,10 +198,8 @@ std::vector<Polygon2> horizontal_pieces(const Polygon2& outline, double size) {
 }  // namespace
 
 double room_surface_area(const Room& room) {
-  double perimeter = 0.0;
-  for (size_t k = 0; k < room.outline.size(); ++k)
-    perimeter += glm::length(room.outline[(k + 1) % room.outline.size()] - room.outline[k]);
-  return 2.0 * std::abs(geometry::signed_area(room.outline)) + perimeter * room.height;
+  return 2.0 * std::abs(geometry::signed_area(room.outline)) +
+         geometry::perimeter(room.outline) * room.height;
 }
 
 bool outline_is_convex(const Room& room) {

@@ -20,7 +20,6 @@
 #include "geometry/polygon.h"
 #include "geometry/polygon3.h"
 #include "geometry/visibility.h"
-#include "util/huge_page_allocator.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -49,8 +48,7 @@ struct Patch {
 };
 
 struct PatchMesh {
-  // Thousands of cells (subcells.h) are a megabyte: in huge pages (util/huge_page_allocator.h).
-  std::vector<Patch, HugePageAllocator<Patch>> patches;
+  std::vector<Patch> patches;
   // patches of room r are [room_begin[r], room_begin[r + 1]).
   std::vector<size_t> room_begin;
   double patch_size_m = 0.0;  // the size actually used (after the budget)

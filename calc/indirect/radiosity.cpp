@@ -131,7 +131,7 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
   // Filled one receiving row at a time (row i = F[j -> i] over all sources j), so every write
   // lands in one row (in cache); the per-source sums needed for the renormalisation are column
   // sums, taken after.
-  F.gather.resize(n * n);  // not zeroed here: each row is cleared below
+  F.allocate_gather();  // not zeroed here: each row is cleared below
   // Fixed blocks of rows, each adding its rows into its own partial column sums (summed in block
   // order below: the same result on any number of threads), so the sums need no second pass
   // over the matrix.

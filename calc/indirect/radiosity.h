@@ -23,6 +23,7 @@
 // r) is added (the "ambient" tail of Cohen et al. 1988), so rho = 0.95 converges in tens of sweeps,
 // not hundreds.
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "calc/indirect/clustered.h"
@@ -30,7 +31,7 @@
 #include "calc/indirect/limits.h"
 #include "calc/indirect/patches.h"
 #include "geometry/visibility.h"
-#include "util/huge_page_allocator.h"
+#include "util/large_buffer.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -38,11 +39,12 @@ namespace luxgrid::calc::indirect {
 // (the "gather" layout: incident flux on i = row i . exitant flux).
 struct FormFactorMatrix {
   size_t begin = 0, n = 0;  // patches [begin, begin + n) of the mesh
-  // n x n, unnormalised: F[j -> i] = gather[i * n + j] x source_scale[j] (use at(i, j)). The
+  // n x n, unnormalised: F[j -> i] = gather[i * n + j] x source_scale[j] (use at(i, j)), a view
+  // of the matrix's own storage (allocate_gather; moving the matrix keeps it valid). The
   // renormalisation is a factor per source applied to the flux vector in each sweep, not a pass
   // over the matrix: the float entries then sum (in double) to exactly 1 / scale per source, so
   // the float matrix conserves the flux to double precision over any number of bounces.
-  std::vector<float, HugePageAllocator<float>> gather;
+  std::span<float> gather;
   std::vector<double>
       source_scale;  // per source j: 1 / sum_i gather[i * n + j] (1 if not renormalised)
   double at(size_t i, size_t j) const {
@@ -54,6 +56,15 @@ struct FormFactorMatrix {
   std::vector<size_t> zero_begin, zero_end;
   double max_row_correction = 0.0;  // largest |1 - sum_i F[j -> i]| before renormalisation
   bool renormalised = true;
+
+  // n x n entries for `gather`, uninitialised: form_factors writes every row.
+  void allocate_gather() {
+    storage_ = LargeBuffer<float>::uninitialised(n * n);
+    gather = storage_.span();
+  }
+
+ private:
+  LargeBuffer<float> storage_;  // a large matrix: in huge pages (util/large_buffer.h)
 };
 
 // `far_ratio`: the point kernel is used when the distance between centroids exceeds far_ratio x

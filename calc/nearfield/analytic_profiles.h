@@ -7,7 +7,8 @@
 
 namespace luxgrid::nearfield {
 
-// Batwing: I0 cos(g) (1 + 2 sin^2 g) below, 0 above (the example profile).
+// Batwing: I0 cos(g) (1 + 2 sin^2 g) below, 0 above: the batwing data set of the accuracy study
+// (docs/accuracy.md), whose peak off nadir the published cubature misses (docs/nearfield.md).
 class BatwingDistribution final : public photometry::IntensityDistribution {
  public:
   explicit BatwingDistribution(double i0) : i0_(i0) {}

@@ -127,6 +127,4 @@ Emitter make_emitter(const photometry::LuminousOpening& opening, const Vec3& pos
   return e;
 }
 
-double largest_dimension(const Emitter& emitter) { return emitter.largest_dimension_m; }
-
 }  // namespace luxgrid::nearfield

@@ -90,7 +90,4 @@ Emitter make_polygon_emitter(std::vector<Vec3> vertices, const glm::dmat3& rotat
                              photometry::DistributionPtr distribution,
                              std::shared_ptr<const TableGammaCells> table_cells = nullptr);
 
-// The five-times rule's "largest dimension" of the emitter (m): its diameter as a point set.
-double largest_dimension(const Emitter& emitter);
-
 }  // namespace luxgrid::nearfield

@@ -2,16 +2,15 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <thread>
 #include <utility>
 
 #include "calc/nearfield/fixed_rule.h"
 #include "calc/nearfield/illuminance.h"
 #include "calc/nearfield/map_symmetry.h"
 #include "calc/nearfield/models.h"
+#include "util/ordered_tasks.h"
 
 namespace luxgrid::nearfield {
 namespace {
@@ -423,10 +422,6 @@ double FarFieldBound::fixed_distance_over_D(const Vec3& u) const {
   return interpolate_over_D(d_fixed_over_D, spot_of(u));
 }
 
-double FarFieldBound::far_weight(const Vec3& u, double distance_m) const {
-  return ramp(distance_m, distance_over_D(u) * largest_dimension_m);
-}
-
 FarFieldBound::Weights FarFieldBound::weights(const Vec3& u, double distance_m) const {
   Weights w;
   // Most pairs of a large room: beyond every direction's band (interpolate_over_D never exceeds
@@ -448,7 +443,7 @@ FarFieldBound::Weights FarFieldBound::weights(const Vec3& u, double distance_m) 
 
 std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
                                                            const Model& near_model,
-                                                           double tolerance, unsigned threads,
+                                                           double tolerance,
                                                            const MapDemand* demand,
                                                            bool share_mirror_images) {
   auto bound = std::make_shared<FarFieldBound>();
@@ -494,26 +489,16 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
   for (int i = 0; i < n; ++i)
     if (class_measure[i] > 0.0f) todo.push_back(i);
   std::vector<Probe::Rungs> rungs(n);
-  // Directions in parallel (the nearfield library has no TBB; the samples are independent),
-  // the calling thread one of the workers. Each takes the next direction not yet taken: their
-  // costs differ by orders of magnitude (a direction whose far field holds at the first rung,
-  // one that climbs the whole ladder), so a fixed share per thread left one thread working
-  // alone for much of the map.
-  if (threads == 0) threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
-  threads = std::max(1u, std::min(threads, static_cast<unsigned>(todo.size())));
-  std::atomic<std::size_t> next{0};
-  const auto work = [&] {
-    for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < todo.size();) {
-      const int i = todo[k];
-      rungs[i] =
-          probe.distances_over_D(direction_of_sample(i / kCSamples, i % kCSamples),
-                                 last_rung_for(class_measure[i]), fixed_last_for(class_fixed[i]));
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (auto& th : pool) th.join();
+  // Directions in parallel (the samples are independent), each thread taking the next direction
+  // not yet taken (util/ordered_tasks.h): their costs differ by orders of magnitude (a direction
+  // whose far field holds at the first rung, one that climbs the whole ladder), so a fixed share
+  // per thread left one thread working alone for much of the map.
+  run_in_list_order(todo.size(), [&](std::size_t k) {
+    const int i = todo[k];
+    rungs[i] =
+        probe.distances_over_D(direction_of_sample(i / kCSamples, i % kCSamples),
+                               last_rung_for(class_measure[i]), fixed_last_for(class_fixed[i]));
+  });
   bound->samples_measured = static_cast<int>(todo.size());
   std::vector<Probe::Measured> measured(n);
   std::vector<char> capped(n, 0);  // failed at its last rung short of the ladder's end

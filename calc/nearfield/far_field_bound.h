@@ -128,10 +128,9 @@ struct FarFieldBound {
   double distance_over_D(const Vec3& local_dir) const;
   // d_fixed(w) / D, interpolated the same way.
   double fixed_distance_over_D(const Vec3& local_dir) const;
-  // Far-field weight for a receiver at distance `distance_m` along local direction `local_dir`.
-  double far_weight(const Vec3& local_dir, double distance_m) const;
-  // Both weights of a pair from one interpolation: `far` as far_weight; `fixed` rises from 0 at
-  // d_fixed to 1 at kBlendWidth x d_fixed (the share of the fixed rule in the near part).
+  // Both weights of a receiver at distance `distance_m` along local direction `local_dir`, from
+  // one interpolation: `far` rises from 0 at d_far to 1 at kBlendWidth x d_far; `fixed` rises from
+  // 0 at d_fixed to 1 at kBlendWidth x d_fixed (the share of the fixed rule in the near part).
   struct Weights {
     double far = 0.0;
     double fixed = 0.0;
@@ -144,9 +143,8 @@ struct FarFieldBound {
 
 // Builds the map for `emitter` (its own frame is read from emitter.rotation, so the map is the
 // same for every pose) against `near_model`, for the promise `tolerance`. Cost: about 2 x 10^5
-// near-field evaluations worst case, in parallel (tens to hundreds of ms per distinct emitter) on
-// at most `threads` threads (0: the processor's, up to 8; the calculation passes its own limit,
-// `luxgrid --threads`).
+// near-field evaluations worst case, in parallel on oneTBB's workers (tens to hundreds of ms per
+// distinct emitter; `luxgrid --threads` limits them).
 // With `demand`, only the samples it reads, each out to the farthest receiver that reads it
 // (the rest is never asked): a sample whose far field fails out to that receiver keeps the near
 // field at every distance, so weights() of a pair the demand holds gives a far weight no larger
@@ -157,7 +155,7 @@ struct FarFieldBound {
 // every sample itself (for the tests that compare the two).
 std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& emitter,
                                                            const Model& near_model,
-                                                           double tolerance, unsigned threads = 0,
+                                                           double tolerance,
                                                            const MapDemand* demand = nullptr,
                                                            bool share_mirror_images = true);
 

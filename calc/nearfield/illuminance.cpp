@@ -155,10 +155,6 @@ SwitchWeights switch_weights(const Emitter& e, const Vec3& point) {
   return {t * t * (3.0 - 2.0 * t), 0.0};
 }
 
-double far_field_weight(const Emitter& e, const Vec3& point) {
-  return switch_weights(e, point).far;
-}
-
 double estimated_pair_error(const Emitter& e, const SwitchWeights& w) {
   if (!e.far_bound || !(w.distance_m > 0.0)) return 0.0;
   const auto decay = [&](double start_m) { return std::min(1.0, start_m / w.distance_m); };

@@ -64,21 +64,18 @@ double illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal
 double illuminance(const Emitter& emitter, const Vec3& point, const Receiver& receiver,
                    const Model& model, const geometry::Visibility* occluder = nullptr);
 
-// Weight of the far-field model at `point`, blended so the near/far switch draws no seam on an
-// isolux plot (smoothstep: continuous value and slope). With an error bound (emitter.far_bound,
-// far_field_bound.h, what calc/direct attaches for standard and high): 0 nearer than the
-// direction's d_far, 1 beyond kBlendWidth x d_far. Without one, the five-times rule: 0 below
-// kBlendStart x D, 1 beyond kBlendEnd x D (D = largest dimension).
+// The weights of the automatic switch at `point`. `far`: the far-field model's, blended so the
+// near/far switch draws no seam on an isolux plot (smoothstep: continuous value and slope). With
+// an error bound (emitter.far_bound, far_field_bound.h, what calc/direct attaches for standard
+// and high): 0 nearer than the direction's d_far, 1 beyond kBlendWidth x d_far. Without one, the
+// five-times rule: 0 below kBlendStart x D, 1 beyond kBlendEnd x D (D = largest dimension).
 inline constexpr double kBlendStart = 4.0;  // x largest dimension
 inline constexpr double kBlendEnd = 6.0;    // x largest dimension
-double far_field_weight(const Emitter& emitter, const Vec3& point);
-
-// Both weights of the automatic switch at `point`: `far` as far_field_weight, and `fixed`, the
-// share of the fixed rule (fixed_rule.h) in the near part: 0 nearer than the direction's
-// d_fixed, 1 beyond kBlendWidth x d_fixed (far_field_bound.h). Without a bound (or without
-// rule nodes) `fixed` is 0: the near model alone.
-// With a bound, the distances the two bands start at along the pair's direction and the pair's
-// distance (for estimated_pair_error); 0 otherwise.
+// `fixed`: the share of the fixed rule (fixed_rule.h) in the near part: 0 nearer than the
+// direction's d_fixed, 1 beyond kBlendWidth x d_fixed (far_field_bound.h). Without a bound (or
+// without rule nodes) `fixed` is 0: the near model alone. With a bound, the distances the two bands
+// start at along the pair's direction and the pair's distance (for estimated_pair_error); 0
+// otherwise.
 struct SwitchWeights {
   double far = 0.0;
   double fixed = 0.0;
@@ -102,7 +99,7 @@ double estimated_pair_error(const Emitter& emitter, const SwitchWeights& w);
 bool fixed_rule_may_serve(const Emitter& emitter, const Receiver& receiver, const Model& near_model,
                           const geometry::Visibility* occluder);
 
-// settings.near_field: auto (blend by far_field_weight), always (near model everywhere),
+// settings.near_field: auto (blend by switch_weights), always (near model everywhere),
 // never (far field everywhere).
 enum class NearFieldSwitch { automatic, always, never };
 

@@ -9,10 +9,9 @@
 
 #include "calc/nearfield/table_cells.h"
 #include "calc/nearfield/table_polygon.h"
+#include "util/robust_math.h"
 
 namespace luxgrid::nearfield {
-
-inline constexpr double kTwoPi = 2.0 * kPi;
 
 // Largest angular width of a psi cell (rad, 7.5 deg) when the table has no C line inside it
 // (rotationally symmetric files have none): the outline rho(psi) and the weight must still be

@@ -6,6 +6,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include "util/error.h"
+#include "util/format.h"
 
 namespace luxgrid::geometry {
 

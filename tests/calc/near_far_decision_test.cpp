@@ -104,10 +104,10 @@ Worst check_scene(const std::string& what, Emitter e) {
       const Vec3 d = r.p - e.centroid;
       demand.add(e.world_to_local * glm::normalize(d), glm::length(d) / e.largest_dimension_m);
     }
-  const auto standard_for_scene = nearfield::build_far_field_bound(
-      e, Model::standard(), nearfield::kStandardPromise, 0, &demand);
+  const auto standard_for_scene =
+      nearfield::build_far_field_bound(e, Model::standard(), nearfield::kStandardPromise, &demand);
   const auto high_for_scene =
-      nearfield::build_far_field_bound(e, Model::high(), nearfield::kHighPromise, 0, &demand);
+      nearfield::build_far_field_bound(e, Model::high(), nearfield::kHighPromise, &demand);
   std::printf("%s: map built in %.0f ms (standard), %.0f ms (high)\n", what.c_str(),
               1e3 * std::chrono::duration<double>(t1 - t0).count(),
               1e3 * std::chrono::duration<double>(t2 - t1).count());

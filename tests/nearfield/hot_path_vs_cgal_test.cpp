@@ -53,8 +53,8 @@ Emitter polygon_emitter(const std::vector<Vec3>& v, const Vec3& normal) {
   for (const Vec3& p : v) c += p;
   e.centroid = c / static_cast<double>(v.size());
   e.normal = normal;
-  // The largest vertex-to-vertex distance, as make_emitter computes it (largest_dimension(e)
-  // would only read the field back, still 0 here, and zero the horizon shift).
+  // The largest vertex-to-vertex distance, as make_emitter computes it (left at 0 it
+  // would zero the horizon shift).
   for (const Vec3& a : v)
     for (const Vec3& b : v)
       e.largest_dimension_m = std::max(e.largest_dimension_m, glm::length(a - b));

@@ -223,7 +223,8 @@ TEST(MapSamples, EveryPixelAsThePlotsWorkedItOutBefore) {
     (fast.separable ? separable : per_pixel)++;
     const ColourScale scale = fit_scale(c.result.stats.Emin, c.result.stats.Emax);
     // Painted with a margin, as the plots do, and clipped at the far edges.
-    Raster fast_map(l.map_w + 3, l.map_h + 2, {0, 0, 1}), slow_map = fast_map;
+    Raster fast_map(l.map_w + 3, l.map_h + 2, {0, 0, 1}),
+        slow_map(l.map_w + 3, l.map_h + 2, {0, 0, 1});
     paint_map(fast, field, c.result.E, scale, fast_map, 2, 1);
     paint_map(slow, field, c.result.E, scale, slow_map, 2, 1);
     for (int py = 0; py < l.map_h; ++py) {
