@@ -28,10 +28,20 @@ std::vector<Vec2> read_polygon(const json& j) {
   for (const json& v : j) out.push_back(read_vec2(v));
   return out;
 }
-json optional_number(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
-std::optional<double> read_optional(const json& j) {
+// An optional number is written only when it has a value: results.json holds no null
+// (docs/reliability.md); a key left out reads back as no value.
+void put_optional(json& j, const char* key, const std::optional<double>& v) {
+  if (v) j[key] = *v;
+}
+// A value results.json documents as null where it does not exist (an observer's UGR).
+std::optional<double> read_nullable(const json& j) {
   if (j.is_null()) return std::nullopt;
   return j.get<double>();
+}
+std::optional<double> read_optional(const json& j, const char* key) {
+  const auto it = j.find(key);
+  if (it == j.end()) return std::nullopt;
+  return it->get<double>();
 }
 
 const char* shape_name(photometry::LuminousOpening::Shape s) {
@@ -117,22 +127,17 @@ calc::Luminaire read_luminaire(const json& j) {
 }
 
 json type_json(const LuminaireType& t) {
-  json j = {{"key", t.key},
-            {"name", t.name},
-            {"manufacturer", t.manufacturer},
-            {"article", t.article},
-            {"format", t.format},
-            {"file", t.file},
-            {"count", t.count},
-            {"flux_lm", optional_number(t.flux_lm)},
-            {"power_W", optional_number(t.power_W)},
-            {"lor", optional_number(t.lor)},
-            {"ugr_crosswise", optional_number(t.ugr_crosswise)},
-            {"ugr_endwise", optional_number(t.ugr_endwise)}};
-  j["polar"] = t.polar ? json{{"step_deg", kPolarStepDeg},
-                              {"c0_cd", t.polar->c0_cd},
-                              {"c90_cd", t.polar->c90_cd}}
-                       : json(nullptr);
+  json j = {{"key", t.key},         {"name", t.name},     {"manufacturer", t.manufacturer},
+            {"article", t.article}, {"format", t.format}, {"file", t.file},
+            {"count", t.count}};
+  put_optional(j, "flux_lm", t.flux_lm);
+  put_optional(j, "power_W", t.power_W);
+  put_optional(j, "lor", t.lor);
+  put_optional(j, "ugr_crosswise", t.ugr_crosswise);
+  put_optional(j, "ugr_endwise", t.ugr_endwise);
+  if (t.polar)
+    j["polar"] =
+        json{{"step_deg", kPolarStepDeg}, {"c0_cd", t.polar->c0_cd}, {"c90_cd", t.polar->c90_cd}};
   return j;
 }
 LuminaireType read_type(const json& j) {
@@ -144,12 +149,13 @@ LuminaireType read_type(const json& j) {
   j.at("format").get_to(t.format);
   j.at("file").get_to(t.file);
   j.at("count").get_to(t.count);
-  t.flux_lm = read_optional(j.at("flux_lm"));
-  t.power_W = read_optional(j.at("power_W"));
-  t.lor = read_optional(j.at("lor"));
-  t.ugr_crosswise = read_optional(j.at("ugr_crosswise"));
-  t.ugr_endwise = read_optional(j.at("ugr_endwise"));
-  if (const json& p = j.at("polar"); !p.is_null()) {
+  t.flux_lm = read_optional(j, "flux_lm");
+  t.power_W = read_optional(j, "power_W");
+  t.lor = read_optional(j, "lor");
+  t.ugr_crosswise = read_optional(j, "ugr_crosswise");
+  t.ugr_endwise = read_optional(j, "ugr_endwise");
+  if (const auto it = j.find("polar"); it != j.end()) {
+    const json& p = *it;
     PolarCurves c;
     p.at("c0_cd").get_to(c.c0_cd);
     p.at("c90_cd").get_to(c.c90_cd);
@@ -159,21 +165,22 @@ LuminaireType read_type(const json& j) {
 }
 
 json check_json(const RequirementCheck& c) {
-  return {{"surface", c.surface},
-          {"role", c.role},
-          {"quantity", c.quantity},
-          {"required", c.required},
-          {"required_max", optional_number(c.required_max)},
-          {"achieved", c.achieved},
-          {"achieved_max", optional_number(c.achieved_max)},
-          {"upper_limit", c.upper_limit},
-          {"calculated", c.calculated},
-          {"met", c.met},
-          {"margin", c.margin},
-          {"margin_rel", c.margin_rel},
-          {"source", c.source},
-          {"fixed_by_standard", c.fixed_by_standard},
-          {"note", c.note}};
+  json j = {{"surface", c.surface},
+            {"role", c.role},
+            {"quantity", c.quantity},
+            {"required", c.required},
+            {"achieved", c.achieved},
+            {"upper_limit", c.upper_limit},
+            {"calculated", c.calculated},
+            {"met", c.met},
+            {"margin", c.margin},
+            {"margin_rel", c.margin_rel},
+            {"source", c.source},
+            {"fixed_by_standard", c.fixed_by_standard},
+            {"note", c.note}};
+  put_optional(j, "required_max", c.required_max);
+  put_optional(j, "achieved_max", c.achieved_max);
+  return j;
 }
 RequirementCheck read_check(const json& j) {
   RequirementCheck c;
@@ -181,9 +188,9 @@ RequirementCheck read_check(const json& j) {
   j.at("role").get_to(c.role);
   j.at("quantity").get_to(c.quantity);
   j.at("required").get_to(c.required);
-  c.required_max = read_optional(j.at("required_max"));
+  c.required_max = read_optional(j, "required_max");
   j.at("achieved").get_to(c.achieved);
-  c.achieved_max = read_optional(j.at("achieved_max"));
+  c.achieved_max = read_optional(j, "achieved_max");
   j.at("upper_limit").get_to(c.upper_limit);
   j.at("calculated").get_to(c.calculated);
   j.at("met").get_to(c.met);
@@ -228,7 +235,7 @@ std::vector<calc::glare::ObserverResult> read_observers(const json& j) {
     for (const json& v : o.at("views")) {
       calc::glare::ViewResult view;
       view.direction = read_vec3(v.at("direction"));
-      view.UGR = read_optional(v.at("UGR"));
+      view.UGR = read_nullable(v.at("UGR"));
       v.at("Lb").get_to(view.Lb_cd_m2);
       v.at("E_indirect").get_to(view.E_indirect_lx);
       for (const json& t : v.at("terms")) {
@@ -286,7 +293,7 @@ calc::SurfaceResult read_surface(const json& s, const json& frame) {
   st.at("U0").get_to(r.stats.U0);
   st.at("Ud").get_to(r.stats.Ud);
   if (g.kind == geometry::SurfaceGrid::Kind::observers) {
-    r.UGR_max = read_optional(s.at("UGR_max"));
+    r.UGR_max = read_nullable(s.at("UGR_max"));
     r.observers = read_observers(s.at("observers"));
   }
   return r;
@@ -317,11 +324,9 @@ json report_input_to_json(const calc::Scene& scene, const calc::Results& results
   json j;
   j["project_file"] = scene.project_file.filename().string();
   const auto& parts = scene.settings.maintenance_parts;
-  j["maintenance_parts"] = parts ? json{{"LLMF", parts->LLMF},
-                                        {"LSF", parts->LSF},
-                                        {"LMF", parts->LMF},
-                                        {"RSMF", parts->RSMF}}
-                                 : json(nullptr);
+  if (parts)
+    j["maintenance_parts"] = json{
+        {"LLMF", parts->LLMF}, {"LSF", parts->LSF}, {"LMF", parts->LMF}, {"RSMF", parts->RSMF}};
   j["rooms"] = json::array();
   for (const auto& r : scene.rooms) j["rooms"].push_back(room_json(r));
   j["luminaires"] = json::array();
@@ -374,7 +379,8 @@ ResultsDocument read_results_document(const std::string& text, const std::string
     s.settings.quality = r.quality;
     s.settings.scene = r.scene;
     s.settings.maintenance_factor = r.maintenance_factor;
-    if (const json& p = in.at("maintenance_parts"); !p.is_null()) {
+    if (const auto it = in.find("maintenance_parts"); it != in.end()) {
+      const json& p = *it;
       calc::MaintenanceFactors m;
       p.at("LLMF").get_to(m.LLMF);
       p.at("LSF").get_to(m.LSF);
