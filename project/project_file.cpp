@@ -3,6 +3,7 @@
 #include <set>
 
 #include "calc/luminaire_tilt.h"
+#include "geometry/prism_union.h"
 #include "project/json_reader.h"
 #include "project/project_limits.h"
 #include "project/project_parts.h"
@@ -66,6 +67,18 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
     for (const auto& other : scene.rooms) {
       if (other.name == room.name)
         r.at("name").fail("a room named \"" + room.name + "\" already exists");
+      // Each room's reflected light is solved apart, so volume two rooms share would be lit by
+      // both (and a room inside a lit room would receive the outer room's reflected light).
+      // Rooms may touch: a shared wall, a floor that is the ceiling of the room below.
+      if (geometry::prism_contact(room.outline, room.floor_z, room.floor_z + room.height,
+                                  other.outline, other.floor_z, other.floor_z + other.height) ==
+          geometry::PrismContact::overlap) {
+        r.fail("rooms \"" + other.name + "\" and \"" + room.name +
+               "\" overlap (share volume); each room's light is calculated apart, so the shared "
+               "volume would be lit twice: give them outlines or heights that do not overlap (a "
+               "room inside another: an obstacle of the outer room, or a room of its own beside "
+               "it)");
+      }
     }
     scene.rooms.push_back(std::move(room));
   }

@@ -1,6 +1,7 @@
 // The project's "rooms": outlines, heights, reflectances and obstacles.
 #include "project/project_parts.h"
 
+#include "geometry/prism_union.h"
 #include "geometry/workplane.h"
 
 namespace luxgrid::project::parts {
@@ -49,6 +50,49 @@ geometry::Obstacle parse_obstacle(const JsonValue& o, size_t index, const Room& 
   return out;
 }
 
+namespace {
+
+// `"a"`, `"a" and "b"`, `"a", "b" and "c"`: the obstacles a union stands for.
+std::string obstacle_names(const Room& room, const std::vector<size_t>& members) {
+  std::string out;
+  for (size_t k = 0; k < members.size(); ++k) {
+    if (k > 0) out += k + 1 == members.size() ? " and " : ", ";
+    out += "\"" + room.obstacles[members[k]].name + "\"";
+  }
+  return out;
+}
+
+// Obstacles that overlap or press faces together are replaced by their union (geometry/
+// prism_union.h: otherwise each copy of a face reflects, and the room gets light twice), with a
+// warning at the second member; a group whose union is no prism is refused at the second of the
+// first two members that meet, naming both and what to do.
+void unite_overlapping_obstacles(const JsonValue& obstacles, Room& room,
+                                 std::vector<Warning>& warnings) {
+  geometry::ObstacleUnion u = geometry::unite_obstacles(room.obstacles);
+  if (u.conflict) {
+    const auto& c = *u.conflict;
+    const bool overlap = c.contact == geometry::PrismContact::overlap;
+    obstacles.items()[c.second].fail(
+        "obstacles " + obstacle_names(room, {c.first, c.second}) + " of room \"" + room.name +
+        "\" " + (overlap ? "overlap" : "touch with faces pressed together") +
+        ", and their union is no single box or prism (luxgrid unites only obstacles with the "
+        "same reflectance and either the same z0 and z1 and outlines that join without a hole, "
+        "or the same outline); give the union as one \"prism\", or move them apart");
+  }
+  for (size_t k = 0; k < u.members.size(); ++k) {
+    const std::vector<size_t>& m = u.members[k];
+    if (m.size() < 2) continue;
+    warnings.push_back({obstacles.items()[m[1]].location(),
+                        "obstacles " + obstacle_names(room, m) + " of room \"" + room.name +
+                            "\" overlap or touch with faces pressed together; calculated as "
+                            "their union, one obstacle named \"" +
+                            room.obstacles[m[0]].name + "\""});
+  }
+  room.obstacles = std::move(u.obstacles);
+}
+
+}  // namespace
+
 Room parse_room(const JsonValue& r, std::vector<Warning>& warnings) {
   r.expect_object();
   Room room;
@@ -95,6 +139,7 @@ Room parse_room(const JsonValue& r, std::vector<Warning>& warnings) {
         }
       }
     }
+    unite_overlapping_obstacles(*obstacles, room, warnings);
   }
   return room;
 }

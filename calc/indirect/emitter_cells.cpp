@@ -119,6 +119,32 @@ void add_cells(const Polygon3& poly, double max_cell_m, double inv_area, const R
   }
 }
 
+// The share of a point emitter's flux sent into each of `rooms` (which all contain it): the
+// sphere of directions in bands of equal solid angle (uniform in cos), each direction given to
+// the room a point kProbe_m along it lies in. Directions along the shared face, into no room or
+// into a room not listed, count for none.
+std::vector<double> flux_share_by_room(const Scene& scene, const nearfield::Emitter& e,
+                                       const Vec3& position, const std::vector<int>& rooms) {
+  constexpr double kProbe_m = 1e-3;
+  constexpr int kBands = 180, kSteps = 360;
+  std::vector<double> into(rooms.size(), 0.0);
+  double total = 0.0;
+  for (int b = 0; b < kBands; ++b) {
+    const double z = -1.0 + (b + 0.5) * 2.0 / kBands, s = std::sqrt(1.0 - z * z);
+    for (int k = 0; k < kSteps; ++k) {
+      const double phi = (k + 0.5) * 2.0 * kPi / kSteps;
+      const Vec3 d(s * std::cos(phi), s * std::sin(phi), z);
+      const double i = e.intensity_towards(d);
+      total += i;
+      const int r = room_containing(scene, position + d * kProbe_m, 0.0);
+      const auto found = std::find(rooms.begin(), rooms.end(), r);
+      if (found != rooms.end()) into[static_cast<size_t>(found - rooms.begin())] += i;
+    }
+  }
+  for (double& v : into) v = total > 0.0 ? v / total : 0.0;
+  return into;
+}
+
 }  // namespace
 
 std::vector<RoomCells> emitter_cells(const Scene& scene, const Luminaire& lum) {
@@ -126,8 +152,16 @@ std::vector<RoomCells> emitter_cells(const Scene& scene, const Luminaire& lum) {
       nearfield::make_emitter(lum.opening, lum.pose.position, lum.pose.rotation, lum.distribution);
   std::vector<RoomCells> out;
   if (e.is_point()) {
-    const int r = room_containing(scene, lum.pose.position, 0.0);
-    if (r >= 0) out.push_back({r, {{lum.pose.position, 1.0}}, 1.0});
+    const std::vector<int> rooms = rooms_containing(scene, lum.pose.position, 0.0);
+    if (rooms.size() == 1) out.push_back({rooms[0], {{lum.pose.position, 1.0}}, 1.0});
+    if (rooms.size() > 1) {
+      // On a wall (floor, ceiling) rooms share: the point sends its light into each of them.
+      // Each room's patches see only the directions into that room, so the cell carries the
+      // whole intensity in each; the weight is the share of the flux entering the room.
+      const std::vector<double> share = flux_share_by_room(scene, e, lum.pose.position, rooms);
+      for (size_t k = 0; k < rooms.size(); ++k)
+        out.push_back({rooms[k], {{lum.pose.position, 1.0}}, share[k]});
+    }
     return out;
   }
   const double inv_area = 1.0 / e.area_m2;

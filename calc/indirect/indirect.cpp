@@ -438,9 +438,13 @@ IndirectResult gather_indirect(const IndirectSolution& solution, const Scene& sc
     receivers[s].resize(grid.points.size());
     tbb::parallel_for(size_t(0), grid.points.size(), [&](size_t i) {
       if (!grid.active.empty() && !grid.active[i]) return;
-      const int r = room_containing(scene, grid.points[i], kRoomTolerance_m);
-      if (r < 0 || faces_out_of_room(scene.rooms[r], grid.points[i], grid.normals[i])) return;
-      receivers[s][i] = {r, inset_into_room(scene.rooms[r], grid.points[i])};
+      // A point on a wall (floor, ceiling) two rooms share lies in both: it gathers from the
+      // first room its normal does not face out of (the room it looks into).
+      for (const int r : rooms_containing(scene, grid.points[i], kRoomTolerance_m)) {
+        if (faces_out_of_room(scene.rooms[r], grid.points[i], grid.normals[i])) continue;
+        receivers[s][i] = {r, inset_into_room(scene.rooms[r], grid.points[i])};
+        return;
+      }
     });
   }
   std::vector<GatherSet> gather_sets;

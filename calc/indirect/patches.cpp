@@ -218,6 +218,13 @@ int room_containing(const Scene& scene, const Vec3& p, double tolerance_m) {
   return -1;
 }
 
+std::vector<int> rooms_containing(const Scene& scene, const Vec3& p, double tolerance_m) {
+  std::vector<int> out;
+  for (size_t r = 0; r < scene.rooms.size(); ++r)
+    if (inside_room(scene.rooms[r], p, tolerance_m)) out.push_back(static_cast<int>(r));
+  return out;
+}
+
 PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
   if (!(patch_size_m > 0.0)) throw InputError("indirect: patch size must be > 0");
   PatchMesh mesh;

@@ -69,6 +69,10 @@ bool outline_is_convex(const Room& room);
 // boundary), or -1.
 int room_containing(const Scene& scene, const Vec3& p, double tolerance_m = 1e-3);
 
+// Indices of all rooms containing `p` (as room_containing): more than one only on a wall, floor
+// or ceiling two rooms share.
+std::vector<int> rooms_containing(const Scene& scene, const Vec3& p, double tolerance_m);
+
 // Fraction of `target` visible from `from`: its centroid and the midpoints between centroid and
 // each vertex, each lifted off the patch by `lift_m` along its normal (so the patch's own face
 // does not hide them). 1 when `visibility` is null.

@@ -26,7 +26,7 @@ import tempfile
 
 CHECK_KEYS = {"what", "source", "args", "exit", "stderr_contains", "stderr_not_contains",
               "warnings_contain", "warnings_not_contain", "no_warnings", "values", "equivalent",
-              "max_seconds"}
+              "max_seconds", "mirror", "flux_balance"}
 
 
 def snapshot(folder, skip):
@@ -107,6 +107,53 @@ def within(actual, expected, spec):
 
 def warnings_text(results):
     return [json.dumps(w) if not isinstance(w, str) else w for w in results.get("warnings", [])]
+
+
+def mirror_failures(results, spec):
+    """Each point of spec["surface"] against the point of spec["image"] at its mirror position in
+    the plane spec["axis"] = spec["at"] (matched within 1e-9 m): the fields agree within the
+    tolerances."""
+    failures = []
+    axis = "xyz".index(spec["axis"])
+    mine, image = surface(results, spec["surface"]), surface(results, spec["image"])
+
+    def key(p):
+        return tuple(round(c, 9) for c in p)
+
+    index = {key(p): i for i, p in enumerate(image["points"])}
+    for i, p in enumerate(mine["points"]):
+        q = list(p)
+        q[axis] = 2.0 * spec["at"] - q[axis]
+        j = index.get(key(q))
+        if j is None:
+            failures.append(f"mirror: {spec['surface']} point {i} {p} has no image in "
+                            f"{spec['image']}")
+            continue
+        for field in spec.get("fields", ["E"]):
+            a, b = mine[field][i], image[field][j]
+            if not within(a, b, spec):
+                failures.append(f"mirror: {spec['surface']}.{field}[{i}] = {a}, "
+                                f"{spec['image']}.{field}[{j}] = {b}")
+    return failures
+
+
+def flux_balance_failures(results, spec):
+    """The plan's first bounce: the direct flux landing on the rooms' faces equals the flux the
+    luminaires send into the rooms (closed rooms lose none), and with "whole": true that equals
+    the luminaires' whole flux (every opening inside the rooms)."""
+    run = results.get("plan", {}).get("indirect_run")
+    if not run:
+        return ["flux_balance: results.json has no plan.indirect_run"]
+    failures = []
+    received, emitted, whole = (run["received_flux_lm"], run["emitted_flux_lm"],
+                                run["luminaire_flux_lm"])
+    if not within(received, emitted, spec):
+        failures.append(f"flux_balance: {received} lm land on the faces of {emitted} lm emitted "
+                        f"into the rooms")
+    if spec.get("whole") and not within(emitted, whole, spec):
+        failures.append(f"flux_balance: {emitted} lm emitted into the rooms of {whole} lm from "
+                        f"the luminaires")
+    return failures
 
 
 def check_case(luxgrid, corpus, case_rel):
@@ -215,6 +262,13 @@ def check_case(luxgrid, corpus, case_rel):
                     if worst is not None and not within(a[worst], b[worst], spec):
                         failures.append(f"{mine}.{field}[{worst}] = {a[worst]}, {spec['project']} "
                                         f"{theirs}.{field}[{worst}] = {b[worst]}")
+        for spec in check.get("mirror", []):
+            try:
+                failures += mirror_failures(results, spec)
+            except KeyError as e:
+                failures.append(f"mirror: {e}")
+        if "flux_balance" in check:
+            failures += flux_balance_failures(results, check["flux_balance"])
         script = os.path.join(case_dir, "check.py")
         if os.path.exists(script):
             module_spec = importlib.util.spec_from_file_location("case_check", script)
