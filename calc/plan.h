@@ -16,7 +16,7 @@
 #include "calc/nearfield/far_field_bound.h"
 #include "calc/nearfield/illuminance.h"
 #include "calc/scene.h"
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 
 namespace luxgrid::calc {
 
@@ -63,7 +63,7 @@ enum class NearSwitchReason {
   automatic,          // by the error-bound map, or by the five-times rule without one
 };
 
-// The near/far map of one distinct emitter (calc/far_field_bounds.h).
+// The near/far map of one distinct emitter (calc/scene_far_field_bounds.h).
 struct NearFarPlan {
   LuminaireGroup group;
   nearfield::FarFieldBoundSummary bound;
@@ -111,7 +111,7 @@ struct Plan {
   nearfield::Model near_model = nearfield::Model::standard();
   nearfield::NearFieldSwitch near_switch = nearfield::NearFieldSwitch::automatic;
   NearSwitchReason near_switch_reason = NearSwitchReason::automatic;
-  // Occlusion test, or null when nothing in the scene can block light (calc/visibility.h).
+  // Occlusion test, or null when nothing in the scene can block light (calc/scene_visibility.h).
   std::shared_ptr<const geometry::Visibility> visibility_test;
   VisibilityDecision visibility;
   // What the direct calculation counted, once it ran.

@@ -14,7 +14,7 @@
 #include "report/energy.h"
 #include "report/html_text.h"
 #include "report/luminaire_types.h"
-#include "report/requirements.h"
+#include "report/requirement_checks.h"
 
 namespace luxgrid::report {
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "calc/glare/guth_position_index.h"
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 #include "photometry/opening.h"
 #include "util/error.h"
 

@@ -1,4 +1,4 @@
-#include "photometry/validation.h"
+#include "photometry/file_warnings.h"
 
 #include <algorithm>
 #include <cmath>
