@@ -127,8 +127,8 @@ struct Plan {
   std::optional<IndirectRunPlan> indirect_run;
   bool emergency_direct_only = false;  // the emergency scene counts direct light only [EN1838]
   std::vector<PatchRefinement> refinements;
-  // The scene's notes, in words (the emergency scene's choices, calc/emergency_scene.h).
-  std::vector<std::string> scene_notes;
+  // The scene's notes (the emergency scene's choices, calc/scene_notes.h).
+  std::vector<SceneNote> scene_notes;
   // What reflected light's solver noted and warned (calc/indirect/indirect_notes.h).
   std::vector<indirect::IndirectNote> indirect_notes, indirect_warnings;
   // What the quality promises (relative, 0: no number) and the plan's own error estimate per

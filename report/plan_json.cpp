@@ -111,6 +111,11 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IndirectRunPlan, bounces_asked, bounces_run, 
                                    worst_bounces)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PatchRefinement, outcome, from_m, to_m, estimate, surface,
                                    work_pairs, work_limit_pairs, budget_error)
+NLOHMANN_JSON_SERIALIZE_ENUM(SceneNote::Kind,
+                             {{SceneNote::Kind::emergency_scene, "emergency_scene"},
+                              {SceneNote::Kind::observers_left_out, "observers_left_out"}})
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(EmergencyOutputNote, luminaire, factor, flux_lm, photometry)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SceneNote, kind, luminaires, of_luminaires, observers, outputs)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(VisibilityDecision, on, no_rooms, obstacles, rooms,
                                    non_convex_rooms, luminaires_outside, openings_reaching,
                                    first_outside, first_reaching, points_outside)
