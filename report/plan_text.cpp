@@ -4,7 +4,6 @@
 #include <cstdio>
 
 #include "calc/plan_estimates.h"
-#include "project/json_reader.h"
 #include "util/format.h"
 
 namespace luxgrid::report {
@@ -31,8 +30,8 @@ std::string plural(size_t n, const std::string& one, const std::string& many) {
 // "a: 0.05 of its output", "b: 250 lm", "c: photometry \"em\"": as the project gave it.
 std::string emergency_output_text(const calc::EmergencyOutputNote& o) {
   const std::string what = !o.photometry.empty() ? "photometry \"" + o.photometry + "\""
-                           : o.flux_lm > 0.0     ? project::number_text(o.flux_lm) + " lm"
-                                             : project::number_text(o.factor) + " of its output";
+                           : o.flux_lm > 0.0     ? number_text(o.flux_lm) + " lm"
+                                                 : number_text(o.factor) + " of its output";
   return o.luminaire + ": " + what;
 }
 

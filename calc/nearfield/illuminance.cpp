@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "calc/nearfield/fan_sample.h"
 #include "calc/nearfield/far_field_bound.h"
 #include "calc/nearfield/fixed_rule.h"
 #include "calc/nearfield/models.h"
 #include "calc/nearfield/table_rung_scratch.h"
+#include "util/format.h"
 
 namespace luxgrid::nearfield {
 namespace {
@@ -24,18 +24,13 @@ constexpr std::int64_t kReferenceMaxEvaluations = 4'000'000;
 }  // namespace
 
 std::string to_string(const Model& m) {
-  char buf[64];
   switch (m.kind) {
     case ModelKind::far_field: return "far field";
     case ModelKind::paper_cubature: return "paper cubature";
-    case ModelKind::subdivided: std::snprintf(buf, sizeof buf, "paper k=%d", m.level); return buf;
-    case ModelKind::lambert_subdivided:
-      std::snprintf(buf, sizeof buf, "lambert k=%d", m.level);
-      return buf;
+    case ModelKind::subdivided: return "paper k=" + std::to_string(m.level);
+    case ModelKind::lambert_subdivided: return "lambert k=" + std::to_string(m.level);
     case ModelKind::adaptive:
-      std::snprintf(buf, sizeof buf, "adaptive %.0e",
-                    m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol);
-      return buf;
+      return format_double("adaptive %.0e", m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol);
     case ModelKind::standard: return "standard";
     case ModelKind::high: return "high";
     case ModelKind::reference: return "reference";
