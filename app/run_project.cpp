@@ -12,7 +12,7 @@
 #include "report/colour_rendering.h"
 #include "report/output_folder.h"
 #include "report/plan_text.h"
-#include "report/requirements_en1838.h"
+#include "report/requirement_checks_en1838.h"
 #include "report/write_outputs.h"
 #include "util/error.h"
 #include "util/output_names.h"

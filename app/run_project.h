@@ -11,7 +11,7 @@
 #include "project/project_file.h"
 #include "report/colour_scale.h"
 #include "report/diff.h"
-#include "report/requirements.h"
+#include "report/requirement_checks.h"
 
 namespace luxgrid::app {
 

@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 
 #include "calc/nearfield/models.h"
+#include "calc/nearfield/table_rung_scratch.h"
 #include "photometry/distribution_texture.h"
 #include "util/simd.h"
 
@@ -150,6 +151,8 @@ std::vector<double> direct_illuminance(const Plan& plan,
                                     [](const Zone& z) { return z.visibility == nullptr; });
   tbb::parallel_for(tbb::blocked_range<size_t>(0, total, 16), [&](const auto& range) {
     DirectCounts local;
+    // The table rung's buffers, grown on the chunk's first pairs and reused by the rest.
+    nearfield::TableRungScratch scratch;
     if (far_runs) {
       for (size_t begin = range.begin(); begin != range.end();) {
         const uint32_t zone = reach ? reach->zone_of_point[begin] : 0;
@@ -180,8 +183,9 @@ std::vector<double> direct_illuminance(const Plan& plan,
         // Soft shadows: the near-field models test visibility per node, the far field from
         // the opening's centre.
         nearfield::SwitchWeights w;
-        const double pair = nearfield::hybrid_illuminance(
-            emitter, grid.points[i], receiver, plan.near_model, plan.near_switch, visibility, &w);
+        const double pair =
+            nearfield::hybrid_illuminance(emitter, grid.points[i], receiver, plan.near_model,
+                                          plan.near_switch, visibility, &w, &scratch);
         sum += pair;
         if (estimated_error_lx) error_lx += pair * nearfield::estimated_pair_error(emitter, w);
         if (!counts) continue;

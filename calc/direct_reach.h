@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "calc/scene.h"
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 
 namespace luxgrid::calc {
 

@@ -33,15 +33,16 @@ Scene make_emergency_scene(const Scene& normal) {
   // EN 1838 counts direct light only: reflections off walls and ceilings are not relied on.
   scene.settings.indirect = IndirectMode::off;
   scene.luminaires.clear();
-  std::string outputs;
+  SceneNote note;  // emergency_scene
   for (const auto& lum : normal.luminaires) {
     if (!lum.emergency) continue;
     Luminaire e = lum;
     e.distribution = emergency_distribution(normal, lum);
     if (!lum.emergency->photometry.empty()) e.photometry = lum.emergency->photometry;
     scene.luminaires.push_back(std::move(e));
-    if (scene.luminaires.size() <= 3)
-      outputs += (outputs.empty() ? "" : "; ") + lum.label + ": " + lum.emergency->description;
+    const EmergencyOutput& em = *lum.emergency;
+    if (note.outputs.size() < SceneNote::kListedOutputs)
+      note.outputs.push_back({lum.label, em.factor, em.flux_lm, em.photometry});
   }
   if (scene.luminaires.empty()) {
     throw InputError(
@@ -49,7 +50,6 @@ Scene make_emergency_scene(const Scene& normal) {
         "(give the emergency luminaires \"emergency\": {\"fraction\": ...}, {\"flux_lm\": ...} "
         "or {\"photometry\": ...})");
   }
-  if (scene.luminaires.size() > 3) outputs += "; ...";
   const auto is_observers = [](const geometry::SurfaceGrid& g) {
     return g.kind == geometry::SurfaceGrid::Kind::observers;
   };
@@ -61,14 +61,14 @@ Scene make_emergency_scene(const Scene& normal) {
         "the emergency scene has no calculation surface: observers surfaces (glare) are not "
         "calculated in it; add an escape_route or open_area surface");
   }
-  scene.notes.push_back(
-      "emergency scene (EN 1838): direct light only, from the " +
-      std::to_string(scene.luminaires.size()) + " of " + std::to_string(normal.luminaires.size()) +
-      " luminaires with an emergency entry, at their emergency output (" + outputs + ")");
+  note.luminaires = scene.luminaires.size();
+  note.of_luminaires = normal.luminaires.size();
+  scene.notes.push_back(std::move(note));
   if (dropped > 0) {
-    scene.notes.push_back(
-        "emergency scene: " + std::to_string(dropped) +
-        " observers surface(s) left out (UGR is not an emergency lighting quantity)");
+    SceneNote left_out;
+    left_out.kind = SceneNote::Kind::observers_left_out;
+    left_out.observers = static_cast<std::size_t>(dropped);
+    scene.notes.push_back(std::move(left_out));
   }
   return scene;
 }

@@ -8,7 +8,7 @@
 namespace luxgrid::calc {
 
 // Throws InputError when no luminaire has an "emergency" entry (nothing would light the scene).
-// Records what it did in the returned scene's `notes`.
+// Records what it did in the returned scene's `notes`, as values (calc/scene_notes.h).
 Scene make_emergency_scene(const Scene& normal);
 
 }  // namespace luxgrid::calc

@@ -2,7 +2,8 @@
 // EN 1838 calculation surfaces [EN1838]: escape routes (the centre line and the central band on
 // the floor) and open areas (anti-panic: the floor without a 0.5 m border). The project loader
 // reads their keys (docs/project-format.md); this file holds their geometry and the EN 1838
-// figures, so that the loader, the checks (report/requirements_en1838) and the tests share them.
+// figures, so that the loader, the checks (report/requirement_checks_en1838) and the tests share
+// them.
 #include <string>
 #include <vector>
 

@@ -9,7 +9,6 @@
 #include <string>
 
 #include "calc/direct_reach.h"
-#include "calc/far_field_bounds.h"
 #include "calc/glare/ugr.h"
 #include "calc/indirect/clustered.h"
 #include "calc/indirect/indirect.h"
@@ -17,6 +16,7 @@
 #include "calc/indirect/subcells.h"
 #include "calc/intensity_lookup.h"
 #include "calc/plan_estimates.h"
+#include "calc/scene_far_field_bounds.h"
 #include "util/error.h"
 #include "util/format.h"
 

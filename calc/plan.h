@@ -16,7 +16,7 @@
 #include "calc/nearfield/far_field_bound.h"
 #include "calc/nearfield/illuminance.h"
 #include "calc/scene.h"
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 
 namespace luxgrid::calc {
 
@@ -63,7 +63,7 @@ enum class NearSwitchReason {
   automatic,          // by the error-bound map, or by the five-times rule without one
 };
 
-// The near/far map of one distinct emitter (calc/far_field_bounds.h).
+// The near/far map of one distinct emitter (calc/scene_far_field_bounds.h).
 struct NearFarPlan {
   LuminaireGroup group;
   nearfield::FarFieldBoundSummary bound;
@@ -111,7 +111,7 @@ struct Plan {
   nearfield::Model near_model = nearfield::Model::standard();
   nearfield::NearFieldSwitch near_switch = nearfield::NearFieldSwitch::automatic;
   NearSwitchReason near_switch_reason = NearSwitchReason::automatic;
-  // Occlusion test, or null when nothing in the scene can block light (calc/visibility.h).
+  // Occlusion test, or null when nothing in the scene can block light (calc/scene_visibility.h).
   std::shared_ptr<const geometry::Visibility> visibility_test;
   VisibilityDecision visibility;
   // What the direct calculation counted, once it ran.
@@ -127,8 +127,8 @@ struct Plan {
   std::optional<IndirectRunPlan> indirect_run;
   bool emergency_direct_only = false;  // the emergency scene counts direct light only [EN1838]
   std::vector<PatchRefinement> refinements;
-  // The scene's notes, in words (the emergency scene's choices, calc/emergency_scene.h).
-  std::vector<std::string> scene_notes;
+  // The scene's notes (the emergency scene's choices, calc/scene_notes.h).
+  std::vector<SceneNote> scene_notes;
   // What reflected light's solver noted and warned (calc/indirect/indirect_notes.h).
   std::vector<indirect::IndirectNote> indirect_notes, indirect_warnings;
   // What the quality promises (relative, 0: no number) and the plan's own error estimate per

@@ -10,6 +10,7 @@
 #include <glm/mat3x3.hpp>
 
 #include "calc/emergency_surfaces.h"
+#include "calc/scene_notes.h"
 #include "geometry/room.h"
 #include "geometry/surface_grid.h"
 #include "photometry/photometry.h"
@@ -83,9 +84,9 @@ glm::dmat3 rotation_xyz(double rx, double ry, double rz);
 // A luminaire's emergency output [EN1838]: its own distribution times `factor` (a fraction of
 // its output, or the emergency flux over the file's flux), or a separate photometry entry.
 struct EmergencyOutput {
-  double factor = 1.0;      // on the luminaire's own distribution; 1 with `photometry`
-  std::string photometry;   // non-empty: the photometry entry giving the emergency distribution
-  std::string description;  // for the plan: "0.1 of its output", "250 lm", "photometry \"em\""
+  double factor = 1.0;     // on the luminaire's own distribution; 1 with `photometry`
+  std::string photometry;  // non-empty: the photometry entry giving the emergency distribution
+  double flux_lm = 0.0;    // the flux asked for ("flux_lm"), lm; 0: not asked for
 };
 
 struct Luminaire {
@@ -113,7 +114,7 @@ struct Scene {
   std::vector<EmergencySurface> emergency_surfaces;
   // What was done to the project before the calculation (the emergency scene's choices): the
   // pipeline copies them into the plan's notes.
-  std::vector<std::string> notes;
+  std::vector<SceneNote> notes;
   // Legal but suspicious input, each at its place in the project file and naming the object
   // (`p.json:5:16 /rooms/0/outline: room "L": the outline is clockwise; reversed to
   // counter-clockwise`; util/error.h). The CLI prints them; results list them.

@@ -37,7 +37,7 @@ FluxResult integrate_flux(const TabularDistribution& table);
 
 // DFF = downward / total (0 for a dark table) and LOR = total / stated lamp flux (none for
 // absolute photometry): the one place these ratios are formed, for derive() and for the
-// stated-versus-integrated check (validation.h).
+// stated-versus-integrated check (file_warnings.h).
 struct FluxRatios {
   double dff = 0.0;
   std::optional<double> lor;

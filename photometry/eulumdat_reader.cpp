@@ -25,12 +25,12 @@
 #include <deque>
 #include <string>
 
+#include "photometry/file_warnings.h"
 #include "photometry/opening.h"
 #include "photometry/readers.h"
 #include "photometry/source_text.h"
 #include "photometry/symmetry.h"
 #include "photometry/tabular_distribution.h"
-#include "photometry/validation.h"
 #include "util/error.h"
 
 namespace luxgrid::photometry {

@@ -22,6 +22,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "photometry/file_warnings.h"
 #include "photometry/opening.h"
 #include "photometry/readers.h"
 #include "photometry/source_text.h"
@@ -29,7 +30,6 @@
 #include "photometry/tabular_distribution.h"
 #include "photometry/tilt.h"
 #include "photometry/tilt_file.h"
-#include "photometry/validation.h"
 #include "util/error.h"
 
 namespace luxgrid::photometry {

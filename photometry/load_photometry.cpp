@@ -4,10 +4,10 @@
 #include <cctype>
 
 #include "photometry/file_bytes.h"
+#include "photometry/file_warnings.h"
 #include "photometry/photometry.h"
 #include "photometry/readers.h"
 #include "photometry/source_text.h"
-#include "photometry/validation.h"
 #include "util/error.h"
 
 namespace luxgrid::photometry {

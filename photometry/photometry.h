@@ -71,7 +71,7 @@ struct Photometry {
   int counts_vertical = 0;                // IES: vertical angles; EULUMDAT: Ng
   int counts_horizontal = 0;              // IES: horizontal angles; EULUMDAT: stored C planes
   // How the file states its flux, in words: "relative: 2 lamps x 1000 lm ..." or "absolute:
-  // IES lumens per lamp = -1" (validation.h; `luxgrid info` prints it).
+  // IES lumens per lamp = -1" (file_warnings.h; `luxgrid info` prints it).
   std::string flux_convention;
   std::vector<std::string> warnings;  // legal but suspicious input, each naming the file
 };

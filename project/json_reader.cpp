@@ -22,12 +22,6 @@ std::string json_pointer_escape(const std::string& key) {
   return out;
 }
 
-std::string number_text(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", x);
-  return buf;
-}
-
 std::string json_type_name(const nlohmann::json& j) {
   if (j.is_number()) return "a number";
   if (j.is_string()) return "a string";

@@ -13,6 +13,7 @@
 
 #include "project/json_positions.h"
 #include "util/error.h"
+#include "util/format.h"
 #include "util/robust_math.h"
 
 namespace luxgrid::project {
@@ -112,9 +113,6 @@ class JsonValue {
 inline JsonValue JsonDocument::root() const { return JsonValue(*root_, *this, ""); }
 
 std::string json_type_name(const nlohmann::json& j);
-
-// A number for a message: %g, so 0 and 1 print as "0" and "1" and 1e9 as "1e+09".
-std::string number_text(double x);
 
 // RFC 6901 escaping of a key inside a JSON pointer ("a/b" -> "a~1b", "~" -> "~0").
 std::string json_pointer_escape(const std::string& key);

@@ -28,7 +28,6 @@ EmergencyOutput parse_emergency_output(const JsonValue& e, const Scene& scene,
   if (auto f = e.find("fraction")) {
     out.factor = f->as_number_in(0.0, 1.0);
     if (!(out.factor > 0.0)) f->fail("expected a fraction in (0, 1], got 0");
-    out.description = number_text(out.factor) + " of its output";
   } else if (auto fl = e.find("flux_lm")) {
     const double target = fl->as_positive();
     const double have = luminous_flux(*own.distribution);
@@ -40,13 +39,12 @@ EmergencyOutput parse_emergency_output(const JsonValue& e, const Scene& scene,
                " lm; for a separate emergency distribution give {\"photometry\": \"key\"}");
     }
     out.factor = target / have;
-    out.description = number_text(target) + " lm";
+    out.flux_lm = target;
   } else {
     const auto p = e.at("photometry");
     out.photometry = p.as_string();
     if (!scene.photometry.count(out.photometry))
       p.fail("no photometry entry named \"" + out.photometry + "\"");
-    out.description = "photometry \"" + out.photometry + "\"";
   }
   return out;
 }

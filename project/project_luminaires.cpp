@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 #include "geometry/workplane.h"
 
 namespace luxgrid::project::parts {

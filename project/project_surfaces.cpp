@@ -5,7 +5,7 @@
 #include <cctype>
 #include <cmath>
 
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 #include "geometry/workplane.h"
 #include "util/output_names.h"
 

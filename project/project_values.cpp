@@ -2,7 +2,6 @@
 #include "project/project_parts.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "geometry/workplane.h"
 
@@ -16,9 +15,7 @@ using namespace calc;
 std::string count_text(double n) {
   if (!std::isfinite(n)) return "over 1e308";
   if (n >= 1e15) return number_text(n);
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.0f", n);
-  return buf;
+  return format_double("%.0f", n);
 }
 
 // Coordinates and lengths in metres, within kMaxCoordinate_m of the origin.

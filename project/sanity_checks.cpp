@@ -5,7 +5,7 @@
 #include <map>
 
 #include "calc/scaled_distribution.h"
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 #include "geometry/workplane.h"
 #include "photometry/tabular_distribution.h"
 

@@ -5,7 +5,7 @@
 #include <set>
 
 #include "report/html_report.h"
-#include "report/requirements_en1838.h"
+#include "report/requirement_checks_en1838.h"
 #include "util/format.h"
 
 namespace luxgrid::report {

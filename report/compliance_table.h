@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "report/requirements.h"
+#include "report/requirement_checks.h"
 
 namespace luxgrid::report {
 

@@ -10,7 +10,7 @@
 #include "calc/results.h"
 #include "calc/scene.h"
 #include "report/luminaire_types.h"
-#include "report/requirements.h"
+#include "report/requirement_checks.h"
 
 namespace luxgrid::report {
 

@@ -422,19 +422,15 @@ void write_html_report(const ReportInput& in, const TextSink& put) {
          "class=\"num\">Height</th>"
          "<th class=\"num\">Reflectance floor / walls / ceiling</th><th class=\"num\">Maintenance "
          "factor</th></tr>";
-    for (const auto& room : scene->rooms) {
-      double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-      for (size_t k = 0; k < room.outline.size(); ++k) {
-        x0 = std::min(x0, room.outline[k].x), x1 = std::max(x1, room.outline[k].x);
-        y0 = std::min(y0, room.outline[k].y), y1 = std::max(y1, room.outline[k].y);
-      }
+    for (size_t r = 0; r < scene->rooms.size(); ++r) {
+      const calc::Room& room = scene->rooms[r];
+      const RoomFigures& figures = in.rooms.at(r);
       h += "<tr data-room=\"" + html_escape(room.name) + "\"><td>" + html_escape(room.name) +
-           "</td><td class=\"num\">" +
-           format_double("%.2f", std::abs(geometry::signed_area(room.outline))) +
-           " m&sup2;</td><td class=\"num\">" +
-           format_double("%.2f", geometry::perimeter(room.outline)) + " m</td><td class=\"num\">" +
-           format_double("%.2f", x1 - x0) + " &times; " + format_double("%.2f", y1 - y0) +
-           " m</td><td class=\"num\">" + format_double("%.2f", room.height) +
+           "</td><td class=\"num\">" + format_double("%.2f", figures.floor_area_m2) +
+           " m&sup2;</td><td class=\"num\">" + format_double("%.2f", figures.perimeter_m) +
+           " m</td><td class=\"num\">" + format_double("%.2f", figures.size_x_m) + " &times; " +
+           format_double("%.2f", figures.size_y_m) + " m</td><td class=\"num\">" +
+           format_double("%.2f", room.height) +
            " m</td><td class=\"num\" data-stat=\"reflectance\">" +
            format_double("%.2f", room.reflectance.floor) + " / " +
            format_double("%.2f", room.reflectance.walls) + " / " +

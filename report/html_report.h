@@ -14,16 +14,19 @@
 #include "report/energy.h"
 #include "report/html_text.h"
 #include "report/luminaire_types.h"
-#include "report/requirements.h"
+#include "report/requirement_checks.h"
+#include "report/room_figures.h"
 
 namespace luxgrid::report {
 
 struct ReportInput {
   const calc::Results* results = nullptr;
   const calc::Scene* scene = nullptr;  // null: no plan view, no luminaire schedule
-  // Worked out before the page (luminaire_types, room_energy): the page only presents them.
+  // Worked out before the page (luminaire_types, room_energy, room_figures): the page only
+  // presents them.
   std::vector<LuminaireType> types;        // one per photometry entry
   std::vector<RoomEnergy> energy;          // per room
+  std::vector<RoomFigures> rooms;          // per room of *scene, in its order
   std::map<std::string, std::string> png;  // surface name -> PNG file bytes (the maps)
   std::vector<RequirementCheck> checks;
   const CostTable* cost = nullptr;  // --with-cost

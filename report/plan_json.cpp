@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "report/json_fields.h"
 #include "report/plan_text.h"
 
 // The (de)serializers live in each type's namespace, where nlohmann::json finds them; the keys
@@ -111,6 +112,11 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IndirectRunPlan, bounces_asked, bounces_run, 
                                    worst_bounces)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PatchRefinement, outcome, from_m, to_m, estimate, surface,
                                    work_pairs, work_limit_pairs, budget_error)
+NLOHMANN_JSON_SERIALIZE_ENUM(SceneNote::Kind,
+                             {{SceneNote::Kind::emergency_scene, "emergency_scene"},
+                              {SceneNote::Kind::observers_left_out, "observers_left_out"}})
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(EmergencyOutputNote, luminaire, factor, flux_lm, photometry)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SceneNote, kind, luminaires, of_luminaires, observers, outputs)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(VisibilityDecision, on, no_rooms, obstacles, rooms,
                                    non_convex_rooms, luminaires_outside, openings_reaching,
                                    first_outside, first_reaching, points_outside)
@@ -175,31 +181,22 @@ json plan_to_json(const calc::Plan& plan) {
 
 calc::Plan plan_from_json(const json& j) {
   calc::Plan plan;
-  j.at("quality").get_to(plan.quality);
-  j.at("near_model").get_to(plan.near_model);
-  j.at("near_switch").get_to(plan.near_switch);
-  j.at("near_switch_reason").get_to(plan.near_switch_reason);
-  j.at("direct_counts").get_to(plan.direct_counts);
-  j.at("pairs_unreachable").get_to(plan.pairs_unreachable);
-  j.at("near_far").get_to(plan.near_far);
-  j.at("intensity_lookups").get_to(plan.intensity_lookups);
+  read_fields(j, "quality", plan.quality, "near_model", plan.near_model, "near_switch",
+              plan.near_switch, "near_switch_reason", plan.near_switch_reason, "direct_counts",
+              plan.direct_counts, "pairs_unreachable", plan.pairs_unreachable, "near_far",
+              plan.near_far, "intensity_lookups", plan.intensity_lookups);
   const json& d = j.at("indirect_decision");
-  d.at("run").get_to(plan.indirect_decision.run);
-  d.at("reason").get_to(plan.indirect_decision.reason);
-  d.at("observers_surface").get_to(plan.indirect_decision.observers_surface);
-  d.at("sampled").get_to(plan.indirect_decision.sampled);
+  read_fields(d, "run", plan.indirect_decision.run, "reason", plan.indirect_decision.reason,
+              "observers_surface", plan.indirect_decision.observers_surface, "sampled",
+              plan.indirect_decision.sampled);
   plan.indirect_decision.estimate_lx = read_maybe_infinite(d.at("estimate_lx"));
   d.at("mean_direct_lx").get_to(plan.indirect_decision.mean_direct_lx);
   if (!j.at("indirect_run").is_null()) plan.indirect_run = j.at("indirect_run");
-  j.at("emergency_direct_only").get_to(plan.emergency_direct_only);
-  j.at("refinements").get_to(plan.refinements);
-  j.at("visibility").get_to(plan.visibility);
-  j.at("scene_notes").get_to(plan.scene_notes);
-  j.at("indirect_notes").get_to(plan.indirect_notes);
-  j.at("indirect_warnings").get_to(plan.indirect_warnings);
-  j.at("promise").get_to(plan.promise);
-  j.at("direct_estimated").get_to(plan.direct_estimated);
-  j.at("errors_estimated").get_to(plan.errors_estimated);
+  read_fields(j, "emergency_direct_only", plan.emergency_direct_only, "refinements",
+              plan.refinements, "visibility", plan.visibility, "scene_notes", plan.scene_notes,
+              "indirect_notes", plan.indirect_notes, "indirect_warnings", plan.indirect_warnings,
+              "promise", plan.promise, "direct_estimated", plan.direct_estimated,
+              "errors_estimated", plan.errors_estimated);
   for (const json& e : j.at("estimates")) {
     calc::SurfaceEstimate est;
     e.at("surface").get_to(est.surface);

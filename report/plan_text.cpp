@@ -27,6 +27,14 @@ std::string plural(size_t n, const std::string& one, const std::string& many) {
   return count_text(n) + " " + (n == 1 ? one : many);
 }
 
+// "a: 0.05 of its output", "b: 250 lm", "c: photometry \"em\"": as the project gave it.
+std::string emergency_output_text(const calc::EmergencyOutputNote& o) {
+  const std::string what = !o.photometry.empty() ? "photometry \"" + o.photometry + "\""
+                           : o.flux_lm > 0.0     ? number_text(o.flux_lm) + " lm"
+                                                 : number_text(o.factor) + " of its output";
+  return o.luminaire + ": " + what;
+}
+
 std::string refinement_why(const calc::PatchRefinement& r, calc::Quality quality) {
   return "the patch-size estimate at " + format_double("%.3g", r.from_m) + " m, " +
          format_double("%.2g", 100 * r.estimate) + " % on surface '" + r.surface +
@@ -348,11 +356,29 @@ std::string visibility_text(const calc::Plan& plan) {
          "luminaires), far-field pairs from the centre of the opening";
 }
 
+std::string scene_note_text(const calc::SceneNote& note) {
+  switch (note.kind) {
+    case calc::SceneNote::Kind::emergency_scene: {
+      std::string outputs;
+      for (const auto& o : note.outputs)
+        outputs += (outputs.empty() ? "" : "; ") + emergency_output_text(o);
+      if (note.luminaires > note.outputs.size()) outputs += "; ...";
+      return "emergency scene (EN 1838): direct light only, from the " +
+             count_text(note.luminaires) + " of " + count_text(note.of_luminaires) +
+             " luminaires with an emergency entry, at their emergency output (" + outputs + ")";
+    }
+    case calc::SceneNote::Kind::observers_left_out:
+      return "emergency scene: " + count_text(note.observers) +
+             " observers surface(s) left out (UGR is not an emergency lighting quantity)";
+  }
+  return {};
+}
+
 std::vector<std::string> plan_notes(const calc::Plan& plan) {
   std::vector<std::string> notes;
   if (plan.near_switch_reason == calc::NearSwitchReason::draft_quality)
     notes.push_back("quality draft: far-field point model at every distance");
-  notes.insert(notes.end(), plan.scene_notes.begin(), plan.scene_notes.end());
+  for (const auto& n : plan.scene_notes) notes.push_back(scene_note_text(n));
   for (const auto& r : plan.refinements)
     if (r.outcome == calc::PatchRefinement::Outcome::refined)
       notes.push_back("indirect: patch size refined from " + format_double("%.3g", r.from_m) +

@@ -26,6 +26,10 @@ std::string intensity_lookup_text(const calc::IntensityLookupChoice& choice);
 // stay within 4000 patches per room".
 std::string indirect_note_text(const calc::indirect::IndirectNote& note);
 
+// What was done to the scene: "emergency scene (EN 1838): direct light only, from the 3 of 4
+// luminaires with an emergency entry, at their emergency output (a: 0.05 of its output; ...)".
+std::string scene_note_text(const calc::SceneNote& note);
+
 // Whether reflected light runs and why: "skipped: all reflectances are 0".
 std::string indirect_decision_text(const calc::indirect::IndirectDecision& decision);
 

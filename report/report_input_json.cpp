@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "project/safe_json.h"
+#include "report/json_fields.h"
 #include "report/plan_json.h"
 #include "report/results_json.h"
 #include "util/error.h"
@@ -79,19 +80,15 @@ calc::Room read_room(const json& j) {
   calc::Room r;
   j.at("name").get_to(r.name);
   r.outline = read_polygon(j.at("outline"));
-  j.at("floor_z").get_to(r.floor_z);
-  j.at("height").get_to(r.height);
+  read_fields(j, "floor_z", r.floor_z, "height", r.height);
   const json& rho = j.at("reflectance");
-  rho.at("floor").get_to(r.reflectance.floor);
-  rho.at("walls").get_to(r.reflectance.walls);
-  rho.at("ceiling").get_to(r.reflectance.ceiling);
+  read_fields(rho, "floor", r.reflectance.floor, "walls", r.reflectance.walls, "ceiling",
+              r.reflectance.ceiling);
   for (const json& o : j.at("obstacles")) {
     geometry::Obstacle ob;
     o.at("name").get_to(ob.name);
     ob.footprint = read_polygon(o.at("footprint"));
-    o.at("z0").get_to(ob.z0);
-    o.at("z1").get_to(ob.z1);
-    o.at("reflectance").get_to(ob.reflectance);
+    read_fields(o, "z0", ob.z0, "z1", ob.z1, "reflectance", ob.reflectance);
     r.obstacles.push_back(std::move(ob));
   }
   return r;
@@ -113,16 +110,13 @@ json luminaire_json(const calc::Luminaire& l) {
 }
 calc::Luminaire read_luminaire(const json& j) {
   calc::Luminaire l;
-  j.at("label").get_to(l.label);
-  j.at("photometry").get_to(l.photometry);
+  read_fields(j, "label", l.label, "photometry", l.photometry);
   l.pose.position = read_vec3(j.at("position"));
   for (int c = 0; c < 3; ++c) l.pose.rotation[c] = read_vec3(j.at("rotation").at(c));
   const json& o = j.at("opening");
   l.opening.shape = read_shape(o.at("shape"));
-  o.at("length").get_to(l.opening.length);
-  o.at("width").get_to(l.opening.width);
-  o.at("height").get_to(l.opening.height);
-  o.at("description").get_to(l.opening.description);
+  read_fields(o, "length", l.opening.length, "width", l.opening.width, "height", l.opening.height,
+              "description", l.opening.description);
   return l;
 }
 
@@ -142,13 +136,8 @@ json type_json(const LuminaireType& t) {
 }
 LuminaireType read_type(const json& j) {
   LuminaireType t;
-  j.at("key").get_to(t.key);
-  j.at("name").get_to(t.name);
-  j.at("manufacturer").get_to(t.manufacturer);
-  j.at("article").get_to(t.article);
-  j.at("format").get_to(t.format);
-  j.at("file").get_to(t.file);
-  j.at("count").get_to(t.count);
+  read_fields(j, "key", t.key, "name", t.name, "manufacturer", t.manufacturer, "article", t.article,
+              "format", t.format, "file", t.file, "count", t.count);
   t.flux_lm = read_optional(j, "flux_lm");
   t.power_W = read_optional(j, "power_W");
   t.lor = read_optional(j, "lor");
@@ -157,8 +146,7 @@ LuminaireType read_type(const json& j) {
   if (const auto it = j.find("polar"); it != j.end()) {
     const json& p = *it;
     PolarCurves c;
-    p.at("c0_cd").get_to(c.c0_cd);
-    p.at("c90_cd").get_to(c.c90_cd);
+    read_fields(p, "c0_cd", c.c0_cd, "c90_cd", c.c90_cd);
     t.polar = std::move(c);
   }
   return t;
@@ -184,21 +172,14 @@ json check_json(const RequirementCheck& c) {
 }
 RequirementCheck read_check(const json& j) {
   RequirementCheck c;
-  j.at("surface").get_to(c.surface);
-  j.at("role").get_to(c.role);
-  j.at("quantity").get_to(c.quantity);
-  j.at("required").get_to(c.required);
+  read_fields(j, "surface", c.surface, "role", c.role, "quantity", c.quantity, "required",
+              c.required);
   c.required_max = read_optional(j, "required_max");
   j.at("achieved").get_to(c.achieved);
   c.achieved_max = read_optional(j, "achieved_max");
-  j.at("upper_limit").get_to(c.upper_limit);
-  j.at("calculated").get_to(c.calculated);
-  j.at("met").get_to(c.met);
-  j.at("margin").get_to(c.margin);
-  j.at("margin_rel").get_to(c.margin_rel);
-  j.at("source").get_to(c.source);
-  j.at("fixed_by_standard").get_to(c.fixed_by_standard);
-  j.at("note").get_to(c.note);
+  read_fields(j, "upper_limit", c.upper_limit, "calculated", c.calculated, "met", c.met, "margin",
+              c.margin, "margin_rel", c.margin_rel, "source", c.source, "fixed_by_standard",
+              c.fixed_by_standard, "note", c.note);
   return c;
 }
 
@@ -236,14 +217,11 @@ std::vector<calc::glare::ObserverResult> read_observers(const json& j) {
       calc::glare::ViewResult view;
       view.direction = read_vec3(v.at("direction"));
       view.UGR = read_nullable(v.at("UGR"));
-      v.at("Lb").get_to(view.Lb_cd_m2);
-      v.at("E_indirect").get_to(view.E_indirect_lx);
+      read_fields(v, "Lb", view.Lb_cd_m2, "E_indirect", view.E_indirect_lx);
       for (const json& t : v.at("terms")) {
         calc::glare::ViewTerm term;
-        t.at("luminaire").get_to(term.luminaire);
-        t.at("L").get_to(term.term.L_cd_m2);
-        t.at("omega").get_to(term.term.omega_sr);
-        t.at("p").get_to(term.term.p);
+        read_fields(t, "luminaire", term.luminaire, "L", term.term.L_cd_m2, "omega",
+                    term.term.omega_sr, "p", term.term.p);
         view.terms.push_back(std::move(term));
       }
       r.views.push_back(std::move(view));
@@ -265,21 +243,16 @@ calc::SurfaceResult read_surface(const json& s, const json& frame) {
     s.at("spacing").at(1).get_to(g.spacing_v);
   }
   g.quantity = read_quantity(s.at("quantity"));
-  s.at("points_outside").get_to(g.points_outside);
-  s.at("points_in_obstacles").get_to(g.points_in_obstacles);
+  read_fields(s, "points_outside", g.points_outside, "points_in_obstacles", g.points_in_obstacles);
   for (const json& p : s.at("points")) g.points.push_back(read_vec3(p));
   for (const json& n : s.at("normals")) g.normals.push_back(read_vec3(n));
   for (const json& a : s.at("active")) g.active.push_back(a.get<bool>());
   g.origin = read_vec3(frame.at("origin"));
   g.u_dir = read_vec3(frame.at("u_dir"));
   g.v_dir = read_vec3(frame.at("v_dir"));
-  frame.at("size_u").get_to(g.size_u);
-  frame.at("size_v").get_to(g.size_v);
-  frame.at("observer").get_to(g.observer);
+  read_fields(frame, "size_u", g.size_u, "size_v", g.size_v, "observer", g.observer);
   for (const json& p : frame.at("region")) g.region.push_back(read_polygon(p));
-  s.at("E").get_to(r.E);
-  s.at("E_direct").get_to(r.E_direct);
-  s.at("E_indirect").get_to(r.E_indirect);
+  read_fields(s, "E", r.E, "E_direct", r.E_direct, "E_indirect", r.E_indirect);
   const size_t n = g.points.size();
   if (g.normals.size() != n || g.active.size() != n || r.E.size() != n || r.E_direct.size() != n ||
       r.E_indirect.size() != n || n != static_cast<size_t>(g.nu) * static_cast<size_t>(g.nv))
@@ -287,11 +260,8 @@ calc::SurfaceResult read_surface(const json& s, const json& frame) {
         501, "the per-point arrays differ in length from each other or from size", &s);
   const json& st = s.at("stats");
   // A statistic results.json wrote as null (not finite) is refused by the type check.
-  st.at("Emin").get_to(r.stats.Emin);
-  st.at("Eavg").get_to(r.stats.Eavg);
-  st.at("Emax").get_to(r.stats.Emax);
-  st.at("U0").get_to(r.stats.U0);
-  st.at("Ud").get_to(r.stats.Ud);
+  read_fields(st, "Emin", r.stats.Emin, "Eavg", r.stats.Eavg, "Emax", r.stats.Emax, "U0",
+              r.stats.U0, "Ud", r.stats.Ud);
   if (g.kind == geometry::SurfaceGrid::Kind::observers) {
     r.UGR_max = read_nullable(s.at("UGR_max"));
     r.observers = read_observers(s.at("observers"));
@@ -354,8 +324,7 @@ ResultsDocument read_results_document(const std::string& text, const std::string
   ResultsDocument out;
   try {
     calc::Results& r = out.results;
-    doc.at("project").get_to(r.project);
-    doc.at("luxgrid_version").get_to(out.version);
+    read_fields(doc, "project", r.project, "luxgrid_version", out.version);
     const auto quality = calc::quality_from_string(doc.at("quality").get<std::string>());
     if (!quality) throw json::other_error::create(501, "unknown quality", &doc.at("quality"));
     r.quality = *quality;
@@ -382,10 +351,7 @@ ResultsDocument read_results_document(const std::string& text, const std::string
     if (const auto it = in.find("maintenance_parts"); it != in.end()) {
       const json& p = *it;
       calc::MaintenanceFactors m;
-      p.at("LLMF").get_to(m.LLMF);
-      p.at("LSF").get_to(m.LSF);
-      p.at("LMF").get_to(m.LMF);
-      p.at("RSMF").get_to(m.RSMF);
+      read_fields(p, "LLMF", m.LLMF, "LSF", m.LSF, "LMF", m.LMF, "RSMF", m.RSMF);
       s.settings.maintenance_parts = m;
     }
     for (const json& room : in.at("rooms")) s.rooms.push_back(read_room(room));

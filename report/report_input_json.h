@@ -13,7 +13,7 @@
 #include "calc/results.h"
 #include "calc/scene.h"
 #include "report/luminaire_types.h"
-#include "report/requirements.h"
+#include "report/requirement_checks.h"
 
 namespace luxgrid::report {
 

@@ -166,7 +166,10 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
     if (job.what == Job::What::plots && options.report)
       report.png[results.surfaces[job.surface].grid.name] = std::move(job.png);
   }
-  if (options.scene) report.energy = room_energy(*options.scene, types, results, options.checks);
+  if (options.scene) {
+    report.energy = room_energy(*options.scene, types, results, options.checks);
+    report.rooms = room_figures(*options.scene);
+  }
   report.types = types;
   // report.html and results.json side by side: neither reads the other.
   const auto write_html = [&] {

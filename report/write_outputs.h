@@ -11,7 +11,7 @@
 #include "report/diff.h"
 #include "report/luminaire_types.h"
 #include "report/output_folder.h"
-#include "report/requirements.h"
+#include "report/requirement_checks.h"
 
 namespace luxgrid::report {
 

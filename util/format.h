@@ -1,5 +1,6 @@
 #pragma once
-// Numbers as text for messages, plan lines and the report: one place for the two forms used.
+// Numbers as text for messages, plan lines and the report: every number luxgrid writes as text
+// (but the CSV's and results.json's values, report/number_text_memo.h) goes through here.
 #include <charconv>
 #include <cstdio>
 #include <string>
@@ -20,5 +21,8 @@ inline std::string format_number(double value) {
   const auto r = std::to_chars(buf, buf + sizeof buf, value);
   return std::string(buf, r.ptr);
 }
+
+// A number for a message: %g, so 0 and 1 print as "0" and "1" and 1e9 as "1e+09".
+inline std::string number_text(double value) { return format_double("%g", value); }
 
 }  // namespace luxgrid

@@ -1,12 +1,12 @@
 #include "calc/glare/ugr.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "calc/glare/guth_position_index.h"
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 #include "photometry/opening.h"
 #include "util/error.h"
+#include "util/format.h"
 
 namespace luxgrid::calc::glare {
 
@@ -66,10 +66,11 @@ std::vector<ObserverResult> evaluate_observers(const Scene& scene, const Plan& p
     }
     if (sum > 0.0) {
       if (!(v.Lb_cd_m2 > 0.0)) {
-        char buf[200];
-        std::snprintf(buf, sizeof buf, "observer %zu, view (%.4g, %.4g, %.4g)", k, v.direction.x,
-                      v.direction.y, v.direction.z);
-        throw CalculationError("surface '" + grid.name + "': " + buf +
+        const std::string view = "observer " + std::to_string(k) + ", view (" +
+                                 format_double("%.4g", v.direction.x) + ", " +
+                                 format_double("%.4g", v.direction.y) + ", " +
+                                 format_double("%.4g", v.direction.z) + ")";
+        throw CalculationError("surface '" + grid.name + "': " + view +
                                ": the indirect illuminance at the eye is 0 lx, so the background "
                                "luminance is 0 and UGR is unbounded; UGR needs reflected light "
                                "(room reflectances above 0)");

@@ -200,12 +200,11 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
         return false;
       const Vec3 far_corner = glm::max(glm::abs(x - c.clo), glm::abs(x - c.chi));
       const Vec3 dx = x - c.flux_centroid;
-      const double hn = -glm::dot(n, dx);
       if (!(box_max_height(n, x, c.lo, c.hi) - box_min_height(n, x, c.lo, c.hi) <
-                set.cluster_opening * hn &&
+                set.cluster_opening * -glm::dot(n, dx) &&
             box_distance2(x, c.clo, c.chi) >= inner2 && glm::dot(far_corner, far_corner) < outer2))
         return false;
-      far += c.flux_lm * point_kernel_pi_per_m2(glm::dot(m, dx), hn, glm::dot(dx, dx));
+      far += c.flux_lm * point_kernel_at(dx.x, dx.y, dx.z, m, n);
       return true;
     };
     // Blocks of chunks (clustered rooms): a far block seen under less than the opening ratio is
@@ -249,9 +248,9 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
           const double d2 = glm::dot(dx, dx);
           if (d2 < inner2 || !(d2 < outer2)) continue;
           if (d2 > set.near_d2[k] && !visibility) {
-            // point_kernel_form_factor x exitance: flux x the kernel / pi (the pi once, below)
-            const double hn = -glm::dot(n, dx);
-            if (hn > 0.0) far += flux[k] * point_kernel_pi_per_m2(hm, hn, d2);
+            // The far kernel of one entry, as far_terms evaluates it (point_kernel_at): flux x
+            // the kernel, the pi once, below; the receiver must see the centroid.
+            if (-glm::dot(n, dx) > 0.0) far += flux[k] * point_kernel_at(dx.x, dx.y, dx.z, m, n);
             continue;
           }
           const Patch& p = mesh.patches[set.patch[k]];

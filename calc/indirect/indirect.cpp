@@ -22,7 +22,7 @@
 #include "calc/indirect/radiosity.h"
 #include "calc/indirect/subcells.h"
 #include "calc/scaled_distribution.h"
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 #include "geometry/box3.h"
 #include "util/error.h"
 #include "util/format.h"
@@ -326,7 +326,7 @@ std::unique_ptr<const IndirectSolution> solve_indirect(const Scene& scene,
   res.patches = mesh.patches.size();
   res.patch_size_m = mesh.patch_size_m;
 
-  // Visibility: the plan's (the scene's AABB tree, calc/visibility), or nothing blocks.
+  // Visibility: the plan's (the scene's AABB tree, calc/scene_visibility), or nothing blocks.
   size_t obstacle_count = 0;
   for (const auto& room : scene.rooms) obstacle_count += room.obstacles.size();
   sol_out.obstacle_count = obstacle_count;

@@ -27,7 +27,7 @@
 #include "calc/indirect/limits.h"
 #include "calc/indirect/patches.h"
 #include "calc/scene.h"
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 #include "geometry/surface_grid.h"
 #include "geometry/visibility.h"
 
@@ -46,7 +46,7 @@ struct IndirectOptions {
   // Patches a receiver comes close to gathered cell by cell (subcells.h); draft does not.
   bool refine_near_patches = true;
   // What blocks light between two points of the scene: the plan's visibility test (its AABB tree
-  // of room and obstacle faces, calc/visibility.h). Null: nothing blocks (make_visibility's
+  // of room and obstacle faces, calc/scene_visibility.h). Null: nothing blocks (make_visibility's
   // verdict for a convex room without obstacles).
   std::shared_ptr<const geometry::Visibility> visibility;
   // Luminous flux per distribution already integrated (decide_indirect's), so the first bounce

@@ -1,6 +1,6 @@
 #include "calc/indirect/patches.h"
 
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 #include "util/error.h"
 #include "util/robust_math.h"
 

@@ -10,6 +10,7 @@
 #include "calc/nearfield/illuminance.h"
 #include "calc/nearfield/map_symmetry.h"
 #include "calc/nearfield/models.h"
+#include "calc/nearfield/table_rung_scratch.h"
 #include "util/ordered_tasks.h"
 
 namespace luxgrid::nearfield {
@@ -129,14 +130,15 @@ struct Probe {
     std::array<Vec3, kLadderRungs> light_vector;
     std::array<signed char, kLadderRungs> has_vector;  // -1 not tried, 0 no table, 1 computed
     has_vector.fill(-1);
+    TableRungScratch scratch;  // the table rung's buffers, for this direction's rungs
     auto near_value = [&](int k, const Rung& r, int i) {
       if (uses_table && sees_whole_opening(r.point, r.normals[i])) {
         if (has_vector[k] < 0)
-          has_vector[k] = table_light_vector(e, r.point, light_vector[k]) ? 1 : 0;
+          has_vector[k] = table_light_vector(e, r.point, light_vector[k], scratch) ? 1 : 0;
         if (has_vector[k] == 1)
           return sanitize_illuminance(glm::dot(r.normals[i], light_vector[k]));
       }
-      return illuminance(e, r.point, r.normals[i], model);
+      return illuminance(e, r.point, r.normals[i], model, nullptr, &scratch);
     };
     auto verdict = [&](int k, bool fixed) {
       signed char& seen = (fixed ? fixed_seen : far_seen)[k];

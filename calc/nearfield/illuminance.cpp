@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "calc/nearfield/fan_sample.h"
 #include "calc/nearfield/far_field_bound.h"
 #include "calc/nearfield/fixed_rule.h"
 #include "calc/nearfield/models.h"
+#include "calc/nearfield/table_rung_scratch.h"
+#include "util/format.h"
 
 namespace luxgrid::nearfield {
 namespace {
@@ -23,18 +24,13 @@ constexpr std::int64_t kReferenceMaxEvaluations = 4'000'000;
 }  // namespace
 
 std::string to_string(const Model& m) {
-  char buf[64];
   switch (m.kind) {
     case ModelKind::far_field: return "far field";
     case ModelKind::paper_cubature: return "paper cubature";
-    case ModelKind::subdivided: std::snprintf(buf, sizeof buf, "paper k=%d", m.level); return buf;
-    case ModelKind::lambert_subdivided:
-      std::snprintf(buf, sizeof buf, "lambert k=%d", m.level);
-      return buf;
+    case ModelKind::subdivided: return "paper k=" + std::to_string(m.level);
+    case ModelKind::lambert_subdivided: return "lambert k=" + std::to_string(m.level);
     case ModelKind::adaptive:
-      std::snprintf(buf, sizeof buf, "adaptive %.0e",
-                    m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol);
-      return buf;
+      return format_double("adaptive %.0e", m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol);
     case ModelKind::standard: return "standard";
     case ModelKind::high: return "high";
     case ModelKind::reference: return "reference";
@@ -78,7 +74,11 @@ bool near_model_uses_table(const Model& m) {
 }  // namespace
 
 double illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, const Model& m,
-                   const geometry::Visibility* occ) {
+                   const geometry::Visibility* occ, TableRungScratch* scratch) {
+  if (!scratch && near_model_uses_table(m)) {
+    TableRungScratch own;
+    return illuminance(e, point, normal, m, occ, &own);
+  }
   // A point opening has no nodes: every model falls back to the far field, so the centroid test.
   if (occ && e.is_point())
     return centroid_visible(e, point, occ) ? far_field_illuminance(e, point, normal) : 0.0;
@@ -95,12 +95,12 @@ double illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, cons
     case ModelKind::adaptive:
       return adaptive_illuminance(
           e, point, normal, m.tolerance > 0 ? m.tolerance : kDefaultAdaptiveRelTol, nullptr, occ);
-    case ModelKind::standard: return standard_illuminance(e, point, normal, occ);
+    case ModelKind::standard: return standard_illuminance(e, point, normal, occ, scratch);
     case ModelKind::high: {
       // A table: the table rung, whose cells are the table's own; the adaptive rung at 1e-3
       // steps over the kinks (worst point 1.6 % off on the study, docs/accuracy.md).
       double lux = 0.0;
-      if (!occ && table_aligned_illuminance(e, point, normal, lux)) return lux;
+      if (!occ && table_aligned_illuminance(e, point, normal, lux, *scratch)) return lux;
       return adaptive_illuminance(e, point, normal, kHighAdaptiveRelTol, nullptr, occ);
     }
     case ModelKind::reference:
@@ -113,9 +113,13 @@ double illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, cons
 }
 
 double illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver, const Model& m,
-                   const geometry::Visibility* occ) {
+                   const geometry::Visibility* occ, TableRungScratch* scratch) {
   if (receiver.kind == ReceiverKind::planar)
-    return illuminance(e, point, receiver.direction, m, occ);
+    return illuminance(e, point, receiver.direction, m, occ, scratch);
+  if (!scratch && near_model_uses_table(m)) {
+    TableRungScratch own;
+    return illuminance(e, point, receiver, m, occ, &own);
+  }
   if (e.is_point() || m.kind == ModelKind::far_field)
     return centroid_visible(e, point, occ) ? far_field_illuminance(e, point, receiver) : 0.0;
   const auto area_form = [&](double rel_tol) {
@@ -127,7 +131,7 @@ double illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver
     case ModelKind::high: {
       // A measured table: the table rung, cells on the table's kinks, as for planar.
       double lux = 0.0;
-      if (!occ && table_aligned_illuminance(e, point, receiver, lux)) return lux;
+      if (!occ && table_aligned_illuminance(e, point, receiver, lux, *scratch)) return lux;
       return area_form(m.kind == ModelKind::standard ? kStandardAreaFormRelTol
                                                      : kHighAdaptiveRelTol);
     }
@@ -174,13 +178,15 @@ bool fixed_rule_may_serve(const Emitter& e, const Receiver& receiver, const Mode
 
 double hybrid_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
                           const Model& near_model, NearFieldSwitch mode,
-                          const geometry::Visibility* occ) {
-  return hybrid_illuminance(e, point, Receiver::planar(normal), near_model, mode, occ);
+                          const geometry::Visibility* occ, TableRungScratch* scratch) {
+  return hybrid_illuminance(e, point, Receiver::planar(normal), near_model, mode, occ, nullptr,
+                            scratch);
 }
 
 double hybrid_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
                           const Model& near_model, NearFieldSwitch mode,
-                          const geometry::Visibility* occ, SwitchWeights* used) {
+                          const geometry::Visibility* occ, SwitchWeights* used,
+                          TableRungScratch* scratch) {
   const Model far = Model::far_field();
   SwitchWeights w;
   if (mode == NearFieldSwitch::never) w.far = 1.0;
@@ -196,7 +202,7 @@ double hybrid_illuminance(const Emitter& e, const Vec3& point, const Receiver& r
   if (w.fixed >= 1.0) {
     near = fixed_rule_illuminance(e, point, receiver, occ);
   } else {
-    near = illuminance(e, point, receiver, near_model, occ);
+    near = illuminance(e, point, receiver, near_model, occ, scratch);
     if (w.fixed > 0.0)
       near = (1.0 - w.fixed) * near + w.fixed * fixed_rule_illuminance(e, point, receiver, occ);
   }

@@ -12,6 +12,8 @@
 
 namespace luxgrid::nearfield {
 
+struct TableRungScratch;  // table_rung_scratch.h
+
 enum class ModelKind {
   far_field,           // point at the centroid (quality draft)
   paper_cubature,      // Luksch et al. 2020 as published ("near_field_model": "paper")
@@ -50,8 +52,11 @@ std::string to_string(const Model& model);
 // `occluder` (optional): the paper cubature, subdivided, adaptive, standard and reference models
 // test visibility per node / sample (soft shadows); the far field tests
 // the one segment from the opening's centroid (hard shadows). nullptr costs nothing.
+// `scratch`: the table rung's buffers (table_rung_scratch.h), the caller's, one per thread, so
+// that a loop over many pairs allocates them once; null: the call's own.
 double illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal,
-                   const Model& model, const geometry::Visibility* occluder = nullptr);
+                   const Model& model, const geometry::Visibility* occluder = nullptr,
+                   TableRungScratch* scratch = nullptr);
 
 // The same for any receiver (receiver_kernel.h): a plane is the function above; cylindrical and
 // semi-cylindrical illuminance integrate the receiver's weight over the opening with the same
@@ -62,7 +67,8 @@ double illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal
 // (two-kernel, Duffy-sinh, paper, subdivided) rest on closed forms of the planar kernel and have
 // no cylindrical form; the paper and subdivided models get the area form at 1e-3.
 double illuminance(const Emitter& emitter, const Vec3& point, const Receiver& receiver,
-                   const Model& model, const geometry::Visibility* occluder = nullptr);
+                   const Model& model, const geometry::Visibility* occluder = nullptr,
+                   TableRungScratch* scratch = nullptr);
 
 // The weights of the automatic switch at `point`. `far`: the far-field model's, blended so the
 // near/far switch draws no seam on an isolux plot (smoothstep: continuous value and slope). With
@@ -107,11 +113,12 @@ enum class NearFieldSwitch { automatic, always, never };
 // With automatic, the far field alone is evaluated beyond the band, the near model alone inside
 // it, both within it (weights from switch_weights); with an error bound the near part is the
 // fixed rule where the bound allows it, blended into the near model over its own band.
-// `occluder` as in illuminance(): the far-field part uses the centroid segment.
+// `occluder` as in illuminance(): the far-field part uses the centroid segment; `scratch` too.
 double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal,
                           const Model& near_model,
                           NearFieldSwitch mode = NearFieldSwitch::automatic,
-                          const geometry::Visibility* occluder = nullptr);
+                          const geometry::Visibility* occluder = nullptr,
+                          TableRungScratch* scratch = nullptr);
 // The same for any receiver: cylindrical and semi-cylindrical illuminance take the same
 // near/far decision as planar. `used`, when given, receives the weights the pair was computed
 // with (far 1 for never, 0 for always; fixed 0 off planar receivers), so a caller counting pairs
@@ -120,6 +127,6 @@ double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Recei
                           const Model& near_model,
                           NearFieldSwitch mode = NearFieldSwitch::automatic,
                           const geometry::Visibility* occluder = nullptr,
-                          SwitchWeights* used = nullptr);
+                          SwitchWeights* used = nullptr, TableRungScratch* scratch = nullptr);
 
 }  // namespace luxgrid::nearfield

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "calc/nearfield/table_rung_scratch.h"
 #include "calc/nearfield/triangle_rule.h"
 
 namespace luxgrid::nearfield {
@@ -401,13 +402,18 @@ inline constexpr double kStandardAreaFormStart = 0.75;  // x largest dimension
 // kStandardAreaFormRelTol (models.h): the far tier's area-form tolerance.
 
 double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                            const geometry::Visibility* occluder) {
+                            const geometry::Visibility* occluder, TableRungScratch* scratch) {
   // A measured table (every photometric file of type C): the table rung, whose cells are the
   // table's own, so its kinks never sit inside a cell (table_cubature.cpp). On the paper's
   // protocol it is within 1.2e-4 of the cell maximum of the reference at every point and costs
   // less than the tiers below, whose error indicators misjudge those kinks.
+  if (!scratch) {
+    TableRungScratch own;
+    return standard_illuminance(e, point, normal, occluder, &own);
+  }
   double table_lux = 0.0;
-  if (!occluder && table_aligned_illuminance(e, point, normal, table_lux)) return table_lux;
+  if (!occluder && table_aligned_illuminance(e, point, normal, table_lux, *scratch))
+    return table_lux;
   if (!occluder && !e.is_point() &&
       glm::length(point - e.centroid) >= kStandardAreaFormStart * e.largest_dimension_m) {
     // First the Duffy-sinh cubature without splits: exact for a Lambertian emitter (the

@@ -13,6 +13,8 @@
 
 namespace luxgrid::nearfield {
 
+struct TableRungScratch;  // table_rung_scratch.h
+
 // The inverse-square law of a point source at `source` (m, world) with the distribution turned
 // into the world by `world_to_local` (R^T of the luminaire's rotation R): E = I(-w) g(w) / d^2,
 // w the unit direction from the receiver at `point` to the source and g the receiver's weight
@@ -109,8 +111,10 @@ double adaptive_illuminance(const Emitter& e, const Vec3& point, const Vec3& nor
 inline constexpr double kStandardAreaFormRelTol = 3e-3;
 
 // quality "standard": see docs/nearfield.md. Within 1 % of the reference on the paper's protocol.
+// `scratch`: the table rung's buffers (table_rung_scratch.h); null: the call's own.
 double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                            const geometry::Visibility* occluder = nullptr);
+                            const geometry::Visibility* occluder = nullptr,
+                            TableRungScratch* scratch = nullptr);
 
 // The table rung (docs/nearfield.md, "The table rung"), calc/nearfield/table_cubature.cpp: for
 // a distribution with a TableView (a type C table, possibly scaled), the area form in polar
@@ -118,12 +122,13 @@ double standard_illuminance(const Emitter& e, const Vec3& point, const Vec3& nor
 // lines are coordinate lines, with a 2 x 2 Gauss-Legendre rule on every table cell the emitter
 // covers. Converges like a smooth integrand where the adaptive rungs meet kinks. Returns false
 // (`lux` untouched) without a table view or for a point emitter.
-bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                               double& lux);
+// `scratch` (table_rung_scratch.h): the rung's buffers, the caller's, one per thread.
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double& lux,
+                               TableRungScratch& scratch);
 // The same for any receiver (receiver_kernel.h): the receiver's weight replaces cos_r at every
 // node; a cylinder has no horizon, so its polygon is the whole opening.
 bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
-                               double& lux);
+                               double& lux, TableRungScratch& scratch);
 // True when the table rung integrates a plane receiver with this normal (world) in closed form
 // along each ray: a bilinear table and a normal along the opening's axis (a workplane under a
 // ceiling luminaire, a floor, a ceiling). There it costs about what the fixed rule does.
@@ -133,7 +138,8 @@ bool table_rung_in_closed_form(const Emitter& e, const Vec3& normal);
 // whole opening in front of it (no horizon clip) the rung's value is n . vector up to rounding,
 // so one pass serves every such normal (the near/far map's five receivers). False as
 // table_aligned_illuminance.
-bool table_light_vector(const Emitter& e, const Vec3& point, Vec3& light_vector_lx);
+bool table_light_vector(const Emitter& e, const Vec3& point, Vec3& light_vector_lx,
+                        TableRungScratch& scratch);
 
 // Exact illuminance from a uniform (Lambertian) emitter of luminance `luminance_cd_m2`:
 // Lambert's polygon formula E = L/2 |n . sum_edges theta g| on the horizon-clipped polygon.

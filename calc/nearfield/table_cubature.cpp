@@ -37,6 +37,7 @@
 #include "calc/nearfield/table_polygon.h"
 #include "calc/nearfield/table_psi_cells.h"
 #include "calc/nearfield/table_rays.h"
+#include "calc/nearfield/table_rung_scratch.h"
 #include "photometry/tabular_distribution.h"
 
 namespace luxgrid::nearfield {
@@ -55,21 +56,6 @@ bool closed_form_applies(const photometry::TabularDistribution& table, const Vec
   return table.interpolation() == photometry::Interpolation::bilinear &&
          std::abs(n_local.x) <= kAxialNormalTolerance &&
          std::abs(n_local.y) <= kAxialNormalTolerance;
-}
-
-// The working memory of the rung's steps, grown to the largest count seen and kept between
-// calls by its owner (one per thread: table_rung_scratch).
-struct TableRungScratch {
-  PsiCells psi;
-  std::vector<Break> breaks;
-  std::vector<RayJob> jobs;
-  std::vector<RayEnds> ends;
-  std::vector<TableGammaNode> end_nodes;
-};
-
-TableRungScratch& table_rung_scratch() {
-  thread_local TableRungScratch scratch;
-  return scratch;
 }
 
 // The rung's last step: the integral along each ray, from its ends, for one receiver (or the
@@ -255,9 +241,9 @@ bool table_rung_in_closed_form(const Emitter& e, const Vec3& normal) {
   return closed_form_applies(*view.table, e.world_to_local * normal);
 }
 
-bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                               double& lux) {
-  return table_aligned_illuminance(e, point, Receiver::planar(normal), lux);
+bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal, double& lux,
+                               TableRungScratch& scratch) {
+  return table_aligned_illuminance(e, point, Receiver::planar(normal), lux, scratch);
 }
 
 namespace {
@@ -339,15 +325,15 @@ bool table_rung(const Emitter& e, const Vec3& point, const Receiver& receiver, d
 }  // namespace
 
 bool table_aligned_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
-                               double& lux) {
-  return table_rung(e, point, receiver, lux, nullptr, table_rung_scratch());
+                               double& lux, TableRungScratch& scratch) {
+  return table_rung(e, point, receiver, lux, nullptr, scratch);
 }
 
-bool table_light_vector(const Emitter& e, const Vec3& point, Vec3& light_vector_lx) {
+bool table_light_vector(const Emitter& e, const Vec3& point, Vec3& light_vector_lx,
+                        TableRungScratch& scratch) {
   double unused = 0.0;
   Vec3 local(0.0);
-  if (!table_rung(e, point, Receiver::planar(Vec3(0, 0, 1)), unused, &local, table_rung_scratch()))
-    return false;
+  if (!table_rung(e, point, Receiver::planar(Vec3(0, 0, 1)), unused, &local, scratch)) return false;
   light_vector_lx = e.rotation * local;
   return true;
 }

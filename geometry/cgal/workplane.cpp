@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/create_offset_polygons_2.h>
+
+#include "util/format.h"
 
 namespace luxgrid::geometry {
 
@@ -21,9 +22,7 @@ using CgalPolygon = CGAL::Polygon_2<K>;
 // tests compare) without moving any genuine corner.
 constexpr double kSnapRelativeNoise = 1e-12;
 double snap(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9f", x);
-  const double s = std::strtod(buf, nullptr);
+  const double s = std::strtod(format_double("%.9f", x).c_str(), nullptr);
   return std::abs(s - x) <= kSnapRelativeNoise * std::max(1.0, std::abs(x)) ? s : x;
 }
 }  // namespace

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "../nearfield/nearfield_test_support.h"
-#include "calc/far_field_bounds.h"
 #include "calc/nearfield/far_field_bound.h"
 #include "calc/nearfield/illuminance.h"
 #include "calc/pipeline.h"
+#include "calc/scene_far_field_bounds.h"
 #include "photometry/photometry.h"
 #include "project/project_file.h"
 

@@ -38,6 +38,12 @@ inline CommandResult luxgrid(const std::string& args) {
   return shell(std::string(LUXGRID_BINARY) + " " + args);
 }
 
+// The binary with SOURCE_DATE_EPOCH set (the reproducible-builds convention; the report's date
+// is then 2025-12-01 00:00 UTC), so that two runs can be compared byte for byte.
+inline CommandResult luxgrid_at_fixed_date(const std::string& args) {
+  return shell("SOURCE_DATE_EPOCH=1764547200 " + std::string(LUXGRID_BINARY) + " " + args);
+}
+
 // Folders handed out by scratch(), removed when the test program ends.
 inline std::vector<std::filesystem::path>& scratch_folders() {
   static std::vector<std::filesystem::path> folders;
@@ -84,6 +90,11 @@ inline std::string read_file(const std::filesystem::path& p) {
 }
 
 inline std::string quote(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+// Both files exist and hold the same bytes.
+inline bool same_bytes(const std::filesystem::path& a, const std::filesystem::path& b) {
+  return std::filesystem::exists(a) && std::filesystem::exists(b) && read_file(a) == read_file(b);
+}
 
 // The names in a folder (not recursing), sorted.
 inline std::set<std::string> entries(const std::filesystem::path& folder) {

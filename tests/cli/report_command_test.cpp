@@ -11,23 +11,13 @@
 
 #include "tests/cli/cli_support.h"
 
+// In cli_support.h's namespace, so its helpers need no using-declarations here.
+namespace luxgrid::test {
 namespace {
 
 namespace fs = std::filesystem;
-using luxgrid::test::entries;
-using luxgrid::test::quote;
-using luxgrid::test::read_file;
-using luxgrid::test::scratch;
 
-const std::string kEpoch = "SOURCE_DATE_EPOCH=1764547200 ";
-
-luxgrid::test::CommandResult run(const std::string& args) {
-  return luxgrid::test::shell(kEpoch + std::string(LUXGRID_BINARY) + " --threads 2 " + args);
-}
-
-bool same_bytes(const fs::path& a, const fs::path& b) {
-  return fs::exists(a) && fs::exists(b) && read_file(a) == read_file(b);
-}
+CommandResult run(const std::string& args) { return luxgrid_at_fixed_date("--threads 2 " + args); }
 
 // `calc` then `report` into another folder: every file the report writes is calc's to the byte.
 class ReportOfExample : public ::testing::TestWithParam<std::string> {};
@@ -106,7 +96,7 @@ TEST(ReportCommand, RefusesAForeignOrMalformedResultsFile) {
   cases.push_back({"short", short_array, "/surfaces/0: the per-point arrays differ in length"});
   for (const Case& c : cases) {
     const fs::path file = dir / (c.name + ".json");
-    luxgrid::test::write_file(file, c.doc.dump(1));
+    write_file(file, c.doc.dump(1));
     const auto r = run("report " + quote(file) + " -o " + quote(dir / (c.name + ".out")));
     EXPECT_EQ(r.code, 2) << c.name << ": " << r.output;
     EXPECT_NE(r.output.find(file.string() + " " + c.expected), std::string::npos)
@@ -114,10 +104,11 @@ TEST(ReportCommand, RefusesAForeignOrMalformedResultsFile) {
     EXPECT_FALSE(fs::exists(dir / (c.name + ".out"))) << c.name;
   }
   // Not JSON at all.
-  luxgrid::test::write_file(dir / "text.json", "{\"format\": ");
+  write_file(dir / "text.json", "{\"format\": ");
   const auto r = run("report " + quote(dir / "text.json") + " -o " + quote(dir / "text.out"));
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("text.json"), std::string::npos) << r.output;
 }
 
 }  // namespace
+}  // namespace luxgrid::test

@@ -22,7 +22,7 @@
 #include "calc/indirect/radiosity.h"
 #include "calc/indirect/subcells.h"
 #include "calc/scaled_distribution.h"
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 #include "photometry/builtin.h"
 #include "tests/indirect/box_room.h"
 

@@ -9,6 +9,7 @@
 #include "calc/nearfield/fixed_rule.h"
 #include "calc/nearfield/illuminance.h"
 #include "calc/nearfield/models.h"
+#include "calc/nearfield/table_rung_scratch.h"
 #include "nearfield_test_support.h"
 #include "photometry/photometry.h"
 
@@ -114,7 +115,8 @@ TEST(FixedRule, LeftToTheTableRungWhereThatIsInClosedForm) {
                                             NearFieldSwitch::automatic, nullptr, &used);
       EXPECT_EQ(used.fixed, 0.0);
       double rung = 0.0;
-      ASSERT_TRUE(table_aligned_illuminance(e, p, up, rung));
+      TableRungScratch scratch;
+      ASSERT_TRUE(table_aligned_illuminance(e, p, up, rung, scratch));
       EXPECT_EQ(lux, rung);
       const double truth = illuminance(e, p, up, Model::reference(1e-7));
       EXPECT_NEAR(lux, truth, 1e-4 * truth) << "at " << x << ", " << y;

@@ -222,7 +222,17 @@ TEST(EmergencyScene, OnlyEmergencyLuminairesAtTheirEmergencyOutputWithoutReflect
   ASSERT_EQ(e.surfaces.size(), 3u);
   for (const auto& g : e.surfaces) EXPECT_NE(g.kind, geometry::SurfaceGrid::Kind::observers);
   ASSERT_EQ(e.notes.size(), 2u);
-  EXPECT_NE(e.notes[0].find("3 of 4 luminaires"), std::string::npos) << e.notes[0];
+  EXPECT_EQ(e.notes[0].kind, SceneNote::Kind::emergency_scene);
+  EXPECT_EQ(e.notes[0].luminaires, 3u);
+  EXPECT_EQ(e.notes[0].of_luminaires, 4u);
+  // Each output as the project gave it: a fraction, a photometry entry, a flux.
+  ASSERT_EQ(e.notes[0].outputs.size(), 3u);
+  EXPECT_EQ(e.notes[0].outputs[0].luminaire, "a");
+  EXPECT_EQ(e.notes[0].outputs[0].factor, 0.05);
+  EXPECT_EQ(e.notes[0].outputs[1].photometry, "lam");
+  EXPECT_EQ(e.notes[0].outputs[2].flux_lm, 100.0);
+  EXPECT_EQ(e.notes[1].kind, SceneNote::Kind::observers_left_out);
+  EXPECT_EQ(e.notes[1].observers, 1u);
   // The normal scene is untouched.
   EXPECT_EQ(normal.luminaires.size(), 4u);
   EXPECT_DOUBLE_EQ(normal.luminaires[0].distribution->intensity(down), 100.0);

@@ -6,7 +6,7 @@
 #include "calc/statistics.h"
 #include "project/task_presets.h"
 #include "report/compliance_table.h"
-#include "report/requirements.h"
+#include "report/requirement_checks.h"
 #include "util/error.h"
 
 namespace luxgrid::report {

@@ -104,11 +104,38 @@ TEST(PlanText, WordsTheSolversNotes) {
             "lm enter room 'box', 'annex'");
   // The plan lists the solver's notes after the scene's, its warnings before the estimates'.
   calc::Plan p;
-  p.scene_notes = {"scene note"};
+  calc::SceneNote left_out;
+  left_out.kind = calc::SceneNote::Kind::observers_left_out;
+  left_out.observers = 1;
+  p.scene_notes = {left_out};
   p.indirect_notes = {rooms};
   p.indirect_warnings = {budget};
-  EXPECT_EQ(plan_notes(p), (std::vector<std::string>{"scene note", indirect_note_text(rooms)}));
+  EXPECT_EQ(plan_notes(p),
+            (std::vector<std::string>{scene_note_text(left_out), indirect_note_text(rooms)}));
   EXPECT_EQ(plan_warnings(p), std::vector<std::string>{indirect_note_text(budget)});
+}
+
+TEST(PlanText, SceneNotesInWords) {
+  // The emergency scene's choices, each output as the project gave it; past the third listed
+  // output an ellipsis.
+  calc::SceneNote scene;
+  scene.luminaires = 4, scene.of_luminaires = 5;
+  scene.outputs = {{"a", 0.05, 0.0, ""}, {"c", 1.0, 0.0, "lam"}, {"d", 0.31, 100.0, ""}};
+  EXPECT_EQ(scene_note_text(scene),
+            "emergency scene (EN 1838): direct light only, from the 4 of 5 luminaires with an "
+            "emergency entry, at their emergency output (a: 0.05 of its output; c: photometry "
+            "\"lam\"; d: 100 lm; ...)");
+  scene.luminaires = 3;
+  EXPECT_EQ(scene_note_text(scene),
+            "emergency scene (EN 1838): direct light only, from the 3 of 5 luminaires with an "
+            "emergency entry, at their emergency output (a: 0.05 of its output; c: photometry "
+            "\"lam\"; d: 100 lm)");
+  calc::SceneNote left_out;
+  left_out.kind = calc::SceneNote::Kind::observers_left_out;
+  left_out.observers = 2;
+  EXPECT_EQ(scene_note_text(left_out),
+            "emergency scene: 2 observers surface(s) left out (UGR is not an emergency lighting "
+            "quantity)");
 }
 
 TEST(PlanText, ResultsJsonKeepsTheValuesTheWordsComeFrom) {
@@ -127,6 +154,10 @@ TEST(PlanText, ResultsJsonKeepsTheValuesTheWordsComeFrom) {
   raised.kind = calc::indirect::IndirectNote::Kind::room_raised_meshed;
   raised.room = "hall", raised.from_m = 0.5, raised.to_m = 0.71, raised.budget = 4000;
   p.indirect_notes.push_back(raised);
+  calc::SceneNote scene;
+  scene.luminaires = 2, scene.of_luminaires = 3;
+  scene.outputs = {{"a", 0.05, 0.0, ""}, {"b", 0.25, 250.0, ""}};
+  p.scene_notes.push_back(scene);
   const nlohmann::json j = plan_to_json(p);
   EXPECT_EQ(j.at("summary"), plan_summary(p));
   // Through text, as results.json holds it.

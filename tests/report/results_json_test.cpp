@@ -14,7 +14,10 @@ calc::Results sample() {
   calc::Results r;
   r.project = "demo";
   r.plan.near_switch = nearfield::NearFieldSwitch::never;
-  r.plan.scene_notes = {"n1"};
+  calc::SceneNote left_out;
+  left_out.kind = calc::SceneNote::Kind::observers_left_out;
+  left_out.observers = 2;
+  r.plan.scene_notes = {left_out};
   calc::SurfaceResult s;
   s.grid = geometry::make_plane_grid("wp", {0, 0, 0.8}, {1, 0, 0}, {0, 1, 0}, 2.0, 1.0, 0.5);
   s.E_direct.assign(s.grid.points.size(), 80.0);
@@ -56,7 +59,8 @@ TEST(ResultsJson, HasTheDocumentedShape) {
     EXPECT_TRUE(j["plan"].contains(k)) << k;
   EXPECT_EQ(j["plan"].size(), 21u);
   EXPECT_EQ(j["plan"]["near_switch"], "never");
-  EXPECT_EQ(j["plan"]["scene_notes"], nlohmann::json::array({"n1"}));
+  EXPECT_EQ(j["plan"]["scene_notes"][0]["kind"], "observers_left_out");
+  EXPECT_EQ(j["plan"]["scene_notes"][0]["observers"], 2);
   const auto& s = j["surfaces"][0];
   EXPECT_EQ(s["name"], "wp");
   EXPECT_EQ(s["kind"], "grid");

@@ -1,7 +1,7 @@
 // UGR_L: an upper limit on an observers surface's largest UGR, refused on other surfaces.
 #include <gtest/gtest.h>
 
-#include "report/requirements.h"
+#include "report/requirement_checks.h"
 #include "util/error.h"
 
 namespace luxgrid::report {

@@ -1,4 +1,4 @@
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 
 namespace luxgrid::calc {
 

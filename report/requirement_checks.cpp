@@ -1,4 +1,4 @@
-#include "report/requirements.h"
+#include "report/requirement_checks.h"
 
 #include <algorithm>
 #include <cmath>

@@ -47,7 +47,7 @@ struct RequirementCheck {
   std::string source;  // the preset row that set the limit, the standard's clause, or empty for an
                        // explicit one
   // The limit is the standard's own, not a project's choice (EN 1838's checks of the emergency
-  // scene, report/requirements_en1838.h): `source` cites the clause.
+  // scene, report/requirement_checks_en1838.h): `source` cites the clause.
   bool fixed_by_standard = false;
   std::string note;  // where the achieved value comes from, or why it was not calculated
 };

@@ -1,11 +1,11 @@
-#include "photometry/validation.h"
+#include "photometry/file_warnings.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "photometry/derived_photometry.h"
 #include "photometry/source_text.h"
+#include "util/format.h"
 
 namespace luxgrid::photometry {
 
@@ -31,17 +31,9 @@ constexpr double kCutOffFraction = 0.01;
 // Angles equal to a file's printed precision (4 decimals).
 constexpr double kSameAngleDeg = 1e-6;
 
-std::string cd_text(double cd) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, cd >= 100 ? "%.0f" : "%.3g", cd);
-  return buf;
-}
+std::string cd_text(double cd) { return format_double(cd >= 100 ? "%.0f" : "%.3g", cd); }
 
-std::string percent_text(double fraction) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f %%", 100.0 * fraction);
-  return buf;
-}
+std::string percent_text(double fraction) { return format_double("%.1f %%", 100.0 * fraction); }
 
 void check_pole(const StoredPlanes& pl, std::size_t j, const std::string& name,
                 std::vector<std::string>& warnings) {
@@ -73,12 +65,10 @@ void check_cut_off(const StoredPlanes& pl, std::size_t j, const char* which,
 void check_ratio(const char* what, double stated, double integrated, const std::string& name,
                  std::vector<std::string>& warnings) {
   if (!(std::abs(stated - integrated) > kStatedRatioPoints)) return;
-  char buf[200];
-  std::snprintf(buf, sizeof buf,
-                ": the stated %s (%.1f %%) differs from the integrated %.1f %% by %.1f "
-                "percentage points",
-                what, 100.0 * stated, 100.0 * integrated, 100.0 * std::abs(stated - integrated));
-  warnings.push_back(name + buf);
+  warnings.push_back(name + ": the stated " + what + " (" + percent_text(stated) +
+                     ") differs from the integrated " + percent_text(integrated) + " by " +
+                     format_double("%.1f", 100.0 * std::abs(stated - integrated)) +
+                     " percentage points");
 }
 
 }  // namespace

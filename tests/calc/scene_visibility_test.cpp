@@ -5,7 +5,7 @@
 
 #include "calc/direct.h"
 #include "calc/pipeline.h"
-#include "calc/visibility.h"
+#include "calc/scene_visibility.h"
 #include "project/project_file.h"
 
 #include <filesystem>

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "calc/results.h"
-#include "report/requirements.h"
+#include "report/requirement_checks.h"
 
 namespace luxgrid::report {
 

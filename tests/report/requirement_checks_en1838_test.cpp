@@ -5,7 +5,7 @@
 
 #include "calc/statistics.h"
 #include "report/compliance_table.h"
-#include "report/requirements_en1838.h"
+#include "report/requirement_checks_en1838.h"
 #include "util/error.h"
 
 namespace luxgrid::report {

@@ -1,7 +1,7 @@
 // Requirement checks against hand-computed statistics, including values exactly at the limit.
 #include <gtest/gtest.h>
 
-#include "report/requirements.h"
+#include "report/requirement_checks.h"
 #include "util/error.h"
 
 namespace luxgrid::report {

@@ -1,4 +1,4 @@
-// The checking-tool warnings of photometry/validation.h, each with its exact text on a small
+// The checking-tool warnings of photometry/file_warnings.h, each with its exact text on a small
 // synthetic file, on both sides of its threshold; the flux conventions a file states; and the
 // intensity limit keeping a read distribution's flux finite.
 #include <gtest/gtest.h>
@@ -146,7 +146,7 @@ TEST(IntensityLimit, AFileAtTheLimitReadsWithAFiniteFlux) {
 }
 
 // The corpus stays quiet: of its 66 files, only these give a checking-tool warning, each for a
-// reason its MANIFEST row or the comments of validation.cpp give.
+// reason its MANIFEST row or the comments of file_warnings.cpp give.
 TEST(CorpusWarnings, OnlyTheFilesThatDeserveOne) {
   const std::filesystem::path dir =
       std::filesystem::path(LUXGRID_SOURCE_DIR) / "tests/data/photometry";

@@ -1,7 +1,7 @@
 #pragma once
 // Warnings on files that read but look wrong, as a manufacturer's checking tool gives them
 // (legal but suspicious input: Photometry::warnings, each naming the file). Thresholds are
-// named in validation.cpp with the reason for each; they were tuned on the 66 real and
+// named in file_warnings.cpp with the reason for each; they were tuned on the 66 real and
 // synthetic files of tests/data/photometry so that well-made files stay quiet.
 //
 //  (a) the C planes disagree at a pole (gamma 0, or 180 when stored): the pole is one direction,

@@ -1,4 +1,4 @@
-#include "report/requirements_en1838.h"
+#include "report/requirement_checks_en1838.h"
 
 #include "util/error.h"
 

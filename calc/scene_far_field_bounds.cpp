@@ -1,4 +1,4 @@
-#include "calc/far_field_bounds.h"
+#include "calc/scene_far_field_bounds.h"
 
 #include <algorithm>
 #include <memory>

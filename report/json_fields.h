@@ -1,0 +1,20 @@
+#pragma once
+// The readers of results.json (report/plan_json.cpp, report/report_input_json.cpp) read an
+// object's members into variables, each member required (json::at throws, and the caller names
+// the JSON pointer): one helper for that shape, the members in the order given.
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+namespace luxgrid::report {
+
+inline void read_fields(const nlohmann::json&) {}
+
+// read_fields(j, "name", room.name, "height", room.height, ...).
+template <class T, class... Rest>
+void read_fields(const nlohmann::json& j, const char* key, T& value, Rest&&... rest) {
+  j.at(key).get_to(value);
+  read_fields(j, std::forward<Rest>(rest)...);
+}
+
+}  // namespace luxgrid::report
