@@ -30,6 +30,7 @@
 #include "photometry/readers.h"
 #include "photometry/source_text.h"
 #include "photometry/symmetry.h"
+#include "photometry/table_warnings.h"
 #include "photometry/tabular_distribution.h"
 #include "util/error.h"
 
@@ -188,12 +189,15 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
   const double lum_height = L.optional_number(15, "the luminaire height");
   const double area_length = L.optional_number(16, "the luminous area length");
   check_opening_size(src, 16, "the luminous area length", area_length / 1000.0);
+  check_eulumdat_size_sign(area_length, "the luminous area length", src.where(16), p.warnings);
   const double area_width = L.optional_number(17, "the luminous area width");
   check_opening_size(src, 17, "the luminous area width", area_width / 1000.0);
+  check_eulumdat_size_sign(area_width, "the luminous area width", src.where(17), p.warnings);
   double area_height = 0.0;
   for (int n = 18; n <= 21; ++n) {
     const double h = L.optional_number(n, "a luminous area height");
     check_opening_size(src, n, "a luminous area height", h / 1000.0);
+    check_eulumdat_size_sign(h, "a luminous area height", src.where(n), p.warnings);
     area_height = std::max(area_height, h);
   }
   const double dff = L.number(22, "the downward flux fraction DFF");
@@ -328,6 +332,8 @@ Photometry read_eulumdat(std::string_view bytes, const std::string& name) {
   p.symmetry = sym;
   p.photometric_type = PhotometricType::C;
   check_stored_planes(planes, name, p.warnings);
+  check_cut_offs(planes, name, p.warnings);
+  check_all_zero(planes, name, p.warnings);
   std::vector<std::string> notes;
   auto table = std::make_shared<TabularDistribution>(expand_type_c(planes, sym, &notes));
   for (auto& n : notes) p.warnings.push_back(name + ": " + n);

@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "util/error.h"
+#include "util/file_kind.h"
 
 namespace luxgrid::photometry {
 
@@ -24,10 +25,10 @@ void check_size(std::size_t size, const std::string& name, std::size_t max_bytes
 
 std::string read_bounded_file(const std::filesystem::path& file, const std::string& name,
                               std::size_t max_bytes, const char* kind) {
+  // By stat, before any open (util/file_kind.h): a FIFO would block the open.
+  if (const std::string what = not_a_regular_file(file); !what.empty())
+    throw InputError(SourceLocation{name}, what);
   std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) throw InputError(SourceLocation{name}, "file not found");
-  if (!std::filesystem::is_regular_file(file, ec))
-    throw InputError(SourceLocation{name}, "not a regular file");
   const auto size = std::filesystem::file_size(file, ec);
   if (ec) throw InputError(SourceLocation{name}, "cannot read the file size: " + ec.message());
   check_size(static_cast<std::size_t>(size), name, max_bytes, kind);

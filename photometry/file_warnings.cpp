@@ -24,10 +24,6 @@ constexpr double kPoleSpreadFraction = 0.02;
 // show that much more or less light than the data sheet. Points, not a relative 2 %: a DFF of
 // 1.7 % that integrates to 2.2 % (zumtobel_floor_uplight_dg0.ldt) is not wrong.
 constexpr double kStatedRatioPoints = 0.02;
-// (c) Intensities at 90 deg below 1 % of the maximum are the stray light a goniometer always
-// sees at the horizon (real corpus files: at most 0.4 %, acme_road_dc0_dg0_isym3.ldt); above
-// it, a measured cut-off would have reached zero before 90 deg.
-constexpr double kCutOffFraction = 0.01;
 // Angles equal to a file's printed precision (4 decimals).
 constexpr double kSameAngleDeg = 1e-6;
 
@@ -50,18 +46,6 @@ void check_pole(const StoredPlanes& pl, std::size_t j, const std::string& name,
                      "); the pole is taken as their mean");
 }
 
-void check_cut_off(const StoredPlanes& pl, std::size_t j, const char* which,
-                   const std::string& name, std::vector<std::string>& warnings) {
-  const std::size_t ng = pl.v_deg.size();
-  const double peak = *std::max_element(pl.cd.begin(), pl.cd.end());
-  double at = 0.0;
-  for (std::size_t i = 0; i < pl.h_deg.size(); ++i) at = std::max(at, pl.cd[i * ng + j]);
-  if (!(at > kCutOffFraction * peak)) return;
-  warnings.push_back(name + ": the table " + which + " at gamma 90 with intensities up to " +
-                     cd_text(at) + " cd there (" + percent_text(at / peak) +
-                     " of the maximum); the light is cut off abruptly at the horizon");
-}
-
 void check_ratio(const char* what, double stated, double integrated, const std::string& name,
                  std::vector<std::string>& warnings) {
   if (!(std::abs(stated - integrated) > kStatedRatioPoints)) return;
@@ -81,10 +65,6 @@ void check_stored_planes(const StoredPlanes& pl, const std::string& name,
     if (std::abs(pl.v_deg.front()) < kSameAngleDeg) check_pole(pl, 0, name, warnings);
     if (std::abs(pl.v_deg.back() - 180.0) < kSameAngleDeg) check_pole(pl, ng - 1, name, warnings);
   }
-  if (std::abs(pl.v_deg.back() - 90.0) < kSameAngleDeg)
-    check_cut_off(pl, ng - 1, "ends", name, warnings);
-  else if (std::abs(pl.v_deg.front() - 90.0) < kSameAngleDeg)
-    check_cut_off(pl, 0, "starts", name, warnings);
 }
 
 void check_stated_ratios(Photometry& p) {

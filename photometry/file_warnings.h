@@ -6,9 +6,8 @@
 //
 //  (a) the C planes disagree at a pole (gamma 0, or 180 when stored): the pole is one direction,
 //      so luxgrid takes their mean (tabular_distribution.h) and says by how much they differ;
-//  (b) EULUMDAT's stated LOR or DFF differs from the integral of the table;
-//  (c) the table stops at gamma 90 with intensities there that are not zero: the light is cut
-//      off abruptly at the horizon (nothing is known above it, luxgrid sends nothing there).
+//  (b) EULUMDAT's stated LOR or DFF differs from the integral of the table.
+// Tables that stop short of a pole, or hold nothing but zeros: table_warnings.h.
 #include <string>
 #include <vector>
 
@@ -17,7 +16,7 @@
 
 namespace luxgrid::photometry {
 
-// (a) and (c), on the planes of a type C file as stored (before symmetry expansion and pole
+// (a), on the planes of a type C file as stored (before symmetry expansion and pole
 // averaging); the readers call it. `name` starts each warning.
 void check_stored_planes(const StoredPlanes& planes, const std::string& name,
                          std::vector<std::string>& warnings);

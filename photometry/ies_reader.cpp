@@ -27,6 +27,7 @@
 #include "photometry/readers.h"
 #include "photometry/source_text.h"
 #include "photometry/symmetry.h"
+#include "photometry/table_warnings.h"
 #include "photometry/tabular_distribution.h"
 #include "photometry/tilt.h"
 #include "photometry/tilt_file.h"
@@ -352,6 +353,7 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
                                  std::to_string(nv) + " vertical x " + std::to_string(nh) +
                                  " horizontal), found more: " + quote_word(in.peek().text));
 
+  check_all_zero(planes, name, p.warnings);
   // Symmetry and expansion.
   SphericalGrid grid;
   glm::dmat3 frame(1.0);
@@ -364,6 +366,7 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
                            "more than 180, up to 360)");
     p.symmetry = sym;
     check_stored_planes(planes, name, p.warnings);
+    check_cut_offs(planes, name, p.warnings);
     std::vector<std::string> notes;
     grid = expand_type_c(planes, sym, &notes);
     for (auto& n : notes) p.warnings.push_back(src.where(h_line) + ": " + n);
@@ -413,6 +416,7 @@ Photometry read_ies(std::string_view bytes, const std::string& name,
   std::string opening_warning;
   p.opening = ies_opening(width * unit, length * unit, height * unit, opening_warning);
   if (!opening_warning.empty()) p.warnings.push_back(name + ": " + opening_warning);
+  check_ies_size_signs(ver.year, width * unit, length * unit, height * unit, name, p.warnings);
   return p;
 }
 

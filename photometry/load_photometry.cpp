@@ -52,14 +52,12 @@ bool looks_like_ies(std::string_view bytes) {
   return all.find("\nTILT") != std::string::npos || all.find("\rTILT") != std::string::npos;
 }
 
-}  // namespace
-
-Photometry load_photometry_text(std::string_view bytes, const std::string& name,
-                                const LoadOptions& options) {
+// `name` in messages; `dir`: where a TILT=<file> is looked for.
+Photometry load_from_bytes(std::string_view bytes, const std::string& name,
+                           const std::filesystem::path& dir, const LoadOptions& options) {
   if (bytes.empty()) throw InputError(SourceLocation{name}, "file is empty");
   // Photometric files are text: NUL bytes or mostly control bytes mean something else.
   check_is_text(bytes, name, "IES or EULUMDAT");
-  const std::filesystem::path dir = std::filesystem::path(name).parent_path();
   Photometry p = looks_like_ies(bytes) || lower_extension(name) == ".ies"
                      ? read_ies(bytes, name, dir, options)
                      : read_eulumdat(bytes, name);
@@ -67,10 +65,17 @@ Photometry load_photometry_text(std::string_view bytes, const std::string& name,
   return p;
 }
 
+}  // namespace
+
+Photometry load_photometry_text(std::string_view bytes, const std::string& name,
+                                const LoadOptions& options) {
+  return load_from_bytes(bytes, name, std::filesystem::path(name).parent_path(), options);
+}
+
 Photometry load_photometry_file(const std::filesystem::path& file, const LoadOptions& options) {
-  const std::string name = file.string();
-  return load_photometry_text(read_bounded_file(file, name, kMaxPhotometryFileBytes, "photometric"),
-                              name, options);
+  const std::string name = options.name.empty() ? file.string() : options.name;
+  return load_from_bytes(read_bounded_file(file, name, kMaxPhotometryFileBytes, "photometric"),
+                         name, file.parent_path(), options);
 }
 
 }  // namespace luxgrid::photometry

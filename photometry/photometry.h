@@ -81,6 +81,10 @@ struct LoadOptions {
   // resolving "..", "." and symbolic links (std::filesystem::weakly_canonical); empty = anywhere.
   // The project loader passes the project's folder; `luxgrid info FILE` the file's own folder.
   std::filesystem::path allowed_root;
+  // How messages and warnings name the file: as the user wrote it (the project loader passes
+  // the path as the project gives it, relative to the project's folder); empty: the path given
+  // to load_photometry_file. The file is still found by that path.
+  std::string name;
 };
 
 // Reads an IES LM-63 (.ies) or EULUMDAT (.ldt) file, chosen by content/extension.

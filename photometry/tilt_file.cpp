@@ -29,14 +29,18 @@ std::string read_tilt_file(const SourceText& ies, int tilt_line, std::string_vie
     ies.fail(tilt_line, "TILT file " + quoted +
                             " lies outside the project folder; refused (a TILT file must be in "
                             "the folder of the project or below it)");
+  // Named in messages beside the IES file as the messages name that one (as the project writes
+  // it), not by the path opened.
+  const std::string shown =
+      (std::filesystem::path(ies.name()).parent_path() / std::filesystem::path(value)).string();
   std::error_code ec;
   if (!std::filesystem::exists(path, ec))
-    ies.fail(tilt_line, "TILT file " + quoted + " not found (looked for " + path.string() + ")");
+    ies.fail(tilt_line, "TILT file " + quoted + " not found (looked for " + shown + ")");
   path_out = path;
   try {
-    std::string bytes = read_bounded_file(path, path.string(), kMaxTiltFileBytes, "TILT");
-    if (bytes.empty()) throw InputError(SourceLocation{path.string()}, "file is empty");
-    check_is_text(bytes, path.string(), "TILT data");
+    std::string bytes = read_bounded_file(path, shown, kMaxTiltFileBytes, "TILT");
+    if (bytes.empty()) throw InputError(SourceLocation{shown}, "file is empty");
+    check_is_text(bytes, shown, "TILT data");
     return bytes;
   } catch (const InputError& e) {
     ies.fail(tilt_line, "TILT file " + quoted + ": " + e.what());

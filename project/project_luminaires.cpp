@@ -5,6 +5,7 @@
 
 #include "calc/scene_visibility.h"
 #include "geometry/workplane.h"
+#include "util/degrees.h"
 
 namespace luxgrid::project::parts {
 
@@ -52,7 +53,9 @@ photometry::LuminousOpening parse_emitter(const JsonValue& e) {
 
 glm::dmat3 parse_rotation(const JsonValue& rot) {
   const auto v = rot.as_numbers(3);
-  return rotation_xyz(v[0] * kDegToRad, v[1] * kDegToRad, v[2] * kDegToRad);
+  // Reduced to one turn first (util/degrees.h): 1e300 degrees is a rotation like any other.
+  return rotation_xyz(reduce_degrees(v[0]) * kDegToRad, reduce_degrees(v[1]) * kDegToRad,
+                      reduce_degrees(v[2]) * kDegToRad);
 }
 
 // The project's luminaires, arrays expanded, would number `total`.

@@ -7,6 +7,7 @@
 #include "calc/scaled_distribution.h"
 #include "photometry/builtin.h"
 #include "photometry/tabular_distribution.h"
+#include "util/file_kind.h"
 #include "util/paths.h"
 
 namespace luxgrid::project::parts {
@@ -47,13 +48,16 @@ photometry::Photometry load_file_entry(const JsonValue& where, const std::string
                " lies outside the project folder; to allow it, set \"settings\": "
                "{\"allow_files_outside_project\": true}");
   }
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    where.fail("photometry file not found: " + path.string());
+  // By stat, before any open (util/file_kind.h): a FIFO would block the open. The file is named
+  // as the project names it, wherever luxgrid was started.
+  if (const std::string what = not_a_regular_file(path); !what.empty()) {
+    where.fail(what == "file not found" ? "photometry file not found: " + relative
+                                        : "the photometry file " + relative + " " + what);
   }
   // TILT=<file> obeys the same rule, inside the photometry reader.
   photometry::LoadOptions options;
   if (!policy.allow_outside) options.allowed_root = root;
+  options.name = relative;
   // The reader's message names the photometric file and line; put the project's place first.
   auto p = at_place(where, [&] { return photometry::load_photometry_file(path, options); });
   p.source = relative;

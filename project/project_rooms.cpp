@@ -3,6 +3,7 @@
 
 #include "geometry/prism_union.h"
 #include "geometry/workplane.h"
+#include "util/degrees.h"
 
 namespace luxgrid::project::parts {
 
@@ -23,7 +24,9 @@ geometry::Obstacle parse_obstacle(const JsonValue& o, size_t index, const Room& 
   if (auto b = o.find("box")) {
     b->expect_object();
     const Vec3 lo = point3(b->at("min")), hi = point3(b->at("max"));
-    const double rot = b->has("rotation_z") ? b->at("rotation_z").as_number() * kDegToRad : 0.0;
+    // Reduced to one turn first (util/degrees.h): 1e300 degrees is a rotation like any other.
+    const double rot =
+        b->has("rotation_z") ? reduce_degrees(b->at("rotation_z").as_number()) * kDegToRad : 0.0;
     out = at_place(*b, [&] { return geometry::make_box(name, lo, hi, rot, rho); });
   } else {
     const auto p = o.at("prism");

@@ -8,6 +8,7 @@
 
 #include "project/json_reader.h"
 #include "util/error.h"
+#include "util/file_kind.h"
 
 namespace luxgrid::project {
 
@@ -313,6 +314,10 @@ nlohmann::json parse_json_text(std::string_view text, const std::string& label,
 
 std::string read_bounded_file(const std::filesystem::path& file, std::uintmax_t max_bytes,
                               const std::string& kind) {
+  // By stat, before any open (util/file_kind.h): a FIFO would block the open. A missing file
+  // keeps its message below.
+  if (const std::string what = not_a_regular_file(file); !what.empty() && what != "file not found")
+    throw InputError(SourceLocation{file.string()}, what);
   std::error_code ec;
   const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
   if (ec) throw InputError(SourceLocation{file.string()}, "cannot open the " + kind);

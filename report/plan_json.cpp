@@ -127,15 +127,29 @@ namespace luxgrid::report {
 namespace {
 using nlohmann::json;
 
+// results.json holds no null (docs/reliability.md): a value that is not there is left out.
 // A number that may be infinite (the integrating-sphere estimate of a room whose reflectance is
-// 1): JSON has no infinity, so it is written as null and read back as +infinity.
-json maybe_infinite(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-double read_maybe_infinite(const json& j) {
-  return j.is_null() ? std::numeric_limits<double>::infinity() : j.get<double>();
+// 1, the residual of bounces that absorb nothing): JSON has no infinity, so it is left out and
+// read back as +infinity.
+void put_finite(json& j, const char* key, double v) {
+  if (std::isfinite(v)) j[key] = v;
 }
-// An estimate's part: null where it was not estimated (negative in calc::SurfaceEstimate).
-json share(double v) { return v < 0.0 ? json(nullptr) : json(v); }
-double read_share(const json& j) { return j.is_null() ? -1.0 : j.get<double>(); }
+double read_maybe_infinite(const json& j, const char* key) {
+  return j.contains(key) && !j.at(key).is_null() ? j.at(key).get<double>()
+                                                 : std::numeric_limits<double>::infinity();
+}
+// An estimate's part: left out where it was not estimated (negative in calc::SurfaceEstimate)
+// and where it is unbounded (bounces that absorb nothing: `unbounded` says which).
+void put_share(json& j, const char* key, double v) {
+  if (v >= 0.0 && std::isfinite(v)) j[key] = v;
+  if (std::isinf(v)) j["unbounded"] = key;
+}
+double read_share(const json& j, const char* key) {
+  if (j.contains(key) && !j.at(key).is_null()) return j.at(key).get<double>();
+  if (j.contains("unbounded") && j.at("unbounded") == key)
+    return std::numeric_limits<double>::infinity();
+  return -1.0;
+}
 }  // namespace
 
 json plan_to_json(const calc::Plan& plan) {
@@ -155,9 +169,15 @@ json plan_to_json(const calc::Plan& plan) {
                             {"reason", d.reason},
                             {"observers_surface", d.observers_surface},
                             {"sampled", d.sampled},
-                            {"estimate_lx", maybe_infinite(d.estimate_lx)},
                             {"mean_direct_lx", d.mean_direct_lx}};
-  j["indirect_run"] = plan.indirect_run ? json(*plan.indirect_run) : json(nullptr);
+  put_finite(j["indirect_decision"], "estimate_lx", d.estimate_lx);
+  if (plan.indirect_run) {
+    // The residual and worst_bounces of bounces that absorb nothing are infinite: left out.
+    json run = *plan.indirect_run;
+    for (auto it = run.begin(); it != run.end();)
+      it = it->is_number_float() && !std::isfinite(it->get<double>()) ? run.erase(it) : ++it;
+    j["indirect_run"] = std::move(run);
+  }
   j["emergency_direct_only"] = plan.emergency_direct_only;
   j["refinements"] = plan.refinements;
   j["visibility"] = plan.visibility;
@@ -168,13 +188,14 @@ json plan_to_json(const calc::Plan& plan) {
   j["direct_estimated"] = plan.direct_estimated;
   j["errors_estimated"] = plan.errors_estimated;
   json estimates = json::array();
-  for (const auto& e : plan.estimates)
-    estimates.push_back({{"surface", e.surface},
-                         {"direct", share(e.direct)},
-                         {"patch_size", share(e.patch_size)},
-                         {"bounces", share(e.bounces)},
-                         {"probe_points", e.probe_points},
-                         {"total", e.total()}});
+  for (const auto& e : plan.estimates) {
+    json one = {{"surface", e.surface}, {"probe_points", e.probe_points}};
+    put_share(one, "direct", e.direct);
+    put_share(one, "patch_size", e.patch_size);
+    put_share(one, "bounces", e.bounces);
+    put_finite(one, "total", e.total());
+    estimates.push_back(std::move(one));
+  }
   j["estimates"] = std::move(estimates);
   return j;
 }
@@ -189,9 +210,17 @@ calc::Plan plan_from_json(const json& j) {
   read_fields(d, "run", plan.indirect_decision.run, "reason", plan.indirect_decision.reason,
               "observers_surface", plan.indirect_decision.observers_surface, "sampled",
               plan.indirect_decision.sampled);
-  plan.indirect_decision.estimate_lx = read_maybe_infinite(d.at("estimate_lx"));
+  plan.indirect_decision.estimate_lx = read_maybe_infinite(d, "estimate_lx");
   d.at("mean_direct_lx").get_to(plan.indirect_decision.mean_direct_lx);
-  if (!j.at("indirect_run").is_null()) plan.indirect_run = j.at("indirect_run");
+  if (j.contains("indirect_run") && !j.at("indirect_run").is_null()) {
+    json run = j.at("indirect_run");
+    // A number left out (or null, as older files wrote it) was infinite.
+    const json defaults = calc::IndirectRunPlan{};
+    for (const auto& [key, value] : defaults.items())
+      if (value.is_number_float() && (!run.contains(key) || run.at(key).is_null()))
+        run[key] = std::numeric_limits<double>::infinity();
+    plan.indirect_run = run.get<calc::IndirectRunPlan>();
+  }
   read_fields(j, "emergency_direct_only", plan.emergency_direct_only, "refinements",
               plan.refinements, "visibility", plan.visibility, "scene_notes", plan.scene_notes,
               "indirect_notes", plan.indirect_notes, "indirect_warnings", plan.indirect_warnings,
@@ -200,9 +229,9 @@ calc::Plan plan_from_json(const json& j) {
   for (const json& e : j.at("estimates")) {
     calc::SurfaceEstimate est;
     e.at("surface").get_to(est.surface);
-    est.direct = read_share(e.at("direct"));
-    est.patch_size = read_share(e.at("patch_size"));
-    est.bounces = read_share(e.at("bounces"));
+    est.direct = read_share(e, "direct");
+    est.patch_size = read_share(e, "patch_size");
+    est.bounces = read_share(e, "bounces");
     e.at("probe_points").get_to(est.probe_points);
     plan.estimates.push_back(std::move(est));
   }

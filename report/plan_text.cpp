@@ -1,6 +1,7 @@
 #include "report/plan_text.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "calc/plan_estimates.h"
@@ -11,7 +12,10 @@ namespace luxgrid::report {
 namespace {
 
 // "1.6 %": two digits, as the estimates are quoted.
-std::string percent2(double fraction) { return format_double("%.2g %%", 100.0 * fraction); }
+// An infinite estimate (bounces that absorb no light never fade) is "unbounded", not "inf %".
+std::string percent2(double fraction) {
+  return std::isfinite(fraction) ? format_double("%.2g %%", 100.0 * fraction) : "unbounded";
+}
 // Three digits: a texture's bound just above its limit must not print as the limit.
 std::string percent3(double fraction) { return format_double("%.3g %%", 100.0 * fraction); }
 
@@ -290,7 +294,8 @@ std::string indirect_run_text(const calc::IndirectRunPlan& r) {
                                      (r.tail_added ? " + geometric tail" : "") + ")";
   std::string out = what + ": " + count_text(r.patches) + " patches of " +
                     format_double("%.3g", r.patch_size_m) + " m, " + count_text(r.vpls) +
-                    " virtual point lights, residual " + format_double("%.2g", r.residual);
+                    " virtual point lights, residual " +
+                    (std::isfinite(r.residual) ? format_double("%.2g", r.residual) : "unbounded");
   if (r.refined_patches)
     out += "; " + count_text(r.refined_patches) + " patches seen from closer than " +
            format_double("%.3g", r.subcell_reach) + " diameters refined into " +
@@ -433,9 +438,14 @@ std::vector<std::string> plan_warnings(const calc::Plan& plan) {
                                 ? "the far-field decision"
                             : est.patch_size >= est.bounces ? "the interreflection patch size"
                                                             : "the bounces not followed";
-      warnings.push_back("surface '" + est.surface + "': the plan's estimated error " +
-                         percent2(est.total()) + " exceeds " + quality + "'s promise of " +
-                         percent2(promise) + " (largest part: " + largest + ")");
+      const std::string error = std::isfinite(est.total())
+                                    ? percent2(est.total()) + " exceeds "
+                                    : std::string(
+                                          "is unbounded (the reflectances absorb no "
+                                          "light, so the bounces never fade), above ");
+      warnings.push_back("surface '" + est.surface + "': the plan's estimated error " + error +
+                         quality + "'s promise of " + percent2(promise) +
+                         " (largest part: " + largest + ")");
     }
   }
   return warnings;

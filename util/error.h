@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include "util/printable.h"
+
 namespace luxgrid {
 
 // Where in the user's input something is: a file and, inside it, a line and column (text read
@@ -37,9 +39,10 @@ struct SourceLocation {
   }
 };
 
-// "<place>: <message>", or the message alone when the place is empty.
+// "<place>: <message>", or the message alone when the place is empty; a control character in
+// either (a JSON key holding "\u0000") written as its escape (util/printable.h).
 inline std::string located_message(const SourceLocation& where, const std::string& message) {
-  return where.empty() ? message : where.text() + ": " + message;
+  return printable_text(where.empty() ? message : where.text() + ": " + message);
 }
 
 // Legal input that is probably a mistake (lengths in millimetres, a clockwise outline): where it

@@ -280,7 +280,10 @@ RadiosityResult solve_bounce_series(size_t n, const BounceTransfer& transfer,
   }
   // Fixed N (or the cap): the light not followed is roughly the next bounces' share.
   if (res.bounce_flux_lm.size() >= 2) {
-    const double r = res.bounce_flux_lm.back() / res.bounce_flux_lm[res.bounce_flux_lm.size() - 2];
+    const double prev = res.bounce_flux_lm[res.bounce_flux_lm.size() - 2];
+    // A bounce's flux underflows to 0 after some 700 reflections at reflectance 0.3 (0.3^700 is
+    // below the smallest double): nothing is left to follow, the remainder is 0, not 0 / 0.
+    const double r = prev > 0.0 ? res.bounce_flux_lm.back() / prev : 0.0;
     res.residual =
         r < 1.0 ? delta_norm * r / (1.0 - r) / total : std::numeric_limits<double>::infinity();
   } else {

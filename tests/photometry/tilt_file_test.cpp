@@ -95,8 +95,9 @@ TEST(TiltFile, AFifoIsNotARegularFile) {
   const fs::path dir = scratch("fifo");
   write(dir / "panel.ies", panel("pipe.tilt"));
   ASSERT_EQ(::mkfifo((dir / "pipe.tilt").c_str(), 0600), 0);
-  EXPECT_EQ(message_of(dir / "panel.ies", {}, dir),
-            "panel.ies:4: TILT file 'pipe.tilt': pipe.tilt: not a regular file");
+  EXPECT_EQ(
+      message_of(dir / "panel.ies", {}, dir),
+      "panel.ies:4: TILT file 'pipe.tilt': pipe.tilt: is a FIFO (named pipe), not a regular file");
 }
 
 TEST(TiltFile, OutsideTheRootIsRefusedAndAnEmptyRootAllowsIt) {

@@ -170,7 +170,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "p.json /photometry/iso/builtin: expected \"isotropic\" or \"lambertian\", got "
                 "\"spot\""},
         BadCase{"missing_file", "/photometry/iso", "\"no/such/file.ies\"",
-                "p.json /photometry/iso: photometry file not found: ./no/such/file.ies"},
+                "p.json /photometry/iso: photometry file not found: no/such/file.ies"},
         BadCase{"bad_quality", "/settings", "{\"quality\": \"best\"}",
                 "p.json /settings/quality: expected \"draft\", \"standard\", \"high\" or "
                 "\"reference\", got \"best\""},

@@ -2,6 +2,7 @@
 // never crashes (deep nesting), never answers silently (duplicate keys), never escapes as an
 // unexpected exception (1e400).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <string>
@@ -131,6 +132,27 @@ TEST(SafeJson, MissingFileIsInputError) {
     FAIL() << "expected an error";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), file.string() + ": cannot open the project file");
+  }
+}
+
+// A FIFO as the project file: named for what it is, found without opening it (an open would
+// wait for a writer, and this test would never end); a folder likewise.
+TEST(SafeJson, FifoOrFolderIsNamedNotOpened) {
+  const testing_support::TempFolder dir;
+  const auto fifo = dir.path() / "pipe.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  try {
+    read_json_file(fifo);
+    FAIL() << "expected an error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              fifo.string() + ": is a FIFO (named pipe), not a regular file");
+  }
+  try {
+    read_json_file(dir.path());
+    FAIL() << "expected an error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), dir.path().string() + ": is a folder, not a file");
   }
 }
 

@@ -138,6 +138,44 @@ TEST(PlanText, SceneNotesInWords) {
             "quantity)");
 }
 
+// A room whose reflectances absorb nothing: the residual and the bounces' share are infinite.
+// results.json holds no null (docs/reliability.md): they are left out, read back as infinity,
+// and the warning says "unbounded" instead of "inf %".
+TEST(PlanText, InfiniteEstimatesAreLeftOutAndReadBack) {
+  calc::Plan p = sample_plan();
+  p.promise = 0.01;
+  p.errors_estimated = true;
+  calc::IndirectRunPlan run;
+  run.bounces_asked = 0, run.bounces_run = 1000, run.patches = 64, run.patch_size_m = 0.5;
+  run.residual = std::numeric_limits<double>::infinity();
+  run.worst_bounces = std::numeric_limits<double>::infinity();
+  p.indirect_run = run;
+  calc::SurfaceEstimate e;
+  e.surface = "wp", e.direct = 0.0, e.patch_size = 0.002;
+  e.bounces = std::numeric_limits<double>::infinity();
+  p.estimates = {e};
+  calc::SurfaceEstimate unlit;
+  unlit.surface = "probes", unlit.direct = 0.001;  // patch_size, bounces: -1, not estimated
+  p.estimates.push_back(unlit);
+  const nlohmann::json j = plan_to_json(p);
+  EXPECT_EQ(j.dump().find("null"), std::string::npos) << j.dump();
+  EXPECT_FALSE(j.at("indirect_run").contains("residual"));
+  EXPECT_FALSE(j.at("estimates").at(0).contains("total"));
+  EXPECT_EQ(j.at("estimates").at(0).at("unbounded"), "bounces");
+  EXPECT_FALSE(j.at("estimates").at(1).contains("patch_size"));
+  const calc::Plan back = plan_from_json(nlohmann::json::parse(j.dump(1)));
+  EXPECT_EQ(back.indirect_run->residual, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(back.estimates.at(0).bounces, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(back.estimates.at(1).patch_size, -1.0);
+  EXPECT_EQ(plan_warnings(back), plan_warnings(p));
+  bool unbounded = false;
+  for (const auto& w : plan_warnings(p)) {
+    EXPECT_EQ(w.find("inf %"), std::string::npos) << w;
+    unbounded = unbounded || w.find("estimated error is unbounded") != std::string::npos;
+  }
+  EXPECT_TRUE(unbounded);
+}
+
 TEST(PlanText, ResultsJsonKeepsTheValuesTheWordsComeFrom) {
   calc::Plan p = sample_plan();
   calc::IndirectRunPlan run;

@@ -35,29 +35,17 @@ TEST(ResultsJson, HasTheDocumentedShape) {
   EXPECT_EQ(j["project"], "demo");
   EXPECT_EQ(j["values"], "maintained");
   // The plan as values (docs/project-format.md, "The plan"), with its summary in words.
-  for (const char* k : {"summary",
-                        "quality",
-                        "promise",
-                        "near_model",
-                        "near_switch",
-                        "near_switch_reason",
-                        "direct_counts",
-                        "pairs_unreachable",
-                        "near_far",
-                        "intensity_lookups",
-                        "indirect_decision",
-                        "indirect_run",
-                        "emergency_direct_only",
-                        "refinements",
-                        "visibility",
-                        "scene_notes",
-                        "indirect_notes",
-                        "indirect_warnings",
-                        "direct_estimated",
-                        "errors_estimated",
-                        "estimates"})
+  for (const char* k : {"summary",           "quality",           "promise",
+                        "near_model",        "near_switch",       "near_switch_reason",
+                        "direct_counts",     "pairs_unreachable", "near_far",
+                        "intensity_lookups", "indirect_decision", "emergency_direct_only",
+                        "refinements",       "visibility",        "scene_notes",
+                        "indirect_notes",    "indirect_warnings", "direct_estimated",
+                        "errors_estimated",  "estimates"})
     EXPECT_TRUE(j["plan"].contains(k)) << k;
-  EXPECT_EQ(j["plan"].size(), 21u);
+  EXPECT_EQ(j["plan"].size(), 20u);
+  // Reflected light did not run: its key is left out, not null (docs/reliability.md).
+  EXPECT_FALSE(j["plan"].contains("indirect_run"));
   EXPECT_EQ(j["plan"]["near_switch"], "never");
   EXPECT_EQ(j["plan"]["scene_notes"][0]["kind"], "observers_left_out");
   EXPECT_EQ(j["plan"]["scene_notes"][0]["observers"], 2);

@@ -26,7 +26,7 @@ import tempfile
 
 CHECK_KEYS = {"what", "source", "args", "exit", "stderr_contains", "stderr_not_contains",
               "warnings_contain", "warnings_not_contain", "no_warnings", "values", "equivalent",
-              "max_seconds", "mirror", "flux_balance"}
+              "max_seconds", "mirror", "flux_balance", "setup", "absolute_project"}
 
 
 def snapshot(folder, skip):
@@ -38,6 +38,9 @@ def snapshot(folder, skip):
         for name in files:
             path = os.path.join(root, name)
             if os.path.abspath(path).startswith(skip + os.sep):
+                continue
+            if not os.path.isfile(path):  # a FIFO made by "setup": opening it would block
+                state[os.path.relpath(path, folder)] = "not a regular file"
                 continue
             with open(path, "rb") as f:
                 state[os.path.relpath(path, folder)] = hashlib.sha256(f.read()).hexdigest()
@@ -174,9 +177,22 @@ def check_case(luxgrid, corpus, case_rel):
         # The corpus's photometry, shared by the cases, as the case's own photometry/ folder.
         shutil.copytree(os.path.join(corpus, "photometry"), os.path.join(case_dir, "photometry"),
                         dirs_exist_ok=True)
+        # Paths a case needs that a folder copy cannot carry: FIFOs and folders, made here.
+        for step in check.get("setup", []):
+            (kind, rel), = step.items()
+            target = os.path.join(case_dir, rel)
+            os.makedirs(os.path.dirname(target), exist_ok=True)
+            if kind == "mkfifo":
+                os.mkfifo(target)
+            elif kind == "mkdir":
+                os.makedirs(target)
+            else:
+                return [f"check.json: unknown setup step {kind!r}"]
         out = os.path.join(tmp, "out")
         before = snapshot(tmp, out)
-        code, stderr, error = run_calc(luxgrid, case_dir, "project.json", out,
+        project = (os.path.join(case_dir, "project.json") if check.get("absolute_project")
+                   else "project.json")
+        code, stderr, error = run_calc(luxgrid, case_dir, project, out,
                                        check.get("args", []), seconds)
         if error:
             return [error]

@@ -107,7 +107,7 @@ cases.update({
                                   f"tilt_outside_absolute.ies:4: TILT file '/etc/passwd' {OUTSIDE}"),
     "tilt_outside_climbs.ies": (tilt("../photometry/lamp.tilt"),
                                 f"tilt_outside_climbs.ies:4: TILT file '../photometry/lamp.tilt' {OUTSIDE}"),
-    "tilt_directory.ies": (tilt("."), tilt_error("tilt_directory.ies", ".", ".: not a regular file")),
+    "tilt_directory.ies": (tilt("."), tilt_error("tilt_directory.ies", ".", ".: is a folder, not a file")),
     "tilt_bad_geometry_file.ies": (tilt("bad_geometry.tilt"), tilt_error(
         "tilt_bad_geometry_file.ies", "bad_geometry.tilt",
         "bad_geometry.tilt:1: expected the TILT lamp-to-luminaire geometry (1, 2 or 3) between 1 and 3, found '7'")),
