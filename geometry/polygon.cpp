@@ -9,13 +9,14 @@ double cross(const Vec2& a, const Vec2& b, const Vec2& c) {
   return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
+}  // namespace
+
 double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 ab = b - a;
   const double len2 = glm::dot(ab, ab);
   const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
   return glm::length(p - (a + t * ab));
 }
-}  // namespace
 
 double signed_area(const Polygon2& poly) {
   double twice = 0.0;

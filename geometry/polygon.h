@@ -25,6 +25,9 @@ double perimeter(const Polygon2& poly);
 // corners are allowed: a wall split in two is still convex).
 bool is_convex(const Polygon2& ccw);
 
+// Euclidean distance from `p` to the segment from `a` to `b` (to `a` when they coincide).
+double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b);
+
 enum class Location { inside, boundary, outside };
 
 // Where `p` lies relative to a simple polygon (either orientation). `boundary_tol_m` is the

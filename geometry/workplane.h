@@ -1,6 +1,6 @@
 #pragma once
-// Grids over polygonal regions: the workplane (room outline inset by a border, CGAL straight-
-// skeleton offset) and the floor and ceiling grids of room_surfaces. No CGAL in this header.
+// Grids over polygonal regions: the workplane (room outline less a border along every wall) and
+// the floor and ceiling grids of room_surfaces. No CGAL in this header.
 //
 // Policy for points that are not part of the surface: the grid stays the full nu x nv rectangle
 // over the region's bounding box (row-major, cell centres), so plots and CSV files keep their
@@ -15,9 +15,23 @@
 
 namespace luxgrid::geometry {
 
-// The region `ccw` shrunk by `border_m` on every side (CGAL interior straight-skeleton offset,
-// so L-shapes and notches inset correctly). May split into several polygons, or vanish (empty
-// result) when the border is too wide. border_m == 0 returns the outline itself.
+// The part of the outline `ccw` at least `border_m` from every wall, the workplane inside a
+// border. `polygons` bound it (drawn on plots; the grid spans their box): for a convex outline
+// the CGAL interior straight-skeleton offset, whose mitred corners are then exact (every corner
+// is convex, and a convex corner of the set lies where two moved walls cross); for an outline
+// with a reflex corner wall_clearance_region (wall_clearance.h), whose arcs about reflex corners
+// the mitred offset would replace by a point shooting inward. `walls`, set for the latter, makes
+// the grid decide each point by its distance to the walls (clear_of_walls) rather than by the
+// polygons, which only approximate the arcs. May split into several polygons, or vanish (empty
+// polygons) when the border is too wide. border_m == 0 gives the outline itself.
+struct InsetRegion {
+  std::vector<Polygon2> polygons;
+  const Polygon2* walls = nullptr;  // the outline (outlives the region), or none
+  double border_m = 0.0;
+};
+InsetRegion inset_region(const Polygon2& ccw, double border_m);
+
+// inset_region(ccw, border_m).polygons.
 std::vector<Polygon2> inset_outline(const Polygon2& ccw, double border_m);
 
 struct Bounds2 {
@@ -32,6 +46,11 @@ Bounds2 bounds(const std::vector<Polygon2>& region);
 // (z0 <= z <= z1: a 0.7 m table does not remove points of a 0.8 m workplane; a 1.8 m cabinet
 // does). `normal_up` = false gives a ceiling grid (normal -z, u = +x, v = -y).
 SurfaceGrid make_region_grid(const std::string& name, const std::vector<Polygon2>& region, double z,
+                             double spacing_m, const std::vector<Obstacle>& obstacles,
+                             bool normal_up = true);
+// The same over an inset region: with `region.walls` set, a point is in the region when it lies
+// in the outline (boundary included) and clear of its walls by the border.
+SurfaceGrid make_region_grid(const std::string& name, const InsetRegion& region, double z,
                              double spacing_m, const std::vector<Obstacle>& obstacles,
                              bool normal_up = true);
 

@@ -110,10 +110,10 @@ std::vector<geometry::SurfaceGrid> parse_emergency_surface(const JsonValue& s, c
     (void)at_place(
         *o, [&] { return geometry::normalize_outline(outline, "open area \"" + name + "\""); });
   }
-  const auto region = geometry::inset_outline(outline, kOpenAreaBorder_m);
-  if (region.empty())
+  const auto region = geometry::inset_region(outline, kOpenAreaBorder_m);
+  if (region.polygons.empty())
     a.fail("the 0.5 m border that EN 1838 leaves out of an open area leaves no core area");
-  const auto box = geometry::bounds(region);
+  const auto box = geometry::bounds(region.polygons);
   const double su = box.hi.x - box.lo.x, sv = box.hi.y - box.lo.y;
   const double spacing = parse_spacing(s, s.find("spacing"), std::max(su, sv));
   budget.spend_cells(s, su, sv, spacing);

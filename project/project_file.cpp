@@ -101,6 +101,7 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
   for (const auto& s : surfaces.items()) {
     auto grids = parse_surface(s, scene, budget);
     check_observers_inputs(s, scene);
+    if (s.has("observers") && !grids.empty()) check_observer_places(s, grids.front(), scene);
     if (auto r = s.find("requirements")) parse_requirements(*r, s, surfaces, project.requirements);
     record_emergency_surfaces(s, grids, scene.emergency_surfaces);
     s.report_unqueried();

@@ -165,6 +165,14 @@ class OutputNames {
 // reflections off or has a luminaire without a luminous area (a point emitter).
 void check_observers_inputs(const JsonValue& s, const calc::Scene& scene);
 
+// Observers in impossible places (project/observer_places.cpp), refused at the observer's "at":
+// inside an obstacle, inside a luminaire's luminous opening, or, when a luminaire counts in one
+// of its views, outside every room or in a room whose surfaces all have reflectance 0 (no
+// reflected light: UGR unbounded). An observer nearer a luminaire than CIE 117's 0.1 sr source
+// (calc/glare/luminous_solid_angle.h) gets a warning there. `grid` is the surface's grid.
+void check_observer_places(const JsonValue& s, const geometry::SurfaceGrid& grid,
+                           calc::Scene& scene);
+
 // emergency (project_emergency.cpp) [EN1838].
 // A luminaire's "emergency" entry [EN1838]: {"fraction": f} of its output (0 < f <= 1),
 // {"flux_lm": F} (its own distribution scaled to F lumens, at most its normal flux) or

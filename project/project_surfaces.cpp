@@ -157,10 +157,11 @@ std::vector<geometry::SurfaceGrid> parse_surface_kind(const JsonValue& s, const 
     if (height > room.height) height_v.fail("the workplane is above the ceiling of the room");
     const double border =
         w->has("border") ? (w->at("border").as_non_negative(), coordinate(w->at("border"))) : 0.0;
-    // The outline inset by the border (straight skeleton: L-shapes and notches inset right).
-    const auto region = geometry::inset_outline(room.outline, border);
-    if (region.empty()) w->at("border").fail("the border leaves no workplane inside the room");
-    const auto box = geometry::bounds(region);
+    // The points at least the border from every wall (geometry/workplane.h).
+    const auto region = geometry::inset_region(room.outline, border);
+    if (region.polygons.empty())
+      w->at("border").fail("the border leaves no workplane inside the room");
+    const auto box = geometry::bounds(region.polygons);
     const double su = box.hi.x - box.lo.x, sv = box.hi.y - box.lo.y;
     const double spacing = parse_spacing(s, s.find("spacing"), std::max(su, sv));
     budget.spend_cells(s, su, sv, spacing);

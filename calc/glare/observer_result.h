@@ -14,6 +14,7 @@ struct GlareTerm {
   double L_cd_m2 = 0.0;
   double omega_sr = 0.0;
   double p = 1.0;
+  bool exact_solid_angle = false;  // omega is the exact solid angle (A_p / d^2 exceeded 0.1 sr)
   double value() const { return L_cd_m2 * L_cd_m2 * omega_sr / (p * p); }
 };
 

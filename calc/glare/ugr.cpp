@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "calc/glare/guth_position_index.h"
+#include "calc/glare/luminous_solid_angle.h"
 #include "calc/scene_visibility.h"
 #include "photometry/opening.h"
 #include "util/error.h"
@@ -34,6 +35,12 @@ std::optional<GlareTerm> glare_term(const photometry::IntensityDistribution& dis
   GlareTerm t;
   t.L_cd_m2 = I_cd / area_m2;
   t.omega_sr = area_m2 / dist2;
+  // Nearer than CIE 117's largest source, A_p / d^2 overstates the solid angle without bound:
+  // the exact one (luminous_solid_angle.h), at most 2 pi.
+  if (t.omega_sr > kLargestRatedSource_sr) {
+    t.omega_sr = luminous_solid_angle_sr(opening, -d * pose.rotation);
+    t.exact_solid_angle = true;
+  }
   t.p = guth_position_index(H / R, T / R);
   return t;
 }
@@ -70,10 +77,11 @@ std::vector<ObserverResult> evaluate_observers(const Scene& scene, const Plan& p
                                  format_double("%.4g", v.direction.x) + ", " +
                                  format_double("%.4g", v.direction.y) + ", " +
                                  format_double("%.4g", v.direction.z) + ")";
-        throw CalculationError("surface '" + grid.name + "': " + view +
-                               ": the indirect illuminance at the eye is 0 lx, so the background "
-                               "luminance is 0 and UGR is unbounded; UGR needs reflected light "
-                               "(room reflectances above 0)");
+        // Input the user can fix (an eye where no reflected light reaches it): exit 2, the file
+        // named by the caller. The loader refuses the usual causes earlier, with the place.
+        throw InputError("surface '" + grid.name + "': " + view +
+                         ": no reflected light reaches the eye (its indirect illuminance is 0 lx), "
+                         "so the background luminance is 0 and UGR is unbounded");
       }
       v.UGR = unified_glare_rating(sum, v.Lb_cd_m2);
       if (!std::isfinite(*v.UGR)) {

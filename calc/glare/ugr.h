@@ -2,7 +2,8 @@
 // Discomfort glare at observer positions: the Unified Glare Rating of CIE 117 [CIE117],
 //   UGR = 8 log10( (0.25 / Lb) sum L^2 omega / p^2 ),
 // per luminaire L = I / A_p (its intensity towards the eye over its luminous area projected on
-// that direction, photometry::projected_area_m2), omega = A_p / d^2, p the Guth position index
+// that direction, photometry::projected_area_m2), omega = A_p / d^2 (the exact solid angle where
+// that exceeds 0.1 sr, luminous_solid_angle.h), p the Guth position index
 // (guth_position_index.h), and Lb = E_indirect / pi, the indirect illuminance at the eye on a
 // plane facing the view. Only luminaires inside the position index's field (in front, not below
 // the line of sight, within the table's extent) and visible from the eye (the plan's visibility
@@ -35,9 +36,9 @@ std::optional<GlareTerm> glare_term(const photometry::IntensityDistribution& dis
 double unified_glare_rating(double sum, double Lb_cd_m2);
 
 // Every observer of an observers surface, each view's UGR with its terms. `E_indirect_lx` is the
-// surface's indirect illuminance per point (one point per view, facing it). Throws
-// CalculationError naming the surface, observer and view when a luminaire counts but the
-// background luminance is 0 (UGR unbounded).
+// surface's indirect illuminance per point (one point per view, facing it). Throws InputError
+// naming the surface, observer and view when a luminaire counts but no reflected light reaches
+// the eye (background luminance 0, UGR unbounded).
 std::vector<ObserverResult> evaluate_observers(const Scene& scene, const Plan& plan,
                                                const geometry::SurfaceGrid& grid,
                                                const std::vector<double>& E_indirect_lx);

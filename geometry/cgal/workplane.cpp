@@ -1,5 +1,7 @@
 #include "geometry/workplane.h"
 
+#include "geometry/wall_clearance.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -27,21 +29,42 @@ double snap(double x) {
 }
 }  // namespace
 
-std::vector<Polygon2> inset_outline(const Polygon2& ccw, double border_m) {
-  if (border_m <= 0.0) return {ccw};
+// The straight skeleton's offset when every corner is convex (left turn or straight, by CGAL's
+// exact orientation predicate); otherwise the erosion of wall_clearance.h. Both sets of corners
+// are rounded to nearby 1e-9 m decimals alike.
+InsetRegion inset_region(const Polygon2& ccw, double border_m) {
+  if (border_m <= 0.0) return {{ccw}};
   CgalPolygon poly;
   for (const auto& p : ccw) poly.push_back(K::Point_2(p.x, p.y));
-  const auto offsets = CGAL::create_interior_skeleton_and_offset_polygons_2(border_m, poly);
-  std::vector<Polygon2> out;
-  for (const auto& op : offsets) {
-    Polygon2 q;
-    for (auto v = op->vertices_begin(); v != op->vertices_end(); ++v) {
-      q.emplace_back(snap(CGAL::to_double(v->x())), snap(CGAL::to_double(v->y())));
+  bool has_reflex_corner = false;
+  for (size_t k = 0, n = ccw.size(); k < n; ++k) {
+    has_reflex_corner =
+        has_reflex_corner ||
+        CGAL::orientation(poly[(k + n - 1) % n], poly[k], poly[(k + 1) % n]) == CGAL::RIGHT_TURN;
+  }
+  InsetRegion out;
+  std::vector<Polygon2> raw;
+  if (has_reflex_corner) {
+    raw = wall_clearance_region(ccw, border_m);
+    out.walls = &ccw, out.border_m = border_m;
+  } else {
+    for (const auto& op : CGAL::create_interior_skeleton_and_offset_polygons_2(border_m, poly)) {
+      Polygon2 q;
+      for (auto v = op->vertices_begin(); v != op->vertices_end(); ++v)
+        q.emplace_back(CGAL::to_double(v->x()), CGAL::to_double(v->y()));
+      raw.push_back(std::move(q));
     }
+  }
+  for (auto& q : raw) {
+    for (auto& v : q) v = Vec2(snap(v.x), snap(v.y));
     if (q.size() >= 3 && signed_area(q) < 0.0) std::reverse(q.begin(), q.end());
-    if (q.size() >= 3 && std::abs(signed_area(q)) > 0.0) out.push_back(std::move(q));
+    if (q.size() >= 3 && std::abs(signed_area(q)) > 0.0) out.polygons.push_back(std::move(q));
   }
   return out;
+}
+
+std::vector<Polygon2> inset_outline(const Polygon2& ccw, double border_m) {
+  return inset_region(ccw, border_m).polygons;
 }
 
 Bounds2 bounds(const std::vector<Polygon2>& region) {
@@ -58,6 +81,13 @@ Bounds2 bounds(const std::vector<Polygon2>& region) {
 SurfaceGrid make_region_grid(const std::string& name, const std::vector<Polygon2>& region, double z,
                              double spacing_m, const std::vector<Obstacle>& obstacles,
                              bool normal_up) {
+  return make_region_grid(name, InsetRegion{region}, z, spacing_m, obstacles, normal_up);
+}
+
+SurfaceGrid make_region_grid(const std::string& name, const InsetRegion& inset, double z,
+                             double spacing_m, const std::vector<Obstacle>& obstacles,
+                             bool normal_up) {
+  const std::vector<Polygon2>& region = inset.polygons;
   const Bounds2 b = bounds(region);
   const double su = b.hi.x - b.lo.x, sv = b.hi.y - b.lo.y;
   SurfaceGrid g = normal_up ? make_plane_grid(name, Vec3(b.lo.x, b.lo.y, z), Vec3(1, 0, 0),
@@ -71,8 +101,9 @@ SurfaceGrid make_region_grid(const std::string& name, const std::vector<Polygon2
   }
   // Exact predicates for the region test: a cell centre on an inset edge must not flip between
   // runs or compilers.
+  // With walls: the outline's exact test, then the distance to each wall.
   std::vector<CgalPolygon> cgal_region;
-  for (const auto& poly : region) {
+  for (const auto& poly : inset.walls ? std::vector<Polygon2>{*inset.walls} : region) {
     CgalPolygon c;
     for (const auto& p : poly) c.push_back(K::Point_2(p.x, p.y));
     cgal_region.push_back(std::move(c));
@@ -82,7 +113,7 @@ SurfaceGrid make_region_grid(const std::string& name, const std::vector<Polygon2
     bool in_region = false;
     for (const auto& c : cgal_region) {
       if (c.bounded_side(p) != CGAL::ON_UNBOUNDED_SIDE) {
-        in_region = true;
+        in_region = !inset.walls || clear_of_walls(Vec2(g.points[i]), *inset.walls, inset.border_m);
         break;
       }
     }

@@ -150,8 +150,10 @@ TEST(Visibility, LShapeExampleLoads) {
   EXPECT_EQ(vis->triangle_count(), 20u + 2u * 12u);
   ASSERT_EQ(scene.surfaces.size(), 1u + 8u);
   const auto& wp = scene.surfaces[0];
-  EXPECT_EQ(wp.nu, 35);                // inset L spans 0.5..7.5: 7 m / 0.2 m
-  EXPECT_EQ(wp.points_outside, 400u);  // the inset's missing 4 x 4 m quadrant: 20 x 20 cells
+  EXPECT_EQ(wp.nu, 35);  // inset L spans 0.5..7.5: 7 m / 0.2 m
+  // The missing 4 x 4 m quadrant's 20 x 20 cells but (3.6, 3.6), 0.566 m from the reflex corner
+  // (4, 4), its nearest wall point: inside the border's arc there, not cut by a mitre.
+  EXPECT_EQ(wp.points_outside, 399u);
   // Centres 0.5 + (i + 0.5) * 0.2 strictly inside a footprint, counted apart with the same
   // arithmetic: the column gives 2 (its faces lie on rows of centres, so rounding decides), the
   // cabinet (1.6 x 0.5 m about (2, 3.75), turned 20 degrees) 19.

@@ -1,6 +1,6 @@
-// Workplanes over non-convex rooms: the straight-skeleton inset, grid positions at cell centres,
-// and the points left out (outside the inset outline, inside obstacles) against hand-counted
-// grids. Auto spacing against the EN 12464-1 formula on worked examples.
+// Workplanes over non-convex rooms: the inset (arcs at reflex corners), grid positions at cell
+// centres, and the points left out (outside the inset outline, inside obstacles) against
+// hand-counted grids. Auto spacing against the EN 12464-1 formula on worked examples.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,19 +20,32 @@ size_t active_count(const SurfaceGrid& g) {
 }
 
 TEST(Inset, LShapeByHalfAMetre) {
-  const auto region = inset_outline(kL, 0.5);
-  ASSERT_EQ(region.size(), 1u);
-  // The inset L, corner by corner (any start corner): exact after snapping.
-  const Polygon2 expected = {{0.5, 0.5}, {5.5, 0.5}, {5.5, 2.5},
-                             {2.5, 2.5}, {2.5, 5.5}, {0.5, 5.5}};
-  ASSERT_EQ(region[0].size(), expected.size());
-  EXPECT_DOUBLE_EQ(signed_area(region[0]), signed_area(expected));  // 5*2 + 2*3 = 16 m^2
-  EXPECT_DOUBLE_EQ(signed_area(region[0]), 16.0);
-  for (const auto& p : expected) {
+  const auto inset = inset_region(kL, 0.5);
+  ASSERT_EQ(inset.polygons.size(), 1u);
+  EXPECT_EQ(inset.walls, &kL);  // a reflex corner: points are decided by their distance
+  const Polygon2& region = inset.polygons[0];
+  // The walls moved in by 0.5 m meet at the convex corners, exact after snapping; at the reflex
+  // corner (3, 3) an arc of radius 0.5 from (3, 2.5) to (2.5, 3) replaces the mitre (2.5, 2.5).
+  for (const Vec2& p : {Vec2(0.5, 0.5), Vec2(5.5, 0.5), Vec2(5.5, 2.5), Vec2(3, 2.5), Vec2(2.5, 3),
+                        Vec2(2.5, 5.5), Vec2(0.5, 5.5)}) {
     bool found = false;
-    for (const auto& q : region[0]) found = found || q == p;
+    for (const auto& q : region) found = found || q == p;
     EXPECT_TRUE(found) << p.x << ", " << p.y;
   }
+  for (const auto& q : region) {
+    if (q.x > 2.5 && q.y > 2.5) {
+      EXPECT_NEAR(glm::length(q - Vec2(3, 3)), 0.5, 1e-12);
+    }
+  }
+  // The mitred L's 16 m^2, plus the corner square's part outside the disc, 0.25 (1 - pi / 4),
+  // plus the 18 circular segments between the 5-degree chords and the arc, each
+  // 0.25 / 2 (theta - sin theta).
+  const double theta = kPi / 36.0;
+  EXPECT_NEAR(signed_area(region),
+              16.0 + 0.25 * (1.0 - kPi / 4.0) + 18 * 0.125 * (theta - std::sin(theta)), 1e-12);
+  // A convex outline keeps the straight skeleton's polygon and its polygon test.
+  const Polygon2 rectangle = {{0, 0}, {4, 0}, {4, 3}, {0, 3}};
+  EXPECT_EQ(inset_region(rectangle, 0.5).walls, nullptr);
 }
 
 TEST(Inset, TooWideABorderLeavesNothing) {
@@ -44,7 +57,7 @@ TEST(Inset, TooWideABorderLeavesNothing) {
 TEST(Workplane, LShapeOneMetreGridHandCounted) {
   // Inset L spans 0.5..5.5 in x and y: 5 x 5 cells of 1 m, centres at 1, 2, 3, 4, 5.
   // Rows y = 1, 2 lie in the lower arm (all 5 points); rows y = 3, 4, 5 only at x = 1, 2.
-  const auto g = make_region_grid("wp", inset_outline(kL, 0.5), 0.8, 1.0, {});
+  const auto g = make_region_grid("wp", inset_region(kL, 0.5), 0.8, 1.0, {});
   EXPECT_EQ(g.nu, 5);
   EXPECT_EQ(g.nv, 5);
   EXPECT_EQ(g.points.front(), Vec3(1, 1, 0.8));
@@ -63,13 +76,17 @@ TEST(Workplane, LShapeOneMetreGridHandCounted) {
 TEST(Workplane, LShapeUnevenSpacingHandCounted) {
   // 5 m / 0.4 m = 12.5 -> 13 cells of 5/13 m. Centres x_i = 0.5 + (i + 0.5) 5/13.
   // Lower arm (y <= 2.5): j + 0.5 <= 5.2 -> j = 0..4, 5 rows x 13 = 65.
-  // Upper arm (x <= 2.5): i = 0..4, 8 rows x 5 = 40. Active 105 of 169.
-  const auto g = make_region_grid("wp", inset_outline(kL, 0.5), 0.8, 0.4, {});
+  // Upper arm (x <= 2.5): i = 0..4, 8 rows x 5 = 40. And (i, j) = (5, 5), at x = y = 2.615,
+  // beyond both arms but 0.544 m from the reflex corner (3, 3), its nearest wall point: the
+  // mitred corner at (2.5, 2.5) left it out, the border does not. Active 106 of 169.
+  const auto g = make_region_grid("wp", inset_region(kL, 0.5), 0.8, 0.4, {});
   EXPECT_EQ(g.nu, 13);
   EXPECT_EQ(g.nv, 13);
   EXPECT_DOUBLE_EQ(g.spacing_u, 5.0 / 13.0);
-  EXPECT_EQ(active_count(g), 105u);
-  EXPECT_EQ(g.points_outside, 64u);
+  EXPECT_EQ(active_count(g), 106u);
+  EXPECT_EQ(g.points_outside, 63u);
+  EXPECT_TRUE(g.active[5 * 13 + 5]);
+  EXPECT_FALSE(g.active[5 * 13 + 6]);  // (3.0, 2.615): 0.385 m from the wall x = 3
 }
 
 TEST(Workplane, UShapeQuarterMetreBorderHandCounted) {
@@ -77,7 +94,7 @@ TEST(Workplane, UShapeQuarterMetreBorderHandCounted) {
   // arms are 1 m wide, so 0.5 m of each is left). 0.5 m cells: 9 x 7, centres x = 0.5..4.5,
   // y = 0.5..3.5. Row y = 0.5: all 9; rows y = 1.0..3.5 (6 rows): x = 0.5 and 4.5 only.
   // 9 + 12 = 21 active, 63 - 21 = 42 outside.
-  const auto g = make_region_grid("wp", inset_outline(kU, 0.25), 0.8, 0.5, {});
+  const auto g = make_region_grid("wp", inset_region(kU, 0.25), 0.8, 0.5, {});
   EXPECT_EQ(g.nu, 9);
   EXPECT_EQ(g.nv, 7);
   EXPECT_EQ(g.points.front(), Vec3(0.5, 0.5, 0.8));
@@ -117,7 +134,7 @@ TEST(Workplane, ObstaclesSpanningTheHeightRemovePoints) {
       make_box("column", {1.5, 1.5, 0}, {2.5, 2.5, 3}, 0.0, 0.5),
       make_box("table", {0.6, 0.6, 0}, {1.4, 1.4, 0.7}, 0.0, 0.5),
       make_box("shelf", {0.6, 1.6, 1.0}, {1.4, 2.4, 1.2}, 0.0, 0.5)};
-  const auto g = make_region_grid("wp", inset_outline(kL, 0.5), 0.8, 1.0, obstacles);
+  const auto g = make_region_grid("wp", inset_region(kL, 0.5), 0.8, 1.0, obstacles);
   EXPECT_EQ(active_count(g), 15u);
   EXPECT_EQ(g.points_in_obstacles, 1u);
   EXPECT_EQ(g.points_outside, 9u);
