@@ -27,7 +27,7 @@ const char* kRoom = R"({
   "surfaces": [ { "name": "floor", "workplane": { "room": "r", "height": 0.8, "border": 0.25 }, "spacing": 0.5 } ]
 })";
 
-fs::path project(const std::string& name) {
+fs::path example_project(const std::string& name) {
   const fs::path dir = scratch(name);
   luxgrid::test::write_file(dir / "p.json", kRoom);
   return dir;
@@ -36,7 +36,7 @@ fs::path project(const std::string& name) {
 TEST(Threads, ResultsDoNotDependOnTheThreadCount) {
   // Every parallel loop writes its own points or patches, so 1 and 2 threads must give the same
   // bytes; the option works before and after the subcommand, the variable without the option.
-  const fs::path dir = project("threads_same");
+  const fs::path dir = example_project("threads_same");
   const std::string p = (dir / "p.json").string();
   ASSERT_EQ(luxgrid::test::luxgrid("--threads 1 calc " + p + " -o " + (dir / "one").string()).code,
             0);
@@ -56,7 +56,7 @@ TEST(Threads, ResultsDoNotDependOnTheThreadCount) {
 }
 
 TEST(Threads, BadCountsAreBadInput) {
-  const fs::path dir = project("threads_bad");
+  const fs::path dir = example_project("threads_bad");
   const std::string calc = " calc " + (dir / "p.json").string() + " -o " + (dir / "out").string();
   for (const char* n : {"0", "-1", "1025", "two"}) {
     const CommandResult r = luxgrid::test::luxgrid(std::string("--threads ") + n + calc);
@@ -72,7 +72,7 @@ TEST(Threads, BadCountsAreBadInput) {
 }
 
 TEST(ArraysNpy, TheArrayHoldsTheCsvsPointsAndValues) {
-  const fs::path dir = project("arrays_npy");
+  const fs::path dir = example_project("arrays_npy");
   const CommandResult r = luxgrid::test::luxgrid("calc " + (dir / "p.json").string() + " -o " +
                                                  (dir / "out").string() + " --arrays npy");
   ASSERT_EQ(r.code, 0) << r.output;

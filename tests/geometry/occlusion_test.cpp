@@ -3,11 +3,12 @@
 #include <gtest/gtest.h>
 
 #include "geometry/occlusion.h"
+#include "tests/geometry/l_outline.h"
 
 namespace luxgrid::geometry {
 namespace {
 
-const Polygon2 kL = {{0, 0}, {6, 0}, {6, 3}, {3, 3}, {3, 6}, {0, 6}};
+using test::kL;
 
 std::vector<Face> l_room(const std::vector<Obstacle>& obstacles = {}) {
   auto faces = room_faces(RoomShape{"L", kL, 0.0, 3.0, 0.2, 0.5, 0.7});

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "geometry/room.h"
+#include "tests/geometry/l_outline.h"
 #include "util/error.h"
 
 namespace luxgrid::geometry {
@@ -17,7 +18,7 @@ std::string error_of(Polygon2 outline) {
   return "(no error)";
 }
 
-const Polygon2 kL = {{0, 0}, {6, 0}, {6, 3}, {3, 3}, {3, 6}, {0, 6}};
+using test::kL;
 
 TEST(Outline, CounterClockwiseIsKept) {
   Polygon2 p = kL;

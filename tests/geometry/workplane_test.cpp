@@ -6,11 +6,12 @@
 #include <cmath>
 
 #include "geometry/workplane.h"
+#include "tests/geometry/l_outline.h"
 
 namespace luxgrid::geometry {
 namespace {
 
-const Polygon2 kL = {{0, 0}, {6, 0}, {6, 3}, {3, 3}, {3, 6}, {0, 6}};
+using test::kL;
 const Polygon2 kU = {{0, 0}, {5, 0}, {5, 4}, {4, 4}, {4, 1}, {1, 1}, {1, 4}, {0, 4}};
 
 size_t active_count(const SurfaceGrid& g) {

@@ -19,7 +19,7 @@ namespace luxgrid::nearfield {
 namespace {
 
 // The promise for `standard`: within 1 % of the truth.
-constexpr double kStandardPromise = 0.01;
+constexpr double kPromise = 0.01;
 
 enum class What { cylindrical, semi_cylindrical };
 
@@ -96,8 +96,8 @@ void expect_rungs_match(const char* label, const Emitter& e, const Vec3& x, What
       "(%+.4f %%)  far %10.2f\n",
       label, t.value, standard, 100 * (standard / t.value - 1), high, 100 * (high / t.value - 1),
       reference, 100 * (reference / t.value - 1), far);
-  EXPECT_NEAR(standard, t.value, kStandardPromise * t.value) << label;
-  EXPECT_NEAR(hybrid, t.value, kStandardPromise * t.value) << label;
+  EXPECT_NEAR(standard, t.value, kPromise * t.value) << label;
+  EXPECT_NEAR(hybrid, t.value, kPromise * t.value) << label;
   // high promises 0.3 % (docs/accuracy.md); the reference 1e-6 of its own integrand, which the
   // brute force matches to its own convergence (1e-3 between 600 and 1200 cells, so 0.3 % here
   // too).

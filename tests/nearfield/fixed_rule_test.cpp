@@ -16,7 +16,7 @@
 namespace luxgrid::nearfield {
 namespace {
 
-photometry::Photometry load(const std::string& rel) {
+photometry::Photometry load_fixture(const std::string& rel) {
   return photometry::load_photometry_file(std::string(LUXGRID_SOURCE_DIR) +
                                           "/tests/data/photometry/" + rel);
 }
@@ -75,7 +75,7 @@ TEST(FixedRule, MirelKinkFarOutWithinThePromiseWhereTheFarFieldIsNot) {
   // The Mirel's C0 gamma 35-40 kink: the far field's error falls only as 1 / d (docs/nearfield.md)
   // and is above 1 % at 10 D; the fixed rule, 3 x 3 nodes, must be within the promise / 1.25
   // there (what the map admits) against the table rung.
-  const auto ph = load("ldt/zumtobel_mirel_isym4.ldt");
+  const auto ph = load_fixture("ldt/zumtobel_mirel_isym4.ldt");
   const Emitter e = make_emitter(ph.opening, Vec3(0, 0, 3), glm::dmat3(1.0), ph.distribution);
   const Vec3 u = photometry::direction_of(0.0, 37.5 * kDegToRad);
   const double d = 10.0 * e.largest_dimension_m;
@@ -98,7 +98,7 @@ TEST(FixedRule, LeftToTheTableRungWhereThatIsInClosedForm) {
   // 1e-4 of the reference (the rung's psi rule: 4.1e-5 at worst on the constant table of
   // table_cubature_test). A receiver tilted off the
   // axis keeps the fixed rule, as before.
-  auto ph = load("ies/indoor_full360_lm02.ies");
+  auto ph = load_fixture("ies/indoor_full360_lm02.ies");
   ph.opening.shape = photometry::LuminousOpening::Shape::rectangle;
   ph.opening.length = ph.opening.width = 0.6;
   Emitter e = make_emitter(ph.opening, Vec3(2, 2, 3), glm::dmat3(1.0), ph.distribution);

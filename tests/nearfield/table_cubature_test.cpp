@@ -36,7 +36,7 @@ double table_rung(const Emitter& e, const Vec3& p, const Vec3& n) {
   return lux;
 }
 
-Vec3 random_unit(std::mt19937_64& rng) {
+Vec3 random_direction(std::mt19937_64& rng) {
   std::normal_distribution<double> g;
   return glm::normalize(Vec3(g(rng), g(rng), g(rng)));
 }
@@ -86,8 +86,8 @@ TEST(TableRung, ReusedScratchGivesTheBitsOfAFreshOne) {
   for (const FileCase& f : files()) {
     const Emitter e = testing::paper_emitter(0.0, 3 * kPi / 4, f.distribution, 1.2, 0.3);
     for (int k = 0; k < 20; ++k) {
-      const Vec3 p = e.centroid + (0.05 + 3.0 * std::abs(unit(rng))) * random_unit(rng);
-      const Vec3 n = random_unit(rng);
+      const Vec3 p = e.centroid + (0.05 + 3.0 * std::abs(unit(rng))) * random_direction(rng);
+      const Vec3 n = random_direction(rng);
       double lux = -1.0;
       ASSERT_TRUE(table_aligned_illuminance(e, p, n, lux, reused));
       EXPECT_EQ(lux, table_rung(e, p, n)) << f.name;
@@ -167,12 +167,12 @@ TEST(TableRung, MatchesTheReferenceOnRandomConfigurations) {
     std::vector<Vec3> points, normals;
 
     for (int k = 0; k < 24; ++k) {
-      const Vec3 axis = random_unit(rng);
+      const Vec3 axis = random_direction(rng);
       const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), 2.0 * kPi * u(rng), axis));
       const Emitter e = make_emitter(o, Vec3(0.0), rotation, f.distribution);
       const double distance = e.largest_dimension_m * std::pow(10.0, -1.0 + 1.7 * u(rng));
-      const Vec3 p = distance * random_unit(rng);
-      const Vec3 n = random_unit(rng);
+      const Vec3 p = distance * random_direction(rng);
+      const Vec3 n = random_direction(rng);
       truth.push_back(reference_illuminance(e, p, n, 1e-8).illuminance_lx);
       got.push_back(table_rung(e, p, n));
       emitters.push_back(e);
@@ -334,12 +334,12 @@ TEST(TableRung, LightVectorGivesTheRungForEveryPlaneThatSeesTheWholeOpening) {
   for (const FileCase& f : files()) {
     const Emitter e = testing::paper_emitter(0.0, 3 * kPi / 4, f.distribution, 1.2, 0.3);
     for (int k = 0; k < 40; ++k) {
-      const Vec3 p = e.centroid + (1.5 + 3.0 * std::abs(unit(rng))) * random_unit(rng);
+      const Vec3 p = e.centroid + (1.5 + 3.0 * std::abs(unit(rng))) * random_direction(rng);
       Vec3 vector(0.0);
       TableRungScratch scratch;
       ASSERT_TRUE(table_light_vector(e, p, vector, scratch));
       for (int m = 0; m < 5; ++m) {
-        const Vec3 n = glm::normalize(glm::normalize(e.centroid - p) + 0.6 * random_unit(rng));
+        const Vec3 n = glm::normalize(glm::normalize(e.centroid - p) + 0.6 * random_direction(rng));
         bool whole = true;
         for (const Vec3& v : e.vertices) whole = whole && glm::dot(v - p, n) > 0.0;
         if (!whole) continue;

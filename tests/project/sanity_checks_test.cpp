@@ -17,7 +17,7 @@ namespace {
 
 // A 6 x 4 x 2.8 m office, one Lambertian downlight in the middle, a workplane and a wall plane
 // facing into the room.
-nlohmann::json office() {
+nlohmann::json lit_office() {
   return nlohmann::json::parse(R"({
     "format": "luxgrid-project/1", "name": "t",
     "photometry": { "down": { "builtin": "lambertian", "intensity_cd": 1000 } },
@@ -49,19 +49,19 @@ void expect_one_warning(const nlohmann::json& doc, std::initializer_list<const c
 }
 
 TEST(SanityChecks, TheCleanOfficeHasNone) {
-  EXPECT_EQ(warnings_of(office()), std::vector<std::string>{});
+  EXPECT_EQ(warnings_of(lit_office()), std::vector<std::string>{});
 }
 
 TEST(SanityChecks, ARoomInMillimetresInPlanWarns) {
   // 1500 x 4 m in plan, 2.8 m high: the plan is in millimetres, the height (wrongly) not.
-  auto doc = office();
+  auto doc = lit_office();
   doc["rooms"][0]["outline"] = nlohmann::json::parse("[[0,0],[1500,0],[1500,4],[0,4]]");
   expect_one_warning(doc, {"p.json /rooms/0: room \"office\": the room is", "1500 m x 4 m",
                            "looks like millimetres", "luxgrid reads every length in metres"});
 }
 
 TEST(SanityChecks, APlaneInMillimetresWarns) {
-  auto doc = office();
+  auto doc = lit_office();
   doc["surfaces"][1] = nlohmann::json::parse(
       R"({ "name": "sign", "plane": { "origin": [0, 0, 0], "u": [1, 0, 0], "v": [0, 1, 0], "size": [2000, 1000] },
            "spacing": 200 })");
@@ -70,7 +70,7 @@ TEST(SanityChecks, APlaneInMillimetresWarns) {
 }
 
 TEST(SanityChecks, ARoomHigherThanAnyHallIsRefusedAsMillimetres) {
-  auto doc = office();
+  auto doc = lit_office();
   doc["rooms"][0]["height"] = 2800;
   try {
     (void)parse_project(doc, "p.json", ".");
@@ -89,7 +89,7 @@ TEST(SanityChecks, ARoomHigherThanAnyHallIsRefusedAsMillimetres) {
 
 TEST(SanityChecks, ASpacingLargerThanTheSurfaceWarnsAndSoDoesTheOnePointGrid) {
   // "spacing": 250 meant in millimetres: the 5 x 3 m workplane becomes one cell.
-  auto doc = office();
+  auto doc = lit_office();
   doc["surfaces"][0]["spacing"] = 250;
   const auto w = warnings_of(doc);
   ASSERT_EQ(w.size(), 2u);
@@ -106,7 +106,7 @@ TEST(SanityChecks, ASpacingLargerThanTheSurfaceWarnsAndSoDoesTheOnePointGrid) {
 }
 
 TEST(SanityChecks, AGridOfTwoRowsWarnsAndThreeDoesNot) {
-  auto doc = office();
+  auto doc = lit_office();
   doc["surfaces"][0]["spacing"] = 1.5;  // 5 x 3 m: ceil(5/1.5) = 4 by ceil(3/1.5) = 2
   expect_one_warning(doc, {"p.json /surfaces/0: surface \"wp\": a grid", "(4 x 2 points)"});
   doc["surfaces"][0]["spacing"] = 1.0;  // 5 x 3 points
@@ -114,7 +114,7 @@ TEST(SanityChecks, AGridOfTwoRowsWarnsAndThreeDoesNot) {
 }
 
 TEST(SanityChecks, RoomSurfacesNameTheirCoarseGrids) {
-  auto doc = office();
+  auto doc = lit_office();
   doc["surfaces"].push_back(nlohmann::json::parse(
       R"({ "name": "room", "room_surfaces": { "room": "office" }, "spacing": 1.0 })"));
   // Floor and ceiling 6 x 4 points, long walls 6 x 3, short walls 4 x 3: all at least 3 x 3.
@@ -127,7 +127,7 @@ TEST(SanityChecks, RoomSurfacesNameTheirCoarseGrids) {
 TEST(SanityChecks, FluxInKilolumensWarns) {
   // The Mirel file gives 2632 lm; a flux of 4.4 klm written as 4.4 lm is a thousand times too dim.
   const std::string base = std::string(LUXGRID_SOURCE_DIR) + "/examples/office";
-  auto doc = office();
+  auto doc = lit_office();
   doc["photometry"]["down"] = {{"file", "photometry/zumtobel_mirel_isym4.ldt"}, {"flux_lm", 4.4}};
   expect_one_warning(doc,
                      {"p.json /photometry/down/flux_lm: flux_lm 4.4 lm", "looks like kilolumens",
@@ -138,7 +138,7 @@ TEST(SanityChecks, FluxInKilolumensWarns) {
 }
 
 TEST(SanityChecks, RotationsInRadiansWarnWholeDegreesDoNot) {
-  auto doc = office();
+  auto doc = lit_office();
   doc["luminaires"][0]["rotation"] = {0, 0, 1.5708};
   expect_one_warning(
       doc, {"p.json /luminaires/0/rotation: the rotation [0, 0, 1.5708] looks like radians",
@@ -154,7 +154,7 @@ TEST(SanityChecks, RotationsInRadiansWarnWholeDegreesDoNot) {
 TEST(SanityChecks, ALuminaireAimedIntoANearbyWallWarns) {
   // 0.3 m from the west wall (x = 0), turned 90 deg about y: its nadir (-z) turns to -x, into
   // the wall 0.3 m away (wall 3 runs from corner 3 (0, 4) to corner 0 (0, 0)).
-  auto doc = office();
+  auto doc = lit_office();
   doc["luminaires"][0]["position"] = {0.3, 2, 2.0};
   doc["luminaires"][0]["rotation"] = {0, 90, 0};
   expect_one_warning(
@@ -167,7 +167,7 @@ TEST(SanityChecks, ALuminaireAimedIntoANearbyWallWarns) {
 }
 
 TEST(SanityChecks, AnArrayNamesItsFirstMemberAimedIntoAWall) {
-  auto doc = office();
+  auto doc = lit_office();
   doc["luminaires"][0] = nlohmann::json::parse(
       R"({ "name": "row", "photometry": "down", "rotation": [0, 90, 0],
            "array": { "origin": [0.2, 1, 2], "count": [2, 3], "spacing": [3, 1] } })");
@@ -179,7 +179,7 @@ TEST(SanityChecks, AnArrayNamesItsFirstMemberAimedIntoAWall) {
 
 TEST(SanityChecks, AGridFacingOutOfEveryRoomWarns) {
   // The south wall plane with u and v swapped: its normal (u x v) points to -y, out of the room.
-  auto doc = office();
+  auto doc = lit_office();
   doc["surfaces"][1]["plane"]["u"] = {0, 0, 1};
   doc["surfaces"][1]["plane"]["v"] = {-1, 0, 0};
   expect_one_warning(
