@@ -10,11 +10,11 @@
 #   3. each libFuzzer target for a fixed time on a corpus seeded from tests/data, examples/ and
 #      cases/.
 # Skips (exit 0, saying so) when clang++ is missing.
-#   fuzz/run.sh [seconds-per-fuzzer=20] [build-dir=build-fuzz]
+#   fuzz/run.sh [seconds-per-fuzzer=12] [build-dir=build-fuzz]
 # Exit status: non-zero if a sanitized test or the scene failed or a fuzzer found a crash (the
 # reproducer is left in the build dir).
 set -eu
-SECONDS_PER_TARGET="${1:-20}"
+SECONDS_PER_TARGET="${1:-12}"
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 BUILD="${2:-$ROOT/build-fuzz}"
 CXX_CLANG="$(command -v clang++ || true)"
@@ -26,7 +26,7 @@ LAUNCHER=""
 if command -v ccache >/dev/null 2>&1; then LAUNCHER="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"; fi
 cmake -S "$ROOT" -B "$BUILD" -DCMAKE_CXX_COMPILER="$CXX_CLANG" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DLUXGRID_SANITIZE=ON -DLUXGRID_BUILD_BENCH=OFF $LAUNCHER >/dev/null
-cmake --build "$BUILD" -j"$(nproc)" --target luxgrid photometry_tests project_tests \
+cmake --build "$BUILD" -j"$(($(nproc) + 1))" --target luxgrid photometry_tests project_tests \
   ies_reader_fuzz eulumdat_reader_fuzz project_loader_fuzz
 
 # Leak checking is on too (LeakSanitizer is part of ASan); UB aborts (-fno-sanitize-recover).

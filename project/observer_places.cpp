@@ -1,10 +1,9 @@
 // Where an observer may stand (project_parts.h, check_observer_places).
-#include <cstdio>
-
 #include "calc/glare/luminous_solid_angle.h"
 #include "calc/glare/ugr.h"
 #include "geometry/polygon.h"
 #include "project/project_parts.h"
+#include "util/format.h"
 
 namespace luxgrid::project::parts {
 
@@ -30,12 +29,6 @@ bool reflects_nothing(const calc::Room& room) {
   for (const auto& o : room.obstacles)
     if (o.reflectance > 0.0) return false;
   return true;
-}
-
-std::string format_sr(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
 }
 
 }  // namespace
@@ -89,11 +82,19 @@ void check_observer_places(const JsonValue& s, const geometry::SurfaceGrid& grid
                   "so UGR's background luminance would be 0 and UGR unbounded");
       }
     }
+    if (!counts && end_point > first_point) {
+      // CIE 117's sum has no term: UGR is not defined there (not "no glare"), and the results
+      // carry none for its views. Said here, at its place, rather than left as a blank.
+      scene.warnings.push_back(
+          {at_v.location(), "observer " + std::to_string(k) +
+                                ": no luminaire lies in the field of view of any of its views "
+                                "(visibility aside), so it has no UGR"});
+    }
     if (nearest) {
       scene.warnings.push_back(
           {at_v.location(),
            "observer " + std::to_string(k) + ": " + nearest->label + " subtends " +
-               format_sr(nearest_sr) +
+               format_double("%.3g", nearest_sr) +
                " sr, more than the 0.1 sr CIE 117 states UGR for; its term takes the exact "
                "solid angle of the luminous area (A_p / d^2 would overstate it), and the UGR "
                "there is outside the formula's range"});

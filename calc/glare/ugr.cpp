@@ -22,7 +22,7 @@ ViewFrame ViewFrame::looking(const Vec3& direction) {
 
 std::optional<GlareTerm> glare_term(const photometry::IntensityDistribution& distribution,
                                     const photometry::LuminousOpening& opening, const Pose& pose,
-                                    const Vec3& eye, const ViewFrame& view) {
+                                    const Vec3& eye, const ViewFrame& view, SolidAngleRule rule) {
   const Vec3 d = pose.position - eye;  // eye -> luminaire
   const double R = glm::dot(d, view.forward), H = glm::dot(d, view.up), T = glm::dot(d, view.right);
   if (!in_guth_field(R, T, H)) return std::nullopt;
@@ -37,7 +37,7 @@ std::optional<GlareTerm> glare_term(const photometry::IntensityDistribution& dis
   t.omega_sr = area_m2 / dist2;
   // Nearer than CIE 117's largest source, A_p / d^2 overstates the solid angle without bound:
   // the exact one (luminous_solid_angle.h), at most 2 pi.
-  if (t.omega_sr > kLargestRatedSource_sr) {
+  if (rule == SolidAngleRule::exact_beyond_rated_range && t.omega_sr > kLargestRatedSource_sr) {
     t.omega_sr = luminous_solid_angle_sr(opening, -d * pose.rotation);
     t.exact_solid_angle = true;
   }

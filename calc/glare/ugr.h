@@ -25,12 +25,19 @@ struct ViewFrame {
   static ViewFrame looking(const Vec3& direction);
 };
 
+// The solid angle a term uses. CIE 117's A_p / d^2 everywhere (what CIE 190's tabular method
+// prescribes, so that a table compares with the maker's data sheet), or the exact solid angle of
+// the luminous area where A_p / d^2 exceeds the 0.1 sr CIE 117 rates UGR for (an eye at a real
+// luminaire: A_p / d^2 grows without bound, a solid angle stays within 2 pi).
+enum class SolidAngleRule { cie117_formula, exact_beyond_rated_range };
+
 // The term of one luminaire (distribution and opening at `pose`) for an eye at `eye` looking
 // along `view`; none when it lies outside the position index's field, emits nothing towards the
 // eye or shows no luminous area. Visibility is the caller's.
 std::optional<GlareTerm> glare_term(const photometry::IntensityDistribution& distribution,
                                     const photometry::LuminousOpening& opening, const Pose& pose,
-                                    const Vec3& eye, const ViewFrame& view);
+                                    const Vec3& eye, const ViewFrame& view,
+                                    SolidAngleRule rule = SolidAngleRule::exact_beyond_rated_range);
 
 // 8 log10(0.25 sum / Lb) for sum > 0 and Lb > 0.
 double unified_glare_rating(double sum, double Lb_cd_m2);

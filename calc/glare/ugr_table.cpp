@@ -218,7 +218,9 @@ RoomDirect room_direct(const photometry::IntensityDistribution& d,
   for (double y : ys)
     for (double x : xs) {
       pose.position = Vec3(x, y, H);
-      if (const auto t = glare_term(d, o, pose, eye, view)) sum += t->value();
+      // CIE 190's tabular method takes A_p / d^2 for every luminaire, as the makers' tables do.
+      if (const auto t = glare_term(d, o, pose, eye, view, SolidAngleRule::cie117_formula))
+        sum += t->value();
     }
   RoomDirect r;
   r.glare_sum = sum, r.X = X, r.Y = Y, r.H = H;

@@ -88,3 +88,34 @@ TEST(UgrSum, SourcesOutsideTheFieldOrFacingAwayDoNotCount) {
 
 }  // namespace
 }  // namespace luxgrid::calc::glare
+
+namespace luxgrid::calc::glare {
+namespace {
+
+// A 0.6 x 0.3 m Lambertian panel 0.5 m above an eye looking up at 60 degrees (inside the Guth
+// field): A_p / d^2 = 0.72 sr, beyond the 0.1 sr CIE 117 rates. CIE 190's tables keep
+// A_p / d^2 (SolidAngleRule::cie117_formula, bit for bit); an observer's term takes the exact
+// solid angle of the rectangle on its axis, 4 asin(ab / sqrt((a^2 + d^2)(b^2 + d^2))) with
+// half-sides a, b (Omega = 0.5773 sr here), to 1e-9.
+TEST(UgrSum, TablesKeepCie117sSolidAngleObserversTakeTheExactOneBeyondItsRange) {
+  const photometry::LambertianDistribution lambert(1500.0);
+  photometry::LuminousOpening o;
+  o.shape = photometry::LuminousOpening::Shape::rectangle;
+  o.length = 0.6, o.width = 0.3;
+  const Vec3 eye(0.0, 0.0, 1.2);
+  Pose pose;
+  pose.position = eye + Vec3(0.0, 0.0, 0.5);
+  const ViewFrame frame = ViewFrame::looking(Vec3(0.5, 0.0, std::sqrt(3.0) / 2.0));
+  const auto formula = glare_term(lambert, o, pose, eye, frame, SolidAngleRule::cie117_formula);
+  const auto exact = glare_term(lambert, o, pose, eye, frame);
+  ASSERT_TRUE(formula.has_value());
+  ASSERT_TRUE(exact.has_value());
+  EXPECT_EQ(formula->omega_sr, 0.6 * 0.3 / 0.25);
+  const double a = 0.3, b = 0.15, d = 0.5;
+  EXPECT_NEAR(exact->omega_sr,
+              4.0 * std::asin(a * b / std::sqrt((a * a + d * d) * (b * b + d * d))), 1e-9);
+  EXPECT_LT(exact->omega_sr, formula->omega_sr);
+}
+
+}  // namespace
+}  // namespace luxgrid::calc::glare

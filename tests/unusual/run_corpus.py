@@ -47,9 +47,10 @@ def snapshot(folder, skip):
     return state
 
 
-# The one place results.json may hold null: an observer's UGR outside CIE 117's range
-# (docs/reliability.md).
-MAY_BE_NULL = ("/UGR",)
+# Where results.json may hold null (docs/reliability.md): a view's UGR where it has none (no
+# luminaire in its field, or outside CIE 117's range), and the surface's UGR_max when no view
+# has one.
+MAY_BE_NULL = ("/UGR", "/UGR_max")
 
 
 def bad_number(where, value):
