@@ -26,7 +26,7 @@ LAUNCHER=""
 if command -v ccache >/dev/null 2>&1; then LAUNCHER="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"; fi
 cmake -S "$ROOT" -B "$BUILD" -DCMAKE_CXX_COMPILER="$CXX_CLANG" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DLUXGRID_SANITIZE=ON -DLUXGRID_BUILD_BENCH=OFF $LAUNCHER >/dev/null
-cmake --build "$BUILD" -j"$(($(nproc) + 1))" --target luxgrid photometry_tests project_tests \
+cmake --build "$BUILD" -j"$(nproc)" --target luxgrid photometry_tests project_tests \
   ies_reader_fuzz eulumdat_reader_fuzz project_loader_fuzz
 
 # Leak checking is on too (LeakSanitizer is part of ASan); UB aborts (-fno-sanitize-recover).

@@ -12,10 +12,8 @@ if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCH
 options=()
 if [ "${CI:-}" = true ]; then options+=(-DLUXGRID_WERROR=ON -DLUXGRID_BUILD_BENCH=OFF); fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" "${options[@]}" >/dev/null
-# One job more than cores: a job waiting on the disk or the linker leaves no core idle.
-jobs=$(($(nproc) + 1))
 if [ "$#" -gt 0 ]; then
-  cmake --build build -j"$jobs" --target "$@"
+  cmake --build build -j"$(nproc)" --target "$@"
 else
-  cmake --build build -j"$jobs"
+  cmake --build build -j"$(nproc)"
 fi
