@@ -1,21 +1,64 @@
 #pragma once
-// Each subcommand lives in its own file and registers itself on the CLI11 app. `run` is set to the
-// function main() calls when that subcommand was chosen; it returns the process exit code
-// (0 ok, 1 calculation error, 2 bad input or usage, 3 a requirement not met with --check).
-#include <functional>
-
-#include <CLI/CLI.hpp>
+// Each subcommand lives in its own file as its arguments and the function that runs it; the
+// command line itself (options, help texts, parsing with CLI11) is cli/command_line.cpp, the one
+// file that includes CLI11. Each run_* returns the process exit code (0 ok, 1 calculation error,
+// 2 bad input or usage, 3 a requirement not met with --check).
+#include <string>
+#include <vector>
 
 namespace luxgrid::cli {
 
-using Runner = std::function<int()>;
+// `luxgrid calc`: cli/calc_command.cpp.
+struct CalcArgs {
+  std::string project, out, quality, scale, arrays, scene;
+  bool no_report = false, check = false, with_cost = false, part_plots = false;
+};
+int run_calc(const CalcArgs& args);
 
-void add_calc_command(CLI::App& app, Runner& run);      // cli/calc_command.cpp
-void add_report_command(CLI::App& app, Runner& run);    // cli/report_command.cpp
-void add_validate_command(CLI::App& app, Runner& run);  // cli/validate_command.cpp
-void add_info_command(CLI::App& app, Runner& run);      // cli/info_command.cpp
-void add_diff_command(CLI::App& app, Runner& run);      // cli/diff_command.cpp
-void add_cost_command(CLI::App& app, Runner& run);      // cli/cost_command.cpp
-void add_accuracy_command(CLI::App& app, Runner& run);  // cli/accuracy_command.cpp
+// `luxgrid report`: cli/report_command.cpp.
+struct ReportArgs {
+  std::string results, out, scale;
+  bool part_plots = false;
+};
+int run_report(const ReportArgs& args);
+
+// `luxgrid validate`: cli/validate_command.cpp.
+struct ValidateArgs {
+  std::string cases, out = "validation.out";
+};
+int run_validate(const ValidateArgs& args);
+
+// `luxgrid info`: cli/info_command.cpp.
+struct InfoArgs {
+  std::string file;
+  bool json = false;
+  std::vector<std::string> at;  // "C,gamma" in degrees, each
+  std::string plot;
+  std::string interpolation = "bilinear";
+  bool ugr = false;
+};
+int run_info(const InfoArgs& args);
+
+// `luxgrid diff`: cli/diff_command.cpp.
+struct DiffArgs {
+  std::string a, b;
+  double tol = -1.0;  // negative: report only, never fail
+};
+int run_diff(const DiffArgs& args);
+
+// `luxgrid cost`: cli/cost_command.cpp.
+struct CostArgs {
+  std::string project;
+};
+int run_cost(const CostArgs& args);
+
+// `luxgrid accuracy`: cli/accuracy_command.cpp.
+struct AccuracyArgs {
+  std::string out = "accuracy";
+  std::string photometry;  // empty: the repository's tests/data/photometry/ldt (cli/data_paths.h)
+  bool quick = false;
+  int grid = 0;  // 0: the study's default (AccuracyOptions::grid), 6 with --quick
+};
+int run_accuracy(const AccuracyArgs& args);
 
 }  // namespace luxgrid::cli

@@ -3,7 +3,6 @@
 // largest and mean point difference to the reference run beside the plan's own estimate of it,
 // then what each level promises and simulated.
 #include <cstdio>
-#include <memory>
 
 #include "app/run_project.h"
 #include "cli/commands.h"
@@ -11,28 +10,17 @@
 
 namespace luxgrid::cli {
 
-void add_cost_command(CLI::App& app, Runner& run) {
-  struct Options {
-    std::string project;
-  };
-  auto opt = std::make_shared<Options>();
-  CLI::App* cmd =
-      app.add_subcommand("cost", "Run a project at every quality and show time against accuracy");
-  cmd->add_option("PROJECT", opt->project, "Project file (JSON)")->required();
-  cmd->callback([opt, &run] {
-    run = [opt] {
-      const project::Project loaded = project::load_project(opt->project);
-      for (const auto& w : loaded.scene.warnings)
-        std::fprintf(stderr, "luxgrid: warning: %s\n", w.text().c_str());
-      const auto table = app::run_cost(loaded.scene, true);
-      // Each level's surfaces whose estimated error exceeds its promise (the table marks them "!").
-      for (const auto& level : table.levels)
-        for (const auto& w : level.warnings)
-          std::fprintf(stderr, "luxgrid: warning: %s: %s\n", level.quality.c_str(), w.c_str());
-      std::fputs(report::format_cost_table(table).c_str(), stdout);
-      return 0;
-    };
-  });
+int run_cost(const CostArgs& args) {
+  const project::Project loaded = project::load_project(args.project);
+  for (const auto& w : loaded.scene.warnings)
+    std::fprintf(stderr, "luxgrid: warning: %s\n", w.text().c_str());
+  const auto table = app::run_cost(loaded.scene, true);
+  // Each level's surfaces whose estimated error exceeds its promise (the table marks them "!").
+  for (const auto& level : table.levels)
+    for (const auto& w : level.warnings)
+      std::fprintf(stderr, "luxgrid: warning: %s: %s\n", level.quality.c_str(), w.c_str());
+  std::fputs(report::format_cost_table(table).c_str(), stdout);
+  return 0;
 }
 
 }  // namespace luxgrid::cli

@@ -83,8 +83,15 @@ void write_polar_png(const Photometry& p, const std::string& title,
     throw InputError(SourceLocation{path.string()}, "cannot write the image: " + ec.message());
 }
 
-int run_info(const std::string& file, bool json, const std::vector<std::string>& at_args,
-             const std::string& plot, const std::string& interpolation, bool ugr) {
+}  // namespace
+
+int run_info(const InfoArgs& args) {
+  const std::string& file = args.file;
+  const bool json = args.json;
+  const std::string& plot = args.plot;
+  const std::string& interpolation = args.interpolation;
+  const bool ugr = args.ugr;
+  const std::vector<std::string>& at_args = args.at;
   std::vector<At> at;
   for (const auto& s : at_args) at.push_back(parse_at(s));
   // A TILT file named by FILE must lie in FILE's folder or below it (docs/photometry.md).
@@ -202,35 +209,6 @@ int run_info(const std::string& file, bool json, const std::vector<std::string>&
   for (const auto& w : p.warnings) std::fprintf(stderr, "luxgrid: warning: %s\n", w.c_str());
   if (!plot.empty()) write_polar_png(p, std::filesystem::path(file).filename().string(), plot);
   return 0;
-}
-
-}  // namespace
-
-void add_info_command(CLI::App& app, Runner& run) {
-  auto* cmd = app.add_subcommand("info",
-                                 "Summarise an IES or EULUMDAT file: flux, LOR, DFF, beam angles, "
-                                 "intensities, polar diagram");
-  auto file = std::make_shared<std::string>();
-  auto json = std::make_shared<bool>(false);
-  auto at = std::make_shared<std::vector<std::string>>();
-  auto plot = std::make_shared<std::string>();
-  auto interpolation = std::make_shared<std::string>("bilinear");
-  auto ugr = std::make_shared<bool>(false);
-  cmd->add_option("file", *file, "IES (.ies) or EULUMDAT (.ldt) file")->required();
-  cmd->add_flag("--json", *json, "print JSON instead of text");
-  cmd->add_option("--at", *at, "C,gamma in degrees (repeatable): intensity in that direction")
-      ->allow_extra_args(false);
-  cmd->add_option("-o,--plot", *plot, "write a polar diagram PNG (C0-C180 and C90-C270 planes)");
-  cmd->add_option("--interpolation", *interpolation, "bilinear (default) or bicubic")
-      ->check(CLI::IsMember({"bilinear", "bicubic"}));
-  cmd->add_flag("--ugr", *ugr,
-                "add the CIE 190 UGR table (rooms 2H to 12H, five reflectance combinations, "
-                "viewed crosswise and endwise)");
-  cmd->callback([&run, file, json, at, plot, interpolation, ugr] {
-    run = [file, json, at, plot, interpolation, ugr] {
-      return run_info(*file, *json, *at, *plot, *interpolation, *ugr);
-    };
-  });
 }
 
 }  // namespace luxgrid::cli
