@@ -24,8 +24,6 @@ constexpr double kPoleSpreadFraction = 0.02;
 // show that much more or less light than the data sheet. Points, not a relative 2 %: a DFF of
 // 1.7 % that integrates to 2.2 % (zumtobel_floor_uplight_dg0.ldt) is not wrong.
 constexpr double kStatedRatioPoints = 0.02;
-// Angles equal to a file's printed precision (4 decimals).
-constexpr double kSameAngleDeg = 1e-6;
 
 std::string cd_text(double cd) { return format_double(cd >= 100 ? "%.0f" : "%.3g", cd); }
 

@@ -14,6 +14,9 @@ namespace luxgrid::photometry {
 // largest real file seen (a 360 x 181 EULUMDAT) is 0.5 MB.
 inline constexpr std::size_t kMaxPhotometryFileBytes = 32u << 20;
 
+// Two angles in degrees closer than this are the same angle: files print at most 4 decimals.
+inline constexpr double kSameAngleDeg = 1e-6;
+
 // Header counts, checked before any table is allocated; real files stay far below (the largest
 // in the corpus has 94,943 values).
 inline constexpr long kMaxAngles = 100000;

@@ -4,13 +4,12 @@
 #include <cmath>
 #include <map>
 
+#include "photometry/limits.h"
 #include "util/error.h"
 
 namespace luxgrid::photometry {
 
 namespace {
-// Two angles in degrees closer than this are the same plane (files print at most 4 decimals).
-constexpr double kSameAngleDeg = 1e-6;
 
 bool same(double a, double b) { return std::abs(a - b) < kSameAngleDeg; }
 

@@ -14,8 +14,6 @@ namespace {
 // sees (real corpus files: at most 0.4 % at the horizon, acme_road_dc0_dg0_isym3.ldt); above
 // it, a measured cut-off would have reached zero before the table ends.
 constexpr double kCutOffFraction = 0.01;
-// Angles equal to a file's printed precision (4 decimals).
-constexpr double kSameAngleDeg = 1e-6;
 constexpr double kHorizonDeg = 90.0;
 constexpr double kUpwardPoleDeg = 180.0;
 

@@ -1,4 +1,5 @@
 #pragma once
+// Fields of results.json shared by its writer and its readers. A vector is a JSON array [x, y, z].
 // The readers of results.json (report/plan_json.cpp, report/report_input_json.cpp) read an
 // object's members into variables, each member required (json::at throws, and the caller names
 // the JSON pointer): one helper for that shape, the members in the order given.
@@ -6,7 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "util/robust_math.h"  // Vec3
+
 namespace luxgrid::report {
+
+inline nlohmann::json vec3_json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
 inline void read_fields(const nlohmann::json&) {}
 

@@ -14,7 +14,6 @@ namespace {
 using nlohmann::json;
 
 json vec2(const Vec2& v) { return json::array({v.x, v.y}); }
-json vec3(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
 Vec2 read_vec2(const json& j) { return {j.at(0).get<double>(), j.at(1).get<double>()}; }
 Vec3 read_vec3(const json& j) {
   return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()};
@@ -99,8 +98,8 @@ json luminaire_json(const calc::Luminaire& l) {
   const auto& m = l.pose.rotation;
   return {{"label", l.label},
           {"photometry", l.photometry},
-          {"position", vec3(l.pose.position)},
-          {"rotation", json::array({vec3(m[0]), vec3(m[1]), vec3(m[2])})},
+          {"position", vec3_json(l.pose.position)},
+          {"rotation", json::array({vec3_json(m[0]), vec3_json(m[1]), vec3_json(m[2])})},
           {"opening",
            {{"shape", shape_name(l.opening.shape)},
             {"length", l.opening.length},
@@ -187,8 +186,12 @@ RequirementCheck read_check(const json& j) {
 json surface_frame_json(const geometry::SurfaceGrid& g) {
   json region = json::array();
   for (const auto& p : g.region) region.push_back(polygon(p));
-  return {{"origin", vec3(g.origin)},   {"u_dir", vec3(g.u_dir)}, {"v_dir", vec3(g.v_dir)},
-          {"size_u", g.size_u},         {"size_v", g.size_v},     {"observer", g.observer},
+  return {{"origin", vec3_json(g.origin)},
+          {"u_dir", vec3_json(g.u_dir)},
+          {"v_dir", vec3_json(g.v_dir)},
+          {"size_u", g.size_u},
+          {"size_v", g.size_v},
+          {"observer", g.observer},
           {"region", std::move(region)}};
 }
 

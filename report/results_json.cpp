@@ -1,4 +1,5 @@
 #include "report/results_json.h"
+#include "report/json_fields.h"
 
 #include <algorithm>
 #include <array>
@@ -8,6 +9,7 @@
 #include <string_view>
 
 #include "report/chunked_text.h"
+#include "report/json_fields.h"
 #include "report/number_text_memo.h"
 #include "report/piece_buffer.h"
 #include "report/plan_json.h"
@@ -28,8 +30,6 @@ constexpr std::array<std::pair<PointArray, const char*>, 6> kPointArrays = {
 // A placeholder's text starts with a control character, which dump() writes escaped: the
 // escaped form after a key at the start of a line cannot come from any string of the input.
 constexpr std::string_view kPlaceholderTag = "\\u0001points ";
-
-nlohmann::json vec3(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
 const char* kind_name(geometry::SurfaceGrid::Kind k) {
   switch (k) {
@@ -55,13 +55,13 @@ nlohmann::json observers_json(const std::vector<calc::glare::ObserverResult>& ob
                          {"omega", t.term.omega_sr},
                          {"p", t.term.p}});
       }
-      views.push_back({{"direction", vec3(v.direction)},
+      views.push_back({{"direction", vec3_json(v.direction)},
                        {"UGR", v.UGR ? json(*v.UGR) : json(nullptr)},
                        {"Lb", v.Lb_cd_m2},
                        {"E_indirect", v.E_indirect_lx},
                        {"terms", std::move(terms)}});
     }
-    out.push_back({{"at", vec3(o.at)}, {"views", std::move(views)}});
+    out.push_back({{"at", vec3_json(o.at)}, {"views", std::move(views)}});
   }
   return out;
 }
@@ -87,8 +87,8 @@ nlohmann::json surface_json(const calc::SurfaceResult& r, size_t index, bool arr
   if (arrays) {
     json points = json::array(), normals = json::array();
     for (size_t i = 0; i < g.points.size(); ++i) {
-      points.push_back(vec3(g.points[i]));
-      normals.push_back(vec3(g.normals[i]));
+      points.push_back(vec3_json(g.points[i]));
+      normals.push_back(vec3_json(g.normals[i]));
     }
     s["points"] = std::move(points);
     s["normals"] = std::move(normals);
