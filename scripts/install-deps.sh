@@ -4,7 +4,10 @@
 set -euo pipefail
 packages=(cmake make g++ pkg-config
           libcgal-dev libglm-dev libdeflate-dev libpng-dev libfreetype-dev nlohmann-json3-dev libtbb-dev libcli11-dev nettle-dev
-          libgtest-dev libbenchmark-dev fonts-dejavu-core python3 chromium poppler-utils clang-format ${LUXGRID_EXTRA_PACKAGES:-})
+          libgtest-dev libbenchmark-dev fonts-dejavu-core python3 chromium poppler-utils clang-format
+          # The Python package (python/, docs/python.md), its tests and its examples.
+          python3-dev pybind11-dev python3-numpy python3-pandas python3-distributed python3-pytest
+          python3-matplotlib ${LUXGRID_EXTRA_PACKAGES:-})
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
