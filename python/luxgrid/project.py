@@ -47,11 +47,11 @@ class Project:
         return json.dumps(self.document, allow_nan=False), self.name, self.base_dir
 
     def get(self, pointer):
-        """The value at a JSON pointer; KeyError naming the pointer where there is none."""
+        """The value at a JSON pointer; PointerError (a KeyError) where there is none."""
         return resolve(self.document, pointer)
 
     def with_values(self, values):
-        """A copy with each {pointer: value} set; every pointer must exist (KeyError)."""
+        """A copy with each {pointer: value} set; every pointer must exist (PointerError)."""
         document = copy.deepcopy(self.document)
         for pointer, value in values.items():
             assign(document, pointer, copy.deepcopy(value))
@@ -70,9 +70,17 @@ def load(path):
                    path, warnings)
 
 
+class PointerError(KeyError):
+    """A JSON pointer that names no value of the project: .pointer is it."""
+
+    def __init__(self, pointer, message):
+        super().__init__(f"{pointer}: {message}")
+        self.pointer = pointer
+
+
 def _tokens(pointer):
     if not isinstance(pointer, str) or (pointer and not pointer.startswith("/")):
-        raise KeyError(f"{pointer!r}: a JSON pointer starts with '/'")
+        raise PointerError(pointer, "a JSON pointer starts with '/'")
     if pointer == "":
         return []
     return [t.replace("~1", "/").replace("~0", "~") for t in pointer[1:].split("/")]
@@ -86,11 +94,11 @@ def _step(value, token, pointer):
         if token.isdigit() and (token == "0" or not token.startswith("0")) and \
                 int(token) < len(value):
             return int(token)
-    raise KeyError(f"{pointer}: no such value in the project")
+    raise PointerError(pointer, "no such value in the project")
 
 
 def resolve(document, pointer):
-    """The value at `pointer` in `document`; KeyError naming the pointer where there is none."""
+    """The value at `pointer` in `document`; PointerError where there is none."""
     value = document
     for token in _tokens(pointer):
         value = value[_step(value, token, pointer)]
@@ -101,7 +109,7 @@ def assign(document, pointer, new_value):
     """Replaces the value at `pointer` (which must exist) by `new_value`."""
     tokens = _tokens(pointer)
     if not tokens:
-        raise KeyError("'': a variant cannot replace the whole project")
+        raise PointerError(pointer, "a variant cannot replace the whole project")
     parent = document
     for token in tokens[:-1]:
         parent = parent[_step(parent, token, pointer)]

@@ -7,7 +7,7 @@ import os
 import time
 
 from . import _luxgrid
-from .project import Project
+from .project import PointerError, Project
 
 
 def sweep(project, variants, client=None, quality=None, scene=None, base_dir=None, workers=None,
@@ -64,10 +64,8 @@ def sweep(project, variants, client=None, quality=None, scene=None, base_dir=Non
         params = {p: v[p] if p in v else base.get(p) for p in pointers}
         table.append({**params, **row})
     frame = pandas.DataFrame(table)
-    # The error column last, and present even when every variant succeeded.
-    frame["error"] = frame["error"] if "error" in frame else None
-    frame = frame[[c for c in frame.columns if c != "error"] + ["error"]]
-    return frame
+    # The error column last (a failed variant's row has only it and the run time).
+    return frame[[c for c in frame.columns if c != "error"] + ["error"]]
 
 
 def _input_error(message, pointer=None, cause=None):
@@ -87,9 +85,8 @@ def _checked_texts(base, variants):
     for k, v in enumerate(variants):
         try:
             texts.append(base.with_values(v).source()[0])
-        except KeyError as e:
-            pointer = e.args[0].split(":")[0]
-            raise _input_error(f"variant {k}: {e.args[0]}", pointer) from None
+        except PointerError as e:
+            raise _input_error(f"variant {k}: {e.args[0]}", e.pointer) from None
         except ValueError as e:  # NaN or infinity: not JSON
             raise _input_error(f"variant {k}: {e}") from None
     with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:

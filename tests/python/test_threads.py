@@ -24,7 +24,7 @@ def test_two_threads_calculate_at_once():
 
         def run(k):
             barrier.wait()
-            results[k] = luxgrid.calc(OFFICE, quality="draft")
+            results[k] = luxgrid.calc(OFFICE)
 
         threads = [threading.Thread(target=run, args=(k,)) for k in range(2)]
         for t in threads:
