@@ -56,27 +56,20 @@ std::vector<std::filesystem::path> input_files(const calc::Scene& scene) {
   return out;
 }
 
-RunOutcome run_project(const std::filesystem::path& project_file,
-                       const std::filesystem::path& out_dir, const RunOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
-  {
-    // The worker threads are started now, while the project loads on this one, rather than by
-    // the first parallel loop, which would otherwise run alone on this thread until they are up.
-    tbb::task_group start_workers;
-    start_workers.run([] {});
-    start_workers.wait();
-  }
-  project::Project loaded = project::load_project(project_file);
-  apply_lighting_scene(loaded, options.scene);
-  calc::Scene& scene = loaded.scene;
-  if (options.quality) scene.settings.quality = *options.quality;
-  const double load_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (options.on_load_warning)
-    for (const auto& w : scene.warnings) options.on_load_warning(w.text());
+void start_worker_threads() {
+  tbb::task_group start_workers;
+  start_workers.run([] {});
+  start_workers.wait();
+}
 
-  // Everything that can reject the input has run: only now does an output folder appear.
-  report::OutputFolder folder(out_dir, input_files(scene));
+void prepare_project(project::Project& loaded, const RunOptions& options) {
+  apply_lighting_scene(loaded, options.scene);
+  if (options.quality) loaded.scene.settings.quality = *options.quality;
+}
+
+RunOutcome calculate_project(const project::Project& loaded, const RunOptions& options,
+                             double load_s) {
+  const calc::Scene& scene = loaded.scene;
   RunOutcome outcome;
   try {
     outcome.results = calc::run_scene(
@@ -84,27 +77,31 @@ RunOutcome run_project(const std::filesystem::path& project_file,
   } catch (const InputError& e) {
     // Found only while calculating (a room whose faces exceed the patch budget): name the file.
     end_progress();
-    throw e.in_file(project_file.filename().string());
+    throw e.in_file(scene.project_file.filename().string());
   }
   end_progress();
   outcome.results.timing_s.insert(outcome.results.timing_s.begin(), {"load", load_s});
   outcome.checks = scene_checks(loaded, outcome.results);
   if (options.with_cost) outcome.cost = run_cost(scene, options.show_progress);
-
-  report::OutputOptions out;
-  out.report = options.report;
-  out.arrays_npy = options.arrays_npy;
-  out.part_plots = options.part_plots;
-  out.scale = options.scale;
-  out.scene = &scene;
-  out.checks = outcome.checks;
-  out.cost = outcome.cost ? &*outcome.cost : nullptr;
-  out.version = LUXGRID_VERSION;
   // Scene warnings (legal but suspicious input, naming the object) first, then the outputs'.
   for (const auto& w : scene.warnings) outcome.warnings.push_back(w.text());
   outcome.scene_warnings = scene.warnings.size();
   // The plan's (an error estimate above the quality's promise): printed with the outputs'.
   for (const auto& w : report::plan_warnings(outcome.results.plan)) outcome.warnings.push_back(w);
+  return outcome;
+}
+
+void write_run_outputs(RunOutcome& outcome, const project::Project& loaded,
+                       report::OutputFolder& folder, const RunOptions& options) {
+  report::OutputOptions out;
+  out.report = options.report;
+  out.arrays_npy = options.arrays_npy;
+  out.part_plots = options.part_plots;
+  out.scale = options.scale;
+  out.scene = &loaded.scene;
+  out.checks = outcome.checks;
+  out.cost = outcome.cost ? &*outcome.cost : nullptr;
+  out.version = LUXGRID_VERSION;
   for (auto& w : report::write_outputs(outcome.results, folder, out))
     outcome.warnings.push_back(std::move(w));
   // --no-report does not ask to delete the report of an earlier run into the same folder, nor
@@ -121,6 +118,23 @@ RunOutcome run_project(const std::filesystem::path& project_file,
   folder.keep_from_previous(std::move(keep));
   folder.commit();
   outcome.kept = folder.kept();
+}
+
+RunOutcome run_project(const std::filesystem::path& project_file,
+                       const std::filesystem::path& out_dir, const RunOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  start_worker_threads();
+  project::Project loaded = project::load_project(project_file);
+  prepare_project(loaded, options);
+  const double load_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (options.on_load_warning)
+    for (const auto& w : loaded.scene.warnings) options.on_load_warning(w.text());
+
+  // Everything that can reject the input has run: only now does an output folder appear.
+  report::OutputFolder folder(out_dir, input_files(loaded.scene));
+  RunOutcome outcome = calculate_project(loaded, options, load_s);
+  write_run_outputs(outcome, loaded, folder, options);
   return outcome;
 }
 

@@ -11,6 +11,7 @@
 #include "project/project_file.h"
 #include "report/colour_scale.h"
 #include "report/diff.h"
+#include "report/output_folder.h"
 #include "report/requirement_checks.h"
 
 namespace luxgrid::app {
@@ -50,9 +51,30 @@ void apply_lighting_scene(project::Project& loaded, std::optional<calc::Lighting
 std::vector<report::RequirementCheck> scene_checks(const project::Project& loaded,
                                                    const calc::Results& results);
 
-// Loads `project`, runs it and writes every output into `out_dir` atomically.
+// Loads `project`, runs it and writes every output into `out_dir` atomically: the steps below,
+// in this order (the Python module, python/, runs them one by one).
 RunOutcome run_project(const std::filesystem::path& project, const std::filesystem::path& out_dir,
                        const RunOptions& options);
+
+// oneTBB's worker threads started while the project loads on this thread, rather than by the
+// first parallel loop, which would otherwise run alone on this thread until they are up.
+void start_worker_threads();
+
+// The loaded project made ready to calculate: the lighting scene applied (options.scene), the
+// quality overridden (options.quality).
+void prepare_project(project::Project& loaded, const RunOptions& options);
+
+// Calculates a prepared project: the results (with `load_s` as their "load" phase), the checks,
+// the warnings (the scene's, then the plan's) and, with_cost, the cost table. An InputError found
+// only while calculating names the project file.
+RunOutcome calculate_project(const project::Project& loaded, const RunOptions& options,
+                             double load_s);
+
+// Writes every output of a calculated project into `folder` (report/write_outputs), adds the
+// outputs' warnings to outcome.warnings, and commits the folder (carrying over what this run's
+// options did not write: outcome.kept).
+void write_run_outputs(RunOutcome& outcome, const project::Project& loaded,
+                       report::OutputFolder& folder, const RunOptions& options);
 
 // The scene at draft, standard, high and reference; differences against the reference run.
 report::CostTable run_cost(const calc::Scene& scene, bool show_progress);

@@ -18,6 +18,7 @@
 
 #include "calc/glare/ugr_table.h"
 #include "cli/commands.h"
+#include "cli/photometry_info.h"
 #include "cli/ugr_table_output.h"
 #include "photometry/derived_photometry.h"
 #include "photometry/photometry.h"
@@ -34,9 +35,7 @@ namespace {
 
 using namespace luxgrid::photometry;
 
-struct At {
-  double c_deg, gamma_deg;
-};
+using At = InfoAt;
 
 At parse_at(const std::string& s) {
   const auto comma = s.find(',');
@@ -48,19 +47,6 @@ At parse_at(const std::string& s) {
   if (g < 0 || g > 180)
     throw InputError("--at '" + s + "': expected gamma between 0 and 180 degrees");
   return {c, g};
-}
-
-const char* shape_name(LuminousOpening::Shape s) {
-  switch (s) {
-    case LuminousOpening::Shape::point: return "point";
-    case LuminousOpening::Shape::rectangle: return "rectangle";
-    case LuminousOpening::Shape::disk: return "disk";
-  }
-  return "?";
-}
-
-nlohmann::json optional_number(const std::optional<double>& v) {
-  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
 
 void write_polar_png(const Photometry& p, const std::string& title,
@@ -94,77 +80,13 @@ int run_info(const InfoArgs& args) {
   const std::vector<std::string>& at_args = args.at;
   std::vector<At> at;
   for (const auto& s : at_args) at.push_back(parse_at(s));
-  // A TILT file named by FILE must lie in FILE's folder or below it (docs/photometry.md).
-  LoadOptions options;
-  options.allowed_root = std::filesystem::absolute(file).parent_path();
-  Photometry p = load_photometry_file(file, options);
-  if (interpolation == "bicubic" && p.table) {
-    p.table = p.table->with_interpolation(Interpolation::bicubic);
-    p.distribution = p.table;
-  }
-  const DerivedPhotometry d = derive(p);
-  std::optional<calc::glare::UgrTable> ugr_table;
-  if (ugr) {
-    // The reader's place in front of the table's message (a file without luminous area).
-    try {
-      ugr_table = calc::glare::ugr_table(p.distribution, p.opening,
-                                         calc::glare::table_lamp_flux_lm(p, *p.distribution));
-    } catch (const InputError& e) {
-      throw InputError(SourceLocation{file}, e.what());
-    }
-  }
-  std::vector<double> intensities;
-  for (const At& x : at)
-    intensities.push_back(
-        p.distribution->intensity(direction_of(x.c_deg * kDegToRad, x.gamma_deg * kDegToRad)));
-
+  const PhotometryInfo info = read_photometry_info(file, at, interpolation, ugr);
+  const Photometry& p = info.photometry;
+  const DerivedPhotometry& d = info.derived;
+  const auto& ugr_table = info.ugr_table;
+  const auto& intensities = info.intensity_cd;
   if (json) {
-    nlohmann::json j;
-    j["source"] = p.source;
-    j["format"] = p.format;
-    j["version"] = p.version;
-    j["photometric_type"] = to_string(p.photometric_type);
-    j["symmetry"] = to_string(p.symmetry);
-    j["interpolation"] = p.table ? to_string(p.table->interpolation()) : "none";
-    j["counts"] = {{"vertical", p.counts_vertical}, {"horizontal", p.counts_horizontal}};
-    j["flux_lm"] = d.flux_lm;
-    j["downward_flux_lm"] = d.downward_flux_lm;
-    j["lamp_flux_lm"] = optional_number(p.lamp_flux_lm);
-    j["flux_convention"] = p.flux_convention;
-    j["lor"] = optional_number(d.lor);
-    j["dff"] = d.dff;
-    j["stated_lor"] = optional_number(p.stated_lor);
-    j["stated_dff"] = optional_number(p.stated_dff);
-    j["candela_multiplier"] = p.candela_multiplier;
-    j["max_cd"] = d.max_cd;
-    j["max_direction"] = {{"c_deg", d.max_c_deg}, {"gamma_deg", d.max_gamma_deg}};
-    j["beam"] = {
-        {"c0_c180", {{"beam_deg", d.c0_c180.beam_deg}, {"field_deg", d.c0_c180.field_deg}}},
-        {"c90_c270", {{"beam_deg", d.c90_c270.beam_deg}, {"field_deg", d.c90_c270.field_deg}}}};
-    j["opening"] = {{"shape", shape_name(p.opening.shape)},
-                    {"description", p.opening.description},
-                    {"length_m", p.opening.length},
-                    {"width_m", p.opening.width},
-                    {"height_m", p.opening.height}};
-    nlohmann::json lamps = nlohmann::json::array();
-    for (const auto& l : p.lamp_sets)
-      lamps.push_back({{"count", l.count},
-                       {"type", l.type},
-                       {"flux_lm", l.flux_lm},
-                       {"colour", l.colour},
-                       {"cri", l.cri},
-                       {"power_w", l.power_w}});
-    j["lamps"] = lamps;
-    j["keywords"] = p.keywords;
-    j["warnings"] = p.warnings;
-    j["at"] = nlohmann::json::array();
-    for (const At& x : at) j["at"].push_back({x.c_deg, x.gamma_deg});
-    j["intensity_cd"] = intensities;
-    if (ugr_table) j["ugr_table"] = ugr_table_json(*ugr_table);
-    if (p.tilt)
-      j["tilt"] = {{"geometry", p.tilt->lamp_to_luminaire_geometry},
-                   {"angles_deg", p.tilt->angle_deg},
-                   {"factors", p.tilt->factor}};
+    const nlohmann::json j = photometry_info_json(info);
     std::printf("%s\n", j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
   } else {
     std::printf("%s\n", p.source.c_str());

@@ -14,7 +14,7 @@
 #include "report/energy.h"
 #include "report/false_colour.h"
 #include "report/html_report.h"
-#include "report/report_input_json.h"
+#include "report/results_document.h"
 #include "report/results_json.h"
 #include "report/surface_npy.h"
 #include "util/error.h"
@@ -183,41 +183,8 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   const auto write_json = [&] {
     if (options.results_json)
       return write_text_file(folder.file(kResultsFile), *options.results_json);
-    // The scene's warnings (legal but suspicious input) and the outputs', as the terminal shows
-    // them.
-    std::vector<std::string> all_warnings;
-    if (options.scene)
-      for (const auto& w : options.scene->warnings) all_warnings.push_back(w.text());
-    all_warnings.insert(all_warnings.end(), warnings.begin(), warnings.end());
-    ResultsOrigin origin;
-    origin.version = options.version;
-    if (options.scene) origin.project_sha256 = options.scene->project_sha256;
-    // Without the point arrays: write_results_json streams them from `results`.
-    nlohmann::json j = results_outline_json(results, all_warnings, origin);
-    if (options.scene) {
-      // The maintenance factor every E includes, and its parts when the project gave them [CIE97].
-      const auto& settings = options.scene->settings;
-      nlohmann::json m = {{"factor", settings.maintenance_factor}};
-      if (const auto& p = settings.maintenance_parts) {
-        m["LLMF"] = p->LLMF;
-        m["LSF"] = p->LSF;
-        m["LMF"] = p->LMF;
-        m["RSMF"] = p->RSMF;
-      }
-      j["maintenance"] = std::move(m);
-    }
-    if (!options.checks.empty()) {
-      // Per surface, each requirement with its verdict and margin; at the top, the overall verdict.
-      for (auto& s : j["surfaces"]) {
-        for (const auto& c : options.checks) {
-          if (c.surface == s["name"]) s["requirements"].push_back(check_to_json(c));
-        }
-      }
-      j["requirements_met"] = all_met(options.checks);
-    }
-    // What `luxgrid report` needs to write every other output again from this file.
-    if (options.scene)
-      j["report_input"] = report_input_to_json(*options.scene, results, types, options.checks);
+    nlohmann::json j =
+        results_document(results, options.scene, options.checks, types, warnings, options.version);
     write_file_streamed(folder.file(kResultsFile),
                         [&](std::ostream& out) { write_results_json(out, j, results); });
   };

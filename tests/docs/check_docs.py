@@ -25,7 +25,7 @@ import sys
 ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else
                        os.path.join(os.path.dirname(__file__), "..", ".."))
 MODULE_FOLDERS = ("app", "bench", "calc", "cases", "cli", "docs", "examples", "fuzz", "geometry",
-                  "photometry", "project", "report", "scripts", "study", "tests", "util")
+                  "photometry", "project", "python", "report", "scripts", "study", "tests", "util")
 SOURCE_EXTENSIONS = (".h", ".cpp", ".py", ".sh", ".txt", ".cmake")
 
 # Section citations that another branch of issue 35 rewrites (the four-lane kernels' files);
@@ -86,7 +86,7 @@ def cmake_targets():
             continue
         text = read(f)
         for name in re.findall(
-                r"(?:add_library|add_executable|luxgrid_module|sanitized_library)\(\s*(\w+)", text):
+                r"(?:add_library|add_executable|luxgrid_module|sanitized_library|pybind11_add_module)\(\s*(\w+)", text):
             targets.add(name)
         for name in re.findall(r"luxgrid_tests\((\w+)", text):
             targets.add(name + "_tests")
