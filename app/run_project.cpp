@@ -30,6 +30,16 @@ std::filesystem::path default_output_dir(const std::filesystem::path& project) {
 // counterpart (calc/emergency_scene.h) before anything is planned.
 void apply_lighting_scene(project::Project& loaded, std::optional<calc::LightingScene> scene) {
   if (scene) loaded.scene.settings.scene = *scene;
+  if (loaded.scene.settings.scene == calc::LightingScene::daylight) {
+    const std::string file = loaded.scene.project_file.filename().string();
+    if (!loaded.scene.daylight)
+      throw InputError(SourceLocation(file),
+                       "the daylight scene needs a \"daylight\" object (sky, sun, diffuse "
+                       "illuminance): docs/daylight.md");
+    throw InputError(SourceLocation(file),
+                     "the daylight calculation (sky, externally and internally reflected "
+                     "components) is not built yet: docs/daylight.md");
+  }
   if (loaded.scene.settings.scene != calc::LightingScene::emergency) return;
   try {
     loaded.scene = calc::make_emergency_scene(loaded.scene);

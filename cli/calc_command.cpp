@@ -1,4 +1,4 @@
-// `luxgrid calc PROJECT [-o DIR] [--quality Q] [--scene normal|emergency] [--no-report]
+// `luxgrid calc PROJECT [-o DIR] [--quality Q] [--scene normal|emergency|daylight] [--no-report]
 //  [--part-plots] [--scale MIN:MAX] [--check] [--with-cost] [--arrays npy]`
 #include <cstdio>
 #include <memory>
@@ -24,10 +24,10 @@ void add_calc_command(CLI::App& app, Runner& run) {
   cmd->add_option("--quality", opt->quality, "Override settings.quality")
       ->check(CLI::IsMember({"draft", "standard", "high", "reference"}));
   cmd->add_option("--scene", opt->scene,
-                  "Override settings.scene: normal, or emergency (EN 1838: direct light from the "
-                  "luminaires' "
-                  "emergency output, escape-route and open-area checks)")
-      ->check(CLI::IsMember({"normal", "emergency"}));
+                  "Override settings.scene: normal, emergency (EN 1838: direct light from the "
+                  "luminaires' emergency output, escape-route and open-area checks), or daylight "
+                  "(the sky through the openings: docs/daylight.md)")
+      ->check(CLI::IsMember({"normal", "emergency", "daylight"}));
   cmd->add_flag("--no-report", opt->no_report, "Do not write report.html");
   cmd->add_flag("--part-plots", opt->part_plots,
                 "Also plot each grid's direct and reflected light: <surface>_direct.png and "
@@ -48,8 +48,9 @@ void add_calc_command(CLI::App& app, Runner& run) {
       if (!opt->quality.empty()) options.quality = calc::quality_from_string(opt->quality);
       if (!opt->scale.empty()) options.scale = report::parse_scale(opt->scale);
       if (!opt->scene.empty()) {
-        options.scene = opt->scene == "emergency" ? calc::LightingScene::emergency
-                                                  : calc::LightingScene::normal;
+        options.scene = opt->scene == "emergency"  ? calc::LightingScene::emergency
+                        : opt->scene == "daylight" ? calc::LightingScene::daylight
+                                                   : calc::LightingScene::normal;
       }
       options.report = !opt->no_report;
       options.with_cost = opt->with_cost;
