@@ -127,13 +127,6 @@ void parse_openings(const JsonValue& openings, Scene& scene) {
     }
     scene.openings.push_back(std::move(opening));
   }
-  if (!scene.openings.empty() && scene.settings.scene != LightingScene::daylight) {
-    scene.warnings.push_back(
-        {openings.location(),
-         "the openings are used by the daylight scene only: electric light (the normal and "
-         "emergency scenes) still treats their faces as closed walls, ceilings and floors (not "
-         "built yet); `luxgrid calc --scene daylight` calculates daylight through them"});
-  }
 }
 
 DaylightInputs parse_daylight(const JsonValue& d) {

@@ -46,9 +46,6 @@ TEST(DaylightProject, LoadsOpeningsAndSky) {
   EXPECT_NEAR(s.daylight->sky.sun.y, -0.5, 1e-15);
   EXPECT_EQ(s.daylight->ground_reflectance, 0.3);
   EXPECT_TRUE(s.luminaires.empty());
-  // Used by the daylight scene only: the normal scene is told so.
-  ASSERT_EQ(s.warnings.size(), 1u);
-  EXPECT_NE(s.warnings[0].text().find("/openings"), std::string::npos);
 }
 
 // A whole wall is an opening (CIE 171's 4 x 3 m facade), and the floor holds one too.
@@ -159,7 +156,6 @@ TEST(DaylightProject, DaylightSceneNeedsDaylight) {
   d["settings"] = {{"scene", "daylight"}};
   const Scene s = load(d);
   EXPECT_EQ(s.settings.scene, LightingScene::daylight);
-  EXPECT_TRUE(s.warnings.empty());
   d.erase("daylight");
   d["photometry"] = nlohmann::json::object();
   d["luminaires"] = nlohmann::json::array();
