@@ -84,6 +84,19 @@ RunOutcome run_project(const std::filesystem::path& project_file,
   project::Project loaded = project::load_project(project_file);
   apply_lighting_scene(loaded, options.scene);
   calc::Scene& scene = loaded.scene;
+  if (options.daylight_sky) {
+    auto sky = daylight::sky_from_name(*options.daylight_sky);
+    if (!sky || !scene.daylight ||
+        (sky->kind == daylight::SkyKind::cie_general &&
+         !(scene.daylight->sun && scene.daylight->sun->altitude_deg > 0)))
+      throw InputError(SourceLocation(project_file.filename().string()),
+                       "cannot calculate under the sky \"" + *options.daylight_sky +
+                           "\": unknown, or the project has no daylight sun above the horizon");
+    if (sky->kind == daylight::SkyKind::cie_general)
+      sky->sun =
+          daylight::sun_direction(*scene.daylight->sun, scene.daylight->site.north_angle_deg);
+    scene.daylight->sky = *sky;
+  }
   if (options.quality) scene.settings.quality = *options.quality;
   const double load_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -22,10 +22,14 @@ using daylight::Triangle3;
 
 // Most triangles one part (sky or ground) of one opening is cut into at one point: the adaptive
 // integration stops there even above its tolerance (the plan's error estimate says by how much).
-constexpr int kMaxTrianglesPerOpening = 4096;
+constexpr int kMaxTrianglesPerOpening = 16384;
 // The absolute floor of the tolerance, as a fraction of E_h: 1e-5 is a daylight factor of
 // 0.001 %, below anything a design reads.
 constexpr double kAbsoluteToleranceOfEh = 1e-5;
+// The widest edge a triangle starts with, seen from the point (aperture_integral.h): 0.15 rad
+// (8.6 degrees), under half the scale on which a general sky's indicatrix changes
+// near the sun, so its nodes cannot all miss the sun's brightening.
+constexpr double kMaxStartEdge_rad = 0.15;
 
 struct PreparedOpening {
   std::size_t room = 0;
@@ -166,7 +170,7 @@ Results run_daylight_scene(const Scene& scene, const Progress& progress) {
             [&](const Vec3& node, const Vec3& dir) {
               return daylight::relative_luminance(inputs.sky, dir) * transmitted(node, dir);
             },
-            0.5 * tolerance, sky_floor, kMaxTrianglesPerOpening);
+            0.5 * tolerance, sky_floor, kMaxTrianglesPerOpening, kMaxStartEdge_rad);
         parts.sky += r.value, parts.sky_error += r.error_estimate,
             parts.evaluations += r.evaluations;
       }

@@ -40,7 +40,7 @@ ApertureIntegral integrate_aperture(const std::vector<Triangle3>& triangles, con
                                     const Vec3& normal,
                                     const std::function<double(const Vec3&, const Vec3&)>& w,
                                     double relative_tolerance, double absolute_tolerance,
-                                    int max_triangles) {
+                                    int max_triangles, double max_edge_angle_rad) {
   ApertureIntegral out;
   // The three-node rule on one triangle: its exact projected solid angle times w's mean.
   const auto rule = [&](const Triangle3& t) {
@@ -64,9 +64,30 @@ ApertureIntegral integrate_aperture(const std::vector<Triangle3>& triangles, con
     leaf.error = std::abs(coarse - leaf.fine);
     return leaf;
   };
+  // The start: every triangle cut until its edges subtend at most max_edge_angle_rad (within
+  // max_triangles).
+  const auto too_wide = [&](const Triangle3& t) {
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 a = t[k] - point, b = t[(k + 1) % 3] - point;
+      const double la = glm::length(a), lb = glm::length(b);
+      if (la > 0.0 && lb > 0.0 && angle_between(a / la, b / lb) > max_edge_angle_rad) return true;
+    }
+    return false;
+  };
+  std::vector<Triangle3> start, pending(triangles.rbegin(), triangles.rend());
+  while (!pending.empty()) {
+    const Triangle3 t = pending.back();
+    pending.pop_back();
+    if (too_wide(t) && static_cast<int>(start.size() + pending.size()) + 4 <= max_triangles / 4) {
+      const auto parts = children(t);
+      for (int i = 3; i >= 0; --i) pending.push_back(parts[i]);
+    } else {
+      start.push_back(t);
+    }
+  }
   std::priority_queue<Leaf> queue;
   double value = 0.0, error = 0.0;
-  for (const Triangle3& t : triangles) {
+  for (const Triangle3& t : start) {
     const Leaf leaf = make_leaf(t, rule(t));
     value += leaf.fine, error += leaf.error;
     queue.push(leaf);

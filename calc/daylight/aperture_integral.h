@@ -8,6 +8,11 @@
 // (barycentric 2/3, 1/6, 1/6), and its error estimate the difference from the sum over its four
 // midpoint children. The triangle of largest estimate is refined until the estimates add up to
 // the tolerance. A constant w is integrated exactly at the first level (estimate 0).
+//
+// Three nodes in a large triangle can all miss a narrow peak of w (the sky's brightening around
+// the sun, about 20 degrees wide), and then the estimate is small while the error is not: so each
+// triangle is first cut until every edge subtends at most `max_edge_angle_rad` from the point
+// (the same midpoint children), whatever its estimate.
 #include <array>
 #include <functional>
 #include <vector>
@@ -33,7 +38,7 @@ ApertureIntegral integrate_aperture(const std::vector<Triangle3>& triangles, con
                                     const Vec3& normal,
                                     const std::function<double(const Vec3&, const Vec3&)>& w,
                                     double relative_tolerance, double absolute_tolerance,
-                                    int max_triangles);
+                                    int max_triangles, double max_edge_angle_rad = kPi);
 
 // The projected solid angle (sr) of the triangles from `point` for `normal`: the integral of a
 // constant 1, exact (the configuration factor times pi).
