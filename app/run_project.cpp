@@ -30,6 +30,21 @@ std::filesystem::path default_output_dir(const std::filesystem::path& project) {
 // counterpart (calc/emergency_scene.h) before anything is planned.
 void apply_lighting_scene(project::Project& loaded, std::optional<calc::LightingScene> scene) {
   if (scene) loaded.scene.settings.scene = *scene;
+  if (loaded.scene.settings.scene == calc::LightingScene::daylight) {
+    const std::string file = loaded.scene.project_file.filename().string();
+    if (!loaded.scene.daylight)
+      throw InputError(SourceLocation(file),
+                       "the daylight scene needs a \"daylight\" object (sky, sun, diffuse "
+                       "illuminance): docs/daylight.md");
+    return;
+  }
+  if (!loaded.scene.openings.empty()) {
+    loaded.scene.warnings.push_back(
+        {SourceLocation(loaded.scene.project_file.filename().string(), 0, 0, "/openings"),
+         "the openings are used by the daylight scene only: electric light (the normal and "
+         "emergency scenes) still treats their faces as closed walls, ceilings and floors (not "
+         "built yet); `luxgrid calc --scene daylight` calculates daylight through them"});
+  }
   if (loaded.scene.settings.scene != calc::LightingScene::emergency) return;
   try {
     loaded.scene = calc::make_emergency_scene(loaded.scene);
@@ -64,6 +79,20 @@ void start_worker_threads() {
 
 void prepare_project(project::Project& loaded, const RunOptions& options) {
   apply_lighting_scene(loaded, options.scene);
+  calc::Scene& scene = loaded.scene;
+  if (options.daylight_sky) {
+    auto sky = daylight::sky_from_name(*options.daylight_sky);
+    if (!sky || !scene.daylight ||
+        (sky->kind == daylight::SkyKind::cie_general &&
+         !(scene.daylight->sun && scene.daylight->sun->altitude_deg > 0)))
+      throw InputError(SourceLocation(scene.project_file.filename().string()),
+                       "cannot calculate under the sky \"" + *options.daylight_sky +
+                           "\": unknown, or the project has no daylight sun above the horizon");
+    if (sky->kind == daylight::SkyKind::cie_general)
+      sky->sun =
+          daylight::sun_direction(*scene.daylight->sun, scene.daylight->site.north_angle_deg);
+    scene.daylight->sky = *sky;
+  }
   if (options.quality) loaded.scene.settings.quality = *options.quality;
 }
 

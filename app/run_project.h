@@ -25,6 +25,9 @@ struct RunOptions {
   bool with_cost = false;                    // --with-cost: the cost table into the report
   bool arrays_npy = false;                   // --arrays npy: <surface>.npy per surface
   bool part_plots = false;  // --part-plots: <surface>_direct.png, <surface>_indirect.png
+  // The daylight scene's sky instead of the project's ("1".."15", "cie-overcast", "uniform"):
+  // the validation cases run one project under every sky (cases/cie171_5_9_*).
+  std::optional<std::string> daylight_sky;
   // Called with each of the scene's warnings as soon as the project is loaded (before a long
   // calculation, so a project in the wrong units says so at once); RunOutcome::warnings lists
   // them too.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <optional>
 
 #include "app/run_project.h"
@@ -26,14 +27,21 @@ const calc::SurfaceResult& find_surface(const project::JsonValue& where, const c
   where.fail("the case has no surface named \"" + name + "\"");
 }
 
-// The values of `quantity` ("E", "E_direct" or "E_indirect") over the surface's points.
+// The values of `quantity` ("E", "E_direct", "E_indirect", or in the daylight scene "DF", "SC",
+// "ERC") over the surface's points.
 const std::vector<double>& quantity_values(const project::JsonValue& where,
                                            const calc::SurfaceResult& s,
                                            const std::string& quantity) {
   if (quantity == "E") return s.E;
   if (quantity == "E_direct") return s.E_direct;
   if (quantity == "E_indirect") return s.E_indirect;
-  where.fail("expected quantity \"E\", \"E_direct\" or \"E_indirect\", got \"" + quantity + "\"");
+  if (quantity == "DF" && !s.DF.empty()) return s.DF;
+  if (quantity == "SC" && !s.SC.empty()) return s.SC;
+  if (quantity == "ERC" && !s.ERC.empty()) return s.ERC;
+  where.fail(
+      "expected quantity \"E\", \"E_direct\" or \"E_indirect\" (or in the daylight scene \"DF\", "
+      "\"SC\" or \"ERC\"), got \"" +
+      quantity + "\"");
 }
 
 double point_value(const project::JsonValue& where, const calc::SurfaceResult& s, size_t index,
@@ -99,17 +107,30 @@ void check_case(const fs::path& dir, const fs::path& out_dir, ValidationReport& 
   const fs::path expected_file = dir / "expected.json";
   const nlohmann::json doc =
       project::read_json_file(expected_file, project::kMaxProjectFileBytes, "expected-values file");
-  RunOptions options;
-  const auto outcome = run_project(dir / "project.json", out_dir / name, options);
-  // On stderr, as every command prints its warnings; the table on stdout stays the table.
-  for (const auto& w : outcome.warnings)
-    std::fprintf(stderr, "luxgrid: warning: case %s: %s\n", name.c_str(), w.c_str());
   const project::JsonDocument document(doc, name + "/expected.json");
   const project::JsonValue root = document.root();
   root.expect_object();
   root.accept_any("notes");
+  // One run per sky the cases ask for (a daylight case's "sky": the project under each of the
+  // CIE skies); "" is the project as it is.
+  std::map<std::string, RunOutcome> runs;
+  const auto outcome_for = [&](const std::string& sky) -> const RunOutcome& {
+    auto it = runs.find(sky);
+    if (it != runs.end()) return it->second;
+    RunOptions options;
+    if (!sky.empty()) options.daylight_sky = sky, options.report = false;
+    RunOutcome outcome = run_project(
+        dir / "project.json", out_dir / (sky.empty() ? name : name + "_sky_" + sky), options);
+    // On stderr, as every command prints its warnings; the table on stdout stays the table.
+    for (const auto& w : outcome.warnings)
+      std::fprintf(stderr, "luxgrid: warning: case %s: %s\n", name.c_str(), w.c_str());
+    return runs.emplace(sky, std::move(outcome)).first->second;
+  };
   for (const auto& c : root.at("cases").items()) {
     c.expect_object();
+    std::string sky;
+    if (auto k = c.find("sky")) sky = k->is_number() ? std::to_string(k->as_int()) : k->as_string();
+    const RunOutcome& outcome = outcome_for(sky);
     const auto surface_v = c.at("surface");
     const auto& s = find_surface(surface_v, outcome.results, surface_v.as_string());
     CheckRow row;
@@ -135,7 +156,8 @@ void check_case(const fs::path& dir, const fs::path& out_dir, ValidationReport& 
         const int index = p->as_int();
         if (index < 0) p->fail("expected a point index >= 0");
         row.got = point_value(*p, s, static_cast<size_t>(index), values);
-        row.quantity = s.grid.name + "[" + std::to_string(index) + "]." + quantity;
+        row.quantity = s.grid.name + "[" + std::to_string(index) + "]." + quantity +
+                       (sky.empty() ? "" : " (sky " + sky + ")");
       } else {
         const auto st = c.at("stat");
         row.got = stat_value(st, s, values, st.as_string());

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "calc/daylight_run.h"
 #include "calc/direct_reach.h"
 #include "calc/glare/ugr.h"
 #include "calc/indirect/clustered.h"
@@ -320,6 +321,7 @@ void check_finite(const SurfaceResult& r) {
 }  // namespace
 
 Results run_scene(const Scene& scene, const Progress& progress) {
+  if (scene.settings.scene == LightingScene::daylight) return run_daylight_scene(scene, progress);
   Results results;
   results.project = scene.name;
   results.plan = make_plan(scene);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "calc/daylight_plan.h"
 #include "calc/indirect/decision.h"
 #include "calc/indirect/indirect_notes.h"
 #include "calc/intensity_lookup.h"
@@ -137,6 +138,8 @@ struct Plan {
   bool direct_estimated = true;   // false: the far field at every distance, no map
   bool errors_estimated = false;  // estimate_errors ran (the estimates below are the run's)
   std::vector<SurfaceEstimate> estimates;  // one per surface, in the surfaces' order
+  // The daylight scene's choices (calc/daylight_run.h); none in the other scenes.
+  std::optional<DaylightPlan> daylight;
 };
 
 // The near-field rung for a quality, or for settings.near_field_model when it is set. Throws

@@ -27,6 +27,10 @@ struct SurfaceResult {
   // observers surfaces: per observer, each view's UGR, background luminance and terms
   // (calc/glare/ugr.h); E is then the illuminance at the eye facing each view.
   std::vector<glare::ObserverResult> observers;
+  // The daylight scene (docs/daylight.md), percent of the unobstructed sky's horizontal
+  // illuminance per point: the daylight factor DF = SC + ERC + IRC, the sky component, the
+  // externally and the internally reflected components. Empty in the other scenes.
+  std::vector<double> DF, SC, ERC, IRC;
 };
 
 struct Results {

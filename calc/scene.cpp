@@ -15,7 +15,12 @@ const char* to_string(Quality q) {
 }
 
 const char* to_string(LightingScene s) {
-  return s == LightingScene::emergency ? "emergency" : "normal";
+  switch (s) {
+    case LightingScene::emergency: return "emergency";
+    case LightingScene::daylight: return "daylight";
+    case LightingScene::normal: break;
+  }
+  return "normal";
 }
 
 std::optional<Quality> quality_from_string(const std::string& s) {

@@ -9,6 +9,7 @@
 
 #include <glm/mat3x3.hpp>
 
+#include "calc/daylight_inputs.h"
 #include "calc/emergency_surfaces.h"
 #include "calc/scene_notes.h"
 #include "geometry/room.h"
@@ -21,12 +22,13 @@ namespace luxgrid::calc {
 enum class Quality { draft, standard, high, reference };
 enum class NearFieldMode { automatic, always, never };
 enum class IndirectMode { automatic, off, on };
-// Which lighting is calculated: the normal lighting, or the emergency lighting of EN 1838
-// (calc/emergency_scene.h: direct light only, from the luminaires' emergency output).
-enum class LightingScene { normal, emergency };
+// Which lighting is calculated: the normal lighting, the emergency lighting of EN 1838
+// (calc/emergency_scene.h: direct light only, from the luminaires' emergency output), or daylight
+// (docs/daylight.md: the sky through the openings, no luminaires).
+enum class LightingScene { normal, emergency, daylight };
 
 const char* to_string(Quality q);
-const char* to_string(LightingScene s);  // "normal", "emergency"
+const char* to_string(LightingScene s);  // "normal", "emergency", "daylight"
 std::optional<Quality> quality_from_string(const std::string& s);
 
 // The maintenance factor's parts [CIE97]: MF = LLMF x LSF x LMF x RSMF (lamp lumen maintenance,
@@ -112,6 +114,9 @@ struct Scene {
   // The grids of escape routes and open areas (calc/emergency_surfaces.h), checked against
   // EN 1838 in the emergency scene.
   std::vector<EmergencySurface> emergency_surfaces;
+  // Windows and roof lights, and the sky (docs/daylight.md): the daylight scene's input.
+  std::vector<DaylightOpening> openings;
+  std::optional<DaylightInputs> daylight;
   // What was done to the project before the calculation (the emergency scene's choices): the
   // pipeline copies them into the plan's notes.
   std::vector<SceneNote> notes;

@@ -1,4 +1,4 @@
-// `luxgrid calc PROJECT [-o DIR] [--quality Q] [--scene normal|emergency] [--no-report]
+// `luxgrid calc PROJECT [-o DIR] [--quality Q] [--scene normal|emergency|daylight] [--no-report]
 //  [--part-plots] [--scale MIN:MAX] [--check] [--with-cost] [--arrays npy]`
 #include <cstdio>
 
@@ -14,8 +14,9 @@ int run_calc(const CalcArgs& args) {
   if (!args.quality.empty()) options.quality = calc::quality_from_string(args.quality);
   if (!args.scale.empty()) options.scale = report::parse_scale(args.scale);
   if (!args.scene.empty()) {
-    options.scene =
-        args.scene == "emergency" ? calc::LightingScene::emergency : calc::LightingScene::normal;
+    options.scene = args.scene == "emergency"  ? calc::LightingScene::emergency
+                    : args.scene == "daylight" ? calc::LightingScene::daylight
+                                               : calc::LightingScene::normal;
   }
   options.report = !args.no_report;
   options.with_cost = args.with_cost;

@@ -31,10 +31,10 @@ void add_calc(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--quality", opt->quality, "Override settings.quality")
       ->check(CLI::IsMember({"draft", "standard", "high", "reference"}));
   cmd->add_option("--scene", opt->scene,
-                  "Override settings.scene: normal, or emergency (EN 1838: direct light from the "
-                  "luminaires' "
-                  "emergency output, escape-route and open-area checks)")
-      ->check(CLI::IsMember({"normal", "emergency"}));
+                  "Override settings.scene: normal, emergency (EN 1838: direct light from the "
+                  "luminaires' emergency output, escape-route and open-area checks), or daylight "
+                  "(the sky through the openings: docs/daylight.md)")
+      ->check(CLI::IsMember({"normal", "emergency", "daylight"}));
   cmd->add_flag("--no-report", opt->no_report, "Do not write report.html");
   cmd->add_flag("--part-plots", opt->part_plots,
                 "Also plot each grid's direct and reflected light: <surface>_direct.png and "

@@ -38,7 +38,11 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
   }
 
   const FilePolicy files{base_dir, scene.settings.allow_files_outside_project};
-  const auto ph = root.at("photometry");
+  // A daylight project may have neither photometry nor luminaires.
+  static const nlohmann::json kNoEntries = nlohmann::json::object();
+  const bool daylight_only = root.has("daylight") && !root.has("photometry");
+  const auto ph =
+      daylight_only ? JsonValue(kNoEntries, document, "/photometry") : root.at("photometry");
   if (!ph.is_object())
     ph.fail("expected an object of named entries, got " + json_type_name(ph.raw()));
   check_count(ph, kMaxPhotometryEntries, "photometry entries");
@@ -82,8 +86,20 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
     }
     scene.rooms.push_back(std::move(room));
   }
+  if (auto o = root.find("openings")) parse_openings(*o, scene);
+  if (auto d = root.find("daylight")) {
+    scene.daylight = parse_daylight(*d);
+    d->report_unqueried();
+  }
+  if (scene.settings.scene == LightingScene::daylight && !scene.daylight)
+    root.at("settings")
+        .at("scene")
+        .fail("the daylight scene needs a \"daylight\" object (sky, sun, diffuse illuminance)");
+  // A daylight project may have no luminaires.
+  const bool luminaires_optional = scene.daylight.has_value() && !root.has("luminaires");
   size_t index = 0;
-  for (const auto& l : root.at("luminaires").items()) {
+  for (const auto& l :
+       luminaires_optional ? std::vector<JsonValue>{} : root.at("luminaires").items()) {
     const std::size_t first = scene.luminaires.size();
     parse_luminaire(l, index++, scene, scene.luminaires);
     l.report_unqueried();

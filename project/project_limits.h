@@ -91,5 +91,10 @@ inline constexpr double kMaxViewLuminairePairs = 1e6;
 // measures heights above the line of sight in the vertical plane through it): directions within
 // this sine of the vertical are refused.
 inline constexpr double kMinViewHorizontalPart = 1e-3;
+// Openings (windows, roof lights: docs/daylight.md) and the corners of each: a facade has tens
+// of windows, a polygon a handful of corners; the limits keep the set-up's O(n^2) overlap test
+// and each point's integration over openings bounded.
+inline constexpr std::size_t kMaxOpenings = 1000;
+inline constexpr std::size_t kMaxOpeningCorners = 100;
 
 }  // namespace luxgrid::project

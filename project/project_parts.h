@@ -66,6 +66,10 @@ auto at_place(const JsonValue& where, F&& f) -> decltype(f()) {
   }
 }
 
+// openings and daylight (project_daylight.cpp): after the rooms, into `scene`.
+void parse_openings(const JsonValue& openings, calc::Scene& scene);
+calc::DaylightInputs parse_daylight(const JsonValue& d);
+
 // settings (project_settings.cpp).
 calc::Settings parse_settings(const JsonValue& s);
 

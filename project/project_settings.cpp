@@ -123,8 +123,10 @@ Settings parse_settings(const JsonValue& s) {
       out.scene = LightingScene::normal;
     else if (v == "emergency")
       out.scene = LightingScene::emergency;
+    else if (v == "daylight")
+      out.scene = LightingScene::daylight;
     else
-      sc->fail("expected \"normal\" or \"emergency\", got \"" + v + "\"");
+      sc->fail("expected \"normal\", \"emergency\" or \"daylight\", got \"" + v + "\"");
   }
   return out;
 }

@@ -51,7 +51,8 @@ void point_rows(const calc::SurfaceResult& r, size_t begin, size_t end, std::str
   // false and leaves its E cells empty, so a spreadsheet's MIN and AVERAGE over a column skip
   // it, as the statistics do.
   const auto& g = r.grid;
-  const std::string quantity = std::string(",") + geometry::to_string(g.quantity) + "\n";
+  const std::string quantity = std::string(",") + geometry::to_string(g.quantity);
+  const bool daylight = !r.DF.empty();  // DF, SC, ERC, IRC (percent) after the quantity
   constexpr size_t kRowBytes = 8 * 14 + 3 * 13 + 16;  // digits, signs, exponents, separators
   out.reserve(out.size() + (end - begin) * (kRowBytes + quantity.size()));
   // One memo per thread: the chunks of one CSV (and the next CSV) share its coordinates.
@@ -83,6 +84,13 @@ void point_rows(const calc::SurfaceResult& r, size_t begin, size_t end, std::str
       row.put(",false,,,");
     }
     row.put(quantity);
+    if (daylight) {
+      for (const double v : {r.DF[k], r.SC[k], r.ERC[k], r.IRC[k]}) {
+        row.put(',');
+        if (g.active.empty() || g.active[k]) put(v);
+      }
+    }
+    row.put('\n');
   }
 }
 
@@ -94,7 +102,8 @@ constexpr size_t kRowsPerChunk = 1024;
 
 std::string surface_csv(const calc::SurfaceResult& r) {
   if (r.grid.kind == geometry::SurfaceGrid::Kind::observers) return observers_csv(r);
-  std::string out = std::string(kSurfaceCsvHeader) + "\n";
+  std::string out =
+      std::string(kSurfaceCsvHeader) + (r.DF.empty() ? "" : kDaylightCsvColumns) + "\n";
   point_rows(r, 0, r.grid.points.size(), out);
   return out;
 }
@@ -104,7 +113,7 @@ void write_surface_csv(std::ostream& out, const calc::SurfaceResult& r) {
     out << observers_csv(r);
     return;
   }
-  out << kSurfaceCsvHeader << '\n';
+  out << kSurfaceCsvHeader << (r.DF.empty() ? "" : kDaylightCsvColumns) << '\n';
   write_chunked(
       r.grid.points.size(), kRowsPerChunk,
       [&](size_t begin, size_t end, std::string& text) { point_rows(r, begin, end, text); },

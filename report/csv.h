@@ -12,6 +12,8 @@ namespace luxgrid::report {
 inline constexpr const char* kSurfaceCsvHeader =
     "i,j,x,y,z,nx,ny,nz,active,E_maintained_lx,E_direct_maintained_lx,E_indirect_maintained_lx,"
     "quantity";
+// The daylight scene's columns after those (percent of E_h; docs/daylight.md).
+inline constexpr const char* kDaylightCsvColumns = ",DF_percent,SC_percent,ERC_percent,IRC_percent";
 
 std::string surface_csv(const calc::SurfaceResult& r);
 // The same text written to `out`, its rows formatted in parallel a chunk at a time: what the

@@ -122,6 +122,17 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(VisibilityDecision, on, no_rooms, obstacles, 
                                    first_outside, first_reaching, points_outside)
 }  // namespace luxgrid::calc
 
+namespace luxgrid::calc {
+// The daylight scene's plan (calc/daylight_plan.h): every field by its name.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DaylightPlan, sky, diffuse_horizontal_lx, ground_reflectance,
+                                   has_sun, sun_altitude_deg, sun_azimuth_deg, sun_from_site,
+                                   sky_integral_sr, sky_integral_error_sr, openings,
+                                   glazed_openings, sky_exact, ground_exact, relative_tolerance,
+                                   sky_error_percent, ground_error_percent, evaluations,
+                                   points_outside_rooms, internally_reflected_built,
+                                   reflecting_surfaces, luminaires_left_out)
+}  // namespace luxgrid::calc
+
 namespace luxgrid::report {
 
 namespace {
@@ -197,6 +208,7 @@ json plan_to_json(const calc::Plan& plan) {
     estimates.push_back(std::move(one));
   }
   j["estimates"] = std::move(estimates);
+  if (plan.daylight) j["daylight"] = *plan.daylight;  // the daylight scene only
   return j;
 }
 
@@ -235,6 +247,7 @@ calc::Plan plan_from_json(const json& j) {
     e.at("probe_points").get_to(est.probe_points);
     plan.estimates.push_back(std::move(est));
   }
+  if (j.contains("daylight")) plan.daylight = j.at("daylight").get<calc::DaylightPlan>();
   return plan;
 }
 

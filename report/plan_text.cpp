@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "calc/plan_estimates.h"
+#include "report/daylight_plan_text.h"
 #include "util/format.h"
 
 namespace luxgrid::report {
@@ -380,6 +381,7 @@ std::string scene_note_text(const calc::SceneNote& note) {
 }
 
 std::vector<std::string> plan_notes(const calc::Plan& plan) {
+  if (plan.daylight) return daylight_notes(plan);
   std::vector<std::string> notes;
   if (plan.near_switch_reason == calc::NearSwitchReason::draft_quality)
     notes.push_back("quality draft: far-field point model at every distance");
@@ -409,6 +411,7 @@ std::vector<std::string> plan_notes(const calc::Plan& plan) {
 }
 
 std::vector<std::string> plan_warnings(const calc::Plan& plan) {
+  if (plan.daylight) return daylight_warnings(plan);
   std::vector<std::string> warnings;
   for (const auto& r : plan.refinements) {
     if (r.outcome == calc::PatchRefinement::Outcome::work_over_limit)
@@ -452,6 +455,7 @@ std::vector<std::string> plan_warnings(const calc::Plan& plan) {
 }
 
 std::string plan_summary(const calc::Plan& plan) {
+  if (plan.daylight) return daylight_summary(plan);
   const calc::DirectCounts& c = plan.direct_counts;
   std::string direct;
   switch (plan.near_switch) {

@@ -261,6 +261,11 @@ calc::SurfaceResult read_surface(const json& s, const json& frame) {
       r.E_indirect.size() != n || n != static_cast<size_t>(g.nu) * static_cast<size_t>(g.nv))
     throw json::other_error::create(
         501, "the per-point arrays differ in length from each other or from size", &s);
+  if (s.contains("DF")) {
+    read_fields(s, "DF", r.DF, "SC", r.SC, "ERC", r.ERC, "IRC", r.IRC);
+    if (r.DF.size() != n || r.SC.size() != n || r.ERC.size() != n || r.IRC.size() != n)
+      throw json::other_error::create(501, "the daylight arrays differ in length from points", &s);
+  }
   const json& st = s.at("stats");
   // A statistic results.json wrote as null (not finite) is refused by the type check.
   read_fields(st, "Emin", r.stats.Emin, "Eavg", r.stats.Eavg, "Emax", r.stats.Emax, "U0",
@@ -332,9 +337,11 @@ ResultsDocument read_results_document(const std::string& text, const std::string
     if (!quality) throw json::other_error::create(501, "unknown quality", &doc.at("quality"));
     r.quality = *quality;
     const std::string scene = doc.at("scene").get<std::string>();
-    if (scene != "normal" && scene != "emergency")
+    if (scene != "normal" && scene != "emergency" && scene != "daylight")
       throw json::other_error::create(501, "unknown scene \"" + scene + "\"", &doc.at("scene"));
-    r.scene = scene == "emergency" ? calc::LightingScene::emergency : calc::LightingScene::normal;
+    r.scene = scene == "emergency"  ? calc::LightingScene::emergency
+              : scene == "daylight" ? calc::LightingScene::daylight
+                                    : calc::LightingScene::normal;
     doc.at("maintenance_factor").get_to(r.maintenance_factor);
     r.plan = plan_from_json(doc.at("plan"));
     const json& in = doc.at("report_input");

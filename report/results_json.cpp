@@ -110,6 +110,8 @@ nlohmann::json surface_json(const calc::SurfaceResult& r, size_t index, bool arr
                 {"Emax", r.stats.Emax},
                 {"U0", r.stats.U0},
                 {"Ud", r.stats.Ud}};
+  // The daylight scene's components, percent of E_h (calc/results.h; docs/daylight.md).
+  if (!r.DF.empty()) s["DF"] = r.DF, s["SC"] = r.SC, s["ERC"] = r.ERC, s["IRC"] = r.IRC;
   if (g.kind == geometry::SurfaceGrid::Kind::observers) {
     s["UGR_max"] = r.UGR_max ? json(*r.UGR_max) : json(nullptr);
     s["observers"] = observers_json(r.observers);

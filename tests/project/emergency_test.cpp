@@ -185,7 +185,8 @@ TEST(EmergencyProject, RefusalsNameThePlace) {
   d = project();
   d["settings"]["scene"] = "night";
   EXPECT_EQ(error_of(d),
-            "p.json /settings/scene: expected \"normal\" or \"emergency\", got \"night\"");
+            "p.json /settings/scene: expected \"normal\", \"emergency\" or \"daylight\", got "
+            "\"night\"");
   d = project();
   d["settings"]["maintenance"] = {{"luminaire_category", "C"}, {"environment", "clean"}};
   EXPECT_NE(error_of(d).find("the CIE 97 table form of the maintenance factor is not built"),

@@ -138,8 +138,8 @@ INSTANTIATE_TEST_SUITE_P(
     Messages, ProjectFileBad,
     ::testing::Values(
         BadCase{"unknown_top_key", "/reflectence", "1",
-                "p.json /reflectence: unknown key \"reflectence\" (expected one of: format, "
-                "luminaires, name, photometry, rooms, settings, surfaces)"},
+                "p.json /reflectence: unknown key \"reflectence\" (expected one of: daylight, "
+                "format, luminaires, name, openings, photometry, rooms, settings, surfaces)"},
         BadCase{"wrong_format", "/format", "\"luxgrid-project/2\"",
                 "p.json /format: expected \"luxgrid-project/1\", got \"luxgrid-project/2\""},
         BadCase{"rotation_two_numbers", "/luminaires/0/rotation", "[0, 90]",

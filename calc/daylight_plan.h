@@ -1,0 +1,37 @@
+#pragma once
+// What the daylight scene did (docs/daylight.md), as values for the plan: the sky and its
+// normalisation, how each component was integrated over the openings and the largest error
+// estimate each reached, and what is not built yet. report/plan_json and plan_text write it.
+#include <cstddef>
+#include <string>
+
+namespace luxgrid::calc {
+
+struct DaylightPlan {
+  std::string sky;  // "1".."15", "cie-overcast", "uniform"
+  double diffuse_horizontal_lx = 0.0;
+  double ground_reflectance = 0.0;
+  bool has_sun = false;  // the sun shapes a general sky; none for the uniform and overcast skies
+  double sun_altitude_deg = 0.0, sun_azimuth_deg = 0.0;  // azimuth clockwise from true north
+  bool sun_from_site = false;
+  // E_h / L_z of the sky (sr) and its quadrature's error estimate
+  // (calc/daylight/sky_normalisation).
+  double sky_integral_sr = 0.0;
+  double sky_integral_error_sr = 0.0;
+  std::size_t openings = 0, glazed_openings = 0;
+  // The sky and externally reflected components: exact (Lambert's formula: an unglazed opening,
+  // nothing inside the room that can hide it, the uniform sky for the sky component) or adaptive
+  // (calc/daylight/aperture_integral) to `relative_tolerance` of each point's value.
+  bool sky_exact = false, ground_exact = false;
+  double relative_tolerance = 0.0;
+  // The largest error estimate over all points, in percent of E_h (daylight-factor points), of
+  // each component, and the integrand's evaluations in all.
+  double sky_error_percent = 0.0, ground_error_percent = 0.0;
+  std::size_t evaluations = 0;
+  std::size_t points_outside_rooms = 0;     // active points in no room: no daylight computed (0)
+  bool internally_reflected_built = false;  // IRC: not built yet (reported as 0)
+  bool reflecting_surfaces = false;         // a room face or obstacle reflects (IRC would count)
+  std::size_t luminaires_left_out = 0;      // the daylight scene lights nothing electric
+};
+
+}  // namespace luxgrid::calc

@@ -1,0 +1,72 @@
+#include "report/daylight_plan_text.h"
+
+#include "util/format.h"
+
+namespace luxgrid::report {
+namespace {
+
+std::string sky_text(const calc::DaylightPlan& d) {
+  if (d.sky == "uniform") return "uniform sky";
+  if (d.sky == "cie-overcast") return "traditional CIE overcast sky";
+  return "CIE standard general sky type " + d.sky;
+}
+
+std::string percent_text(double fraction) { return format_double("%.2g %%", 100.0 * fraction); }
+
+}  // namespace
+
+std::string daylight_summary(const calc::Plan& plan) {
+  const calc::DaylightPlan& d = *plan.daylight;
+  std::string out =
+      "daylight: " + sky_text(d) + ", E_h " + format_double("%.6g", d.diffuse_horizontal_lx) +
+      " lx, " + std::to_string(d.openings) + " openings; sky component " +
+      (d.sky_exact ? "exact" : "adaptive") + ", externally reflected " +
+      (d.ground_exact ? "exact" : "adaptive") +
+      ", internally reflected not built (0); visibility: " + (plan.visibility.on ? "on" : "off");
+  return out;
+}
+
+std::vector<std::string> daylight_notes(const calc::Plan& plan) {
+  const calc::DaylightPlan& d = *plan.daylight;
+  std::vector<std::string> notes;
+  std::string sky = "daylight: " + sky_text(d);
+  if (d.has_sun)
+    sky += ", sun at " + format_double("%.4g", d.sun_altitude_deg) + " deg altitude, " +
+           format_double("%.5g", d.sun_azimuth_deg) + " deg azimuth" +
+           (d.sun_from_site ? " (NREL SPA for the site and local time)" : "");
+  sky += "; E_h / L_z = " + format_double("%.10g", d.sky_integral_sr) + " sr (quadrature error " +
+         format_double("%.1e", d.sky_integral_error_sr) + " sr); ground reflectance " +
+         format_double("%.3g", d.ground_reflectance);
+  notes.push_back(sky);
+  const auto method = [&](bool exact, double error_percent) {
+    return exact ? std::string("exact (Lambert's formula over each opening)")
+                 : "adaptive to " + percent_text(d.relative_tolerance / 2.0) +
+                       " of each point's value, largest error estimate " +
+                       format_double("%.2g", error_percent) + " % of E_h";
+  };
+  notes.push_back("daylight: sky component " + method(d.sky_exact, d.sky_error_percent));
+  notes.push_back("daylight: externally reflected component (ground) " +
+                  method(d.ground_exact, d.ground_error_percent));
+  notes.push_back(
+      "daylight: internally reflected component not built yet: IRC is 0, so DF and E count only "
+      "the light arriving straight through the openings");
+  if (d.luminaires_left_out > 0)
+    notes.push_back("daylight: " + std::to_string(d.luminaires_left_out) +
+                    " luminaires left out (the daylight scene lights nothing electric)");
+  return notes;
+}
+
+std::vector<std::string> daylight_warnings(const calc::Plan& plan) {
+  const calc::DaylightPlan& d = *plan.daylight;
+  std::vector<std::string> warnings;
+  if (d.points_outside_rooms > 0)
+    warnings.push_back("daylight: " + std::to_string(d.points_outside_rooms) +
+                       " points lie in no room: their daylight is not calculated (0)");
+  if (!d.internally_reflected_built && d.reflecting_surfaces)
+    warnings.push_back(
+        "daylight: the internally reflected component is not built yet; DF is SC + ERC only "
+        "(an underestimate wherever the room's surfaces reflect light)");
+  return warnings;
+}
+
+}  // namespace luxgrid::report
