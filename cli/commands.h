@@ -17,5 +17,6 @@ void add_info_command(CLI::App& app, Runner& run);      // cli/info_command.cpp
 void add_diff_command(CLI::App& app, Runner& run);      // cli/diff_command.cpp
 void add_cost_command(CLI::App& app, Runner& run);      // cli/cost_command.cpp
 void add_accuracy_command(CLI::App& app, Runner& run);  // cli/accuracy_command.cpp
+void add_view_command(CLI::App& app, Runner& run);      // cli/view_command.cpp
 
 }  // namespace luxgrid::cli

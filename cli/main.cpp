@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   luxgrid::cli::add_diff_command(app, run);
   luxgrid::cli::add_cost_command(app, run);
   luxgrid::cli::add_accuracy_command(app, run);
+  luxgrid::cli::add_view_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
