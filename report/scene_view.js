@@ -2,7 +2,8 @@
 // embedded in the page, drawn with three.js, also embedded. Drag to turn, right-drag or
 // shift-drag to move, the wheel to zoom; a click on a surface gives its value there. The page's
 // address may choose the start: #view=top (from above, north up) or #view=home, and
-// #show=rooms,surfaces,luminaires,solids (the layers shown; the check boxes follow).
+// #show=rooms,surfaces,luminaires,solids (the layers shown; the check boxes follow), and
+// #pick=X,Y clicks at a place (below).
 // luxgrid's frame (+z up) is glTF's (x, z, -y): the scene's root node turns one into the other.
 const box = document.getElementById('scene-3d');
 const say = (text) => {
@@ -96,6 +97,13 @@ function start(THREE) {
     if (n.mesh !== undefined) {
       const holder = new THREE.Group();
       for (const p of meshes[n.mesh]) {
+        // A grid drawn over the face it lies on (5 mm off it): pulled towards the eye in depth,
+        // so that it wins over the face however far away it is seen.
+        if (kind === 'grid') {
+          p.material.polygonOffset = true;
+          p.material.polygonOffsetFactor = -2;
+          p.material.polygonOffsetUnits = -2;
+        }
         const mesh = new THREE.Mesh(p.geometry, p.material);
         mesh.userData = {node: object};
         holder.add(mesh);
@@ -292,6 +300,13 @@ function start(THREE) {
       if (node.userData.kind === 'room' || node.userData.kind === 'obstacle') continue;
     }
     say('Click a calculation surface for its value.');
+  }
+  // #pick=X,Y: a click at that place of the canvas (fractions of its width and height from the
+  // top left) once drawn, as a test's way to click.
+  if (hash.has('pick')) {
+    const [fx, fy] = hash.get('pick').split(',').map(Number);
+    const r = canvas.getBoundingClientRect();
+    pick({clientX: r.left + fx * r.width, clientY: r.top + fy * r.height});
   }
   box.dataset.state = 'ready';
 }

@@ -18,7 +18,7 @@ std::string scene_view_style() {
 .scene-3d-info { margin: 0; padding: 4px 6px; font-size: 9pt; background: #fff; border-top: 1px solid #ddd;
   min-height: 1.3em; } .scene-3d.unavailable { padding: 1em; }
 body.scene-3d-alone { margin: 0; padding: 0; max-width: none; } body.scene-3d-alone > :not(#scene-3d) { display: none; }
-@media print { .scene-3d-controls { display: none; } .scene-3d { break-inside: avoid; } }
+@media print { .scene-3d-controls, .scene-3d-info { display: none; } .scene-3d { break-inside: avoid; } }
 )";
 }
 

@@ -11,7 +11,10 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
+
 #include "tests/cli/cli_support.h"
+#include "util/format.h"
 
 namespace scene_view_test {
 namespace {
@@ -35,6 +38,17 @@ std::string screenshot(const std::string& url, const fs::path& png, int width, i
   fs::remove_all(profile);
   return r.output;
 }
+// The page's DOM after its scripts ran.
+std::string dump_dom(const std::string& url, const fs::path& profile) {
+  const auto r = shell(
+      "chromium --headless --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader "
+      "--no-first-run --disable-background-networking --disable-component-update --disable-sync "
+      "--virtual-time-budget=20000 --window-size=800,600 --user-data-dir=" +
+      quote(profile) + " --dump-dom " + quote(url) + " 2>/dev/null");
+  fs::remove_all(profile);
+  return r.output;
+}
+
 struct Image {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgb;
@@ -184,6 +198,39 @@ TEST(SceneViewChromium, ARotatedLuminairesSolidPointsWhereItsRotationAims) {
   EXPECT_GT(down.pixels, 2000);
   EXPECT_LT(std::abs(down.dx), 15.0);
   EXPECT_LT(std::abs(down.dy), 15.0);
+}
+
+TEST(SceneViewChromium, AClickOnASurfaceGivesItsValue) {
+  REQUIRE_CHROMIUM();
+  // The Lambertian downlight of above over the floor grid of the 4 x 4 m room (points at 0.5,
+  // 1.5, 2.5, 3.5 m): the centre of the view from above is the room's centre (2, 2), between four
+  // points whose values are equal by symmetry, so the value there is theirs.
+  const fs::path dir = scratch("scene_view_click");
+  luxgrid::test::write_file(dir / "p.json", R"({
+  "format": "luxgrid-project/1", "name": "click",
+  "photometry": { "lb": { "builtin": "lambertian", "intensity_cd": 1000 } },
+  "rooms": [ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 6 } ],
+  "luminaires": [ { "photometry": "lb", "position": [2, 2, 3] } ],
+  "surfaces": [ { "name": "floor", "workplane": { "room": "r", "height": 0, "border": 0 },
+                  "spacing": 1 } ] })");
+  const auto calc = luxgrid::test::luxgrid("calc " + quote(dir / "p.json") + " -o " +
+                                           quote(dir / "out") + " --quality draft");
+  ASSERT_EQ(calc.code, 0) << calc.output;
+  const auto results =
+      nlohmann::json::parse(luxgrid::test::read_file(dir / "out" / "results.json"));
+  const auto& floor = results["surfaces"][0];
+  const auto& points = floor["points"];
+  double e = -1.0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points[i][0] == 1.5 && points[i][1] == 1.5) e = floor["E"][i];
+  ASSERT_GT(e, 0.0);
+  const std::string page = dump_dom(
+      "file://" + (dir / "out" / "report.html").string() + "#view=top&show=surfaces&pick=0.5,0.5",
+      dir / "profile");
+  const std::string want = "floor: " + luxgrid::format_double("%.1f", e) + " lx at x 2.00, y 2.00";
+  EXPECT_NE(page.find(want), std::string::npos)
+      << want << "\n"
+      << page.substr(0, std::min<std::size_t>(page.size(), 400));
 }
 
 }  // namespace

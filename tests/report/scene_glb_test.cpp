@@ -12,8 +12,8 @@
 
 #include "report/gltf_writer.h"
 #include "report/html_report.h"
-#include "report/room_figures.h"
 #include "report/photometric_solid.h"
+#include "report/room_figures.h"
 #include "report/scene_glb.h"
 #include "report/scene_meshes.h"
 #include "report/viridis.h"
