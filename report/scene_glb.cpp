@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -165,16 +166,27 @@ std::string scene_glb(const SceneGlbInput& in) {
     if (t->solid) max_cd = std::max(max_cd, t->solid->max_cd());
   const double m_per_cd = max_cd > 0.0 ? solid_length_m(scene) / max_cd : 0.0;
   std::map<std::string, int> solid_mesh;
+  // One mesh per opening's shape and size, shared by the luminaires that have it.
+  std::map<std::tuple<int, double, double>, int> luminaire_mesh;
   for (const calc::Luminaire& l : scene.luminaires) {
-    gltf::Primitive opening = opening_primitive(l.opening);
-    opening.material = materials.flat("luminous opening", kOpening, 1.0, false);
-    gltf::Primitive body = body_primitive(l.opening);
-    body.material = materials.flat("luminaire body", kBody, 1.0, false);
-    gltf::Primitive arrow = c0_arrow_primitive(l.opening);
-    arrow.material = materials.flat("C0 direction", kC0Arrow);
+    const auto shape =
+        std::make_tuple(static_cast<int>(l.opening.shape), l.opening.length, l.opening.width);
+    auto mesh = luminaire_mesh.find(shape);
+    if (mesh == luminaire_mesh.end()) {
+      gltf::Primitive opening = opening_primitive(l.opening);
+      opening.material = materials.flat("luminous opening", kOpening, 1.0, false);
+      gltf::Primitive body = body_primitive(l.opening);
+      body.material = materials.flat("luminaire body", kBody, 1.0, false);
+      gltf::Primitive arrow = c0_arrow_primitive(l.opening);
+      arrow.material = materials.flat("C0 direction", kC0Arrow);
+      const std::string name = "luminaire " + opening_json(l.opening)["shape"].get<std::string>() +
+                               " " + format_double("%g", l.opening.length) + " x " +
+                               format_double("%g", l.opening.width) + " m";
+      mesh = luminaire_mesh.emplace(shape, doc.add_mesh(name, {opening, body, arrow})).first;
+    }
     gltf::Node node;
     node.name = l.label;
-    node.mesh = doc.add_mesh(l.label, {opening, body, arrow});
+    node.mesh = mesh->second;
     node.translation = {l.pose.position.x, l.pose.position.y, l.pose.position.z};
     if (l.pose.rotation != glm::dmat3(1.0)) node.rotation = quaternion(l.pose.rotation);
     node.extras = {{"kind", "luminaire"},

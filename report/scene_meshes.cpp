@@ -155,16 +155,30 @@ Primitive solid_primitive(const PhotometricSolid& solid, double m_per_cd) {
   return p;
 }
 
+namespace {
+// The rows (or columns) a grid of n along one side is drawn with: every `stride`-th and the last.
+std::vector<int> drawn_lines(int n) {
+  const int stride = (n + kMaxGridSide - 1) / kMaxGridSide;
+  std::vector<int> out;
+  for (int i = 0; i < n; i += std::max(stride, 1)) out.push_back(i);
+  if (n > 0 && out.back() != n - 1) out.push_back(n - 1);
+  return out;
+}
+}  // namespace
+
 Primitive grid_primitive(const geometry::SurfaceGrid& g, std::vector<int>* vertex_of) {
   Primitive p;
+  const std::vector<int> us = drawn_lines(g.nu), vs = drawn_lines(g.nv);
   std::vector<int> index(g.points.size(), -1);
-  for (std::size_t i = 0; i < g.points.size(); ++i) {
-    if (!g.active[i]) continue;
-    index[i] = static_cast<int>(vertex(p, g.points[i] + g.normals[i] * kGridLift));
-  }
-  // Cells between points (u, v), (u + 1, v), (u + 1, v + 1), (u, v + 1), each triangle turned
-  // to face the side the grid's normals give (into the room for a room's surfaces), so that a
-  // ceiling's grid seen from above is not drawn, like the ceiling.
+  for (int v : vs)
+    for (int u : us) {
+      const std::size_t i = static_cast<std::size_t>(v) * g.nu + u;
+      if (g.active[i])
+        index[i] = static_cast<int>(vertex(p, g.points[i] + g.normals[i] * kGridLift));
+    }
+  // Cells between drawn points (u, v), (u', v), (u', v'), (u, v'), each triangle turned to face
+  // the side the grid's normals give (into the room for a room's surfaces), so that a ceiling's
+  // grid seen from above is not drawn, like the ceiling.
   const auto at = [&](int u, int v) { return index[static_cast<std::size_t>(v) * g.nu + u]; };
   const Vec3 facing = glm::cross(g.u_dir, g.v_dir);
   bool flip = false;
@@ -173,9 +187,10 @@ Primitive grid_primitive(const geometry::SurfaceGrid& g, std::vector<int>* verte
       flip = glm::dot(facing, g.normals[i]) < 0.0;
       break;
     }
-  for (int v = 0; v + 1 < g.nv; ++v)
-    for (int u = 0; u + 1 < g.nu; ++u) {
-      const int a = at(u, v), b = at(u + 1, v), c = at(u + 1, v + 1), d = at(u, v + 1);
+  for (std::size_t kv = 0; kv + 1 < vs.size(); ++kv)
+    for (std::size_t ku = 0; ku + 1 < us.size(); ++ku) {
+      const int a = at(us[ku], vs[kv]), b = at(us[ku + 1], vs[kv]), c = at(us[ku + 1], vs[kv + 1]),
+                d = at(us[ku], vs[kv + 1]);
       const auto put = [&](int x, int y, int z) {
         if (x < 0 || y < 0 || z < 0) return;
         if (flip) std::swap(y, z);

@@ -37,9 +37,13 @@ gltf::Primitive solid_primitive(const PhotometricSolid& solid, double m_per_cd);
 
 // A grid surface: a vertex at each active point (in order), moved kGridLift along its normal so
 // that a grid on a floor or wall is not hidden in it; two triangles per cell whose four points are
-// active, one where three are, facing the way the grid's normals point. `vertex_of` gets each
-// point's vertex index (-1: inactive).
+// active, one where three are, facing the way the grid's normals point. A grid of more than
+// kMaxGridSide points along a side is drawn with every k-th row or column and the last (k the
+// least that gives at most kMaxGridSide + 1), so that a million-point grid makes a scene of a
+// megabyte, not of a hundred: the 3D view is an overview, the map and the CSV hold every point.
+// `vertex_of` gets each point's vertex index (-1: inactive or not drawn).
 inline constexpr double kGridLift = 0.005;  // m
+inline constexpr int kMaxGridSide = 120;
 gltf::Primitive grid_primitive(const geometry::SurfaceGrid& grid, std::vector<int>* vertex_of);
 
 }  // namespace luxgrid::report

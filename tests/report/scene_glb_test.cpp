@@ -282,6 +282,29 @@ TEST(SceneGlb, SurfaceColoursAreTheColourScalesAtEachPointsValue) {
   }
 }
 
+TEST(SceneGlb, ALargeGridIsDrawnWithEveryKthLineAndItsEdges) {
+  // 250 x 10 points: every third column (0, 3, ..., 249: 84 of them; 249 is the last) and every
+  // row, so the drawing spans the grid's whole extent.
+  geometry::SurfaceGrid g =
+      geometry::make_plane_grid("big", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 25.0, 1.0, 0.1);
+  ASSERT_EQ(g.nu, 250);
+  ASSERT_EQ(g.nv, 10);
+  std::vector<int> vertex_of;
+  const gltf::Primitive p = grid_primitive(g, &vertex_of);
+  EXPECT_EQ(p.positions.size(), 3u * 84 * 10);
+  EXPECT_EQ(p.indices.size(), 3u * 2 * 83 * 9);
+  EXPECT_GE(vertex_of[249], 0);
+  EXPECT_GE(vertex_of[3], 0);
+  EXPECT_EQ(vertex_of[1], -1);
+  float xmin = 1e9f, xmax = -1e9f;
+  for (std::size_t i = 0; i < p.positions.size(); i += 3) {
+    xmin = std::min(xmin, p.positions[i]);
+    xmax = std::max(xmax, p.positions[i]);
+  }
+  EXPECT_FLOAT_EQ(xmin, static_cast<float>(g.points.front().x));
+  EXPECT_FLOAT_EQ(xmax, static_cast<float>(g.points[249].x));
+}
+
 TEST(SceneGlb, TheSameInputWritesTheSameBytes) {
   const TestScene t;
   EXPECT_EQ(t.glb(), t.glb());
