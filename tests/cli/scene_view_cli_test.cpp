@@ -1,7 +1,7 @@
 // The 3D view as a person sees it: report.html and `luxgrid view` rendered by headless Chromium
 // with WebGL on SwiftShader, the screenshot read back: the legend's colours and coloured surfaces
-// in the report's view, and a rotated luminaire's photometric solid on the side its rotation
-// aims at, seen from above.
+// in the report's view, three rotated luminaires' photometric solids where their rotations aim,
+// seen from above, and a click's value.
 #include <gtest/gtest.h>
 
 #include <png.h>
@@ -139,65 +139,68 @@ TEST(SceneViewChromium, TheReportsViewShowsTheLegendAndColouredSurfaces) {
   EXPECT_GT(coloured, all / 5) << coloured << " of " << all << " pixels coloured";
 }
 
-// A 4 x 4 m room, 6 m high, one Lambertian luminaire at its centre (2, 2, 3) turned by
-// `rotation`: its solid is a sphere of 2 m (a third of the height) from the luminaire along its
-// aim. Seen from above (north up), the solid's pixels lie to the aim's side of the centre.
-struct SolidCentroid {
-  double dx = 0.0, dy = 0.0;  // px from the view's centre, +x right, +y up
-  long pixels = 0;
-};
-SolidCentroid solid_seen_from_above(const std::string& rotation, const std::string& name) {
-  const fs::path dir = scratch("scene_view_" + name);
-  luxgrid::test::write_file(dir / "p.json", R"({
-  "format": "luxgrid-project/1", "name": "aim",
-  "photometry": { "lb": { "builtin": "lambertian", "intensity_cd": 1000 } },
-  "rooms": [ { "name": "r", "outline": [[0,0],[4,0],[4,4],[0,4]], "height": 6 } ],
-  "luminaires": [ { "photometry": "lb", "position": [2, 2, 3], "rotation": )" +
-                                                rotation + R"( } ],
-  "surfaces": [ { "name": "floor", "workplane": { "room": "r", "height": 0 }, "spacing": 1 } ] })");
-  SolidCentroid out;
-  const auto view =
-      luxgrid::test::luxgrid("view " + quote(dir / "p.json") + " -o " + quote(dir / "view.html"));
-  EXPECT_EQ(view.code, 0) << view.output;
-  const fs::path png = dir / (name + ".png");
-  // 800 x 600; the canvas takes the window less the 2em line below it.
-  screenshot("file://" + (dir / "view.html").string() + "#view=top&show=solids", png, 800, 600);
-  const Image img = read_png(png);
-  EXPECT_EQ(img.width, 800);
-  if (img.width != 800) return out;
-  const double cx = 400.0, cy = (600.0 - 32.0) / 2.0;
-  double sx = 0.0, sy = 0.0;
-  for (int y = 0; y < 560; ++y)
-    for (int x = 0; x < 800; ++x) {
-      const auto c = img.at(x, y);
-      if (c[0] > 200 && c[0] - c[2] > 60) {  // the solid's translucent amber
-        sx += x - cx;
-        sy += cy - y;
-        ++out.pixels;
-      }
-    }
-  if (out.pixels) out.dx = sx / out.pixels, out.dy = sy / out.pixels;
-  return out;
-}
-
+// Three 4 x 4 m rooms, 6 m high, side by side along x (from x = 0, 6 and 12 m), each with one
+// Lambertian luminaire at its centre, 3 m up: turned -90 degrees about y (nadir to +x, east),
+// turned 90 degrees about x (nadir to +y, north), not turned (straight down). A Lambertian solid
+// is a sphere from the luminaire along its aim, 2 m across (a third of the rooms' height). Seen
+// from above with north up, its pixels' centroid lies 1 m from the luminaire on the aim's side.
 TEST(SceneViewChromium, ARotatedLuminairesSolidPointsWhereItsRotationAims) {
   REQUIRE_CHROMIUM();
-  // Turned -90 degrees about y, nadir (-z) goes to +x: east, to the right of the centre. About
-  // 76 px a metre at this size: the centroid of the solid's pixels is about 1 m from the centre.
-  const SolidCentroid east = solid_seen_from_above("[0, -90, 0]", "east");
-  EXPECT_GT(east.pixels, 2000);
-  EXPECT_GT(east.dx, 40.0);
-  EXPECT_LT(std::abs(east.dy), 15.0);
-  // Turned 90 degrees about x, nadir goes to +y: north, up in the picture.
-  const SolidCentroid north = solid_seen_from_above("[90, 0, 0]", "north");
-  EXPECT_GT(north.pixels, 2000);
-  EXPECT_GT(north.dy, 40.0);
-  EXPECT_LT(std::abs(north.dx), 15.0);
-  // Not turned: straight down, seen from above a disc about the centre.
-  const SolidCentroid down = solid_seen_from_above("[0, 0, 0]", "down");
-  EXPECT_GT(down.pixels, 2000);
-  EXPECT_LT(std::abs(down.dx), 15.0);
-  EXPECT_LT(std::abs(down.dy), 15.0);
+  const fs::path dir = scratch("scene_view_aim");
+  std::string rooms, luminaires;
+  const char* rotation[3] = {"[0, -90, 0]", "[90, 0, 0]", "[0, 0, 0]"};
+  for (int k = 0; k < 3; ++k) {
+    const int x0 = 6 * k;
+    const std::string n = std::to_string(k);
+    rooms += std::string(k ? ", " : "") + "{ \"name\": \"r" + n + "\", \"outline\": [[" +
+             std::to_string(x0) + ",0],[" + std::to_string(x0 + 4) + ",0],[" +
+             std::to_string(x0 + 4) + ",4],[" + std::to_string(x0) + ",4]], \"height\": 6 }";
+    luminaires += std::string(k ? ", " : "") + "{ \"photometry\": \"lb\", \"position\": [" +
+                  std::to_string(x0 + 2) + ", 2, 3], \"rotation\": " + rotation[k] + " }";
+  }
+  luxgrid::test::write_file(dir / "p.json", R"({ "format": "luxgrid-project/1", "name": "aim",
+  "photometry": { "lb": { "builtin": "lambertian", "intensity_cd": 1000 } },
+  "rooms": [ )" + rooms + R"( ], "luminaires": [ )" +
+                                                luminaires + R"( ],
+  "surfaces": [ { "name": "floor", "workplane": { "room": "r0", "height": 0 }, "spacing": 1 } ] })");
+  const auto view =
+      luxgrid::test::luxgrid("view " + quote(dir / "p.json") + " -o " + quote(dir / "view.html"));
+  ASSERT_EQ(view.code, 0) << view.output;
+  const fs::path png = dir / "aim.png";
+  screenshot("file://" + (dir / "view.html").string() + "#view=top&show=solids", png, 1000, 700);
+  const Image img = read_png(png);
+  ASSERT_EQ(img.width, 1000);
+  // The camera (report/scene_view.js): above the centre of the rooms' box, (8, 2, 3), at 1.25
+  // times the box's diagonal (16 x 4 x 6 m), north up, a 40 degree vertical field over the
+  // canvas, which is the window's height less 2em (32 px). A point (x, y, z) is seen at
+  // (500 + (x - 8) f / d, h / 2 - (y - 2) f / d), d its depth below the camera, f the focal length.
+  const double canvas_h = 700.0 - 32.0;
+  const double camera_z = 3.0 + 1.25 * std::sqrt(16.0 * 16.0 + 4.0 * 4.0 + 6.0 * 6.0);
+  const double f = canvas_h / (2.0 * std::tan(20.0 * 3.14159265358979 / 180.0));
+  // Each sphere's centre: 1 m from its luminaire along the aim.
+  const double centre[3][3] = {{3, 2, 3}, {8, 3, 3}, {14, 2, 2}};
+  struct Seen {
+    double x = 0.0, y = 0.0;  // px
+    long pixels = 0;
+  } seen[3];
+  for (int y = 0; y < static_cast<int>(canvas_h); ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const auto c = img.at(x, y);
+      if (!(c[0] > 200 && c[0] - c[2] > 60)) continue;  // the solid's translucent amber
+      const int k = x < 375 ? 0 : x < 625 ? 1 : 2;      // the rooms' thirds of the picture
+      seen[k].x += x + 0.5;
+      seen[k].y += y + 0.5;
+      ++seen[k].pixels;
+    }
+  // Within 6 px (about 0.15 m) of where the sphere's centre is seen: a wrong turn puts the
+  // sphere a metre (about 40 px) or more away.
+  for (int k = 0; k < 3; ++k) {
+    ASSERT_GT(seen[k].pixels, 1500) << k;
+    const double d = camera_z - centre[k][2];
+    EXPECT_NEAR(seen[k].x / seen[k].pixels, 500.0 + (centre[k][0] - 8.0) * f / d, 6.0) << k;
+    EXPECT_NEAR(seen[k].y / seen[k].pixels, canvas_h / 2.0 - (centre[k][1] - 2.0) * f / d, 6.0)
+        << k;
+  }
 }
 
 TEST(SceneViewChromium, AClickOnASurfaceGivesItsValue) {
