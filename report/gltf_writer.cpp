@@ -92,9 +92,11 @@ int Document::add_material(const Material& m) {
 int Document::add_mesh(const std::string& name, const std::vector<Primitive>& primitives) {
   json prims = json::array();
   for (const Primitive& p : primitives) {
+    // Nothing to draw (a degenerate outline, an opening of no size): left out.
+    if (p.indices.empty()) continue;
     const std::size_t vertices = p.positions.size() / 3;
-    if (vertices == 0 || p.positions.size() % 3 != 0 || p.indices.empty() ||
-        p.indices.size() % 3 != 0 || (!p.colours.empty() && p.colours.size() != p.positions.size()))
+    if (vertices == 0 || p.positions.size() % 3 != 0 || p.indices.size() % 3 != 0 ||
+        (!p.colours.empty() && p.colours.size() != p.positions.size()))
       throw std::invalid_argument("glTF mesh \"" + name + "\": malformed primitive");
     for (std::uint32_t i : p.indices)
       if (i >= vertices)
@@ -113,6 +115,7 @@ int Document::add_mesh(const std::string& name, const std::vector<Primitive>& pr
     if (p.material >= 0) prim["material"] = p.material;
     prims.push_back(std::move(prim));
   }
+  if (prims.empty()) return -1;
   meshes_.push_back({{"name", name}, {"primitives", std::move(prims)}});
   return static_cast<int>(meshes_.size() - 1);
 }

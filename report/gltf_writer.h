@@ -50,8 +50,9 @@ class Document {
   explicit Document(std::string generator);
 
   int add_material(const Material& m);
-  // Throws std::invalid_argument for an empty primitive, an index out of range, colours that do
-  // not match the positions or a count of indices that is not a multiple of three.
+  // Primitives without triangles are left out; a mesh left with none is not added (returns -1,
+  // a node without mesh). Throws std::invalid_argument for an index out of range, colours that
+  // do not match the positions or a count of indices that is not a multiple of three.
   int add_mesh(const std::string& name, const std::vector<Primitive>& primitives);
   int add_node(Node node);
   Node& node(int index) { return nodes_.at(static_cast<std::size_t>(index)); }

@@ -108,6 +108,8 @@ TEST(GltfWriter, RefusesAnIndexOutOfRangeAndColoursOfTheWrongLength) {
   p.indices = {0, 1, 2};
   p.colours = {1, 1, 1};
   EXPECT_THROW(doc.add_mesh("m", {p}), std::invalid_argument);
+  // Without triangles: no mesh.
+  EXPECT_EQ(doc.add_mesh("m", {gltf::Primitive{}}), -1);
 }
 
 TEST(SceneGlb, SrgbToLinearFollowsIec61966) {
