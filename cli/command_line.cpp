@@ -135,6 +135,18 @@ void add_accuracy(CLI::App& app, std::function<int()>& run) {
                 "Carlo levels");
 }
 
+void add_view(CLI::App& app, std::function<int()>& run) {
+  CLI::App* cmd = app.add_subcommand(
+      "view",
+      "Write the project in 3D without calculating (rooms, obstacles, luminaires with their "
+      "photometric solids, calculation surfaces): an HTML page, or glTF when FILE ends in .glb");
+  auto opt = bind(cmd, run, &run_view);
+  cmd->add_option("PROJECT", opt->project, "Project file (JSON)")->required();
+  cmd->add_option("-o,--output", opt->out,
+                  "The file to write: .html (the default, <project>.view.html beside the "
+                  "project) or .glb");
+}
+
 }  // namespace
 
 CommandLine parse_command_line(int argc, char** argv) {
@@ -154,6 +166,7 @@ CommandLine parse_command_line(int argc, char** argv) {
   add_diff(app, line.run);
   add_cost(app, line.run);
   add_accuracy(app, line.run);
+  add_view(app, line.run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -61,4 +61,10 @@ struct AccuracyArgs {
 };
 int run_accuracy(const AccuracyArgs& args);
 
+// `luxgrid view`: cli/view_command.cpp.
+struct ViewArgs {
+  std::string project, out;
+};
+int run_view(const ViewArgs& args);
+
 }  // namespace luxgrid::cli

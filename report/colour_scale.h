@@ -23,6 +23,13 @@ ColourScale auto_scale(double emax);
 ColourScale fit_scale(double emin, double emax);
 ColourScale fixed_scale(double min, double max);
 
+// Where `lx` lies on the scale, 0 at min to 1 at max, clamped: the argument of the colour map
+// (report/viridis.h) as the maps use it.
+inline double scale_position(const ColourScale& s, double lx) {
+  const double t = (lx - s.min) / (s.max - s.min);
+  return t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0;
+}
+
 // "MIN:MAX" in lux (the --scale option) -> a fixed scale. Throws InputError naming the text when
 // it is not two finite numbers with 0 <= MIN < MAX.
 ColourScale parse_scale(const std::string& text);

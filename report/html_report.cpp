@@ -6,6 +6,7 @@
 
 #include "geometry/polygon.h"
 #include "report/compliance_table.h"
+#include "report/embedded_scripts.h"
 #include "report/energy.h"
 #include "report/map_frame.h"
 #include "report/observers_html.h"
@@ -13,6 +14,7 @@
 #include "report/plan_view_svg.h"
 #include "report/png_file.h"
 #include "report/polar_diagram.h"
+#include "report/scene_view_html.h"
 #include "util/format.h"
 
 namespace luxgrid::report {
@@ -72,7 +74,7 @@ img.polar { width: 300px; } .plan { max-width: 100%; height: auto; } .luminaire-
 @media print { body { margin: 0; padding: 0; max-width: none; } h2 { break-after: avoid; }
   .cover { break-after: page; } h2.appendix { break-before: page; }
   .surface, .room, table.values, .luminaire-card, tr { break-inside: avoid; } a { color: inherit; } }
-)";
+)" + scene_view_style();
   return css;
 }
 
@@ -477,6 +479,22 @@ void write_html_report(const ReportInput& in, const TextSink& put) {
            "their view. Walls are numbered as the surfaces named \"&hellip; wall N\" use "
            "them.</p></div>\n";
     }
+  }
+
+  // --- 3D view --------------------------------------------------------------------------------
+  if (in.scene_glb) {
+    h += "<h2>3D view</h2>\n";
+    put(h);
+    h.clear();
+    SceneViewOptions view;
+    view.three_js = in.three_js;
+    scene_view_section(*in.scene_glb, view, put);
+    h += "<p class=\"caption\">scene.glb beside this report, drawn: rooms grey by reflectance "
+         "(walls and ceilings between the eye and the room left out), luminaires with their "
+         "luminous opening (yellow) and C0 direction (blue arrow), calculation surfaces coloured "
+         "by maintained illuminance on one scale for all (legend; the maps above have one "
+         "each). Photometric solids: each luminaire's intensity in every direction, drawn from "
+         "its opening, the largest in the scene a third of the highest room.</p>\n";
   }
 
   // --- energy ---------------------------------------------------------------------------------

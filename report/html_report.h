@@ -1,7 +1,8 @@
 #pragma once
 // report.html: the one self-contained page a lighting designer hands over. Images are inline
-// (PNG as base64 data URIs, plan views and polar diagrams as inline SVG), there is no script and
-// no external resource, and a print style sheet lays it out on A4.
+// (PNG as base64 data URIs, plan views and polar diagrams as inline SVG), the one script is the
+// 3D view's (embedded, three.js included), there is no external resource, and a print style sheet
+// lays it out on A4.
 #include <functional>
 #include <map>
 #include <string>
@@ -11,6 +12,7 @@
 #include "calc/results.h"
 #include "calc/scene.h"
 #include "report/diff.h"
+#include "report/embedded_scripts.h"
 #include "report/energy.h"
 #include "report/html_text.h"
 #include "report/luminaire_types.h"
@@ -35,6 +37,11 @@ struct ReportInput {
   // luminaire_sections_html(types, *scene) when the caller made it already (write_outputs makes it
   // while the plots are drawn); empty: html_report makes it.
   std::string luminaires_html;
+  // scene.glb's bytes, for the 3D view (report/scene_view_html.h); null: no 3D view.
+  const std::string* scene_glb = nullptr;
+  // three.js for the 3D view (report/embedded_scripts.h); empty: the page says the view is not
+  // available.
+  std::string_view three_js = three_js_module();
 };
 
 // Where the page's text goes, piece by piece and in order.

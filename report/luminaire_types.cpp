@@ -48,6 +48,7 @@ std::vector<LuminaireType> luminaire_types(
       t.ugr_endwise = e;
     }
     if (dist) t.polar = polar_curves(*dist);
+    if (dist) t.solid = photometric_solid(*dist);
     types.push_back(std::move(t));
   }
   return types;

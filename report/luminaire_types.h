@@ -2,14 +2,15 @@
 // What the report says of each photometry entry (its row in the luminaire table and its polar
 // diagram), worked out from the scene before the page is written: the product data and power the
 // file states, the flux as used, the light output ratio, CIE 190's tabular UGR and the polar
-// curves. results.json keeps them (docs/project-format.md), so `luxgrid report` needs no
-// photometric file.
+// curves and the photometric solid the 3D views draw. results.json keeps them
+// (docs/project-format.md), so `luxgrid report` needs no photometric file.
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "calc/scene.h"
+#include "report/photometric_solid.h"
 #include "report/polar_diagram.h"
 
 namespace luxgrid::report {
@@ -26,7 +27,8 @@ struct LuminaireType {
   // CIE 190's 4H x 8H value at reflectances 0.7 / 0.5 / 0.2, crosswise and endwise, for the
   // luminaire as used (none for a point opening or where the table gives no value).
   std::optional<double> ugr_crosswise, ugr_endwise;
-  std::optional<PolarCurves> polar;  // none without a distribution
+  std::optional<PolarCurves> polar;       // none without a distribution
+  std::optional<PhotometricSolid> solid;  // for the 3D views; none without a distribution
 };
 
 // One per photometry entry, in the scene's order. `known_flux_lm`: the luminous flux of

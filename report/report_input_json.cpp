@@ -131,6 +131,10 @@ json type_json(const LuminaireType& t) {
   if (t.polar)
     j["polar"] =
         json{{"step_deg", kPolarStepDeg}, {"c0_cd", t.polar->c0_cd}, {"c90_cd", t.polar->c90_cd}};
+  if (t.solid)
+    j["solid"] = json{{"c_step_deg", kSolidCStepDeg},
+                      {"gamma_step_deg", kSolidGammaStepDeg},
+                      {"cd", t.solid->cd}};
   return j;
 }
 LuminaireType read_type(const json& j) {
@@ -147,6 +151,13 @@ LuminaireType read_type(const json& j) {
     PolarCurves c;
     read_fields(p, "c0_cd", c.c0_cd, "c90_cd", c.c90_cd);
     t.polar = std::move(c);
+  }
+  if (const auto it = j.find("solid"); it != j.end()) {
+    PhotometricSolid solid;
+    it->at("cd").get_to(solid.cd);
+    if (solid.cd.size() != static_cast<std::size_t>(kSolidCPlanes * kSolidGammas))
+      throw json::other_error::create(501, "the solid's sample count is not 36 x 37", &*it);
+    t.solid = std::move(solid);
   }
   return t;
 }

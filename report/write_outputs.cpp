@@ -16,6 +16,7 @@
 #include "report/html_report.h"
 #include "report/results_document.h"
 #include "report/results_json.h"
+#include "report/scene_glb.h"
 #include "report/surface_npy.h"
 #include "util/error.h"
 #include "util/ordered_tasks.h"
@@ -171,8 +172,22 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
     report.rooms = room_figures(*options.scene);
   }
   report.types = types;
+  // scene.glb, from what results.json keeps (report_input), so `luxgrid report` writes it again
+  // byte for byte; report.html embeds the same bytes for its 3D view.
+  std::string glb;
+  if (options.scene) {
+    SceneGlbInput scene_in;
+    scene_in.scene = options.scene;
+    scene_in.results = &results;
+    scene_in.types = &types;
+    scene_in.scale = options.scale;
+    scene_in.version = options.version;
+    glb = scene_glb(scene_in);
+    report.scene_glb = &glb;
+  }
   // report.html and results.json side by side: neither reads the other.
   const auto write_html = [&] {
+    if (options.scene) write_text_file(folder.file(kSceneFile), glb);
     if (options.report)
       write_file_streamed(folder.file(kReportFile), [&](std::ostream& out) {
         write_html_report(report, [&](std::string_view s) {

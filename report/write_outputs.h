@@ -1,6 +1,7 @@
 #pragma once
 // Everything a calculation leaves in its output folder: results.json, <surface>.csv, for grid
-// surfaces <surface>.png, report.html (unless switched off) and, when asked for, <surface>.npy.
+// surfaces <surface>.png, scene.glb (with a scene), report.html (unless switched off) and, when
+// asked for, <surface>.npy.
 #include <optional>
 #include <string>
 #include <vector>

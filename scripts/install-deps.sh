@@ -22,3 +22,5 @@ if ((${#missing[@]})); then
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
+# three.js and the glTF validator, from the npm registry (report.html's 3D view, scene.glb's test).
+bash "$(dirname "$0")/install-npm-tools.sh"

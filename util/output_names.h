@@ -37,6 +37,8 @@ inline SurfaceOutputFiles surface_output_files(const std::string& surface_name) 
 inline constexpr const char* kResultsFile = "results.json";
 inline constexpr const char* kReportFile = "report.html";
 inline constexpr const char* kTimingFile = "timing.json";  // phase times, apart from the results
-inline constexpr const char* kFolderOutputFiles[] = {kResultsFile, kReportFile, kTimingFile};
+inline constexpr const char* kSceneFile = "scene.glb";     // the 3D scene (report/scene_glb.h)
+inline constexpr const char* kFolderOutputFiles[] = {kResultsFile, kReportFile, kTimingFile,
+                                                     kSceneFile};
 
 }  // namespace luxgrid

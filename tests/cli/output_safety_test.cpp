@@ -152,8 +152,8 @@ TEST(OutputSafety, TwoConcurrentRunsLeaveOneWholeOutput) {
   const std::string name = j["surfaces"][0]["name"];
   ASSERT_TRUE(name == "alpha" || name == "beta") << name;
   EXPECT_EQ(entries(dir / "out"),
-            (std::set<std::string>{".luxgrid-output", "results.json", "timing.json", name + ".csv",
-                                   name + ".png"}));
+            (std::set<std::string>{".luxgrid-output", "results.json", "timing.json", "scene.glb",
+                                   name + ".csv", name + ".png"}));
   EXPECT_EQ(entries(dir), (std::set<std::string>{"a.json", "b.json", "out"}));
 }
 

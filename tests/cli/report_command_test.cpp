@@ -42,6 +42,7 @@ TEST_P(ReportOfExample, WritesTheBytesCalcWrote) {
   EXPECT_GT(csv, 0u);
   EXPECT_GT(png, 0u);
   EXPECT_TRUE(written.count("report.html"));
+  EXPECT_TRUE(written.count("scene.glb"));  // from results.json alone, calc's bytes (above)
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ReportOfExample,
@@ -56,7 +57,7 @@ TEST(ReportCommand, AScaleChangesThePlotsAsCalcDoes) {
   const auto r = run("report " + quote(dir / "plain" / "results.json") + " -o " +
                      quote(dir / "rescaled") + " --scale 0:1000");
   ASSERT_EQ(r.code, 0) << r.output;
-  for (const char* f : {"workplane.png", "room_floor.png", "report.html"}) {
+  for (const char* f : {"workplane.png", "room_floor.png", "report.html", "scene.glb"}) {
     EXPECT_TRUE(same_bytes(dir / "scaled" / f, dir / "rescaled" / f)) << f;
     EXPECT_FALSE(same_bytes(dir / "plain" / f, dir / "rescaled" / f)) << f;
   }

@@ -1,0 +1,212 @@
+#include "report/scene_meshes.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/polygon.h"
+
+namespace luxgrid::report {
+
+namespace {
+
+using gltf::Primitive;
+
+std::uint32_t vertex(Primitive& p, const Vec3& v) {
+  p.positions.push_back(static_cast<float>(v.x));
+  p.positions.push_back(static_cast<float>(v.y));
+  p.positions.push_back(static_cast<float>(v.z));
+  return static_cast<std::uint32_t>(p.positions.size() / 3 - 1);
+}
+void triangle(Primitive& p, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+  p.indices.insert(p.indices.end(), {a, b, c});
+}
+// A planar quadrilateral a b c d, counter-clockwise seen from the side it shows.
+void quad(Primitive& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const std::uint32_t i = vertex(p, a), j = vertex(p, b), k = vertex(p, c), l = vertex(p, d);
+  triangle(p, i, j, k);
+  triangle(p, i, k, l);
+}
+// The polygon `ccw` (seen from above) at height z, facing up or down.
+void cap(Primitive& p, const std::vector<Vec2>& ccw, double z, bool up) {
+  const std::uint32_t first = static_cast<std::uint32_t>(p.positions.size() / 3);
+  for (const Vec2& c : ccw) vertex(p, Vec3(c.x, c.y, z));
+  for (const auto& t : geometry::triangulate(ccw)) {
+    const auto a = first + static_cast<std::uint32_t>(t[0]);
+    const auto b = first + static_cast<std::uint32_t>(t[1]);
+    const auto c = first + static_cast<std::uint32_t>(t[2]);
+    if (up)
+      triangle(p, a, b, c);
+    else
+      triangle(p, a, c, b);
+  }
+}
+// The sides between z0 and z1 along the counter-clockwise outline: facing out, or in.
+void sides(Primitive& p, const std::vector<Vec2>& ccw, double z0, double z1, bool out) {
+  for (std::size_t i = 0; i < ccw.size(); ++i) {
+    const Vec2 a = ccw[i], b = ccw[(i + 1) % ccw.size()];
+    if (out)
+      quad(p, Vec3(a.x, a.y, z0), Vec3(b.x, b.y, z0), Vec3(b.x, b.y, z1), Vec3(a.x, a.y, z1));
+    else
+      quad(p, Vec3(b.x, b.y, z0), Vec3(a.x, a.y, z0), Vec3(a.x, a.y, z1), Vec3(b.x, b.y, z1));
+  }
+}
+
+// The opening's outline seen from above, counter-clockwise, at least `min_size` across: a
+// rectangle, or an ellipse (a disk) of 48 chords.
+std::vector<Vec2> outline(const photometry::LuminousOpening& o, double min_size) {
+  using Shape = photometry::LuminousOpening::Shape;
+  const bool point = o.shape == Shape::point;
+  const double l = std::max(point ? kPointOpeningDiameter : o.length, min_size);
+  const double w = std::max(point ? kPointOpeningDiameter : o.width, min_size);
+  if (o.shape == Shape::rectangle)
+    return {{-l / 2, -w / 2}, {l / 2, -w / 2}, {l / 2, w / 2}, {-l / 2, w / 2}};
+  std::vector<Vec2> out;
+  constexpr int kChords = 48;
+  for (int k = 0; k < kChords; ++k) {
+    const double a = 2.0 * kPi * k / kChords;
+    out.push_back({l / 2 * std::cos(a), w / 2 * std::sin(a)});
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Primitive> room_primitives(const calc::Room& room) {
+  const double z0 = room.floor_z, z1 = room.floor_z + room.height;
+  std::vector<Primitive> out(3);
+  cap(out[0], room.outline, z0, true);
+  sides(out[1], room.outline, z0, z1, false);
+  cap(out[2], room.outline, z1, false);
+  return out;
+}
+
+Primitive prism_primitive(const geometry::Obstacle& o) {
+  Primitive p;
+  cap(p, o.footprint, o.z1, true);
+  cap(p, o.footprint, o.z0, false);
+  sides(p, o.footprint, o.z0, o.z1, true);
+  return p;
+}
+
+Primitive opening_primitive(const photometry::LuminousOpening& o) {
+  Primitive p;
+  cap(p, outline(o, 0.0), 0.0, false);
+  return p;
+}
+
+Primitive body_primitive(const photometry::LuminousOpening& o) {
+  // At least 5 cm across, so that a small opening's body is seen.
+  const std::vector<Vec2> f = outline(o, 0.05);
+  Primitive p;
+  cap(p, f, kBodyHeight, true);
+  sides(p, f, 0.0, kBodyHeight, true);
+  return p;
+}
+
+Primitive c0_arrow_primitive(const photometry::LuminousOpening& o) {
+  const std::vector<Vec2> f = outline(o, kPointOpeningDiameter);
+  double reach = 0.0;  // how far the opening reaches along +x
+  for (const Vec2& c : f) reach = std::max(reach, c.x);
+  const double tip = reach + 0.15, half_width = 0.03, z = -0.002;
+  // Seen from below (the side it faces): from the centre to beyond the opening's edge.
+  const std::vector<Vec2> arrow = {{0.0, -half_width / 2},    {tip - 0.06, -half_width / 2},
+                                   {tip - 0.06, -half_width}, {tip, 0.0},
+                                   {tip - 0.06, half_width},  {tip - 0.06, half_width / 2},
+                                   {0.0, half_width / 2}};
+  Primitive p;
+  cap(p, arrow, z, false);
+  return p;
+}
+
+Primitive marker_primitive(double r) {
+  Primitive p;
+  const Vec3 v[6] = {{r, 0, 0}, {-r, 0, 0}, {0, r, 0}, {0, -r, 0}, {0, 0, r}, {0, 0, -r}};
+  for (const Vec3& c : v) vertex(p, c);
+  // The eight faces, each counter-clockwise seen from outside.
+  const std::uint32_t f[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                 {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  for (const auto& t : f) triangle(p, t[0], t[1], t[2]);
+  return p;
+}
+
+Primitive solid_primitive(const PhotometricSolid& solid, double m_per_cd) {
+  Primitive p;
+  for (int c = 0; c < kSolidCPlanes; ++c)
+    for (int g = 0; g < kSolidGammas; ++g)
+      vertex(p, solid_direction(c, g) * (solid.cd[c * kSolidGammas + g] * m_per_cd));
+  // Between neighbouring C planes (the last next to the first) and angles; drawn from both
+  // sides, so the winding does not matter. Triangles of zero area (the poles, or where the
+  // intensity is zero) are left out.
+  const auto at = [](int c, int g) {
+    return static_cast<std::uint32_t>((c % kSolidCPlanes) * kSolidGammas + g);
+  };
+  const auto area_of = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    const float* v = p.positions.data();
+    const Vec3 A(v[3 * a], v[3 * a + 1], v[3 * a + 2]), B(v[3 * b], v[3 * b + 1], v[3 * b + 2]),
+        C(v[3 * c], v[3 * c + 1], v[3 * c + 2]);
+    return glm::length(glm::cross(B - A, C - A));
+  };
+  for (int c = 0; c < kSolidCPlanes; ++c)
+    for (int g = 0; g + 1 < kSolidGammas; ++g) {
+      const std::uint32_t a = at(c, g), b = at(c + 1, g), d = at(c + 1, g + 1), e = at(c, g + 1);
+      if (area_of(a, b, d) > 1e-12) triangle(p, a, b, d);
+      if (area_of(a, d, e) > 1e-12) triangle(p, a, d, e);
+    }
+  return p;
+}
+
+namespace {
+// The rows (or columns) a grid of n along one side is drawn with: every `stride`-th and the last.
+std::vector<int> drawn_lines(int n) {
+  const int stride = (n + kMaxGridSide - 1) / kMaxGridSide;
+  std::vector<int> out;
+  for (int i = 0; i < n; i += std::max(stride, 1)) out.push_back(i);
+  if (n > 0 && out.back() != n - 1) out.push_back(n - 1);
+  return out;
+}
+}  // namespace
+
+Primitive grid_primitive(const geometry::SurfaceGrid& g, std::vector<int>* vertex_of) {
+  Primitive p;
+  const std::vector<int> us = drawn_lines(g.nu), vs = drawn_lines(g.nv);
+  std::vector<int> index(g.points.size(), -1);
+  for (int v : vs)
+    for (int u : us) {
+      const std::size_t i = static_cast<std::size_t>(v) * g.nu + u;
+      if (g.active[i])
+        index[i] = static_cast<int>(vertex(p, g.points[i] + g.normals[i] * kGridLift));
+    }
+  // Cells between drawn points (u, v), (u', v), (u', v'), (u, v'), each triangle turned to face
+  // the side the grid's normals give (into the room for a room's surfaces), so that a ceiling's
+  // grid seen from above is not drawn, like the ceiling.
+  const auto at = [&](int u, int v) { return index[static_cast<std::size_t>(v) * g.nu + u]; };
+  const Vec3 facing = glm::cross(g.u_dir, g.v_dir);
+  bool flip = false;
+  for (std::size_t i = 0; i < g.points.size(); ++i)
+    if (g.active[i]) {
+      flip = glm::dot(facing, g.normals[i]) < 0.0;
+      break;
+    }
+  for (std::size_t kv = 0; kv + 1 < vs.size(); ++kv)
+    for (std::size_t ku = 0; ku + 1 < us.size(); ++ku) {
+      const int a = at(us[ku], vs[kv]), b = at(us[ku + 1], vs[kv]), c = at(us[ku + 1], vs[kv + 1]),
+                d = at(us[ku], vs[kv + 1]);
+      const auto put = [&](int x, int y, int z) {
+        if (x < 0 || y < 0 || z < 0) return;
+        if (flip) std::swap(y, z);
+        triangle(p, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y),
+                 static_cast<std::uint32_t>(z));
+      };
+      if (a >= 0 && c >= 0) {
+        put(a, b, c);
+        put(a, c, d);
+      } else {
+        put(a, b, d);
+        put(b, c, d);
+      }
+    }
+  if (vertex_of) *vertex_of = std::move(index);
+  return p;
+}
+
+}  // namespace luxgrid::report
