@@ -7,7 +7,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 LUXGRID_EXTRA_PACKAGES="clang ${LUXGRID_EXTRA_PACKAGES:-}" bash scripts/install-deps.sh
-bash scripts/build.sh
+# A whole build: the libraries as unity builds (scripts/build.sh).
+LUXGRID_UNITY_BUILD=ON bash scripts/build.sh
 status=0
 bash scripts/check-format.sh || status=1
 ctest --test-dir build --output-on-failure -j"$(nproc)" || status=1

@@ -39,7 +39,7 @@ double l1(const std::vector<double>& v) {
 }
 
 // Tile size of the source chunks, in units of the largest patch diameter of a coplanar run.
-constexpr double kChunkTile = 4.0;
+constexpr double kSourceChunkTile = 4.0;
 
 // Sources of a chunk whose far form factors are computed at once (far_form_factors).
 constexpr size_t kFarBlock = 32;
@@ -80,7 +80,7 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
     for (size_t q = k; q < e; ++q) F.zero_begin[q] = k, F.zero_end[q] = e;
     k = e;
   }
-  // The sources of each coplanar run in tiles (chunks) of kChunkTile x the run's largest
+  // The sources of each coplanar run in tiles (chunks) of kSourceChunkTile x the run's largest
   // diameter: a receiver takes a chunk that is wholly far, wholly in front of it and with it
   // wholly in front of the chunk's plane in one loop without branches (most of the matrix).
   struct Chunk {
@@ -101,7 +101,7 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
       lo = glm::min(lo, centroid[q]), hi = glm::max(hi, centroid[q]);
       dmax = std::max(dmax, mesh.patches[F.begin + q].diameter_m);
     }
-    const double tile = std::max(kChunkTile * dmax, 1e-9);
+    const double tile = std::max(kSourceChunkTile * dmax, 1e-9);
     auto key = [&](size_t q) {
       const Vec3 t = glm::floor((centroid[q] - lo) / tile);
       return std::array<double, 3>{t.x, t.y, t.z};
