@@ -57,7 +57,8 @@ void scene_view_section(const std::string& glb, const SceneViewOptions& options,
 std::string scene_view_page(const std::string& title, const std::string& glb,
                             const SceneViewOptions& options) {
   std::string page =
-      "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+      "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">" +
+      std::string(kViewPageTag) +
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"><title>" +
       html_escape(title) +
       " - 3D view</title><style>body { margin: 0; font-family: " + kReportFontFamily +

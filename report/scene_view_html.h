@@ -22,6 +22,10 @@ struct SceneViewOptions {
 void scene_view_section(const std::string& glb, const SceneViewOptions& options,
                         const TextSink& put);
 
+// The tag at the head of every page scene_view_page writes: `luxgrid view` overwrites an existing
+// file only when it holds this tag (or is a luxgrid glb), never a file of the user's.
+inline constexpr const char* kViewPageTag = "<meta name=\"generator\" content=\"luxgrid view\">";
+
 // A page of its own: the title and the view filling the window (`luxgrid view`).
 std::string scene_view_page(const std::string& title, const std::string& glb,
                             const SceneViewOptions& options);

@@ -1,7 +1,8 @@
 // `-o` never destroys a user's files, through the real binary (docs/reliability.md): an existing
 // file, a folder of other files, the project file and the project's folder are refused with exit
 // 2 and left byte for byte; a symbolic link is followed; a run killed with SIGKILL leaves a staging
-// folder that the next run removes; two runs into one folder leave one run's output, whole.
+// folder that the next run removes; two runs into one folder leave one run's output, whole;
+// `luxgrid view` writes over no file it did not write.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -55,6 +56,31 @@ TEST(OutputSafety, ExistingFileIsRefusedAndKept) {
                           "empty one, or one it wrote before (choose another -o)\n");
   EXPECT_EQ(read_file(dir / "report.pdf"), "the client's signed copy");
   EXPECT_EQ(entries(dir), (std::set<std::string>{"p.json", "report.pdf"}));
+}
+
+// `luxgrid view -o FILE` writes over FILE only when an earlier `luxgrid view` wrote it: a page of
+// the user's and a glb another tool wrote are refused with exit 2 and kept byte for byte.
+TEST(OutputSafety, ViewOverwritesOnlyItsOwnFile) {
+  const fs::path dir = scratch("view");
+  write_file(dir / "p.json", project("floor"));
+  const std::string p = quote(dir / "p.json");
+  for (const std::string name : {"page.html", "model.glb"}) {
+    const std::string theirs = name == "page.html" ? "<html>the client's page</html>"
+                                                   : std::string("glTF\x02\0\0\0another tool");
+    write_file(dir / name, theirs);
+    const auto r = luxgrid("view " + p + " -o " + quote(dir / name));
+    EXPECT_EQ(r.code, 2) << name;
+    EXPECT_EQ(r.output, "luxgrid: error: " + (dir / name).string() +
+                            ": exists and was not written by luxgrid view: not overwritten "
+                            "(choose another file with -o, or remove it)\n");
+    EXPECT_EQ(read_file(dir / name), theirs) << name;
+    // Its own file it writes again.
+    const fs::path own = dir / ("own_" + name);
+    EXPECT_EQ(luxgrid("view " + p + " -o " + quote(own)).code, 0) << name;
+    const std::string first = read_file(own);
+    EXPECT_EQ(luxgrid("view " + p + " -o " + quote(own)).code, 0) << name;
+    EXPECT_EQ(read_file(own), first) << name;
+  }
 }
 
 TEST(OutputSafety, ForeignFolderIsRefusedAndKept) {
