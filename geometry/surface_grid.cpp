@@ -16,6 +16,15 @@ const char* to_string(Quantity q) {
   return "planar";
 }
 
+const char* to_string(SurfaceGrid::Kind kind) {
+  switch (kind) {
+    case SurfaceGrid::Kind::grid: return "grid";
+    case SurfaceGrid::Kind::points: return "points";
+    case SurfaceGrid::Kind::observers: return "observers";
+  }
+  return "grid";
+}
+
 double auto_spacing(double longer_side) {
   // EN 12464-1:2021 (and EN 12464-1:2011 Annex B / ISO 30061-style grids):
   // p = 0.2 * 5^log10(d) metres, d the longer side of the area; p never exceeds 10 m.

@@ -49,6 +49,9 @@ struct SurfaceGrid {
   std::vector<std::vector<Vec2>> region;
 };
 
+// "grid", "points", "observers": the kind's name in results.json and the Python module.
+const char* to_string(SurfaceGrid::Kind kind);
+
 // EN 12464-1 automatic grid spacing: p = 0.2 * 5^log10(d) for the longer side d, capped at 10 m
 // (the standard's table caps the spacing; see docs/project-format.md).
 double auto_spacing(double longer_side);

@@ -68,15 +68,6 @@ py::dict stats_dict(const calc::Statistics& s) {
   return d;
 }
 
-const char* kind_name(geometry::SurfaceGrid::Kind k) {
-  switch (k) {
-    case geometry::SurfaceGrid::Kind::grid: return "grid";
-    case geometry::SurfaceGrid::Kind::points: return "points";
-    case geometry::SurfaceGrid::Kind::observers: return "observers";
-  }
-  return "?";
-}
-
 py::object optional_float(const std::optional<double>& v) {
   return v ? py::object(py::float_(*v)) : py::object(py::none());
 }
@@ -100,8 +91,8 @@ void bind_results(py::module_& m) {
                          "One calculation surface: its points and values as read-only NumPy "
                          "arrays (float64; active: bool), and its statistics.")
       .def_property_readonly("name", [](const SurfaceRef& s) { return s.result().grid.name; })
-      .def_property_readonly("kind",
-                             [](const SurfaceRef& s) { return kind_name(s.result().grid.kind); })
+      .def_property_readonly(
+          "kind", [](const SurfaceRef& s) { return geometry::to_string(s.result().grid.kind); })
       .def_property_readonly(
           "quantity", [](const SurfaceRef& s) { return to_string(s.result().grid.quantity); })
       .def_property_readonly("shape",

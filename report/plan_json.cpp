@@ -1,5 +1,6 @@
 #include "report/plan_json.h"
 
+#include <cmath>
 #include <limits>
 
 #include "report/json_fields.h"
@@ -100,8 +101,23 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DirectCounts, point_sources, far, near, blend
                                    fixed_blended)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LuminaireGroup, photometry, luminaires, label)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(NearFarPlan, group, bound)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IntensityLookupChoice, kind, quality, c_cells, gamma_cells,
-                                   deviation, limit, probe_fraction, pairs)
+// draft's texture limit is infinite (calc::texture_limit): JSON has no infinity, so it is left out
+// and read back as +infinity, as put_finite/read_maybe_infinite below do for the plan's numbers.
+void to_json(nlohmann::json& j, const IntensityLookupChoice& c) {
+  j = {{"kind", c.kind},           {"quality", c.quality},
+       {"c_cells", c.c_cells},     {"gamma_cells", c.gamma_cells},
+       {"deviation", c.deviation}, {"probe_fraction", c.probe_fraction},
+       {"pairs", c.pairs}};
+  if (std::isfinite(c.limit)) j["limit"] = c.limit;
+}
+void from_json(const nlohmann::json& j, IntensityLookupChoice& c) {
+  report::read_fields(j, "kind", c.kind, "quality", c.quality, "c_cells", c.c_cells, "gamma_cells",
+                      c.gamma_cells, "deviation", c.deviation, "probe_fraction", c.probe_fraction,
+                      "pairs", c.pairs);
+  c.limit = j.contains("limit") && !j.at("limit").is_null()
+                ? j.at("limit").get<double>()
+                : std::numeric_limits<double>::infinity();
+}
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IntensityLookupPlan, group, choice)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IndirectRunPlan, bounces_asked, bounces_run, tail_added, patches,
                                    patch_size_m, vpls, residual, refined_patches, subcell_reach,

@@ -209,9 +209,8 @@ json surface_frame_json(const geometry::SurfaceGrid& g) {
 geometry::SurfaceGrid::Kind read_kind(const json& j) {
   using Kind = geometry::SurfaceGrid::Kind;
   const std::string s = j.get<std::string>();
-  if (s == "grid") return Kind::grid;
-  if (s == "points") return Kind::points;
-  if (s == "observers") return Kind::observers;
+  for (Kind k : {Kind::grid, Kind::points, Kind::observers})
+    if (s == geometry::to_string(k)) return k;
   throw json::other_error::create(501, "unknown surface kind \"" + s + "\"", &j);
 }
 geometry::Quantity read_quantity(const json& j) {

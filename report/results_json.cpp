@@ -31,15 +31,6 @@ constexpr std::array<std::pair<PointArray, const char*>, 6> kPointArrays = {
 // escaped form after a key at the start of a line cannot come from any string of the input.
 constexpr std::string_view kPlaceholderTag = "\\u0001points ";
 
-const char* kind_name(geometry::SurfaceGrid::Kind k) {
-  switch (k) {
-    case geometry::SurfaceGrid::Kind::grid: return "grid";
-    case geometry::SurfaceGrid::Kind::points: return "points";
-    case geometry::SurfaceGrid::Kind::observers: return "observers";
-  }
-  return "?";
-}
-
 // Per observer its views: line of sight, UGR (null when no luminaire counts), background
 // luminance (cd/m2), the indirect illuminance it comes from, and each counted luminaire's term.
 nlohmann::json observers_json(const std::vector<calc::glare::ObserverResult>& observers) {
@@ -74,7 +65,7 @@ nlohmann::json surface_json(const calc::SurfaceResult& r, size_t index, bool arr
   const auto& g = r.grid;
   json s;
   s["name"] = g.name;
-  s["kind"] = kind_name(g.kind);
+  s["kind"] = geometry::to_string(g.kind);
   s["size"] = json::array({g.nu, g.nv});
   if (g.kind == geometry::SurfaceGrid::Kind::grid) {
     s["spacing"] = json::array({g.spacing_u, g.spacing_v});

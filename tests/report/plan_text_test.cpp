@@ -157,8 +157,16 @@ TEST(PlanText, InfiniteEstimatesAreLeftOutAndReadBack) {
   calc::SurfaceEstimate unlit;
   unlit.surface = "probes", unlit.direct = 0.001;  // patch_size, bounces: -1, not estimated
   p.estimates.push_back(unlit);
+  // draft takes a texture without a limit (calc::texture_limit is +infinity).
+  calc::IntensityLookupPlan draft_lookup;
+  draft_lookup.group = {"mirel", 25, ""};
+  draft_lookup.choice.kind = calc::IntensityLookupChoice::Kind::texture_draft;
+  draft_lookup.choice.quality = calc::Quality::draft;
+  draft_lookup.choice.limit = calc::texture_limit(calc::Quality::draft);
+  p.intensity_lookups = {draft_lookup};
   const nlohmann::json j = plan_to_json(p);
   EXPECT_EQ(j.dump().find("null"), std::string::npos) << j.dump();
+  EXPECT_FALSE(j.at("intensity_lookups").at(0).at("choice").contains("limit"));
   EXPECT_FALSE(j.at("indirect_run").contains("residual"));
   EXPECT_FALSE(j.at("estimates").at(0).contains("total"));
   EXPECT_EQ(j.at("estimates").at(0).at("unbounded"), "bounces");
@@ -167,6 +175,8 @@ TEST(PlanText, InfiniteEstimatesAreLeftOutAndReadBack) {
   EXPECT_EQ(back.indirect_run->residual, std::numeric_limits<double>::infinity());
   EXPECT_EQ(back.estimates.at(0).bounces, std::numeric_limits<double>::infinity());
   EXPECT_EQ(back.estimates.at(1).patch_size, -1.0);
+  EXPECT_EQ(back.intensity_lookups.at(0).choice.limit, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(plan_to_json(back), j);
   EXPECT_EQ(plan_warnings(back), plan_warnings(p));
   bool unbounded = false;
   for (const auto& w : plan_warnings(p)) {
