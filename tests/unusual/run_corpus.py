@@ -288,6 +288,13 @@ def check_case(luxgrid, corpus, case_rel):
             failures += flux_balance_failures(results, check["flux_balance"])
         script = os.path.join(case_dir, "check.py")
         if os.path.exists(script):
+            # A class may share its checks in a module of its own folder (workplane_borders/
+            # active_points.py): check.py imports it by name, from the corpus (read only: no
+            # bytecode is written into it).
+            class_dir = os.path.join(corpus, os.path.dirname(case_rel))
+            sys.dont_write_bytecode = True
+            if class_dir not in sys.path:
+                sys.path.insert(0, class_dir)
             module_spec = importlib.util.spec_from_file_location("case_check", script)
             module = importlib.util.module_from_spec(module_spec)
             module_spec.loader.exec_module(module)

@@ -1,25 +1,11 @@
-"""The solid angle of each luminaire's term, against a closed form worked out here; every solid
-angle at most 2 pi sr and every UGR finite."""
+"""The solid angle of each luminaire's term against a closed form (solid_angles.py)."""
 import math
+
+from solid_angles import check_solid_angles
 
 
 def check(results, out_dir, case_dir):
-    failures = []
-    eyes = next(s for s in results["surfaces"] if s["name"] == "eyes")
-    terms = {}
-    for o in eyes["observers"]:
-        for v in o["views"]:
-            if v.get("UGR") is not None and not math.isfinite(v["UGR"]):
-                failures.append(f"UGR {v['UGR']}")
-            for t in v["terms"]:
-                terms[t["luminaire"]] = t["omega"]
-                if not t["omega"] <= 2 * math.pi:
-                    failures.append(f"{t['luminaire']}: omega {t['omega']} sr > 2 pi")
-    # A_p / d^2
-    expected = 0.18 * (1.7 / math.sqrt(5.39)) / 5.39
-    got = terms.get("panel")
-    if got is None:
-        failures.append("no term for panel")
-    elif abs(got - expected) > 1e-12 * expected:
-        failures.append(f"panel: omega {got} sr, expected {expected} sr (tol rel 1e-12)")
-    return failures
+    return check_solid_angles(results, {
+        # A_p / d^2
+        "panel": (0.18 * (1.7 / math.sqrt(5.39)) / 5.39, 1e-12),
+    })
