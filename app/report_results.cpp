@@ -35,6 +35,7 @@ ReportOutcome report_results(const std::filesystem::path& results_json,
   out.scale = options.scale;
   out.scene = &doc.scene;
   out.checks = doc.checks;
+  out.en17037 = doc.en17037 ? &*doc.en17037 : nullptr;
   out.types = &doc.types;
   out.results_json = &text;
   out.version = doc.version;

@@ -10,6 +10,7 @@
 #include "calc/plan_estimates.h"
 #include "project/project_file.h"
 #include "report/colour_rendering.h"
+#include "report/en17037_checks.h"
 #include "report/output_folder.h"
 #include "report/plan_text.h"
 #include "report/requirement_checks_en1838.h"
@@ -53,13 +54,18 @@ void apply_lighting_scene(project::Project& loaded, std::optional<calc::Lighting
   }
 }
 
-std::vector<report::RequirementCheck> scene_checks(const project::Project& loaded,
-                                                   const calc::Results& results) {
+std::vector<report::RequirementCheck> scene_checks(
+    const project::Project& loaded, const calc::Results& results,
+    const std::optional<daylight::En17037Assessment>& en17037) {
   if (results.scene == calc::LightingScene::emergency) {
     return report::check_en1838(results, loaded.scene.emergency_surfaces);
   }
   const auto ra = report::scene_colour_rendering(loaded.scene);
-  return report::check_requirements(results, loaded.requirements, {ra.Ra, ra.source});
+  auto checks = report::check_requirements(results, loaded.requirements, {ra.Ra, ra.source});
+  if (en17037) {
+    for (auto& c : report::en17037_checks(*en17037)) checks.push_back(std::move(c));
+  }
+  return checks;
 }
 
 std::vector<std::filesystem::path> input_files(const calc::Scene& scene) {
@@ -110,7 +116,12 @@ RunOutcome calculate_project(const project::Project& loaded, const RunOptions& o
   }
   end_progress();
   outcome.results.timing_s.insert(outcome.results.timing_s.begin(), {"load", load_s});
-  outcome.checks = scene_checks(loaded, outcome.results);
+  try {
+    outcome.en17037 = report::assess_en17037(outcome.results, scene);
+  } catch (const InputError& e) {
+    throw e.in_file(scene.project_file.filename().string());
+  }
+  outcome.checks = scene_checks(loaded, outcome.results, outcome.en17037);
   if (options.with_cost) outcome.cost = run_cost(scene, options.show_progress);
   // Scene warnings (legal but suspicious input, naming the object) first, then the outputs'.
   for (const auto& w : scene.warnings) outcome.warnings.push_back(w.text());
@@ -129,6 +140,7 @@ void write_run_outputs(RunOutcome& outcome, const project::Project& loaded,
   out.scale = options.scale;
   out.scene = &loaded.scene;
   out.checks = outcome.checks;
+  out.en17037 = outcome.en17037 ? &*outcome.en17037 : nullptr;
   out.cost = outcome.cost ? &*outcome.cost : nullptr;
   out.version = LUXGRID_VERSION;
   for (auto& w : report::write_outputs(outcome.results, folder, out))

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "calc/daylight/en17037.h"
 #include "calc/results.h"
 #include "calc/scene.h"
 #include "project/project_file.h"
@@ -43,6 +44,9 @@ struct RunOutcome {
   // Files of the previous output carried over because this run's flags did not write them
   // (report.html under --no-report, the part plots without --part-plots).
   std::vector<std::string> kept;
+  // The daylight scene's EN 17037 assessment, when the project asks (daylight.en17037); its
+  // asked level's checks are among `checks`.
+  std::optional<daylight::En17037Assessment> en17037;
 };
 
 // The emergency scene (settings.scene, or `scene` when given) replaces the loaded scene by its
@@ -50,9 +54,11 @@ struct RunOutcome {
 void apply_lighting_scene(project::Project& loaded, std::optional<calc::LightingScene> scene);
 
 // The checks of a calculated scene: the project's EN 12464-1 requirements in the normal scene,
-// EN 1838's on its escape routes and open areas in the emergency scene.
-std::vector<report::RequirementCheck> scene_checks(const project::Project& loaded,
-                                                   const calc::Results& results);
+// EN 1838's on its escape routes and open areas in the emergency scene; in the daylight scene
+// the project's requirements and the checks of `en17037` (report/en17037_checks.h), when given.
+std::vector<report::RequirementCheck> scene_checks(
+    const project::Project& loaded, const calc::Results& results,
+    const std::optional<daylight::En17037Assessment>& en17037 = std::nullopt);
 
 // Loads `project`, runs it and writes every output into `out_dir` atomically: the steps below,
 // in this order (the Python module, python/, runs them one by one).

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "calc/daylight/en17037.h"
 #include "calc/daylight/sky_luminance.h"
 #include "calc/daylight/sun_direction.h"
 #include "util/robust_math.h"
@@ -41,6 +42,9 @@ struct DaylightInputs {
   daylight::LocalTime local_time;            // when sun_from_site
   double diffuse_horizontal_lx = 10000.0;    // E_h of the unobstructed sky
   double ground_reflectance = 0.2;           // rho_g: the ground's luminance rho_g E_h / pi
+  // EN 17037 daylight provision asked for (daylight.en17037): assessed on the daylight scene's
+  // results (report/en17037_checks).
+  std::optional<daylight::En17037Request> en17037;
 };
 
 }  // namespace luxgrid::calc

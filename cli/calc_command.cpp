@@ -4,6 +4,7 @@
 
 #include "app/run_project.h"
 #include "cli/commands.h"
+#include "report/en17037_checks.h"
 #include "util/error.h"
 #include "util/output_names.h"
 
@@ -40,6 +41,7 @@ int run_calc(const CalcArgs& args) {
   if (!outcome.checks.empty()) {
     std::printf("requirements:\n%s", report::format_checks(outcome.checks).c_str());
   }
+  if (outcome.en17037) std::printf("%s", report::format_en17037(*outcome.en17037).c_str());
   if (outcome.cost)
     std::printf("cost of accuracy:\n%s", report::format_cost_table(*outcome.cost).c_str());
   std::printf("results written to %s\n", out.string().c_str());

@@ -1,5 +1,6 @@
 #include "geometry/polygon.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace luxgrid::geometry {
@@ -143,19 +144,12 @@ bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) 
 
 namespace {
 
-// An interior sample of each triangle of `p` (its centroid) lies strictly inside `q`.
-bool some_part_inside(const Polygon2& p, const Polygon2& q) {
-  Polygon2 ccw = p;
-  if (signed_area(ccw) < 0.0) std::reverse(ccw.begin(), ccw.end());
-  for (const auto& t : triangulate(ccw)) {
-    const Vec2 c = (ccw[t[0]] + ccw[t[1]] + ccw[t[2]]) / 3.0;
-    if (locate(c, q, 0.0) == Location::inside) return true;
-  }
-  for (const auto& v : p) {
-    if (locate(v, q, 0.0) == Location::inside) return true;
-  }
-  return false;
+Polygon2 counter_clockwise_copy(const Polygon2& p) {
+  Polygon2 out = p;
+  if (signed_area(out) < 0.0) std::reverse(out.begin(), out.end());
+  return out;
 }
+
 }  // namespace
 
 bool polygons_overlap(const Polygon2& a, const Polygon2& b) {
@@ -164,8 +158,23 @@ bool polygons_overlap(const Polygon2& a, const Polygon2& b) {
       if (segments_cross(a[i], a[(i + 1) % a.size()], b[j], b[(j + 1) % b.size()])) return true;
     }
   }
-  // No proper crossings: either one contains part of the other, or they only touch / are apart.
-  return some_part_inside(a, b) || some_part_inside(b, a);
+  // No proper crossing: one may still hold part of the other, inside it or beside it along
+  // collinear edges (two rectangles of one height, side by side and overlapping along x, cross
+  // nowhere properly and need not hold a corner or a triangle's centroid of the other). The area
+  // they share decides, triangle by triangle (each convex, so Sutherland-Hodgman clips it
+  // exactly); polygons that only touch along an edge or at a corner share round-off: 1e-9 of
+  // the smaller area.
+  const Polygon2 ccw_a = counter_clockwise_copy(a), ccw_b = counter_clockwise_copy(b);
+  const double tolerance =
+      1e-9 * std::min(std::abs(signed_area(ccw_a)), std::abs(signed_area(ccw_b)));
+  double shared = 0.0;
+  for (const Polygon2& ta : triangles(ccw_a)) {
+    for (const Polygon2& tb : triangles(ccw_b)) {
+      shared += std::abs(signed_area(clip_convex(ta, tb)));
+      if (shared > tolerance) return true;
+    }
+  }
+  return false;
 }
 
 EdgeCoordinates edge_coordinates(const Polygon2& outline, size_t k, const Vec2& q) {

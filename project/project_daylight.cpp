@@ -104,7 +104,87 @@ daylight::SkyModel parse_sky(const JsonValue& s) {
   return *sky;
 }
 
+// daylight.en17037: the site's median, the level, the reference planes by name (resolved
+// against the surfaces once they are read: resolve_en17037_planes).
+daylight::En17037Request parse_en17037(const JsonValue& e) {
+  e.expect_object();
+  daylight::En17037Request out;
+  out.median_external_diffuse_lx = e.at("median_external_diffuse_lx").as_positive();
+  if (auto l = e.find("level")) {
+    const std::string name = l->is_string() ? l->as_string() : l->raw().dump();
+    const auto level = daylight::en17037_level_from_name(name);
+    if (!level || !l->is_string())
+      l->fail("expected an EN 17037 level \"minimum\", \"medium\" or \"high\", got " +
+              (l->is_string() ? "\"" + name + "\"" : name));
+    out.level = *level;
+  }
+  if (auto planes = e.find("reference_planes")) {
+    check_count(*planes, kMaxSurfaces, "reference planes");
+    for (const auto& p : planes->items()) out.planes.push_back({p.as_string(), false});
+    if (out.planes.empty()) planes->fail("expected at least one workplane surface's name");
+  }
+  e.report_unqueried();
+  return out;
+}
+
 }  // namespace
+
+void resolve_en17037_planes(const JsonValue& en17037, const JsonValue& surfaces, Scene& scene) {
+  daylight::En17037Request& request = *scene.daylight->en17037;
+  std::vector<JsonValue> workplanes;  // the surfaces entries with a "workplane"
+  for (const auto& s : surfaces.items())
+    if (s.has("workplane")) workplanes.push_back(s);
+  const auto named = [&](const std::string& name) -> std::optional<JsonValue> {
+    for (const auto& w : workplanes)
+      if (w.at("name").as_string() == name) return w;
+    return std::nullopt;
+  };
+  std::vector<JsonValue> chosen;
+  if (request.planes.empty()) {
+    if (workplanes.empty())
+      en17037.fail(
+          "EN 17037 is assessed on a reference plane: give a workplane surface (0.85 m above the "
+          "floor, border 0.5 m)");
+    for (const auto& w : workplanes) request.planes.push_back({w.at("name").as_string(), false});
+    chosen = workplanes;
+  } else {
+    const auto names = en17037.at("reference_planes");
+    for (std::size_t k = 0; k < request.planes.size(); ++k) {
+      const auto w = named(request.planes[k].surface);
+      if (!w)
+        names.item(k).fail("no workplane surface is named \"" + request.planes[k].surface +
+                           "\" (EN 17037's reference plane is a workplane: 0.85 m above the "
+                           "floor, border 0.5 m)");
+      chosen.push_back(*w);
+    }
+  }
+  for (std::size_t k = 0; k < chosen.size(); ++k) {
+    const auto w = chosen[k].at("workplane");
+    const Room& room = find_room(w.at("room"), scene, w.at("room").as_string());
+    const std::size_t room_index = static_cast<std::size_t>(&room - scene.rooms.data());
+    // Top-lit: every opening of the room in its ceiling (roof lights only).
+    std::size_t openings = 0, roof_lights = 0;
+    for (const DaylightOpening& o : scene.openings) {
+      if (o.room != room_index) continue;
+      ++openings;
+      roof_lights += o.face.kind == RoomFaceRef::Kind::ceiling;
+    }
+    request.planes[k].top_lit = openings > 0 && roof_lights == openings;
+    const double height = w.at("height").as_number();
+    const double border = w.has("border") ? w.at("border").as_number() : 0.0;
+    // 1 mm: a plane typed as 0.85 is the standard's.
+    if (std::abs(height - daylight::kEn17037PlaneHeight_m) > 1e-3 ||
+        std::abs(border - daylight::kEn17037PlaneBorder_m) > 1e-3) {
+      scene.warnings.push_back(
+          {w.location(),
+           "EN 17037's reference plane lies " + number_text(daylight::kEn17037PlaneHeight_m) +
+               " m above the floor with a " + number_text(daylight::kEn17037PlaneBorder_m) +
+               " m border; workplane \"" + request.planes[k].surface + "\" has " +
+               number_text(height) + " m and " + number_text(border) +
+               " m: its EN 17037 fractions are not the standard's"});
+    }
+  }
+}
 
 void parse_openings(const JsonValue& openings, Scene& scene) {
   check_count(openings, kMaxOpenings, "openings");
@@ -134,6 +214,7 @@ DaylightInputs parse_daylight(const JsonValue& d) {
   DaylightInputs out;
   out.sky = parse_sky(d.at("sky"));
   if (auto e = d.find("diffuse_horizontal_lx")) out.diffuse_horizontal_lx = e->as_positive();
+  if (auto e = d.find("en17037")) out.en17037 = parse_en17037(*e);
   if (auto g = d.find("ground")) {
     g->expect_object();
     if (auto r = g->find("reflectance")) out.ground_reflectance = r->as_number_in(0.0, 1.0);

@@ -135,6 +135,8 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
     }
   }
   if (scene.surfaces.empty()) surfaces.fail("expected at least one calculation surface");
+  if (scene.daylight && scene.daylight->en17037)
+    resolve_en17037_planes(root.at("daylight").at("en17037"), surfaces, scene);
   // IES TILT tables hold for the lamp as measured; a luminaire turned in the scene gets its
   // file's factor at its actual tilt, once, here, so every later stage sees the scaled output.
   apply_tilt_factors(scene);

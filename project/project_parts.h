@@ -69,6 +69,11 @@ auto at_place(const JsonValue& where, F&& f) -> decltype(f()) {
 // openings and daylight (project_daylight.cpp): after the rooms, into `scene`.
 void parse_openings(const JsonValue& openings, calc::Scene& scene);
 calc::DaylightInputs parse_daylight(const JsonValue& d);
+// daylight.en17037's reference planes (`en17037`), once the surfaces are read: each a workplane
+// surface (every workplane when none is named), top-lit when all its room's openings are in the
+// ceiling; a warning for a plane not at EN 17037's height and border.
+void resolve_en17037_planes(const JsonValue& en17037, const JsonValue& surfaces,
+                            calc::Scene& scene);
 
 // settings (project_settings.cpp).
 calc::Settings parse_settings(const JsonValue& s);

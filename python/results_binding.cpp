@@ -79,8 +79,9 @@ std::string results_json_text(const Calculation& c) {
   const calc::Results& results = c.outcome.results;
   const auto types =
       report::luminaire_types(scene, results.plan.indirect_decision.luminous_flux_lm);
-  const nlohmann::json doc = report::results_document(results, &scene, c.outcome.checks, types,
-                                                      c.output_warnings, LUXGRID_VERSION);
+  const nlohmann::json doc =
+      report::results_document(results, &scene, c.outcome.checks, types, c.output_warnings,
+                               LUXGRID_VERSION, c.outcome.en17037 ? &*c.outcome.en17037 : nullptr);
   std::ostringstream out;
   report::write_results_json(out, doc, results);
   return out.str();

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <set>
 
+#include "report/en17037_checks.h"
 #include "report/html_report.h"
 #include "report/requirement_checks_en1838.h"
 #include "util/format.h"
@@ -28,6 +29,8 @@ const char* quantity_label(const std::string& q) {
   if (q == "modelling") return "Modelling E<sub>z</sub> / E<sub>h</sub>";
   if (q == "UGR_L") return "UGR<sub>L</sub>";
   if (q == kDiversityQuantity) return "E<sub>max</sub> / E<sub>min</sub>";
+  if (q == kEn17037TargetQuantity) return "Plane with D &ge; D<sub>T</sub> (EN 17037)";
+  if (q == kEn17037MinimumTargetQuantity) return "Plane with D &ge; D<sub>TM</sub> (EN 17037)";
   return "R<sub>a</sub>";
 }
 
@@ -59,8 +62,9 @@ std::string compliance_table_html(const std::vector<RequirementCheck>& checks) {
                " not calculated).";
   }
   // The emergency scene's checks are EN 1838's, on escape routes and open areas.
-  const bool emergency = std::any_of(checks.begin(), checks.end(),
-                                     [](const RequirementCheck& c) { return c.fixed_by_standard; });
+  const bool emergency = std::any_of(checks.begin(), checks.end(), [](const RequirementCheck& c) {
+    return c.fixed_by_standard && c.source.rfind("EN 1838", 0) == 0;
+  });
   std::string h = std::string(emergency ? "<h2>Compliance: emergency lighting (EN 1838)</h2>\n"
                                         : "<h2>Compliance</h2>\n");
   if (emergency) {

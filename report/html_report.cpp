@@ -7,6 +7,7 @@
 #include "geometry/polygon.h"
 #include "report/compliance_table.h"
 #include "report/embedded_scripts.h"
+#include "report/en17037_html.h"
 #include "report/energy.h"
 #include "report/map_frame.h"
 #include "report/observers_html.h"
@@ -415,6 +416,7 @@ void write_html_report(const ReportInput& in, const TextSink& put) {
 
   // --- requirement checks ---------------------------------------------------------------------
   h += compliance_table_html(in.checks);
+  if (in.en17037) h += en17037_table_html(*in.en17037);
 
   // --- rooms ----------------------------------------------------------------------------------
   if (scene && !scene->rooms.empty()) {

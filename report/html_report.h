@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "calc/daylight/en17037.h"
 #include "calc/results.h"
 #include "calc/scene.h"
 #include "report/diff.h"
@@ -42,6 +43,9 @@ struct ReportInput {
   // three.js for the 3D view (report/embedded_scripts.h); empty: the page says the view is not
   // available.
   std::string_view three_js = three_js_module();
+  // The EN 17037 assessment (report/en17037_html.h: its table after the compliance table); null:
+  // none asked.
+  const daylight::En17037Assessment* en17037 = nullptr;
 };
 
 // Where the page's text goes, piece by piece and in order.

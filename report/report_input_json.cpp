@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "project/safe_json.h"
+#include "report/en17037_checks.h"
 #include "report/json_fields.h"
 #include "report/plan_json.h"
 #include "report/results_json.h"
@@ -379,6 +380,7 @@ ResultsDocument read_results_document(const std::string& text, const std::string
     for (const auto& sr : r.surfaces) s.surfaces.push_back(sr.grid);
     for (const json& t : in.at("luminaire_types")) out.types.push_back(read_type(t));
     for (const json& c : in.at("checks")) out.checks.push_back(read_check(c));
+    if (const auto it = doc.find("en17037"); it != doc.end()) out.en17037 = en17037_from_json(*it);
   } catch (const json::exception& e) {
     throw located(e, file);
   }

@@ -5,11 +5,13 @@
 // results.json alone, byte for byte as `luxgrid calc` wrote them. And the reading back of a
 // whole results.json into the data the outputs are written from.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "calc/daylight/en17037.h"
 #include "calc/results.h"
 #include "calc/scene.h"
 #include "report/luminaire_types.h"
@@ -30,6 +32,7 @@ struct ResultsDocument {
   calc::Scene scene;
   std::vector<LuminaireType> types;
   std::vector<RequirementCheck> checks;
+  std::optional<daylight::En17037Assessment> en17037;  // results.json's `en17037`, when there
   std::string version;
 };
 

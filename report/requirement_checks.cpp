@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "report/en17037_checks.h"
 #include "util/error.h"
 #include "util/format.h"
 
@@ -176,6 +177,8 @@ void check_surface(const calc::Results& results, const calc::SurfaceResult& s,
 }  // namespace
 
 std::string requirement_unit(const std::string& q) {
+  // EN 17037's checks (report/en17037_checks.h): shares of the reference plane.
+  if (is_one_of(q, {kEn17037TargetQuantity, kEn17037MinimumTargetQuantity})) return " %";
   return is_one_of(q, {"Em", "Emin", "Emax", "Ez", "Esc"}) ? " lx" : "";
 }
 

@@ -1,5 +1,6 @@
 #include "report/results_document.h"
 
+#include "report/en17037_checks.h"
 #include "report/report_input_json.h"
 #include "report/results_json.h"
 
@@ -9,7 +10,8 @@ nlohmann::json results_document(const calc::Results& results, const calc::Scene*
                                 const std::vector<RequirementCheck>& checks,
                                 const std::vector<LuminaireType>& types,
                                 const std::vector<std::string>& output_warnings,
-                                const std::string& version) {
+                                const std::string& version,
+                                const daylight::En17037Assessment* en17037) {
   // The scene's warnings (legal but suspicious input) and the outputs', as the terminal shows
   // them.
   std::vector<std::string> all_warnings;
@@ -42,6 +44,7 @@ nlohmann::json results_document(const calc::Results& results, const calc::Scene*
     }
     j["requirements_met"] = all_met(checks);
   }
+  if (en17037) j["en17037"] = en17037_to_json(*en17037);
   // What `luxgrid report` needs to write every other output again from this file.
   if (scene) j["report_input"] = report_input_to_json(*scene, results, types, checks);
   return j;

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "calc/daylight/en17037.h"
 #include "calc/results.h"
 #include "calc/scene.h"
 #include "report/luminaire_types.h"
@@ -17,11 +18,13 @@
 namespace luxgrid::report {
 
 // `scene`: null leaves out the maintenance and `report_input` (a results.json read back, where
-// they exist already). `output_warnings`: the outputs' own, after the scene's.
+// they exist already). `output_warnings`: the outputs' own, after the scene's. `en17037`: the
+// EN 17037 assessment (report/en17037_checks.h) as `en17037`; null: none.
 nlohmann::json results_document(const calc::Results& results, const calc::Scene* scene,
                                 const std::vector<RequirementCheck>& checks,
                                 const std::vector<LuminaireType>& types,
                                 const std::vector<std::string>& output_warnings,
-                                const std::string& version);
+                                const std::string& version,
+                                const daylight::En17037Assessment* en17037 = nullptr);
 
 }  // namespace luxgrid::report

@@ -67,6 +67,7 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   report.scene = options.scene;
   report.checks = options.checks;
   report.cost = options.cost;
+  report.en17037 = options.en17037;
   report.version = options.version;
   report.date = utc_now();
   // Asked for (--part-plots) and when indirect light ran (any point received some), each grid
@@ -198,8 +199,8 @@ std::vector<std::string> write_outputs(calc::Results& results, const OutputFolde
   const auto write_json = [&] {
     if (options.results_json)
       return write_text_file(folder.file(kResultsFile), *options.results_json);
-    nlohmann::json j =
-        results_document(results, options.scene, options.checks, types, warnings, options.version);
+    nlohmann::json j = results_document(results, options.scene, options.checks, types, warnings,
+                                        options.version, options.en17037);
     write_file_streamed(folder.file(kResultsFile),
                         [&](std::ostream& out) { write_results_json(out, j, results); });
   };

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "calc/daylight/en17037.h"
 #include "calc/results.h"
 #include "calc/scene.h"
 #include "report/colour_scale.h"
@@ -33,6 +34,9 @@ struct OutputOptions {
   const std::string* results_json = nullptr;
   const CostTable* cost = nullptr;  // the `luxgrid cost` table, into the report
   std::string version;              // luxgrid version for the report
+  // The EN 17037 assessment (report/en17037_checks.h): results.json's `en17037`, the report's
+  // table; null: none asked.
+  const daylight::En17037Assessment* en17037 = nullptr;
 };
 
 // Writes into folder.staging(); adds the "report" phase to results.timing_s. Returns warnings.

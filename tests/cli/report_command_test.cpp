@@ -46,7 +46,7 @@ TEST_P(ReportOfExample, WritesTheBytesCalcWrote) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ReportOfExample,
-                         ::testing::Values("office", "lshape", "openplan"));
+                         ::testing::Values("office", "lshape", "openplan", "daylight_classroom"));
 
 TEST(ReportCommand, AScaleChangesThePlotsAsCalcDoes) {
   const fs::path dir = scratch("scale");

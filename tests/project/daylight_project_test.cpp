@@ -86,6 +86,12 @@ TEST(DaylightProject, OverlappingOpeningsRefused) {
   EXPECT_EQ(error_of(d),
             "p.json /openings/1/polygon: opening \"south\" overlaps opening \"left\" in the same "
             "face");
+  // Side by side in one band of height: no edge crosses another properly and no corner or
+  // triangle centroid of one lies inside the other, yet they share 0.2 x 1 m.
+  d["openings"][0]["polygon"] = nlohmann::json::parse("[[0.5,0,1],[1.2,0,1],[1.2,0,2],[0.5,0,2]]");
+  EXPECT_EQ(error_of(d),
+            "p.json /openings/1/polygon: opening \"south\" overlaps opening \"left\" in the same "
+            "face");
   // Touching along an edge is no overlap.
   d["openings"][0]["polygon"] = nlohmann::json::parse("[[0.5,0,1],[1,0,1],[1,0,2],[0.5,0,2]]");
   EXPECT_EQ(error_of(d), "(no error)");
