@@ -20,7 +20,7 @@ std::string sky_words(const std::string& sky) {
   return "CIE standard general sky type " + sky;
 }
 
-std::string row(const std::string& key, const std::string& th, const std::string& td) {
+std::string daylight_row(const std::string& key, const std::string& th, const std::string& td) {
   return "<tr data-daylight=\"" + key + "\"><th>" + th + "</th><td>" + td + "</td></tr>";
 }
 
@@ -28,16 +28,17 @@ std::string row(const std::string& key, const std::string& th, const std::string
 // the scene's site.
 std::string sky_table(const calc::DaylightPlan& d, const calc::Scene* scene) {
   std::string h = "<table class=\"daylight-sky\">";
-  h += row("sky", "Sky", html_escape(sky_words(d.sky)));
-  h += row("diffuse_horizontal_lx", "Diffuse horizontal illuminance E<sub>h</sub>",
-           format_double("%.0f", d.diffuse_horizontal_lx) + " lx");
-  h += row("ground_reflectance", "Ground reflectance", format_double("%.2f", d.ground_reflectance));
+  h += daylight_row("sky", "Sky", html_escape(sky_words(d.sky)));
+  h += daylight_row("diffuse_horizontal_lx", "Diffuse horizontal illuminance E<sub>h</sub>",
+                    format_double("%.0f", d.diffuse_horizontal_lx) + " lx");
+  h += daylight_row("ground_reflectance", "Ground reflectance",
+                    format_double("%.2f", d.ground_reflectance));
   if (d.has_sun) {
-    h += row("sun_altitude_deg", "Sun altitude",
-             format_double("%.1f", d.sun_altitude_deg) + "&deg;");
-    h += row("sun_azimuth_deg", "Sun azimuth",
-             format_double("%.1f", d.sun_azimuth_deg) +
-                 "&deg; <span class=\"muted\">clockwise from true north</span>");
+    h += daylight_row("sun_altitude_deg", "Sun altitude",
+                      format_double("%.1f", d.sun_altitude_deg) + "&deg;");
+    h += daylight_row("sun_azimuth_deg", "Sun azimuth",
+                      format_double("%.1f", d.sun_azimuth_deg) +
+                          "&deg; <span class=\"muted\">clockwise from true north</span>");
   }
   const calc::DaylightInputs* in = scene && scene->daylight ? &*scene->daylight : nullptr;
   if (in && in->sun_from_site) {
@@ -46,18 +47,19 @@ std::string sky_table(const calc::DaylightPlan& d, const calc::Scene* scene) {
     char when[64];
     std::snprintf(when, sizeof when, "%04d-%02d-%02d %02d:%02d", t.year, t.month, t.day, t.hour,
                   t.minute);
-    h += row("site", "Site",
-             "latitude " + format_double("%.4f", s.latitude_deg) + "&deg;, longitude " +
-                 format_double("%.4f", s.longitude_deg) + "&deg;, elevation " +
-                 format_double("%.0f", s.elevation_m) + " m");
-    h += row("local_time", "Local standard time",
-             std::string(when) + " (UTC" + format_double("%+g", s.timezone_h) +
-                 " h); the sun's position computed for it (NREL SPA)");
+    h += daylight_row("site", "Site",
+                      "latitude " + format_double("%.4f", s.latitude_deg) + "&deg;, longitude " +
+                          format_double("%.4f", s.longitude_deg) + "&deg;, elevation " +
+                          format_double("%.0f", s.elevation_m) + " m");
+    h += daylight_row("local_time", "Local standard time",
+                      std::string(when) + " (UTC" + format_double("%+g", s.timezone_h) +
+                          " h); the sun's position computed for it (NREL SPA)");
   }
   if (in && in->site.north_angle_deg != 0.0)
-    h += row("north_angle_deg", "North angle",
-             format_double("%.1f", in->site.north_angle_deg) +
-                 "&deg; <span class=\"muted\">true north in the plan, clockwise from +y</span>");
+    h += daylight_row(
+        "north_angle_deg", "North angle",
+        format_double("%.1f", in->site.north_angle_deg) +
+            "&deg; <span class=\"muted\">true north in the plan, clockwise from +y</span>");
   return h + "</table>\n";
 }
 
