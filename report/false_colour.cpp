@@ -53,6 +53,26 @@ MapLayout plot_map_layout(const geometry::SurfaceGrid& g, const calc::Scene* sce
 
 }  // namespace
 
+std::vector<PlotLevel> plot_levels(const PlotOverlay& overlay, const ColourScale& scale, double min,
+                                   double max) {
+  std::vector<PlotLevel> levels;
+  for (double v : overlay.required_lx)
+    if (v > min && v < max) levels.push_back({v, true});
+  std::vector<double> values;
+  if (overlay.levels.empty()) {
+    values = isolux_levels(scale, min, max);
+  } else {
+    for (double v : overlay.levels)
+      if (v > min && v < max) values.push_back(v);
+  }
+  for (double v : values) {
+    bool dup = false;
+    for (const PlotLevel& l : levels) dup = dup || std::abs(l.value - v) < 1e-9 * std::max(1.0, v);
+    if (!dup) levels.push_back({v, false});
+  }
+  return levels;
+}
+
 std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourScale& scale,
                                    const std::filesystem::path& path) {
   return write_false_colour_png(r, scale, path, PlotOverlay{});
@@ -190,36 +210,26 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
         fine_on[static_cast<size_t>(j) * fu + i] = !std::isnan(e);
       }
     }
-    struct Level {
-      double lx;
-      bool required;
-    };
-    std::vector<Level> levels;
-    for (double lx : overlay.required_lx)
-      if (lx > r.stats.Emin && lx < r.stats.Emax) levels.push_back({lx, true});
-    for (double lx : isolux_levels(scale, r.stats.Emin, r.stats.Emax)) {
-      bool dup = false;
-      for (const Level& l : levels) dup = dup || std::abs(l.lx - lx) < 1e-9 * std::max(1.0, lx);
-      if (!dup) levels.push_back({lx, false});
-    }
+    const bool fixed_levels = !overlay.levels.empty();
+    const std::vector<PlotLevel> levels = plot_levels(overlay, scale, r.stats.Emin, r.stats.Emax);
     auto grid_world = [&](double x, double y) {
       return g.origin + g.u_dir * (x / S * su) + g.v_dir * (y / S * sv);
     };
     struct Pending {
-      Level level;
+      PlotLevel level;
       std::vector<IsoSegment> segments;
     };
     std::vector<Pending> drawn;
     std::vector<double> level_lx;
-    for (const Level& level : levels) level_lx.push_back(level.lx);
+    for (const PlotLevel& level : levels) level_lx.push_back(level.value);
     auto segments_per_level = isolux_segments(fine, fu, fv, level_lx, fine_on);
     for (size_t k = 0; k < levels.size(); ++k) {
-      const Level& level = levels[k];
+      const PlotLevel& level = levels[k];
       auto& segments = segments_per_level[k];
       if (segments.empty()) continue;
       // Light lines on the dark half of the map, dark lines on the light half: visible in colour
       // and in grey print. Requirement lines are drawn 3 px wide, round values 1 px.
-      const float shade = (level.lx - scale.min) / span < 0.55 ? 1.0f : 0.08f;
+      const float shade = (level.value - scale.min) / span < 0.55 ? 1.0f : 0.08f;
       for (const auto& sg : segments)
         line_world(grid_world(sg.x0, sg.y0), grid_world(sg.x1, sg.y1), Rgb{shade, shade, shade},
                    level.required ? 3 : 1);
@@ -228,7 +238,10 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
     // Labels: requirement lines first; for each level the first candidate position along its
     // line (from the middle outwards) whose box is inside the map and free.
     for (const auto& p : drawn) {
-      const std::string label = format_lux(p.level.lx) + (p.level.required ? " lx required" : "");
+      const std::string label =
+          format_lux(p.level.value) + (p.level.required ? " " + overlay.unit + " required"
+                                       : fixed_levels   ? " " + overlay.unit
+                                                        : "");
       const int tw = text_width(label, kLabelPx, kPlotFont) + 6, th = kLabelPx + 4;
       const size_t n = p.segments.size();
       for (size_t step = 0; step < std::min<size_t>(n, 64); ++step) {
@@ -295,7 +308,7 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
   for (double tick : scale.ticks) {
     const int y = bar_y(tick);
     canvas.fill(bar_x + kBarW, bar_x + kBarW + 5, y, y + 1, kBlack);
-    text(bar_x + kBarW + 8, y + kAxisPx / 2 - 1, format_lux(tick) + " lx", kAxisPx);
+    text(bar_x + kBarW + 8, y + kAxisPx / 2 - 1, format_lux(tick) + " " + overlay.unit, kAxisPx);
   }
   for (double lx : overlay.required_lx) {
     if (lx < scale.min || lx > scale.max) continue;
@@ -305,9 +318,10 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
 
   // --- title: name, statistics, the view in words ----------------------------------------------
   char stats[200];
+  const char* q = overlay.quantity.c_str();
   std::snprintf(stats, sizeof stats,
-                "Emin %.1f  Eavg %.1f  Emax %.1f lx   U0 %.2f   %d x %d points", r.stats.Emin,
-                r.stats.Eavg, r.stats.Emax, r.stats.U0, g.nu, g.nv);
+                "%smin %.1f  %savg %.1f  %smax %.1f %s   U0 %.2f   %d x %d points", q, r.stats.Emin,
+                q, r.stats.Eavg, q, r.stats.Emax, overlay.unit.c_str(), r.stats.U0, g.nu, g.nv);
   text(kLeft, 20, g.name, kTitlePx);
   text(kLeft, 40, stats, kStatsPx);
   // The view in words, wrapped to the picture's width.
@@ -328,7 +342,7 @@ std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourSca
   }
   if (!line.empty()) flush();
 
-  std::string bytes = write_png(canvas, path);
+  std::string bytes = path.empty() ? encode_png(canvas) : write_png(canvas, path);
   if (png) *png = std::move(bytes);
   return warning;
 }

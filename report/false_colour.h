@@ -25,7 +25,23 @@ struct PlotOverlay {
   const calc::Scene* scene =
       nullptr;                      // rooms (outline, obstacles) and luminaires; null: none drawn
   std::vector<double> required_lx;  // stated requirement values (Em, Emin): a labelled line each
+  // What the map shows when it is not illuminance (the daylight factor: "DF", "%"), for the
+  // statistics line and the legend; the values are the result's E either way.
+  std::string quantity = "E", unit = "lx";
+  // Contour lines at exactly these values (labelled with the unit) instead of the scale's round
+  // values: the daylight factor's 1, 2 and 5 %. Empty: the round values.
+  std::vector<double> levels;
 };
+
+// The contour lines a map of values from `min` to `max` gets: each requirement inside the range
+// (`required`), then the overlay's fixed levels, or else the scale's round values (isolux_levels),
+// each value once.
+struct PlotLevel {
+  double value;
+  bool required;
+};
+std::vector<PlotLevel> plot_levels(const PlotOverlay& overlay, const ColourScale& scale, double min,
+                                   double max);
 
 // Where the map lies in the picture: its top-left pixel, its size in pixels and its scale.
 struct MapPixels {
@@ -46,7 +62,8 @@ std::shared_ptr<const MapSamples> map_samples(const calc::SurfaceResult& r,
 // the map's place in the picture (its origin is map_frame(r.grid, overlay.scene).origin).
 // `samples`: map_samples(of a result on this grid, overlay.scene), else they are made here (as
 // they are when they were made for another grid size, other active points or another scene).
-// `png`, when given, receives the file's bytes (for report.html).
+// `png`, when given, receives the file's bytes (for report.html); with an empty `path` they are
+// made without writing a file.
 std::string write_false_colour_png(const calc::SurfaceResult& r, const ColourScale& scale,
                                    const std::filesystem::path& path, const PlotOverlay& overlay,
                                    MapPixels* where = nullptr, const MapSamples* samples = nullptr,

@@ -95,7 +95,10 @@ int Document::add_mesh(const std::string& name, const std::vector<Primitive>& pr
     // Nothing to draw (a degenerate outline, an opening of no size): left out.
     if (p.indices.empty()) continue;
     const std::size_t vertices = p.positions.size() / 3;
-    if (vertices == 0 || p.positions.size() % 3 != 0 || p.indices.size() % 3 != 0 ||
+    const std::size_t per = p.mode == Mode::triangles ? 3 : p.mode == Mode::lines ? 2 : 1;
+    const bool fits =
+        p.indices.size() % per == 0 && (p.mode != Mode::line_loop || p.indices.size() >= 2);
+    if (vertices == 0 || p.positions.size() % 3 != 0 || !fits ||
         (!p.colours.empty() && p.colours.size() != p.positions.size()))
       throw std::invalid_argument("glTF mesh \"" + name + "\": malformed primitive");
     for (std::uint32_t i : p.indices)
@@ -113,6 +116,7 @@ int Document::add_mesh(const std::string& name, const std::vector<Primitive>& pr
         {"indices", add_accessor(p.indices.data(), p.indices.size() * 4, kElementArrayBuffer,
                                  kUnsignedInt, p.indices.size(), "SCALAR", nullptr, nullptr)}};
     if (p.material >= 0) prim["material"] = p.material;
+    if (p.mode != Mode::triangles) prim["mode"] = static_cast<int>(p.mode);  // else the default
     prims.push_back(std::move(prim));
   }
   if (prims.empty()) return -1;

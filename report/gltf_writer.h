@@ -23,13 +23,17 @@ struct Material {
   bool blend = false;         // alphaMode BLEND (translucent by base_colour's alpha)
 };
 
+// [glTF2] 3.7.2.1: what a primitive's indices draw.
+enum class Mode { lines = 1, line_loop = 2, triangles = 4 };
+
 // One list of triangles: three indices into the mesh's vertices each, counter-clockwise seen from
-// the side the triangle faces.
+// the side the triangle faces. Or lines: two indices each, or one closed line through them all.
 struct Primitive {
   std::vector<float> positions;  // x, y, z per vertex
   std::vector<float> colours;    // r, g, b per vertex (linear, in [0, 1]); empty: none
   std::vector<std::uint32_t> indices;
   int material = -1;  // index from add_material; -1: glTF's default material
+  Mode mode = Mode::triangles;
 };
 
 struct Node {
@@ -52,7 +56,8 @@ class Document {
   int add_material(const Material& m);
   // Primitives without triangles are left out; a mesh left with none is not added (returns -1,
   // a node without mesh). Throws std::invalid_argument for an index out of range, colours that
-  // do not match the positions or a count of indices that is not a multiple of three.
+  // do not match the positions or a count of indices that does not fit the mode (a multiple of
+  // three triangles, of two for lines, at least two for a loop).
   int add_mesh(const std::string& name, const std::vector<Primitive>& primitives);
   int add_node(Node node);
   Node& node(int index) { return nodes_.at(static_cast<std::size_t>(index)); }

@@ -6,6 +6,7 @@
 
 #include "geometry/polygon.h"
 #include "report/compliance_table.h"
+#include "report/daylight_section_html.h"
 #include "report/embedded_scripts.h"
 #include "report/en17037_html.h"
 #include "report/energy.h"
@@ -467,9 +468,13 @@ void write_html_report(const ReportInput& in, const TextSink& put) {
   // --- plan views -----------------------------------------------------------------------------
   if (scene && !scene->rooms.empty()) {
     h += "<h2>Plan view</h2>\n";
-    for (const auto& room : scene->rooms) {
+    for (std::size_t index = 0; index < scene->rooms.size(); ++index) {
+      const calc::Room& room = scene->rooms[index];
+      std::vector<calc::DaylightOpening> openings;  // the room's
+      for (const auto& o : scene->openings)
+        if (o.room == index) openings.push_back(o);
       h += "<div class=\"room\"><h3>" + html_escape(room.name) + "</h3>" +
-           plan_view_svg(room, scene->luminaires, scene->surfaces) +
+           plan_view_svg(room, scene->luminaires, scene->surfaces, 640, openings) +
            "<p class=\"caption\">Seen from above, to scale, north (+y) up. Yellow: the luminous "
            "opening of each "
            "luminaire at its real size, numbered as in the luminaire table; blue bar: its C0 "
@@ -479,7 +484,11 @@ void write_html_report(const ReportInput& in, const TextSink& put) {
            "along walls: wall grids; crosses: single points (P1, P2, ...); circles with a line: "
            "glare observers and "
            "their view. Walls are numbered as the surfaces named \"&hellip; wall N\" use "
-           "them.</p></div>\n";
+           "them." +
+           (openings.empty() ? std::string()
+                             : " Blue: daylight openings, a window as the part of its wall it "
+                               "takes, a roof light as its outline, dashed.") +
+           "</p></div>\n";
     }
   }
 
@@ -536,6 +545,9 @@ void write_html_report(const ReportInput& in, const TextSink& put) {
              "&rdquo; gives no power, so the room's energy figures are not given.";
     h += "</p></div>\n";
   }
+
+  // --- daylight (the daylight scene only): sky, site, openings, daylight-factor maps -----------
+  h += daylight_section_html(r, scene);
 
   // --- surfaces -------------------------------------------------------------------------------
   h += "<h2>Calculation surfaces</h2>\n";

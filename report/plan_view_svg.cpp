@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "calc/opening_placement.h"
 #include "report/colour_scale.h"
 #include "report/html_text.h"
 #include "report/luminaire_outline.h"
+#include "util/format.h"
 
 namespace luxgrid::report {
 
@@ -19,7 +21,8 @@ constexpr double kHorizontalNormalZ = 0.7;
 }  // namespace
 
 std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Luminaire>& luminaires,
-                          const std::vector<geometry::SurfaceGrid>& surfaces, int width_px) {
+                          const std::vector<geometry::SurfaceGrid>& surfaces, int width_px,
+                          const std::vector<calc::DaylightOpening>& openings) {
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
   for (const auto& p : room.outline) {
     x0 = std::min(x0, p.x);
@@ -51,12 +54,16 @@ std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Lumina
                 width_px, height_px, width_px, height_px, kReportFontFamily,
                 html_escape(room.name).c_str());
   svg += buf;
-  std::string pts;
-  for (const auto& p : room.outline) {
-    std::snprintf(buf, sizeof buf, "%.1f,%.1f ", sx(p.x), sy(p.y));
-    pts += buf;
-  }
-  svg += "<polygon class=\"room\" points=\"" + pts +
+  // An SVG polygon's points: each corner's (x, y) in pixels.
+  const auto points = [&](const auto& corners) {
+    std::string out;
+    for (const auto& q : corners) {
+      std::snprintf(buf, sizeof buf, "%.1f,%.1f ", sx(q.x), sy(q.y));
+      out += buf;
+    }
+    return out;
+  };
+  svg += "<polygon class=\"room\" points=\"" + points(room.outline) +
          "\" fill=\"#f4f4f0\" stroke=\"#222\" stroke-width=\"2.5\"/>";
 
   // Wall numbers outside each edge, as the wall grids' names use them ("room wall 3" is edge 3,
@@ -80,15 +87,40 @@ std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Lumina
   // Obstacles: their footprint, grey, with name and height in the tooltip; drawn before the grids
   // and luminaires so those stay on top.
   for (const auto& o : room.obstacles) {
-    std::string fp;
-    for (const auto& p : o.footprint) {
-      std::snprintf(buf, sizeof buf, "%.1f,%.1f ", sx(p.x), sy(p.y));
-      fp += buf;
-    }
+    const std::string fp = points(o.footprint);
     std::snprintf(buf, sizeof buf, "%.2f to %.2f m", o.z0, o.z1);
     svg += "<polygon class=\"obstacle\" points=\"" + fp +
            "\" fill=\"#b8b8b8\" stroke=\"#555\" stroke-width=\"1.2\"><title>obstacle " +
            html_escape(o.name) + ", " + buf + "</title></polygon>";
+  }
+
+  // Daylight openings, before the grids and luminaires: a window as the stretch of its wall it
+  // takes (its corners' extent along the wall), a roof light as its outline.
+  for (const auto& o : openings) {
+    const std::string title =
+        "<title>" + html_escape(o.name) + ": " +
+        (o.glazing_transmittance
+             ? "glazed, transmittance " + format_double("%.2f", *o.glazing_transmittance)
+             : std::string("unglazed")) +
+        "</title>";
+    if (o.face.kind == calc::RoomFaceRef::Kind::wall) {
+      const Vec2 a = room.outline[o.face.wall], b = room.outline[(o.face.wall + 1) % n];
+      double s0 = 1e300, s1 = -1e300;
+      for (const Vec2& q : calc::face_coordinates(room, o.face, o.polygon))
+        s0 = std::min(s0, q.x), s1 = std::max(s1, q.x);
+      const Vec2 along = (b - a) / glm::length(b - a), p0 = a + along * s0, p1 = a + along * s1;
+      std::snprintf(buf, sizeof buf,
+                    "<line class=\"daylight-opening\" data-opening=\"%s\" x1=\"%.1f\" "
+                    "y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#3b8fd9\" stroke-width=\"6\">",
+                    html_escape(o.name).c_str(), sx(p0.x), sy(p0.y), sx(p1.x), sy(p1.y));
+      svg += buf + title + "</line>";
+    } else {
+      svg += "<polygon class=\"daylight-opening\" data-opening=\"" + html_escape(o.name) +
+             "\" points=\"" + points(o.polygon) +
+             "\" fill=\"#3b8fd9\" fill-opacity=\"0.15\" stroke=\"#3b8fd9\" stroke-width=\"2\" "
+             "stroke-dasharray=\"6 3\">" +
+             title + "</polygon>";
+    }
   }
 
   // Calculation surfaces: horizontal grids as their real outline (an L-shaped workplane as an L)
@@ -106,13 +138,8 @@ std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Lumina
         std::vector<std::vector<Vec2>> outline = g.region;
         if (outline.empty()) outline.push_back({Vec2(a), Vec2(b), Vec2(cc), Vec2(d)});
         for (const auto& poly : outline) {
-          std::string p;
-          for (const auto& q : poly) {
-            std::snprintf(buf, sizeof buf, "%.1f,%.1f ", sx(q.x), sy(q.y));
-            p += buf;
-          }
           svg += "<polygon class=\"surface\" data-surface=\"" + html_escape(g.name) +
-                 "\" points=\"" + p +
+                 "\" points=\"" + points(poly) +
                  "\" fill=\"none\" stroke=\"#2a7f62\" stroke-width=\"1.2\" stroke-dasharray=\"5 "
                  "3\"><title>" +
                  html_escape(g.name) + ": " + std::to_string(g.nu) + " x " + std::to_string(g.nv) +
@@ -182,12 +209,7 @@ std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Lumina
     const auto outline = luminous_outline(l);
     double half_c0_px = 7.0;  // the C0 bar reaches past the opening by half its length
     if (outline.size() >= 3) {
-      std::string o;
-      for (const Vec3& q : outline) {
-        std::snprintf(buf, sizeof buf, "%.1f,%.1f ", sx(q.x), sy(q.y));
-        o += buf;
-      }
-      svg += "<polygon class=\"opening\" points=\"" + o +
+      svg += "<polygon class=\"opening\" points=\"" + points(outline) +
              "\" fill=\"#ffd34d\" stroke=\"#222\" stroke-width=\"1\"/>";
       half_c0_px = std::max(half_c0_px, l.opening.length / 2 * scale);
     } else {

@@ -11,8 +11,11 @@ namespace luxgrid::report {
 
 // Draws `room` with every luminaire whose position lies over its outline (or within 0.5 m of its
 // bounding box) and every grid surface that lies inside its bounding box; the room's obstacles
-// as grey footprints (class "obstacle").
+// as grey footprints (class "obstacle"); `openings`, the room's daylight openings (class
+// "daylight-opening"): a window as a blue band over the part of its wall it takes, a roof light
+// (or an opening in the floor) as its outline, dashed.
 std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Luminaire>& luminaires,
-                          const std::vector<geometry::SurfaceGrid>& surfaces, int width_px = 640);
+                          const std::vector<geometry::SurfaceGrid>& surfaces, int width_px = 640,
+                          const std::vector<calc::DaylightOpening>& openings = {});
 
 }  // namespace luxgrid::report

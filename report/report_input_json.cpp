@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "calc/opening_placement.h"
 #include "project/safe_json.h"
 #include "report/en17037_checks.h"
 #include "report/json_fields.h"
@@ -92,6 +93,66 @@ calc::Room read_room(const json& j) {
     r.obstacles.push_back(std::move(ob));
   }
   return r;
+}
+
+// A daylight opening as the project file gives it (docs/project-format.md), its room by name; the
+// face it lies in is found again when it is read back, as the project loader found it.
+json daylight_opening_json(const calc::DaylightOpening& o, const calc::Scene& scene) {
+  json polygon = json::array();
+  for (const Vec3& c : o.polygon) polygon.push_back(vec3_json(c));
+  json j = {{"name", o.name},
+            {"room", scene.rooms.at(o.room).name},
+            {"polygon", std::move(polygon)},
+            {"frame_factor", o.frame_factor},
+            {"maintenance_factor", o.maintenance_factor}};
+  if (o.glazing_transmittance) j["glazing"] = {{"transmittance", *o.glazing_transmittance}};
+  return j;
+}
+calc::DaylightOpening read_daylight_opening(const json& j, const calc::Scene& scene) {
+  calc::DaylightOpening o;
+  j.at("name").get_to(o.name);
+  const std::string room = j.at("room").get<std::string>();
+  o.room = scene.rooms.size();
+  for (std::size_t r = 0; r < scene.rooms.size(); ++r)
+    if (scene.rooms[r].name == room) o.room = r;
+  if (o.room == scene.rooms.size())
+    throw json::other_error::create(501, "no room \"" + room + "\"", &j.at("room"));
+  for (const json& c : j.at("polygon")) o.polygon.push_back(read_vec3(c));
+  const calc::OpeningPlacement placed = calc::place_opening(scene.rooms[o.room], o.polygon);
+  if (o.polygon.size() < 3 || !placed.found)
+    throw json::other_error::create(501, "the opening lies in no face of its room", &j);
+  o.face = placed.face, o.inward_normal = placed.inward_normal;
+  read_fields(j, "frame_factor", o.frame_factor, "maintenance_factor", o.maintenance_factor);
+  if (const auto it = j.find("glazing"); it != j.end())
+    o.glazing_transmittance = it->at("transmittance").get<double>();
+  return o;
+}
+
+// The site of a daylight scene (its north angle; where and when, when the sun was computed from
+// it), which the plan's daylight part does not hold.
+json daylight_site_json(const calc::DaylightInputs& d) {
+  const daylight::Site& s = d.site;
+  json j = {{"north_angle_deg", s.north_angle_deg}, {"sun_from_site", d.sun_from_site}};
+  if (d.sun_from_site) {
+    const daylight::LocalTime& t = d.local_time;
+    j["latitude_deg"] = s.latitude_deg, j["longitude_deg"] = s.longitude_deg;
+    j["timezone_h"] = s.timezone_h, j["elevation_m"] = s.elevation_m;
+    j["local_time"] = {t.year, t.month, t.day, t.hour, t.minute, t.second};
+  }
+  return j;
+}
+calc::DaylightInputs read_daylight_site(const json& j) {
+  calc::DaylightInputs d;
+  read_fields(j, "north_angle_deg", d.site.north_angle_deg, "sun_from_site", d.sun_from_site);
+  if (d.sun_from_site) {
+    read_fields(j, "latitude_deg", d.site.latitude_deg, "longitude_deg", d.site.longitude_deg,
+                "timezone_h", d.site.timezone_h, "elevation_m", d.site.elevation_m);
+    const json& t = j.at("local_time");
+    daylight::LocalTime& l = d.local_time;
+    t.at(0).get_to(l.year), t.at(1).get_to(l.month), t.at(2).get_to(l.day);
+    t.at(3).get_to(l.hour), t.at(4).get_to(l.minute), t.at(5).get_to(l.second);
+  }
+  return d;
 }
 
 // The rotation by its columns (the luminaire frame's axes in the world).
@@ -320,6 +381,12 @@ json report_input_to_json(const calc::Scene& scene, const calc::Results& results
   for (const auto& r : scene.rooms) j["rooms"].push_back(room_json(r));
   j["luminaires"] = json::array();
   for (const auto& l : scene.luminaires) j["luminaires"].push_back(luminaire_json(l));
+  // Only when there are openings: results.json stays as it was for a project without.
+  if (!scene.openings.empty()) {
+    j["openings"] = json::array();
+    for (const auto& o : scene.openings) j["openings"].push_back(daylight_opening_json(o, scene));
+    if (scene.daylight) j["daylight_site"] = daylight_site_json(*scene.daylight);
+  }
   j["surfaces"] = json::array();
   for (const auto& s : results.surfaces) j["surfaces"].push_back(surface_frame_json(s.grid));
   j["luminaire_types"] = json::array();
@@ -377,6 +444,10 @@ ResultsDocument read_results_document(const std::string& text, const std::string
     }
     for (const json& room : in.at("rooms")) s.rooms.push_back(read_room(room));
     for (const json& l : in.at("luminaires")) s.luminaires.push_back(read_luminaire(l));
+    if (const auto it = in.find("openings"); it != in.end())
+      for (const json& o : *it) s.openings.push_back(read_daylight_opening(o, s));
+    if (const auto it = in.find("daylight_site"); it != in.end())
+      s.daylight = read_daylight_site(*it);
     for (const auto& sr : r.surfaces) s.surfaces.push_back(sr.grid);
     for (const json& t : in.at("luminaire_types")) out.types.push_back(read_type(t));
     for (const json& c : in.at("checks")) out.checks.push_back(read_check(c));

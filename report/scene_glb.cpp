@@ -8,6 +8,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "geometry/polygon3.h"
 #include "report/gltf_writer.h"
 #include "report/scene_meshes.h"
 #include "report/viridis.h"
@@ -62,7 +63,10 @@ const Rgb kSolid{1.0f, 0.75f, 0.0f};           // the photometric solid, translu
 const Rgb kGridNoValues{0.20f, 0.65f, 0.30f};  // a surface before it is calculated
 const Rgb kPoint{0.95f, 0.45f, 0.05f};
 const Rgb kObserver{0.85f, 0.10f, 0.10f};
+const Rgb kGlass{0.55f, 0.78f, 0.95f};        // a pale blue pane, translucent
+const Rgb kOpeningEdge{0.05f, 0.25f, 0.60f};  // a daylight opening's outline, the plan's blue
 constexpr double kSolidAlpha = 0.55;
+constexpr double kGlassAlpha = 0.3;
 constexpr double kMarkerRadius = 0.04;  // m
 
 json opening_json(const photometry::LuminousOpening& o) {
@@ -82,6 +86,43 @@ json stats_json(const calc::SurfaceResult& s) {
           {"Emax_lx", s.stats.Emax},
           {"U0", s.stats.U0},
           {"Ud", s.stats.Ud}};
+}
+
+const char* face_name(const calc::RoomFaceRef& f) {
+  return f.kind == calc::RoomFaceRef::Kind::floor     ? "floor"
+         : f.kind == calc::RoomFaceRef::Kind::ceiling ? "ceiling"
+                                                      : "wall";
+}
+
+// A daylight opening's node: glass as a translucent pane with its outline, an unglazed opening
+// as its outline alone; its glazing and place in extras.
+gltf::Node daylight_opening_node(gltf::Document& doc, Materials& materials, const calc::Room& room,
+                                 const calc::DaylightOpening& o) {
+  gltf::Primitive edge = daylight_outline_primitive(o);
+  edge.material = materials.flat("opening outline", kOpeningEdge);
+  std::vector<gltf::Primitive> parts;
+  if (o.glazing_transmittance) {
+    gltf::Primitive pane = daylight_pane_primitive(room, o);
+    pane.material = materials.flat("glazing", kGlass, kGlassAlpha);
+    parts.push_back(std::move(pane));
+  }
+  parts.push_back(std::move(edge));
+  gltf::Node node;
+  node.name = o.name;
+  node.mesh = doc.add_mesh(o.name, parts);
+  json face = {{"kind", face_name(o.face)}};
+  if (o.face.kind == calc::RoomFaceRef::Kind::wall) face["wall"] = o.face.wall;
+  node.extras = {{"kind", "opening"},
+                 {"room", room.name},
+                 {"face", std::move(face)},
+                 {"area_m2", glm::length(geometry::area_vector(o.polygon))},
+                 {"frame_factor", o.frame_factor},
+                 {"maintenance_factor", o.maintenance_factor}};
+  if (o.glazing_transmittance)
+    node.extras["glazing"] = {{"transmittance", *o.glazing_transmittance}};
+  else
+    node.extras["glazing"] = "none";
+  return node;
 }
 
 // The rotation of a pose as glTF's unit quaternion (x, y, z, w).
@@ -127,8 +168,12 @@ std::string scene_glb(const SceneGlbInput& in) {
   std::vector<int> top;  // the root's children
 
   // --- rooms and obstacles ------------------------------------------------------------------
-  for (const calc::Room& room : scene.rooms) {
-    std::vector<gltf::Primitive> faces = room_primitives(room);
+  for (std::size_t r = 0; r < scene.rooms.size(); ++r) {
+    const calc::Room& room = scene.rooms[r];
+    std::vector<calc::DaylightOpening> openings;  // this room's
+    for (const auto& o : scene.openings)
+      if (o.room == r) openings.push_back(o);
+    std::vector<gltf::Primitive> faces = room_primitives(room, openings);
     faces[0].material = materials.grey(room.reflectance.floor);
     faces[1].material = materials.grey(room.reflectance.walls);
     faces[2].material = materials.grey(room.reflectance.ceiling);
@@ -155,6 +200,8 @@ std::string scene_glb(const SceneGlbInput& in) {
                       {"reflectance", o.reflectance}};
       node.children.push_back(doc.add_node(std::move(child)));
     }
+    for (const auto& o : openings)
+      node.children.push_back(doc.add_node(daylight_opening_node(doc, materials, room, o)));
     top.push_back(doc.add_node(std::move(node)));
   }
 

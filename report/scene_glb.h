@@ -2,7 +2,9 @@
 // scene.glb: the project in 3D with its results, as glTF 2.0 binary [glTF2] (docs/report.md,
 // "scene.glb"). Metres, +y up as glTF requires: one root node, named after the project, turns
 // luxgrid's frame (+z up) into glTF's, (x, y, z) -> (x, z, -y), and holds everything else in
-// luxgrid's own coordinates. Rooms grey by reflectance, obstacles, luminaires (opening, body, C0
+// luxgrid's own coordinates. Rooms grey by reflectance with their daylight openings as holes,
+// each opening a node of its room (glass a translucent pane, an unglazed opening its outline),
+// obstacles, luminaires (opening, body, C0
 // arrow, photometric solid), grid surfaces coloured by the colour scale at every vertex, points
 // and observers as markers; node names are the project's names, values in each node's extras.
 #include <optional>

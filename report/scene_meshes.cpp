@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "calc/opening_placement.h"
 #include "geometry/polygon.h"
+#include "geometry/polygon_with_holes.h"
 
 namespace luxgrid::report {
 
@@ -26,19 +28,24 @@ void quad(Primitive& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3&
   triangle(p, i, j, k);
   triangle(p, i, k, l);
 }
+// Triangles over the vertices from `first` on, counter-clockwise as given, or turned.
+void triangles_from(Primitive& p, std::uint32_t first,
+                    const std::vector<std::array<int, 3>>& triangles, bool turn) {
+  for (const auto& t : triangles) {
+    const auto a = first + static_cast<std::uint32_t>(t[0]);
+    const auto b = first + static_cast<std::uint32_t>(t[1]);
+    const auto c = first + static_cast<std::uint32_t>(t[2]);
+    if (turn)
+      triangle(p, a, c, b);
+    else
+      triangle(p, a, b, c);
+  }
+}
 // The polygon `ccw` (seen from above) at height z, facing up or down.
 void cap(Primitive& p, const std::vector<Vec2>& ccw, double z, bool up) {
   const std::uint32_t first = static_cast<std::uint32_t>(p.positions.size() / 3);
   for (const Vec2& c : ccw) vertex(p, Vec3(c.x, c.y, z));
-  for (const auto& t : geometry::triangulate(ccw)) {
-    const auto a = first + static_cast<std::uint32_t>(t[0]);
-    const auto b = first + static_cast<std::uint32_t>(t[1]);
-    const auto c = first + static_cast<std::uint32_t>(t[2]);
-    if (up)
-      triangle(p, a, b, c);
-    else
-      triangle(p, a, c, b);
-  }
+  triangles_from(p, first, geometry::triangulate(ccw), !up);
 }
 // The sides between z0 and z1 along the counter-clockwise outline: facing out, or in.
 void sides(Primitive& p, const std::vector<Vec2>& ccw, double z0, double z1, bool out) {
@@ -71,13 +78,99 @@ std::vector<Vec2> outline(const photometry::LuminousOpening& o, double min_size)
 
 }  // namespace
 
-std::vector<Primitive> room_primitives(const calc::Room& room) {
+namespace {
+
+using FaceKind = calc::RoomFaceRef::Kind;
+
+// A face of `room` in its own 2D coordinates (calc::face_coordinates: x, y for the floor and the
+// ceiling; along the wall from its first corner, and z, for a wall), counter-clockwise.
+std::vector<Vec2> face_outline_2d(const calc::Room& room, const calc::RoomFaceRef& face) {
+  if (face.kind != FaceKind::wall) return room.outline;
+  const Vec2 a = room.outline[face.wall], b = room.outline[(face.wall + 1) % room.outline.size()];
+  const double length = glm::length(b - a), z0 = room.floor_z, z1 = room.floor_z + room.height;
+  return {{0.0, z0}, {length, z0}, {length, z1}, {0.0, z1}};
+}
+// A point of the face's 2D coordinates in the room.
+Vec3 face_point(const calc::Room& room, const calc::RoomFaceRef& face, const Vec2& q) {
+  if (face.kind == FaceKind::floor) return {q.x, q.y, room.floor_z};
+  if (face.kind == FaceKind::ceiling) return {q.x, q.y, room.floor_z + room.height};
+  const Vec2 a = room.outline[face.wall], b = room.outline[(face.wall + 1) % room.outline.size()];
+  const Vec2 on = a + (b - a) * (q.x / glm::length(b - a));
+  return {on.x, on.y, q.y};
+}
+// The face less the openings in it, facing into the room: the floor's counter-clockwise
+// triangles (seen from above) face up already; the ceiling's and a wall's (counter-clockwise
+// along the wall and up, so facing out) are turned.
+void holed_face(Primitive& p, const calc::Room& room, const calc::RoomFaceRef& face,
+                const std::vector<const calc::DaylightOpening*>& in_face) {
+  std::vector<geometry::Polygon2> holes;
+  for (const calc::DaylightOpening* o : in_face)
+    holes.push_back(calc::face_coordinates(room, face, o->polygon));
+  const geometry::HoledTriangulation t =
+      geometry::triangulate_with_holes(face_outline_2d(room, face), holes);
+  const std::uint32_t first = static_cast<std::uint32_t>(p.positions.size() / 3);
+  for (const Vec2& q : t.vertices) vertex(p, face_point(room, face, q));
+  triangles_from(p, first, t.triangles, face.kind != FaceKind::floor);
+}
+// The openings lying in `face`.
+std::vector<const calc::DaylightOpening*> openings_in(
+    const std::vector<calc::DaylightOpening>& openings, const calc::RoomFaceRef& face) {
+  std::vector<const calc::DaylightOpening*> out;
+  for (const auto& o : openings)
+    if (o.face.kind == face.kind && (face.kind != FaceKind::wall || o.face.wall == face.wall))
+      out.push_back(&o);
+  return out;
+}
+
+}  // namespace
+
+std::vector<Primitive> room_primitives(const calc::Room& room,
+                                       const std::vector<calc::DaylightOpening>& openings) {
   const double z0 = room.floor_z, z1 = room.floor_z + room.height;
   std::vector<Primitive> out(3);
-  cap(out[0], room.outline, z0, true);
-  sides(out[1], room.outline, z0, z1, false);
-  cap(out[2], room.outline, z1, false);
+  const auto floor = openings_in(openings, {FaceKind::floor, 0});
+  if (floor.empty())
+    cap(out[0], room.outline, z0, true);
+  else
+    holed_face(out[0], room, {FaceKind::floor, 0}, floor);
+  for (std::size_t k = 0; k < room.outline.size(); ++k) {
+    const auto wall = openings_in(openings, {FaceKind::wall, k});
+    if (wall.empty()) {
+      const Vec2 a = room.outline[k], b = room.outline[(k + 1) % room.outline.size()];
+      quad(out[1], Vec3(b.x, b.y, z0), Vec3(a.x, a.y, z0), Vec3(a.x, a.y, z1), Vec3(b.x, b.y, z1));
+    } else {
+      holed_face(out[1], room, {FaceKind::wall, k}, wall);
+    }
+  }
+  const auto ceiling = openings_in(openings, {FaceKind::ceiling, 0});
+  if (ceiling.empty())
+    cap(out[2], room.outline, z1, false);
+  else
+    holed_face(out[2], room, {FaceKind::ceiling, 0}, ceiling);
   return out;
+}
+
+Primitive daylight_pane_primitive(const calc::Room& room, const calc::DaylightOpening& o) {
+  Primitive p;
+  geometry::Polygon2 flat = calc::face_coordinates(room, o.face, o.polygon);
+  const bool reversed = geometry::signed_area(flat) < 0.0;
+  if (reversed) std::reverse(flat.begin(), flat.end());
+  for (const Vec3& c : o.polygon) vertex(p, c);
+  const auto n = static_cast<std::uint32_t>(o.polygon.size());
+  for (const auto& t : geometry::triangulate_with_holes(flat, {}).triangles) {
+    std::array<std::uint32_t, 3> i;
+    for (int k = 0; k < 3; ++k)
+      i[k] = reversed ? n - 1 - static_cast<std::uint32_t>(t[k]) : static_cast<std::uint32_t>(t[k]);
+    triangle(p, i[0], i[1], i[2]);
+  }
+  return p;
+}
+
+Primitive daylight_outline_primitive(const calc::DaylightOpening& o) {
+  Primitive p;
+  p.mode = gltf::Mode::line_loop;
+  for (const Vec3& c : o.polygon) p.indices.push_back(vertex(p, c));
+  return p;
 }
 
 Primitive prism_primitive(const geometry::Obstacle& o) {

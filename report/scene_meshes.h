@@ -14,8 +14,17 @@ namespace luxgrid::report {
 
 // A room's floor (facing up), walls and ceiling (facing the room): three primitives, in that
 // order, without materials. Triangles facing inward, so that from outside the walls and ceiling
-// between the eye and the room are not drawn and the room is seen into.
-std::vector<gltf::Primitive> room_primitives(const calc::Room& room);
+// between the eye and the room are not drawn and the room is seen into. `openings` (those of
+// this room) are holes in the faces they lie in (geometry/polygon_with_holes.h); a face without
+// one is drawn as without openings.
+std::vector<gltf::Primitive> room_primitives(
+    const calc::Room& room, const std::vector<calc::DaylightOpening>& openings = {});
+
+// A daylight opening (window, roof light): its pane, the polygon as triangles (to be drawn from
+// both sides), and its outline, a closed line through its corners.
+gltf::Primitive daylight_pane_primitive(const calc::Room& room,
+                                        const calc::DaylightOpening& opening);
+gltf::Primitive daylight_outline_primitive(const calc::DaylightOpening& opening);
 // An obstacle's prism, faces outward.
 gltf::Primitive prism_primitive(const geometry::Obstacle& obstacle);
 

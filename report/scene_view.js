@@ -69,13 +69,17 @@ function start(THREE) {
       material.vertexColors = true;
     }
     geometry.setIndex(new THREE.BufferAttribute(accessor(glb, p.indices), 1));
+    if (p.mode === 1 || p.mode === 2) {
+      const c = material.color;
+      return {geometry, material: new THREE.LineBasicMaterial({color: c}), mode: p.mode};
+    }
     geometry.computeVertexNormals();
     return {geometry, material};
   }));
 
   // The node tree as three.js objects; each keeps its glTF name and extras, and the kind of the
   // project object it belongs to (room, luminaire, grid, ...) for the layers.
-  const layerOf = {room: 'rooms', obstacle: 'rooms', luminaire: 'luminaires',
+  const layerOf = {room: 'rooms', obstacle: 'rooms', opening: 'rooms', luminaire: 'luminaires',
                    photometric_solid: 'solids', grid: 'surfaces', points: 'surfaces',
                    observers: 'surfaces'};
   const layers = {rooms: [], surfaces: [], luminaires: [], solids: []};
@@ -104,10 +108,13 @@ function start(THREE) {
           p.material.polygonOffsetFactor = -2;
           p.material.polygonOffsetUnits = -2;
         }
-        const mesh = new THREE.Mesh(p.geometry, p.material);
+        // glTF's modes 1 and 2: lines (an unglazed opening's outline), else triangles.
+        const mesh = p.mode === 1 ? new THREE.LineSegments(p.geometry, p.material)
+                   : p.mode === 2 ? new THREE.LineLoop(p.geometry, p.material)
+                                  : new THREE.Mesh(p.geometry, p.material);
         mesh.userData = {node: object};
         holder.add(mesh);
-        pickable.push(mesh);
+        if (mesh.isMesh) pickable.push(mesh);  // not lines: a ray picks them a metre away
       }
       object.add(holder);
       if (layers[layerOf[kind]]) layers[layerOf[kind]].push(holder);
@@ -297,7 +304,8 @@ function start(THREE) {
             `, at ${x.position_m.map(fmt).join(', ')} m`);
         return;
       }
-      if (node.userData.kind === 'room' || node.userData.kind === 'obstacle') continue;
+      // Rooms, obstacles and glass are seen through to what lies behind them.
+      if (['room', 'obstacle', 'opening'].includes(node.userData.kind)) continue;
     }
     say('Click a calculation surface for its value.');
   }
