@@ -88,6 +88,7 @@ class DaylightLight {
   daylight::QuadratureResult sky_integral_;
   double relative_tolerance_ = 0.0, ground_reflectance_ = 0.0, diffuse_horizontal_lx_ = 0.0;
   bool sky_exact_ = false, ground_exact_ = false;
+  double max_start_edge_rad_ = kPi;  // aperture_integral.h: the sky's start subdivision
 };
 
 }  // namespace luxgrid::calc

@@ -40,7 +40,7 @@ const std::string kGlazedWindow =
     R"([{"room": "r", "polygon": [[1,0,1],[3,0,1],[3,0,2.2],[1,0,2.2]],
          "glazing": {"transmittance": 0.8}}])";
 
-Scene scene_of(const std::string& text) {
+Scene irc_scene(const std::string& text) {
   return project::parse_project_text(text, "d.json", ".").scene;
 }
 
@@ -53,7 +53,7 @@ Scene scene_of(const std::string& text) {
 //    their reflected light sends out through the window, to the converged solve's tolerance
 //    (1e-3 at standard) with a margin: 2e-3.
 TEST(DaylightIrc, SolveBalancesEnteringAbsorbedAndLeavingFlux) {
-  const Scene s = scene_of(irc_project(kFourByFour, kColours, "\"cie-overcast\"", kGlazedWindow));
+  const Scene s = irc_scene(irc_project(kFourByFour, kColours, "\"cie-overcast\"", kGlazedWindow));
   const DaylightLight light(s, nullptr, daylight_tolerance(Quality::standard));
   indirect::IndirectOptions o;
   o.quality = Quality::standard;
@@ -77,7 +77,7 @@ TEST(DaylightIrc, SolveBalancesEnteringAbsorbedAndLeavingFlux) {
 // reflected light (it does: no surface reflects) or the solve runs on the black faces.
 TEST(DaylightIrc, BlackRoomHasNoInternallyReflectedComponent) {
   const std::string black = R"({"floor": 0, "walls": 0, "ceiling": 0})";
-  const Scene s = scene_of(irc_project(kFourByFour, black, "\"cie-overcast\"", kGlazedWindow));
+  const Scene s = irc_scene(irc_project(kFourByFour, black, "\"cie-overcast\"", kGlazedWindow));
   const Results r = run_scene(s);
   EXPECT_FALSE(r.plan.daylight->internally_reflected);
   for (const auto& sr : r.surfaces)
@@ -109,7 +109,7 @@ TEST(DaylightIrc, IntegratingBoxMeanFollowsTheBalance) {
   const std::string grey = R"({"floor": 0.5, "walls": 0.5, "ceiling": 0.5})";
   const std::string roof =
       R"([{"room": "r", "polygon": [[1.2,1.2,3],[1.5,1.2,3],[1.5,1.5,3],[1.2,1.5,3]]}])";
-  const Results r = run_scene(scene_of(irc_project(cube, grey, "\"uniform\"", roof)));
+  const Results r = run_scene(irc_scene(irc_project(cube, grey, "\"uniform\"", roof)));
   ASSERT_TRUE(r.plan.daylight->internally_reflected);
   double sum = 0.0, area = 0.0;
   for (const auto& sr : r.surfaces) {
@@ -130,9 +130,9 @@ TEST(DaylightIrc, IntegratingBoxMeanFollowsTheBalance) {
 // interreflection to 1e-4, the sky to 0.15 %) within standard's 1 % at every point, relative to
 // the point's DF but no less than 1 % of its surface's largest (as `luxgrid cost` counts).
 TEST(DaylightIrc, StandardHoldsItsPromiseAgainstHigh) {
-  const Results std_run = run_scene(scene_of(
+  const Results std_run = run_scene(irc_scene(
       irc_project(kFourByFour, kColours, "\"cie-overcast\"", kGlazedWindow, "standard", "0.5")));
-  const Results fine = run_scene(scene_of(
+  const Results fine = run_scene(irc_scene(
       irc_project(kFourByFour, kColours, "\"cie-overcast\"", kGlazedWindow, "high", "0.5")));
   double worst = 0.0;
   for (size_t s = 0; s < fine.surfaces.size(); ++s) {
