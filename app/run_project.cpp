@@ -39,13 +39,6 @@ void apply_lighting_scene(project::Project& loaded, std::optional<calc::Lighting
                        "illuminance): docs/daylight.md");
     return;
   }
-  if (!loaded.scene.openings.empty()) {
-    loaded.scene.warnings.push_back(
-        {SourceLocation(loaded.scene.project_file.filename().string(), 0, 0, "/openings"),
-         "the openings are used by the daylight scene only: electric light (the normal and "
-         "emergency scenes) still treats their faces as closed walls, ceilings and floors (not "
-         "built yet); `luxgrid calc --scene daylight` calculates daylight through them"});
-  }
   if (loaded.scene.settings.scene != calc::LightingScene::emergency) return;
   try {
     loaded.scene = calc::make_emergency_scene(loaded.scene);

@@ -1,7 +1,8 @@
 #pragma once
 // What the daylight scene did (docs/daylight.md), as values for the plan: the sky and its
 // normalisation, how each component was integrated over the openings and the largest error
-// estimate each reached, and what is not built yet. report/plan_json and plan_text write it.
+// estimate each reached, whether the internally reflected component was computed and its flux
+// balance. report/plan_json and plan_text write it.
 #include <cstddef>
 #include <string>
 
@@ -28,10 +29,18 @@ struct DaylightPlan {
   // each component, and the integrand's evaluations in all.
   double sky_error_percent = 0.0, ground_error_percent = 0.0;
   std::size_t evaluations = 0;
-  std::size_t points_outside_rooms = 0;     // active points in no room: no daylight computed (0)
-  bool internally_reflected_built = false;  // IRC: not built yet (reported as 0)
-  bool reflecting_surfaces = false;         // a room face or obstacle reflects (IRC would count)
-  std::size_t luminaires_left_out = 0;      // the daylight scene lights nothing electric
+  std::size_t points_outside_rooms = 0;  // active points in no room: no daylight computed (0)
+  // The internally reflected component: computed (the plan's indirect run, estimates and notes
+  // say how) unless no room face or obstacle reflects or settings.indirect is "off" (IRC 0).
+  bool internally_reflected = false;
+  bool reflecting_surfaces = false;  // a room face or obstacle reflects
+  bool indirect_off = false;         // settings.indirect "off"
+  // Its balance (lm): the flux entering through the openings (DaylightLight::entering_flux_lm),
+  // the part of it landing on the rooms' surfaces straight away (the first bounce; the rest
+  // leaves through another opening, or is the first bounce's quadrature error), and the
+  // reflected light leaving through the openings. What the surfaces absorb is the rest.
+  double flux_entering_lm = 0.0, flux_on_surfaces_lm = 0.0, flux_escaping_lm = 0.0;
+  std::size_t luminaires_left_out = 0;  // the daylight scene lights nothing electric
 };
 
 }  // namespace luxgrid::calc

@@ -224,19 +224,25 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
   }
 }
 
-// Reflected light, when the plan's decision says the scene needs it. Returns what the plan's
-// estimate needs: the same rooms meshed at twice the patch size, gathered at a few probe points
-// per surface (plan_estimates.h); not measured at draft, which promises nothing.
+// Reflected light, when the plan's decision says the scene needs it (run_reflected_light with
+// the luminaires' first bounce).
 IndirectEstimateInputs run_indirect(const Scene& scene, const SceneLookups& lookups,
                                     Results& results) {
-  IndirectEstimateInputs est;
   const indirect::IndirectDecision& decision = results.plan.indirect_decision;
-  if (!decision.run) return est;
+  if (!decision.run) return {};
   indirect::IndirectOptions options = indirect::indirect_options(scene.settings);
   options.luminous_flux_lm = decision.luminous_flux_lm;
   options.visibility = results.plan.visibility_test;
   for (const auto& [distribution, lookup] : lookups.by_distribution)
     options.intensity_lookup.emplace(distribution, lookup.lookup);
+  return run_reflected_light(scene, options, results);
+}
+}  // namespace
+
+IndirectEstimateInputs run_reflected_light(const Scene& scene,
+                                           const indirect::IndirectOptions& options,
+                                           Results& results) {
+  IndirectEstimateInputs est;
   // Solved once per mesh; gathered at every point only for the mesh that gives the results (the
   // estimate's meshes are gathered at its probe points).
   std::unique_ptr<const indirect::IndirectSolution> solution =
@@ -286,8 +292,11 @@ IndirectEstimateInputs run_indirect(const Scene& scene, const SceneLookups& look
   results.plan.indirect_warnings = r.warnings;
   est.residual = r.residual;
   est.patch_size_m = r.patch_size_m;
+  est.escaped_flux_lm = r.escaped_flux_lm;
   return est;
 }
+
+namespace {
 // "1.8e+308" / "inf" / "nan", for the messages below.
 std::string number(double v) { return format_double("%.4g", v); }
 

@@ -1,6 +1,8 @@
 #pragma once
 // The whole calculation of a loaded scene: plan, direct, indirect, statistics, timings.
 #include "calc/direct.h"
+#include "calc/indirect/indirect.h"
+#include "calc/plan_estimates.h"
 #include "calc/results.h"
 
 namespace luxgrid::calc {
@@ -8,5 +10,15 @@ namespace luxgrid::calc {
 // Throws CalculationError naming the surface and the first point (index, position) or
 // statistic that is not a finite number: results never hold NaN or infinities.
 Results run_scene(const Scene& scene, const Progress& progress = {});
+
+// Reflected light (calc/indirect) with `options`: solved, refined where the plan's patch-size
+// estimate asks (plan_estimates.h; not at draft) and gathered at every point into each
+// surface's E_indirect, with the plan's indirect run, notes and warnings. results.surfaces must
+// hold the grids and E_direct. Returns what estimate_errors needs. The normal and emergency
+// scenes call it with the luminaires' first bounce, the daylight scene with the light entering
+// through the openings (IndirectOptions::incident_flux_lm).
+IndirectEstimateInputs run_reflected_light(const Scene& scene,
+                                           const indirect::IndirectOptions& options,
+                                           Results& results);
 
 }  // namespace luxgrid::calc

@@ -51,6 +51,9 @@ struct IndirectEstimateInputs {
   double patch_size_m = 0.0, coarse_patch_size_m = 0.0;
   std::vector<std::vector<size_t>> probe_index;  // per surface: the probe points
   std::vector<std::vector<double>> coarse_lx;    // per surface: E_ind at 2h there, maintained lx
+  // Not for the estimate: the reflected light leaving through openings (IndirectResult's), for
+  // the daylight plan's balance.
+  double escaped_flux_lm = 0.0;
 };
 
 // The patch-size estimate of one surface: the largest |E_ind(h) - E_ind(2h)| over its probe

@@ -13,6 +13,15 @@ std::string sky_text(const calc::DaylightPlan& d) {
 
 std::string percent_text(double fraction) { return format_double("%.2g %%", 100.0 * fraction); }
 
+// Why the internally reflected component is 0.
+std::string irc_skipped_text(const calc::DaylightPlan& d) {
+  if (!d.reflecting_surfaces) return "no room surface reflects";
+  if (d.indirect_off) return "settings.indirect is \"off\"";
+  return "no openings";
+}
+
+std::string lm_text(double lm) { return format_double("%.4g", lm) + " lm"; }
+
 }  // namespace
 
 std::string daylight_summary(const calc::Plan& plan) {
@@ -21,8 +30,15 @@ std::string daylight_summary(const calc::Plan& plan) {
       "daylight: " + sky_text(d) + ", E_h " + format_double("%.6g", d.diffuse_horizontal_lx) +
       " lx, " + std::to_string(d.openings) + " openings; sky component " +
       (d.sky_exact ? "exact" : "adaptive") + ", externally reflected " +
-      (d.ground_exact ? "exact" : "adaptive") +
-      ", internally reflected not built (0); visibility: " + (plan.visibility.on ? "on" : "off");
+      (d.ground_exact ? "exact" : "adaptive") + ", internally reflected " +
+      (d.internally_reflected && plan.indirect_run
+           ? "by " + std::to_string(plan.indirect_run->patches) + " patches of " +
+                 format_double("%.3g", plan.indirect_run->patch_size_m) + " m, " +
+                 (plan.indirect_run->bounces_asked == 0
+                      ? "converged"
+                      : std::to_string(plan.indirect_run->bounces_asked) + " bounce(s)")
+           : std::string("0 (") + irc_skipped_text(d) + ")") +
+      "; visibility: " + (plan.visibility.on ? "on" : "off");
   return out;
 }
 
@@ -47,9 +63,17 @@ std::vector<std::string> daylight_notes(const calc::Plan& plan) {
   notes.push_back("daylight: sky component " + method(d.sky_exact, d.sky_error_percent));
   notes.push_back("daylight: externally reflected component (ground) " +
                   method(d.ground_exact, d.ground_error_percent));
-  notes.push_back(
-      "daylight: internally reflected component not built yet: IRC is 0, so DF and E count only "
-      "the light arriving straight through the openings");
+  if (d.internally_reflected)
+    notes.push_back(
+        "daylight: internally reflected component: the light entering through the openings (" +
+        lm_text(d.flux_entering_lm) + ") lands on the rooms' surfaces (" +
+        lm_text(d.flux_on_surfaces_lm) +
+        ", each patch's share integrated by the sky and ground components' own integration) "
+        "and is carried between them by the reflected light's interreflection, the openings "
+        "holes in its mesh; " +
+        lm_text(d.flux_escaping_lm) + " of the reflected light leave through the openings again");
+  else
+    notes.push_back("daylight: internally reflected component 0: " + irc_skipped_text(d));
   if (d.luminaires_left_out > 0)
     notes.push_back("daylight: " + std::to_string(d.luminaires_left_out) +
                     " luminaires left out (the daylight scene lights nothing electric)");
@@ -62,10 +86,10 @@ std::vector<std::string> daylight_warnings(const calc::Plan& plan) {
   if (d.points_outside_rooms > 0)
     warnings.push_back("daylight: " + std::to_string(d.points_outside_rooms) +
                        " points lie in no room: their daylight is not calculated (0)");
-  if (!d.internally_reflected_built && d.reflecting_surfaces)
+  if (d.indirect_off && d.reflecting_surfaces)
     warnings.push_back(
-        "daylight: the internally reflected component is not built yet; DF is SC + ERC only "
-        "(an underestimate wherever the room's surfaces reflect light)");
+        "daylight: settings.indirect is \"off\", so the internally reflected component is 0 and "
+        "DF is SC + ERC only (an underestimate wherever the room's surfaces reflect light)");
   return warnings;
 }
 

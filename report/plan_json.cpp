@@ -145,8 +145,9 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DaylightPlan, sky, diffuse_horizontal_lx, gro
                                    sky_integral_sr, sky_integral_error_sr, openings,
                                    glazed_openings, sky_exact, ground_exact, relative_tolerance,
                                    sky_error_percent, ground_error_percent, evaluations,
-                                   points_outside_rooms, internally_reflected_built,
-                                   reflecting_surfaces, luminaires_left_out)
+                                   points_outside_rooms, internally_reflected, reflecting_surfaces,
+                                   indirect_off, flux_entering_lm, flux_on_surfaces_lm,
+                                   flux_escaping_lm, luminaires_left_out)
 }  // namespace luxgrid::calc
 
 namespace luxgrid::report {

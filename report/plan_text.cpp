@@ -381,9 +381,10 @@ std::string scene_note_text(const calc::SceneNote& note) {
 }
 
 std::vector<std::string> plan_notes(const calc::Plan& plan) {
-  if (plan.daylight) return daylight_notes(plan);
-  std::vector<std::string> notes;
-  if (plan.near_switch_reason == calc::NearSwitchReason::draft_quality)
+  // The daylight scene: its own notes, then its reflected light's and estimates as below.
+  std::vector<std::string> notes =
+      plan.daylight ? daylight_notes(plan) : std::vector<std::string>{};
+  if (!plan.daylight && plan.near_switch_reason == calc::NearSwitchReason::draft_quality)
     notes.push_back("quality draft: far-field point model at every distance");
   for (const auto& n : plan.scene_notes) notes.push_back(scene_note_text(n));
   for (const auto& r : plan.refinements)
@@ -396,7 +397,8 @@ std::vector<std::string> plan_notes(const calc::Plan& plan) {
   const bool ran = plan.indirect_run.has_value();
   for (const auto& est : plan.estimates) {
     std::string line =
-        "estimated error at surface '" + est.surface + "': " + percent2(est.total()) + " (direct " +
+        "estimated error at surface '" + est.surface + "': " + percent2(est.total()) +
+        (plan.daylight ? " (sky and ground " : " (direct ") +
         (est.direct < 0.0 ? "not estimated: far field at every distance" : percent2(est.direct));
     if (ran)
       line += ", patch size " + percent2(est.patch_size) + " on " + count_text(est.probe_points) +
@@ -411,8 +413,8 @@ std::vector<std::string> plan_notes(const calc::Plan& plan) {
 }
 
 std::vector<std::string> plan_warnings(const calc::Plan& plan) {
-  if (plan.daylight) return daylight_warnings(plan);
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings =
+      plan.daylight ? daylight_warnings(plan) : std::vector<std::string>{};
   for (const auto& r : plan.refinements) {
     if (r.outcome == calc::PatchRefinement::Outcome::work_over_limit)
       warnings.push_back("indirect: " + refinement_why(r, plan.quality) + ", but a mesh at " +
@@ -437,10 +439,11 @@ std::vector<std::string> plan_warnings(const calc::Plan& plan) {
                          "estimate; " +
                          quality + "'s promise of " + percent2(promise) + " is not checked");
     if (promise > 0.0 && est.total() > promise) {
-      const char* largest = est.direct >= std::max(est.patch_size, est.bounces)
-                                ? "the far-field decision"
-                            : est.patch_size >= est.bounces ? "the interreflection patch size"
-                                                            : "the bounces not followed";
+      const char* largest =
+          est.direct >= std::max(est.patch_size, est.bounces)
+              ? (plan.daylight ? "the sky and ground integration" : "the far-field decision")
+          : est.patch_size >= est.bounces ? "the interreflection patch size"
+                                          : "the bounces not followed";
       const std::string error = std::isfinite(est.total())
                                     ? percent2(est.total()) + " exceeds "
                                     : std::string(

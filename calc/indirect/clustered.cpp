@@ -370,8 +370,10 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
   for (size_t a = 0; a < node_count; ++a) {
     const ClusterNode& c = T.nodes[a];
     if (!is_leaf(c)) continue;
-    T.max_row_correction = std::max(T.max_row_correction, std::abs(1.0 - total[a]));
-    if (renormalise && total[a] > 0.0) T.source_scale[c.patch] = 1.0 / total[a];
+    // As radiosity.cpp: the patches receive all but the share leaving through openings.
+    const double kept = mesh.kept_fraction(T.begin + c.patch);
+    T.max_row_correction = std::max(T.max_row_correction, std::abs(kept - total[a]));
+    if (renormalise && total[a] > 0.0) T.source_scale[c.patch] = kept / total[a];
   }
   return T;
 }

@@ -60,8 +60,8 @@ struct ClusteredTransfer {
   std::vector<uint64_t> link_begin, link_end;
   std::vector<uint32_t> link_source;
   std::vector<float> link_factor;
-  std::vector<double> source_scale;  // per patch: 1 / its total factor (1 if not renormalised)
-  double max_row_correction = 0.0;   // largest |1 - total factor| before renormalisation
+  std::vector<double> source_scale;  // per patch: kept / its total factor (1 if not renormalised)
+  double max_row_correction = 0.0;   // largest |kept - total factor| before renormalisation
   // The acceptance ratio the links were built with: cluster_opening(far_ratio), or wider where
   // that many links would not fit kMaxClusteredLinkBytes (a note says so).
   double opening = 0.0;
@@ -96,7 +96,8 @@ inline constexpr double kClusteredLinksPerPatch = 1260.0;
 inline constexpr double kClusteredReferenceFarRatio = 8.0;
 
 // The operator of room `room` (its visibility must be null: nothing blocks). `renormalise`:
-// scale each patch's shot to a total factor of 1 (closed rooms). Parallel. Throws
+// scale each patch's shot to a total factor of its kept fraction (patches.h: 1 in a closed room,
+// less the share leaving through openings). Parallel. Throws
 // CalculationError when the links would exceed kMaxClusteredLinkBytes (limits.h).
 ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far_ratio,
                                      bool renormalise = true);

@@ -323,12 +323,18 @@ FirstBounce first_bounce(
       fb.incident_flux_lm[i] = sum;
     });
   }
+  add_reflected_flux(mesh, fb);
+  return fb;
+}
+
+void add_reflected_flux(const PatchMesh& mesh, FirstBounce& fb) {
+  const size_t n = mesh.patches.size();
+  fb.vpl_flux_lm.assign(n, 0.0);
   for (size_t i = 0; i < n; ++i) {
     fb.vpl_flux_lm[i] = mesh.patches[i].reflectance * fb.incident_flux_lm[i];
     fb.received_flux_lm += fb.incident_flux_lm[i];
     if (fb.vpl_flux_lm[i] > 0.0) ++fb.vpl_count;
   }
-  return fb;
 }
 
 }  // namespace luxgrid::calc::indirect

@@ -57,4 +57,9 @@ FirstBounce first_bounce(
         intensity_lookup = nullptr,
     const std::vector<char>* one_piece_rooms = nullptr);
 
+// From fb.incident_flux_lm (one per patch of `mesh`): each patch's VPL flux (reflectance x
+// incident), the received total and the VPL count. first_bounce ends with it; light entering
+// through openings (IndirectOptions::incident_flux_lm) goes through it too.
+void add_reflected_flux(const PatchMesh& mesh, FirstBounce& fb);
+
 }  // namespace luxgrid::calc::indirect

@@ -292,6 +292,21 @@ Vec3 inset_into_room(const Room& room, Vec3 x) {
   return x;
 }
 
+// The light each patch of `mesh` receives straight from its source: the luminaires' first
+// bounce, or the light entering through openings when the options give it.
+FirstBounce incident_light(const Scene& scene, const PatchMesh& mesh, const IndirectOptions& o,
+                           const std::vector<const geometry::Visibility*>& room_visibility,
+                           const std::vector<char>& clustered) {
+  if (!o.incident_flux_lm)
+    return first_bounce(scene, mesh, room_visibility, 0.08, &o.luminous_flux_lm,
+                        &o.intensity_lookup, &clustered);
+  FirstBounce fb;
+  fb.incident_flux_lm = o.incident_flux_lm(mesh);
+  add_reflected_flux(mesh, fb);
+  fb.emitted_flux_lm = fb.luminaire_flux_lm = fb.received_flux_lm;
+  return fb;
+}
+
 }  // namespace
 
 IndirectOptions indirect_options(const Settings& settings) {
@@ -351,8 +366,7 @@ std::unique_ptr<const IndirectSolution> solve_indirect(const Scene& scene,
       if (!std::isfinite(far_ratio)) room_far[r] = kClusteredReferenceFarRatio;
     }
 
-  const FirstBounce fb = first_bounce(scene, mesh, room_visibility, 0.08, &options.luminous_flux_lm,
-                                      &options.intensity_lookup, &budgets.clustered);
+  const FirstBounce fb = incident_light(scene, mesh, options, room_visibility, budgets.clustered);
   for (const auto& n : fb.notes) res.notes.push_back(n);
   res.vpls = fb.vpl_count;
   res.emitted_flux_lm = fb.emitted_flux_lm;
@@ -409,6 +423,9 @@ std::unique_ptr<const IndirectSolution> solve_indirect(const Scene& scene,
     res.residual = std::max(res.residual, sol.residual);
     for (size_t i = begin; i < end; ++i) exitant[i] = sol.exitant_flux_lm[i - begin];
   }
+  if (!mesh.escape_fraction.empty())
+    for (size_t i = 0; i < exitant.size(); ++i)
+      res.escaped_flux_lm += exitant[i] * mesh.escape_fraction[i];
 
   sol_out.bounces = bounces;
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -468,8 +485,7 @@ IndirectResult gather_indirect(const IndirectSolution& solution, const Scene& sc
     const CellMesh cells = cell_mesh(mesh, refine);
     if (!cells.mesh.patches.empty()) {
       const FirstBounce cell_fb =
-          first_bounce(scene, cells.mesh, room_visibility, 0.08, &options.luminous_flux_lm,
-                       &options.intensity_lookup, &clustered);
+          incident_light(scene, cells.mesh, options, room_visibility, clustered);
       std::vector<double> cell_indirect(cells.mesh.patches.size(), 0.0);
       // Near patches cell by cell; the far ones, whose light varies smoothly over a patch, at
       // the four corner cells of each patch, interpolated bilinearly to the others (subcells.h).

@@ -15,6 +15,7 @@
 // (Richardson) at intermediate distances and the seed's point kernel far from it (gather.h);
 // a patch seen from closer than a patch diameter is gathered cell by cell, each cell with the
 // exitance its own direct and reflected light give it (subcells.h).
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -60,6 +61,10 @@ struct IndirectOptions {
   // at twice the size and must compare like with like: it passes the main run's decisions
   // (IndirectResult::clustered), and a room clustered there keeps the clustered budget.
   std::vector<char> clustered;
+  // Light that enters through openings (the daylight scene, calc/daylight_light.h): the flux
+  // straight from the sky and the ground landing on each patch of a mesh, lm. When set it
+  // replaces the luminaires' first bounce, for the patches and for the cells of subcells.h.
+  std::function<std::vector<double>(const PatchMesh&)> incident_flux_lm;
 };
 
 // Options from the project's settings (quality, bounces).
@@ -84,6 +89,9 @@ struct IndirectResult {
   double received_flux_lm = 0.0;   // direct lumens landing on patches
   double vpl_flux_lm = 0.0;        // sum over VPLs (= sum rho x received)
   double max_row_correction = 0.0;
+  // Reflected light leaving through the openings: each patch's exitant flux times its escape
+  // fraction (patches.h), summed; 0 without openings.
+  double escaped_flux_lm = 0.0;
   // Rooms solved with the clustered transfer (clustered.h), their links in all and the largest
   // one's memory (nodes and links).
   size_t clustered_rooms = 0, clustered_links = 0, clustered_bytes = 0;

@@ -1,5 +1,7 @@
 #include "calc/indirect/patches.h"
 
+#include "calc/indirect/form_factor.h"
+#include "calc/opening_placement.h"
 #include "calc/scene_visibility.h"
 #include "util/error.h"
 #include "util/robust_math.h"
@@ -195,6 +197,21 @@ std::vector<Polygon2> horizontal_pieces(const Polygon2& outline, double size) {
   return pieces;
 }
 
+// The openings of room `r` in one face, as convex counter-clockwise triangles in the face's 2D
+// coordinates (opening_placement.h: x, y for floor and ceiling; along the wall and z for a wall).
+std::vector<Polygon2> opening_holes(const Scene& scene, size_t r, RoomFaceRef::Kind kind,
+                                    size_t wall) {
+  std::vector<Polygon2> holes;
+  for (const DaylightOpening& o : scene.openings) {
+    if (o.room != r || o.face.kind != kind) continue;
+    if (kind == RoomFaceRef::Kind::wall && o.face.wall != wall) continue;
+    Polygon2 flat = face_coordinates(scene.rooms[r], o.face, o.polygon);
+    if (geometry::signed_area(flat) < 0.0) std::reverse(flat.begin(), flat.end());
+    for (auto& t : geometry::triangles(flat)) holes.push_back(std::move(t));
+  }
+  return holes;
+}
+
 }  // namespace
 
 double room_surface_area(const Room& room) {
@@ -251,7 +268,8 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
     const int ri = static_cast<int>(r);
     const double z0 = room.floor_z, z1 = room.floor_z + room.height;
     // Footprints (as convex triangles) of obstacles standing on the floor / touching the ceiling.
-    std::vector<Polygon2> floor_holes, ceiling_holes;
+    std::vector<Polygon2> floor_holes = opening_holes(scene, r, RoomFaceRef::Kind::floor, 0);
+    std::vector<Polygon2> ceiling_holes = opening_holes(scene, r, RoomFaceRef::Kind::ceiling, 0);
     for (const auto& ob : room.obstacles) {
       if (ob.z0 <= z0 + kTouch_m)
         for (auto& t : geometry::triangles(ob.footprint)) floor_holes.push_back(t);
@@ -324,6 +342,25 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
       const Vec2 t = (b - a) / len;
       const Vec3 inward(-t.y, t.x, 0.0);  // counter-clockwise outline: the room is on the left
       const int nu = pieces_of_at_most(len / patch_size_m);
+      const std::vector<Polygon2> holes = opening_holes(scene, r, RoomFaceRef::Kind::wall, k);
+      if (!holes.empty()) {
+        // The wall's rectangles in its (along, z) coordinates, minus its openings, back in 3D.
+        std::vector<Polygon2> cells;
+        for (int j = 0; j < nv; ++j) {
+          const double za = z0 + room.height * j / nv, zb = z0 + room.height * (j + 1) / nv;
+          for (int i = 0; i < nu; ++i) {
+            const double sa = len * i / nu, sb = len * (i + 1) / nu;
+            cells.push_back({{sa, za}, {sb, za}, {sb, zb}, {sa, zb}});
+          }
+        }
+        for (const auto& piece : subtract_holes(std::move(cells), holes)) {
+          Polygon3 wall;
+          for (const auto& v : piece) wall.emplace_back(a.x + t.x * v.x, a.y + t.y * v.x, v.y);
+          add_patch(mesh, std::move(wall), inward, room.reflectance.walls, ri, FaceKind::wall,
+                    static_cast<int>(k));
+        }
+        continue;
+      }
       for (int j = 0; j < nv; ++j) {
         const double za = z0 + room.height * j / nv, zb = z0 + room.height * (j + 1) / nv;
         for (int i = 0; i < nu; ++i) {
@@ -336,6 +373,16 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
     }
   }
   mesh.room_begin.push_back(mesh.patches.size());
+  if (!scene.openings.empty()) {
+    mesh.escape_fraction.assign(mesh.patches.size(), 0.0);
+    for (size_t i = 0; i < mesh.patches.size(); ++i) {
+      const Patch& p = mesh.patches[i];
+      for (const DaylightOpening& o : scene.openings)
+        if (o.room == static_cast<size_t>(p.room))
+          mesh.escape_fraction[i] += point_polygon_form_factor(p.centroid, p.normal, o.polygon);
+      mesh.escape_fraction[i] = std::min(mesh.escape_fraction[i], 1.0);
+    }
+  }
   return mesh;
 }
 

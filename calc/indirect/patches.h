@@ -12,6 +12,13 @@
 // the footprint of an obstacle standing on the floor (hanging from the ceiling) is cut out of the
 // floor (ceiling), so no patch lies hidden under it and the room plus obstacle surfaces stay a
 // closed, non-overlapping tiling (the first bounce's solid angles then still sum to 4 pi).
+//
+// Openings (Scene::openings: windows, roof lights; docs/daylight.md) are holes: light reaching an
+// opening leaves the room, so no patch covers one. Each opening's triangles are cut out of the
+// pieces of its face like an obstacle's footprint out of the floor, and every patch records the
+// form factor from its centroid to the openings of its room (PatchMesh::escape_fraction), the
+// share of its light that leaves: the transfer's renormalisation (radiosity.h, clustered.h)
+// scales each source to 1 minus it instead of 1. A room without openings is meshed as before.
 #include <array>
 #include <string>
 #include <vector>
@@ -52,6 +59,15 @@ struct PatchMesh {
   // patches of room r are [room_begin[r], room_begin[r + 1]).
   std::vector<size_t> room_begin;
   double patch_size_m = 0.0;  // the size actually used (after the budget)
+  // Per patch: the form factor from its centroid to the openings of its room (Lambert's formula
+  // on each opening polygon, form_factor.h; no visibility test: exact in a convex room without
+  // obstacles), the fraction of its light that leaves the room. Empty when the scene has no
+  // openings (every room closed).
+  std::vector<double> escape_fraction;
+  // The renormalisation target of patch `i`'s transfer: 1 minus its escape fraction.
+  double kept_fraction(size_t i) const {
+    return escape_fraction.empty() ? 1.0 : 1.0 - escape_fraction[i];
+  }
 };
 
 // Patch mesh of all rooms at `patch_size_m`. Throws InputError naming the room for an outline

@@ -183,8 +183,11 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
     for (size_t j = 0; j < n; ++j) sum[j] += partial[b * n + j];
   F.source_scale.assign(n, 1.0);
   for (size_t j = 0; j < n; ++j) {
-    F.max_row_correction = std::max(F.max_row_correction, std::abs(1.0 - sum[j]));
-    if (renormalise && sum[j] > 0.0) F.source_scale[j] = 1.0 / sum[j];
+    // What the patches should receive: all of the source's light in a closed room, less the
+    // share leaving through openings (patches.h).
+    const double kept = mesh.kept_fraction(F.begin + j);
+    F.max_row_correction = std::max(F.max_row_correction, std::abs(kept - sum[j]));
+    if (renormalise && sum[j] > 0.0) F.source_scale[j] = kept / sum[j];
   }
   return F;
 }

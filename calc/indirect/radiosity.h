@@ -11,7 +11,9 @@
 // (a factor per source, FormFactorMatrix::source_scale) so that no
 // light is created or lost by discretisation or visibility sampling, which matters at high
 // reflectance: a row-sum error e changes the converged total by about rho e / (1 - rho), 19 e at
-// rho = 0.95. The largest correction is reported.
+// rho = 0.95. The largest correction is reported. A room with openings renormalises each source
+// to 1 minus the form factor from its centroid to the openings (PatchMesh::escape_fraction): that
+// share leaves the room.
 //
 // Solver: Jacobi on the bounce series, Delta_1 = rho D, Delta_k+1 = rho (F^T Delta_k), Phi = sum
 // of Delta_k. Each sweep is exactly one more reflection, so `bounces: N` means exactly N
@@ -46,7 +48,7 @@ struct FormFactorMatrix {
   // the float matrix conserves the flux to double precision over any number of bounces.
   std::span<float> gather;
   std::vector<double>
-      source_scale;  // per source j: 1 / sum_i gather[i * n + j] (1 if not renormalised)
+      source_scale;  // per source j: kept_j / sum_i gather[i * n + j] (1 if not renormalised)
   double at(size_t i, size_t j) const {
     return static_cast<double>(gather[i * n + j]) * (source_scale.empty() ? 1.0 : source_scale[j]);
   }
@@ -54,7 +56,7 @@ struct FormFactorMatrix {
   // next to it in the mesh (its face: the whole floor for a floor patch). The sweeps skip them,
   // about a third of the matrix in a flat room.
   std::vector<size_t> zero_begin, zero_end;
-  double max_row_correction = 0.0;  // largest |1 - sum_i F[j -> i]| before renormalisation
+  double max_row_correction = 0.0;  // largest |kept_j - sum_i F[j -> i]| before renormalisation
   bool renormalised = true;
 
   // n x n entries for `gather`, uninitialised: form_factors writes every row.
@@ -71,9 +73,9 @@ struct FormFactorMatrix {
 // the receiving patch's diameter, its quarters (extrapolated) beyond half that, the exact formula
 // closer (infinity: always exact). Rows of the gather layout are filled in parallel; each
 // receiver takes the sources in tiles, and a tile wholly far and in front (most of a big room)
-// in one branch-free loop. `renormalise`: scale rows to 1 (closed
-// rooms). Throws CalculationError naming the room index when the matrix would exceed
-// kMaxFormFactorMatrixBytes (limits.h), before allocating it.
+// in one branch-free loop. `renormalise`: scale each source to its kept fraction
+// (patches.h: 1 in a closed room). Throws CalculationError naming the room index when the matrix
+// would exceed kMaxFormFactorMatrixBytes (limits.h), before allocating it.
 FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
                               const geometry::Visibility* visibility, double far_ratio,
                               bool renormalise = true);
