@@ -183,9 +183,9 @@ TEST(FarFieldBound, DemandMeasuresLessAndNeverWidensTheFarField) {
     for (double y = 0.05; y < 4.0; y += 0.1) add(Vec3(x, y, 0.0));
   for (double x = 0.05; x < 6.0; x += 0.1)
     for (double z = 0.05; z < 2.8; z += 0.1) add(Vec3(x, 0.0, z));
-  // And a row of receivers far below: the table's bound (table_far_bound.h) asks up to 1.6e4 D
-  // in the beam of this sharp table (its smooth part is charged over the whole map cell, not
-  // the footprint alone), so the row sits 10 km away for some to take the far field.
+  // And a row of receivers far below: the table's bound (table_far_bound.h) asks up to 2.1e3 D
+  // at the steep edge of this sharp beam (a slope jump read against the dim side's intensity), so
+  // the row sits 10 km away for some to take the far field.
   for (double x = -8000.0; x < 8000.0; x += 100.0) add(Vec3(x, 1.5, -10000.0));
   const auto whole = build_far_field_bound(e, Model::standard(), kStandardPromise);
   const auto part = build_far_field_bound(e, Model::standard(), kStandardPromise, &demand);
