@@ -10,6 +10,7 @@
 #include "calc/nearfield/illuminance.h"
 #include "calc/nearfield/map_symmetry.h"
 #include "calc/nearfield/models.h"
+#include "calc/nearfield/table_far_bound.h"
 #include "calc/nearfield/table_rung_scratch.h"
 #include "util/ordered_tasks.h"
 
@@ -18,13 +19,6 @@ namespace {
 
 constexpr double kGammaStepDeg = 180.0 / (kGammaSamples - 1);
 constexpr double kCStepDeg = 360.0 / kCSamples;
-
-// Receivers dimmer than this fraction of the emitter's peak illuminance at the same distance
-// (I_max / d^2) are held to an absolute error of tolerance x that floor instead of a relative
-// one: the promise covers points brighter than 1 % of a surface's maximum (docs/accuracy.md), and a
-// direction at the dark edge of a beam would otherwise ask for the near field out to any
-// distance for a value nobody reads. 1e-3 leaves a factor 10 to the 1 % line.
-constexpr double kDimFloor = 1e-3;
 
 // Receiver normals tried per direction: facing the emitter, and tilted by this angle towards
 // four sides (along gamma and along C). Tilted receivers weigh the near side of the opening
@@ -42,9 +36,6 @@ constexpr int kDilationReach = 3;
 // The search below tries a direction's last rung right after rung 0 when the last is at most
 // this (5 D, its receivers no farther; far_field_bound.h's MapDemand).
 constexpr int kCapFirstRungs = 5;
-
-// A direction failing out to the ladder's end keeps the near field at every distance.
-constexpr float kNearEverywhere = 1e6f;  // x D
 
 Vec3 direction_of_sample(int g, int c) {
   // Luminaire frame: the opening emits towards -z (emitter.h), C = 0 along +x.
@@ -531,6 +522,16 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
   const double delta0 = kink_slack_rad(e);
   bound->d_far_over_D = dilate(raw, delta0, needs.read_over_D);
   bound->d_fixed_over_D = dilate(raw_fixed, delta0, needs.read_over_D);
+  // The table's part of the error, bounded at every direction between the samples
+  // (table_far_bound.h): no sample's distance below what it needs, so the measurement above
+  // answers for the geometry, the bound for the table.
+  const std::vector<float> table_need =
+      table_far_bound_over_D(e, kTableShareOfPromise * tolerance, needs.read_over_D);
+  for (std::size_t i = 0; i < table_need.size(); ++i)
+    if (table_need[i] > bound->d_far_over_D[i]) {
+      bound->d_far_over_D[i] = table_need[i];
+      ++bound->samples_raised_by_table;
+    }
   // A sample no pair reads: never asked; near field, should anything ask.
   for (int i = 0; i < n; ++i) {
     if (!(needs.read_over_D[i] > 0.0f))

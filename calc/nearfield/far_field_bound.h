@@ -50,6 +50,16 @@ inline constexpr int kLadderRungs = 19;  // 2 D x 1.2^18 = 53 D
 // and slope continuous, so no seam; inside the band the far field is already within tolerance).
 inline constexpr double kBlendWidth = 1.25;
 
+// Receivers dimmer than this fraction of the emitter's peak illuminance at the same distance
+// (I_max / d^2) are held to an absolute error of tolerance x that floor instead of a relative
+// one: the promise covers points brighter than 1 % of a surface's maximum (docs/accuracy.md), and a
+// direction at the dark edge of a beam would otherwise ask for the near field out to any
+// distance for a value nobody reads. 1e-3 leaves a factor 10 to the 1 % line.
+inline constexpr double kDimFloor = 1e-3;
+
+// A direction failing out to the ladder's end keeps the near field at every distance.
+inline constexpr float kNearEverywhere = 1e6f;  // x D
+
 // Direction grid of the map in the luminaire frame: gamma from the emitting axis (0 = straight
 // out of the opening), C the azimuth. 5 degrees in gamma and 7.5 in C put a sample on every
 // 5-degree gamma line and every C plane of 7.5, 15, 22.5, 45 or 90 degrees spacing, where tables
@@ -122,6 +132,8 @@ struct FarFieldBound {
   int fixed_samples_read = kGammaSamples * kCSamples;  // read for the fixed rule
   int samples_capped = 0;                              // of those, capped
   double capped_reach_over_D = 0.0;                    // their farthest receiver
+  // Read samples whose distance the table's bound (table_far_bound.h) raised above the measured.
+  int samples_raised_by_table = 0;
 
   // d_far(w) / D for a unit direction in the luminaire frame, bilinear between samples (so the
   // far weight is continuous across directions too).

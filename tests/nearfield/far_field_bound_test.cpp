@@ -158,7 +158,8 @@ TEST(FarFieldBound, SmoothPanelNeedsLittleNearField) {
 TEST(FarFieldBound, DemandMeasuresLessAndNeverWidensTheFarField) {
   // A map built for what a scene asks (MapDemand: the directions and distances of its
   // receivers) against the whole map, for the Mirel (sharp beam, C planes 15 degrees apart)
-  // tilted above a 6 x 4 m floor and beside a wall: at every receiver neither the far field's
+  // tilted above a 6 x 4 m floor, beside a wall and
+  // above a distant row: at every receiver neither the far field's
   // nor the fixed rule's weight is larger than the whole map's (a sample short of its reach
   // keeps the near field, the rung both maps are measured against), and it measures fewer
   // directions. How close the two are: printed, and held to the promise against the reference
@@ -182,6 +183,10 @@ TEST(FarFieldBound, DemandMeasuresLessAndNeverWidensTheFarField) {
     for (double y = 0.05; y < 4.0; y += 0.1) add(Vec3(x, y, 0.0));
   for (double x = 0.05; x < 6.0; x += 0.1)
     for (double z = 0.05; z < 2.8; z += 0.1) add(Vec3(x, 0.0, z));
+  // And a row of receivers far below: the table's bound (table_far_bound.h) asks up to 2.1e3 D
+  // at the steep edge of this sharp beam (a slope jump read against the dim side's intensity), so
+  // the row sits 10 km away for some to take the far field.
+  for (double x = -8000.0; x < 8000.0; x += 100.0) add(Vec3(x, 1.5, -10000.0));
   const auto whole = build_far_field_bound(e, Model::standard(), kStandardPromise);
   const auto part = build_far_field_bound(e, Model::standard(), kStandardPromise, &demand);
   EXPECT_TRUE(part->restricted);
