@@ -287,9 +287,7 @@ std::string scene_glb(const SceneGlbInput& in) {
     const bool values = s->E.size() == g.points.size() && in.results;
     gltf::Node node;
     node.name = g.name;
-    node.extras = {{"kind", g.kind == Kind::grid     ? "grid"
-                            : g.kind == Kind::points ? "points"
-                                                     : "observers"},
+    node.extras = {{"kind", geometry::to_string(g.kind)},
                    {"quantity", geometry::to_string(g.quantity)}};
     if (values) node.extras.update(stats_json(*s));
     if (s->UGR_max) node.extras["UGR_max"] = *s->UGR_max;

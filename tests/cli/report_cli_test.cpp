@@ -22,16 +22,16 @@ namespace {
 namespace fs = std::filesystem;
 
 using Outcome = luxgrid::test::CommandResult;
+using luxgrid::test::luxgrid;
 using luxgrid::test::quote;
 using luxgrid::test::scratch;
 using luxgrid::test::shell;
-Outcome luxgrid(const std::string& args) { return luxgrid::test::luxgrid(args); }
 void write(const fs::path& p, const std::string& text) { luxgrid::test::write_file(p, text); }
 std::string read(const fs::path& p) { return luxgrid::test::read_file(p); }
 
 // An isotropic 1000 cd source 3 m above the centre of a black 4 x 4 m room's floor (no reflected
 // light, so the values are I h / d^3 by hand), 1 m grid: 16 points.
-std::string project(const std::string& requirements, double intensity_cd = 1000) {
+std::string black_room_project(const std::string& requirements, double intensity_cd = 1000) {
   return R"({
   "format": "luxgrid-project/1", "name": "report test",
   "photometry": { "iso": { "builtin": "isotropic", "intensity_cd": )" +
@@ -46,7 +46,7 @@ std::string project(const std::string& requirements, double intensity_cd = 1000)
 
 TEST(ReportCli, ReportIsWrittenByDefaultAndSkippedOnRequest) {
   const fs::path dir = scratch("report");
-  write(dir / "p.json", project(""));
+  write(dir / "p.json", black_room_project(""));
   ASSERT_EQ(luxgrid("calc " + quote(dir / "p.json") + " -o " + quote(dir / "a")).code, 0);
   EXPECT_TRUE(fs::exists(dir / "a" / "report.html"));
   const Outcome r =
@@ -118,7 +118,7 @@ TEST(ReportCli, WallsAndCeilingsThroughTheBinary) {
 
   // A preset limit nothing computes (Ra of a builtin, UGR_L without observers) fails --check too.
   write(dir / "task.json",
-        project(R"(, "requirements": { "preset": "corridor", "Em": 1, "U0": 0.1 })"));
+        black_room_project(R"(, "requirements": { "preset": "corridor", "Em": 1, "U0": 0.1 })"));
   const Outcome task =
       luxgrid("calc " + quote(dir / "task.json") + " -o " + quote(dir / "task") + " --check");
   EXPECT_EQ(task.code, 3) << task.output;
@@ -153,7 +153,7 @@ TEST(ReportCli, WallsAndCeilingsThroughTheBinary) {
 
 TEST(ReportCli, ScaleMustBeMinBelowMax) {
   const fs::path dir = scratch("scale");
-  write(dir / "p.json", project(""));
+  write(dir / "p.json", black_room_project(""));
   const Outcome bad =
       luxgrid("calc " + quote(dir / "p.json") + " -o " + quote(dir / "o") + " --scale 500:100");
   EXPECT_EQ(bad.code, 2);
@@ -168,8 +168,8 @@ TEST(ReportCli, CheckExitsThreeWhenARequirementFails) {
   // The floor's Emin is at a corner: d^2 = 1.5^2 * 2 + 9 = 13.5, E = 1000 * 3 / 13.5^1.5 = 60.47
   // lx; its Emax at the four centre points: d^2 = 0.5 + 9, E = 3000 / 9.5^1.5 = 102.45 lx.
   const fs::path dir = scratch("check");
-  write(dir / "ok.json", project(R"(, "requirements": { "Emin": 60, "Emax": 103 })"));
-  write(dir / "fail.json", project(R"(, "requirements": { "Emin": 61 })"));
+  write(dir / "ok.json", black_room_project(R"(, "requirements": { "Emin": 60, "Emax": 103 })"));
+  write(dir / "fail.json", black_room_project(R"(, "requirements": { "Emin": 61 })"));
   const Outcome ok = luxgrid("calc " + quote(dir / "ok.json") + " --check");
   EXPECT_EQ(ok.code, 0) << ok.output;
   const Outcome fail = luxgrid("calc " + quote(dir / "fail.json") + " --check");
@@ -188,7 +188,7 @@ TEST(ReportCli, CheckExitsThreeWhenARequirementFails) {
 
 TEST(ReportCli, UnknownRequirementIsBadInputNamingTheKey) {
   const fs::path dir = scratch("unknown");
-  write(dir / "p.json", project(R"(, "requirements": { "Eavg": 500 })"));
+  write(dir / "p.json", black_room_project(R"(, "requirements": { "Eavg": 500 })"));
   const Outcome r = luxgrid("calc " + quote(dir / "p.json") + " --check");
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(
@@ -201,8 +201,8 @@ TEST(ReportCli, UnknownRequirementIsBadInputNamingTheKey) {
 
 TEST(ReportCli, DiffComparesAndGatesOnTolerance) {
   const fs::path dir = scratch("diff");
-  write(dir / "a.json", project(""));
-  write(dir / "b.json", project("", 1100));  // every point 10 % brighter
+  write(dir / "a.json", black_room_project(""));
+  write(dir / "b.json", black_room_project("", 1100));  // every point 10 % brighter
   ASSERT_EQ(luxgrid("calc " + quote(dir / "a.json")).code, 0);
   ASSERT_EQ(luxgrid("calc " + quote(dir / "b.json")).code, 0);
   const Outcome same = luxgrid("diff " + quote(dir / "a.out") + " " +
@@ -222,8 +222,8 @@ TEST(ReportCli, DiffComparesAndGatesOnTolerance) {
 
 TEST(ReportCli, DiffOfDifferentSurfacesIsBadInput) {
   const fs::path dir = scratch("diff_surfaces");
-  write(dir / "a.json", project(""));
-  std::string other = project("");
+  write(dir / "a.json", black_room_project(""));
+  std::string other = black_room_project("");
   other.replace(other.find("\"name\": \"floor\""), std::string("\"name\": \"floor\"").size(),
                 "\"name\": \"ground\"");
   write(dir / "b.json", other);
