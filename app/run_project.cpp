@@ -39,12 +39,20 @@ void apply_lighting_scene(project::Project& loaded, std::optional<calc::Lighting
                        "illuminance): docs/daylight.md");
     return;
   }
-  if (loaded.scene.settings.scene != calc::LightingScene::emergency) return;
-  try {
-    loaded.scene = calc::make_emergency_scene(loaded.scene);
-  } catch (const InputError& e) {
-    throw e.in_file(loaded.scene.project_file.filename().string());
+  if (loaded.scene.settings.scene == calc::LightingScene::emergency) {
+    try {
+      loaded.scene = calc::make_emergency_scene(loaded.scene);
+    } catch (const InputError& e) {
+      throw e.in_file(loaded.scene.project_file.filename().string());
+    }
   }
+  // An EN 17037 request is answered in the daylight scene only: said, not silently dropped.
+  if (loaded.scene.daylight && loaded.scene.daylight->en17037)
+    loaded.scene.warnings.push_back(
+        {SourceLocation(loaded.scene.project_file.filename().string(), 0, 0, "/daylight/en17037"),
+         "EN 17037 is assessed in the daylight scene only (settings.scene \"daylight\" or "
+         "--scene daylight); this run's scene is \"" +
+             std::string(calc::to_string(loaded.scene.settings.scene)) + "\": no EN 17037 table"});
 }
 
 std::vector<report::RequirementCheck> scene_checks(

@@ -157,4 +157,23 @@ TEST(En17037Cli, BadDaylightInputRefusedWithItsPlace) {
   }
 }
 
+// The request in a run of the normal scene (`--scene normal` over the classroom's settings): no
+// EN 17037 table, no checks, and a warning that says why rather than nothing.
+TEST(En17037Cli, RequestOutsideTheDaylightSceneIsWarnedAbout) {
+  const fs::path dir = scratch("en17037_normal_scene");
+  const fs::path project = classroom_with(dir, {{"median_external_diffuse_lx", 14000}});
+  const auto run = luxgrid("--threads 2 calc " + quote(project) + " -o " + quote(dir / "out") +
+                           " --scene normal --check --no-report");
+  EXPECT_EQ(run.code, 0) << run.output;
+  EXPECT_NE(run.output.find("EN 17037 is assessed in the daylight scene only"), std::string::npos)
+      << run.output;
+  EXPECT_EQ(run.output.find("level reached"), std::string::npos) << run.output;
+  const nlohmann::json results = nlohmann::json::parse(read_file(dir / "out" / "results.json"));
+  EXPECT_FALSE(results.contains("en17037"));
+  bool warned = false;
+  for (const auto& w : results.at("warnings"))
+    warned = warned || w.get<std::string>().find("/daylight/en17037") != std::string::npos;
+  EXPECT_TRUE(warned) << results.at("warnings").dump();
+}
+
 }  // namespace
