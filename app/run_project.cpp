@@ -46,6 +46,15 @@ void apply_lighting_scene(project::Project& loaded, std::optional<calc::Lighting
       throw e.in_file(loaded.scene.project_file.filename().string());
     }
   }
+  // A daylight project without luminaires run in the normal scene: every illuminance is 0 lx,
+  // said rather than printed as a result.
+  if (loaded.scene.settings.scene == calc::LightingScene::normal && loaded.scene.luminaires.empty())
+    loaded.scene.warnings.push_back(
+        {SourceLocation(loaded.scene.project_file.filename().string(), 0, 0, "/luminaires"),
+         "the normal scene has no luminaires: every illuminance is 0 lx" +
+             std::string(loaded.scene.daylight ? " (daylight is calculated in the daylight scene: "
+                                                 "settings.scene \"daylight\" or --scene daylight)"
+                                               : "")});
   // An EN 17037 request is answered in the daylight scene only: said, not silently dropped.
   if (loaded.scene.daylight && loaded.scene.daylight->en17037)
     loaded.scene.warnings.push_back(

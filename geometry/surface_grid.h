@@ -36,10 +36,11 @@ struct SurfaceGrid {
   double size_u = 0.0, size_v = 0.0;                 // extent of the gridded rectangle, m
   std::vector<Vec3> points;
   std::vector<Vec3> normals;
-  std::vector<bool> active;  // false for points left out (inside obstacles); same size as points
+  std::vector<bool> active;  // false for points left out (below); same size as points
   // Points left out (active = false), by reason; the grid keeps them so it stays nu x nv.
   size_t points_outside = 0;       // outside the (inset) polygon of a workplane/floor/ceiling
   size_t points_in_obstacles = 0;  // inside the footprint of an obstacle spanning the grid
+  size_t points_in_openings = 0;   // in a window or roof light of the face the grid covers
   Quantity quantity = Quantity::planar;
   // observers: the observer (index into the surface's list) each point belongs to.
   std::vector<size_t> observer;

@@ -1,8 +1,10 @@
 #include "project/project_file.h"
 
+#include <algorithm>
 #include <set>
 
 #include "calc/luminaire_tilt.h"
+#include "calc/points_in_openings.h"
 #include "geometry/prism_union.h"
 #include "project/json_reader.h"
 #include "project/project_limits.h"
@@ -122,6 +124,12 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
     record_emergency_surfaces(s, grids, scene.emergency_surfaces);
     s.report_unqueried();
     for (auto& grid : grids) {
+      calc::leave_out_points_in_openings(scene, grid);
+      if (grid.points_in_openings > 0 &&
+          std::none_of(grid.active.begin(), grid.active.end(), [](bool a) { return a; }))
+        scene.warnings.push_back({s.location(), "surface \"" + grid.name +
+                                                    "\": every point lies in an opening (no "
+                                                    "surface there): no results"});
       const auto name_v = s.at("name");
       if (!names.insert(grid.name).second)
         name_v.fail("a surface named \"" + grid.name + "\" already exists");

@@ -468,14 +468,18 @@ void write_html_report(const ReportInput& in, const TextSink& put) {
   // --- plan views -----------------------------------------------------------------------------
   if (scene && !scene->rooms.empty()) {
     h += "<h2>Plan view</h2>\n";
+    // A daylight site's north angle turns true north away from +y: the arrow shows it.
+    const double north_deg = scene->daylight ? scene->daylight->site.north_angle_deg : 0.0;
+    const std::string up = north_deg == 0.0 ? "north (+y) up" : "+y up, the arrow to true north";
     for (std::size_t index = 0; index < scene->rooms.size(); ++index) {
       const calc::Room& room = scene->rooms[index];
       std::vector<calc::DaylightOpening> openings;  // the room's
       for (const auto& o : scene->openings)
         if (o.room == index) openings.push_back(o);
       h += "<div class=\"room\"><h3>" + html_escape(room.name) + "</h3>" +
-           plan_view_svg(room, scene->luminaires, scene->surfaces, 640, openings) +
-           "<p class=\"caption\">Seen from above, to scale, north (+y) up. Yellow: the luminous "
+           plan_view_svg(room, scene->luminaires, scene->surfaces, 640, openings, north_deg) +
+           "<p class=\"caption\">Seen from above, to scale, " + up +
+           ". Yellow: the luminous "
            "opening of each "
            "luminaire at its real size, numbered as in the luminaire table; blue bar: its C0 "
            "direction; red line: "

@@ -22,7 +22,8 @@ constexpr double kHorizontalNormalZ = 0.7;
 
 std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Luminaire>& luminaires,
                           const std::vector<geometry::SurfaceGrid>& surfaces, int width_px,
-                          const std::vector<calc::DaylightOpening>& openings) {
+                          const std::vector<calc::DaylightOpening>& openings,
+                          double north_angle_deg) {
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
   for (const auto& p : room.outline) {
     x0 = std::min(x0, p.x);
@@ -246,13 +247,21 @@ std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Lumina
                   sx(p.x), top_px - 3, number);
     svg += buf;
   }
-  // North arrow (top right) and a scale bar of a round length (bottom left).
+  // North arrow (top right) and a scale bar of a round length (bottom left). The arrow turns
+  // about its middle to true north: clockwise on the page, as the north angle is in the plan
+  // (SVG's y runs down, so its positive rotation is clockwise too).
   const double nx = width_px - 20.0, ny = 10.0;
+  std::string turn;
+  if (north_angle_deg != 0.0) {
+    std::snprintf(buf, sizeof buf, " transform=\"rotate(%.1f %.1f %.1f)\"", north_angle_deg, nx,
+                  ny + 15);
+    turn = buf;
+  }
   std::snprintf(
       buf, sizeof buf,
-      "<g class=\"north\"><polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"#222\"/>"
+      "<g class=\"north\"%s><polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"#222\"/>"
       "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-weight=\"bold\">N</text></g>",
-      nx, ny, nx - 6, ny + 18, nx + 6, ny + 18, nx, ny + 30);
+      turn.c_str(), nx, ny, nx - 6, ny + 18, nx + 6, ny + 18, nx, ny + 30);
   svg += buf;
   double bar_m = nice_ceil(w_m / 5.0);
   if (bar_m * scale > width_px / 2.0) bar_m /= 2.0;

@@ -1,7 +1,7 @@
 #pragma once
 // The plan view of a room seen from above, as an inline SVG: outline, obstacles (footprints),
-// luminaires with their aiming, the extents of the calculation grids, a north arrow (+y is north,
-// the project's convention) and a scale bar.
+// luminaires with their aiming, the extents of the calculation grids, a north arrow (to true north:
+// +y, the project's convention, unless a daylight site's north angle turns it) and a scale bar.
 #include <string>
 #include <vector>
 
@@ -13,9 +13,11 @@ namespace luxgrid::report {
 // bounding box) and every grid surface that lies inside its bounding box; the room's obstacles
 // as grey footprints (class "obstacle"); `openings`, the room's daylight openings (class
 // "daylight-opening"): a window as a blue band over the part of its wall it takes, a roof light
-// (or an opening in the floor) as its outline, dashed.
+// (or an opening in the floor) as its outline, dashed. `north_angle_deg`: true north, clockwise
+// from +y (a daylight site's north angle, docs/daylight.md); the arrow points there.
 std::string plan_view_svg(const calc::Room& room, const std::vector<calc::Luminaire>& luminaires,
                           const std::vector<geometry::SurfaceGrid>& surfaces, int width_px = 640,
-                          const std::vector<calc::DaylightOpening>& openings = {});
+                          const std::vector<calc::DaylightOpening>& openings = {},
+                          double north_angle_deg = 0.0);
 
 }  // namespace luxgrid::report

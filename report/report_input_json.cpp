@@ -319,6 +319,7 @@ calc::SurfaceResult read_surface(const json& s, const json& frame) {
   }
   g.quantity = read_quantity(s.at("quantity"));
   read_fields(s, "points_outside", g.points_outside, "points_in_obstacles", g.points_in_obstacles);
+  if (s.contains("points_in_openings")) s.at("points_in_openings").get_to(g.points_in_openings);
   for (const json& p : s.at("points")) g.points.push_back(read_vec3(p));
   for (const json& n : s.at("normals")) g.normals.push_back(read_vec3(n));
   for (const json& a : s.at("active")) g.active.push_back(a.get<bool>());

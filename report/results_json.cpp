@@ -75,6 +75,8 @@ nlohmann::json surface_json(const calc::SurfaceResult& r, size_t index, bool arr
   s["quantity"] = geometry::to_string(g.quantity);
   s["points_outside"] = g.points_outside;
   s["points_in_obstacles"] = g.points_in_obstacles;
+  // Only a grid over a face with openings has points in them: the key is there when it counts.
+  if (g.points_in_openings > 0) s["points_in_openings"] = g.points_in_openings;
   if (arrays) {
     json points = json::array(), normals = json::array();
     for (size_t i = 0; i < g.points.size(); ++i) {

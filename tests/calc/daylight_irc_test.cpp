@@ -140,6 +140,8 @@ TEST(DaylightIrc, StandardHoldsItsPromiseAgainstHigh) {
     const auto& b = fine.surfaces[s];
     const double max_df = *std::max_element(b.DF.begin(), b.DF.end());
     for (size_t i = 0; i < b.DF.size(); ++i) {
+      // Points in the window are left out (calc/points_in_openings.h): no surface there.
+      if (!b.grid.active.empty() && !b.grid.active[i]) continue;
       const double e = std::abs(a.DF[i] - b.DF[i]) / std::max(b.DF[i], 0.01 * max_df);
       worst = std::max(worst, e);
       EXPECT_GT(b.IRC[i], 0.0);

@@ -174,6 +174,15 @@ TEST(En17037Cli, RequestOutsideTheDaylightSceneIsWarnedAbout) {
   for (const auto& w : results.at("warnings"))
     warned = warned || w.get<std::string>().find("/daylight/en17037") != std::string::npos;
   EXPECT_TRUE(warned) << results.at("warnings").dump();
+  // The classroom has no luminaires: its normal scene's zero illuminance is said, with the scene
+  // that calculates its daylight.
+  bool dark = false;
+  for (const auto& w : results.at("warnings"))
+    dark = dark || w.get<std::string>().find(
+                       "/luminaires: the normal scene has no luminaires: "
+                       "every illuminance is 0 lx (daylight is calculated "
+                       "in the daylight scene") != std::string::npos;
+  EXPECT_TRUE(dark) << results.at("warnings").dump();
 }
 
 }  // namespace

@@ -57,5 +57,21 @@ TEST(PlanView, NoObstacleNoObstacleShape) {
   EXPECT_TRUE(obstacle_points(plan_view_svg(room, {}, {}, 640)).empty());
 }
 
+// The north arrow points to true north: up (+y) by default, turned clockwise about its middle by
+// a daylight site's north angle (SVG's y runs down, so a positive rotate() is clockwise).
+TEST(PlanView, NorthArrowTurnsByTheNorthAngle) {
+  calc::Room room;
+  room.name = "r";
+  room.outline = {{0, 0}, {10, 0}, {10, 5}, {0, 5}};
+  room.height = 3.0;
+  const std::string up = plan_view_svg(room, {}, {}, 640);
+  EXPECT_NE(up.find("<g class=\"north\"><polygon"), std::string::npos);
+  const std::string turned = plan_view_svg(room, {}, {}, 640, {}, 30.0);
+  // The arrow's tip is at (620, 10), its middle 15 px below.
+  EXPECT_NE(turned.find("<g class=\"north\" transform=\"rotate(30.0 620.0 25.0)\"><polygon"),
+            std::string::npos)
+      << turned;
+}
+
 }  // namespace
 }  // namespace luxgrid::report
