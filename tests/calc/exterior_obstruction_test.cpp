@@ -86,6 +86,11 @@ TEST(ExteriorObstructionDaylight, SlabOverRoofOpeningHidesAllSky) {
         obstructed_project(sky, kObstructedRoof,
                            R"([{"box": {"min": [1,1,3], "max": [3,3,3.3]}, "reflectance": 0.5}])");
     const Results r = run_obstructed(text);
+    // The plan says the obstruction is there, and no exact shortcut was taken.
+    ASSERT_TRUE(r.plan.daylight);
+    EXPECT_EQ(r.plan.daylight->exterior_obstructions, 1u);
+    EXPECT_FALSE(r.plan.daylight->sky_exact);
+    EXPECT_FALSE(r.plan.daylight->ground_exact);
     const Results open = run_obstructed(obstructed_project("\"uniform\"", kObstructedRoof, "[]"));
     for (int i = 0; i < 2; ++i) {
       EXPECT_EQ(r.surfaces[0].SC[i], 0.0) << sky;
