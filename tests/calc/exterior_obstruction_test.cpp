@@ -102,6 +102,29 @@ TEST(ExteriorObstructionDaylight, SlabOverRoofOpeningHidesAllSky) {
   }
 }
 
+// The obstruction's light is the first bounce's too: under the uniform sky an open roof lets in a
+// uniform luminance E_h / pi, the slab over it a uniform rho rho_g E_h / pi, so in a room that
+// reflects, every point's internally reflected component is rho rho_g = 0.15 times the open
+// roof's (the interreflection is linear in the light let in; the first bounce of either is exact,
+// a constant over each triangle). Tolerance 1e-6: the solve's convergence.
+TEST(ExteriorObstructionDaylight, SlabLightEntersTheInternallyReflectedComponent) {
+  std::string slab =
+      obstructed_project("\"uniform\"", kObstructedRoof,
+                         R"([{"box": {"min": [1,1,3], "max": [3,3,3.3]}, "reflectance": 0.5}])");
+  std::string open = obstructed_project("\"uniform\"", kObstructedRoof, "[]");
+  for (std::string* text : {&slab, &open}) {
+    const std::string black = R"("reflectance": {"floor": 0, "walls": 0, "ceiling": 0})";
+    text->replace(text->find(black), black.size(),
+                  R"("reflectance": {"floor": 0.2, "walls": 0.5, "ceiling": 0.7})");
+  }
+  const Results with = run_obstructed(slab), without = run_obstructed(open);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_GT(without.surfaces[0].IRC[i], 0.1);
+    EXPECT_NEAR(with.surfaces[0].IRC[i], 0.15 * without.surfaces[0].IRC[i],
+                1e-6 * without.surfaces[0].IRC[i]);
+  }
+}
+
 // The sky a box hides from a point through the facade opening, by brute force: the midpoint rule
 // on nx x nz cells over the opening, each node's ray tested against the box by where it crosses
 // the plane of the face it must enter through (a fin east of the opening, x in [3, 3.3], y in
