@@ -9,6 +9,7 @@
 #include "calc/daylight/en17037.h"
 #include "calc/daylight/sky_luminance.h"
 #include "calc/daylight/sun_direction.h"
+#include "calc/exterior_obstructions.h"
 #include "util/robust_math.h"
 
 namespace luxgrid::calc {
@@ -42,6 +43,9 @@ struct DaylightInputs {
   daylight::LocalTime local_time;            // when sun_from_site
   double diffuse_horizontal_lx = 10000.0;    // E_h of the unobstructed sky
   double ground_reflectance = 0.2;           // rho_g: the ground's luminance rho_g E_h / pi
+  // Boxes outside every room (daylight.obstructions): they hide the sky and the ground behind
+  // them and are seen instead (calc/exterior_obstructions.h).
+  std::vector<ExteriorObstruction> obstructions;
   // EN 17037 daylight provision asked for (daylight.en17037): assessed on the daylight scene's
   // results (report/en17037_checks).
   std::optional<daylight::En17037Request> en17037;

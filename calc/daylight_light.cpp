@@ -5,6 +5,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "calc/daylight/aperture_split.h"
+#include "calc/daylight/plane_illuminance.h"
 #include "calc/daylight/sky_normalisation.h"
 #include "calc/opening_placement.h"
 #include "calc/scene_visibility.h"
@@ -72,8 +74,18 @@ DaylightLight::DaylightLight(const Scene& scene, const geometry::Visibility* vis
   // A general sky's start subdivision is finer: its brightening about the sun is narrow.
   max_start_edge_rad_ =
       inputs.sky.kind == daylight::SkyKind::cie_general ? kMaxStartEdge_rad : kSlowSkyStartEdge_rad;
-  ground_exact_ = glazed == 0 && !visibility;
+  // An exterior obstruction makes the integrand vary over the opening: no exact shortcut.
+  ground_exact_ = glazed == 0 && !visibility && inputs.obstructions.empty();
   sky_exact_ = ground_exact_ && inputs.sky.kind == daylight::SkyKind::uniform;
+  for (const ExteriorObstruction& b : inputs.obstructions) {
+    std::array<double, kBoxFaces> luminance{};
+    for (int face = 0; face < kBoxFaces; ++face)
+      luminance[face] = b.reflectance / kPi *
+                        daylight::plane_illuminance_lx(
+                            inputs.sky, 1.0 / sky_integral_.value, ground_reflectance_ / kPi,
+                            box_face_normal(face), [](double) { return 1.0; });
+    face_luminance_per_eh_.push_back(luminance);
+  }
 }
 
 OpeningLightParts DaylightLight::at(const Vec3& point, const Vec3& normal) const {
@@ -101,6 +113,8 @@ void DaylightLight::add_through(const PreparedOpening& o, const Vec3& point, con
       if (t > 0.0 && geometry::blocked(visibility_, point, node)) return 0.0;
       return t;
     };
+    if (!face_luminance_per_eh_.empty())
+      return add_obstructed(o, point, normal, transmitted, parts);
     const std::vector<Triangle3> sky_part =
         daylight::clip_to_receiver(o.triangles, point, normal, true);
     const std::vector<Triangle3> ground_part =
@@ -129,8 +143,69 @@ void DaylightLight::add_through(const PreparedOpening& o, const Vec3& point, con
   }
 }
 
+void DaylightLight::add_obstructed(const PreparedOpening& o, const Vec3& point, const Vec3& normal,
+                                   const Transmitted& transmitted, OpeningLightParts& parts) const {
+  const DaylightInputs& inputs = *scene_.daylight;
+  std::vector<std::array<Vec3, 2>> edges;
+  for (const ExteriorObstruction& b : inputs.obstructions)
+    for (const auto& e : edges_facing(b, point)) edges.push_back(e);
+  const Vec3 on_plane = o.triangles.front()[0];
+  const double tolerance = 0.5 * relative_tolerance_;
+  for (const bool above : {true, false}) {
+    const std::vector<Triangle3> pieces =
+        daylight::split_along_edges(daylight::clip_to_receiver(o.triangles, point, normal, above),
+                                    point, edges, on_plane, -o.inward_normal);
+    // Each piece sees one thing throughout: what its centroid's ray meets beyond the opening.
+    std::vector<Triangle3> open;
+    std::vector<std::pair<std::size_t, std::vector<Triangle3>>> faces;  // key obstruction x 6
+    for (const Triangle3& t : pieces) {
+      const Vec3 c = (t[0] + t[1] + t[2]) / 3.0;
+      const double length = glm::length(c - point);
+      const auto hit =
+          length > 0.0 ? first_exterior_obstruction(inputs.obstructions, c, (c - point) / length)
+                       : std::nullopt;
+      if (!hit) {
+        open.push_back(t);
+        continue;
+      }
+      const std::size_t key = hit->obstruction * kBoxFaces + hit->face;
+      auto it =
+          std::find_if(faces.begin(), faces.end(), [&](const auto& f) { return f.first == key; });
+      if (it == faces.end()) it = faces.insert(faces.end(), {key, {}});
+      it->second.push_back(t);
+    }
+    if (!open.empty()) {
+      const auto r =
+          above
+              ? daylight::integrate_aperture(
+                    open, point, normal,
+                    [&](const Vec3& node, const Vec3& dir) {
+                      return daylight::relative_luminance(inputs.sky, dir) * transmitted(node, dir);
+                    },
+                    tolerance, kAbsoluteToleranceOfEh * sky_integral_.value,
+                    kMaxTrianglesPerOpening, max_start_edge_rad_)
+              : daylight::integrate_aperture(open, point, normal, transmitted, tolerance,
+                                             kAbsoluteToleranceOfEh * kPi, kMaxTrianglesPerOpening);
+      (above ? parts.sky : parts.ground) += r.value;
+      (above ? parts.sky_error : parts.ground_error) += r.error_estimate;
+      parts.evaluations += r.evaluations;
+    }
+    for (const auto& [key, triangles] : faces) {
+      const double luminance = face_luminance_per_eh_[key / kBoxFaces][key % kBoxFaces];
+      if (!(luminance > 0.0)) continue;
+      // A face's luminance is uniform: what varies over it is the glazing and the visibility.
+      const auto r = daylight::integrate_aperture(triangles, point, normal, transmitted, tolerance,
+                                                  kAbsoluteToleranceOfEh / luminance,
+                                                  kMaxTrianglesPerOpening, max_start_edge_rad_);
+      parts.obstruction += luminance * r.value;
+      parts.obstruction_error += luminance * r.error_estimate;
+      parts.evaluations += r.evaluations;
+    }
+  }
+}
+
 double DaylightLight::illuminance_lx(const OpeningLightParts& parts) const {
-  return (sky_percent(parts.sky) + ground_percent(parts.ground)) * diffuse_horizontal_lx_ / 100.0;
+  return (sky_percent(parts.sky) + external_percent(parts)) * diffuse_horizontal_lx_ / 100.0;
 }
 
 std::vector<double> DaylightLight::patch_flux_lm(const indirect::PatchMesh& mesh) const {
@@ -168,29 +243,10 @@ std::vector<double> DaylightLight::patch_flux_lm(const indirect::PatchMesh& mesh
 double DaylightLight::entering_flux_lm(std::size_t k) const {
   const PreparedOpening& o = openings_.at(k);
   const DaylightInputs& inputs = *scene_.daylight;
-  // Directions d towards the outside, at angle theta from the outward normal and phi about it,
-  // phi measured from e1 (horizontal) towards e2 (up the opening's plane, where it has an up):
-  // the horizon (d.z = 0) lies at phi = 0 and pi, where the integrand jumps from sky to ground.
-  const Vec3 out = -o.inward_normal;
-  Vec3 e2 = Vec3{0, 0, 1} - out.z * out;
-  e2 = glm::length(e2) > 1e-12 ? glm::normalize(e2) : Vec3{0, 1, 0};
-  const Vec3 e1 = glm::cross(e2, out);
-  const double sky_lx_per_relative = diffuse_horizontal_lx_ / sky_integral_.value;
-  const double ground_lx = ground_reflectance_ * diffuse_horizontal_lx_ / kPi;
-  const auto over_theta = [&](double phi) {
-    const Vec3 across = std::cos(phi) * e1 + std::sin(phi) * e2;
-    const auto integrand = [&](double theta) {
-      const double c = std::cos(theta), sn = std::sin(theta);
-      const Vec3 d = c * out + sn * across;
-      const double luminance =
-          d.z > 0.0 ? sky_lx_per_relative * daylight::relative_luminance(inputs.sky, d) : ground_lx;
-      const double t = o.factor * (o.glass ? o.glass->transmittance(c) : 1.0);
-      return luminance * t * c * sn;
-    };
-    return daylight::integrate_adaptive(integrand, 0.0, kPi / 2.0, 1e-8, 0.0).value;
-  };
-  const double transmitted_lx =
-      daylight::integrate_adaptive(over_theta, 0.0, kTwoPi, 1e-7, 0.0, {kPi}).value;
+  const double transmitted_lx = daylight::plane_illuminance_lx(
+      inputs.sky, diffuse_horizontal_lx_ / sky_integral_.value,
+      ground_reflectance_ * diffuse_horizontal_lx_ / kPi, -o.inward_normal,
+      [&o](double c) { return o.factor * (o.glass ? o.glass->transmittance(c) : 1.0); });
   return o.area_m2 * transmitted_lx;
 }
 

@@ -11,19 +11,22 @@
 #include "calc/daylight/aperture_integral.h"
 #include "calc/daylight/clear_glass.h"
 #include "calc/daylight/gauss_kronrod.h"
+#include "calc/exterior_obstructions.h"
 #include "calc/indirect/patches.h"
 #include "calc/scene.h"
 #include "geometry/visibility.h"
 
 namespace luxgrid::calc {
 
-// The two integrals at one point: sky = int (L / L_z) T cos theta d omega over the openings'
-// parts above the point's horizontal plane (sr), ground = int T cos theta d omega over the parts
-// below (sr), T the glazing, frame and maintenance factors and the visibility; their error
-// estimates and the integrand's evaluations.
+// The integrals at one point: sky = int (L / L_z) T cos theta d omega over the openings' parts
+// above the point's horizontal plane (sr), ground = int T cos theta d omega over the parts below
+// (sr), obstruction = int (L_f / E_h) T cos theta d omega over the parts where an exterior
+// obstruction's face of luminance L_f is seen instead of the sky or the ground (no unit; 0
+// without obstructions), T the glazing, frame and maintenance factors and the visibility; their
+// error estimates and the integrand's evaluations.
 struct OpeningLightParts {
-  double sky = 0.0, ground = 0.0;
-  double sky_error = 0.0, ground_error = 0.0;
+  double sky = 0.0, ground = 0.0, obstruction = 0.0;
+  double sky_error = 0.0, ground_error = 0.0, obstruction_error = 0.0;
   std::size_t evaluations = 0;
 };
 
@@ -39,6 +42,20 @@ class DaylightLight {
   double sky_percent(double sky) const { return sky * (100.0 / sky_integral_.value); }
   double ground_percent(double ground) const {
     return ground * (100.0 * ground_reflectance_ / kPi);
+  }
+  // The externally reflected component ERC (%): the ground's and the obstructions' light, and
+  // the same for their error estimates.
+  double external_percent(const OpeningLightParts& parts) const {
+    return ground_percent(parts.ground) + 100.0 * parts.obstruction;
+  }
+  double external_error_percent(const OpeningLightParts& parts) const {
+    return ground_percent(parts.ground_error) + 100.0 * parts.obstruction_error;
+  }
+  // The luminance of exterior obstruction k's face (exterior_obstructions.h numbering) over E_h
+  // (1 / sr): rho / pi times the illuminance on it from the unobstructed sky and ground over its
+  // hemisphere (docs/daylight.md, "Exterior obstructions").
+  double face_luminance_per_eh(std::size_t k, int face) const {
+    return face_luminance_per_eh_.at(k)[face];
   }
   // Illuminance under the given sky (lx): (SC + ERC) x E_h / 100.
   double illuminance_lx(const OpeningLightParts& parts) const;
@@ -82,12 +99,19 @@ class DaylightLight {
   // Adds the light through `o` at `point` to `parts`.
   void add_through(const PreparedOpening& o, const Vec3& point, const Vec3& normal,
                    OpeningLightParts& parts) const;
+  using Transmitted = std::function<double(const Vec3&, const Vec3&)>;
+  // The same where exterior obstructions exist: each part (sky, ground) of the opening cut along
+  // the obstructions' edges as seen from the point (daylight/aperture_split.h), each piece
+  // integrated as sky, ground or the face it sees.
+  void add_obstructed(const PreparedOpening& o, const Vec3& point, const Vec3& normal,
+                      const Transmitted& transmitted, OpeningLightParts& parts) const;
   const Scene& scene_;
   const geometry::Visibility* visibility_;
   std::vector<PreparedOpening> openings_;
   daylight::QuadratureResult sky_integral_;
   double relative_tolerance_ = 0.0, ground_reflectance_ = 0.0, diffuse_horizontal_lx_ = 0.0;
   bool sky_exact_ = false, ground_exact_ = false;
+  std::vector<std::array<double, kBoxFaces>> face_luminance_per_eh_;  // per exterior obstruction
   double max_start_edge_rad_ = kPi;  // aperture_integral.h: the sky's start subdivision
 };
 

@@ -20,6 +20,11 @@ struct DaylightPlan {
   double sky_integral_sr = 0.0;
   double sky_integral_error_sr = 0.0;
   std::size_t openings = 0, glazed_openings = 0;
+  // Exterior obstructions (daylight.obstructions): each hides the sky and the ground behind it
+  // and is seen instead, its faces' luminance rho / pi times the illuminance on them from the
+  // unobstructed sky and ground, in the externally reflected component; the views through the
+  // openings are cut along their edges and integrated adaptively (docs/daylight.md).
+  std::size_t exterior_obstructions = 0;
   // The sky and externally reflected components: exact (Lambert's formula: an unglazed opening,
   // nothing inside the room that can hide it, the uniform sky for the sky component) or adaptive
   // (calc/daylight/aperture_integral) to `relative_tolerance` of each point's value.

@@ -72,6 +72,7 @@ Results run_daylight_scene(const Scene& scene, const Progress& progress) {
   dp.sky_integral_sr = norm.value, dp.sky_integral_error_sr = norm.error_estimate;
   dp.openings = scene.openings.size();
   for (const auto& o : scene.openings) dp.glazed_openings += o.glazing_transmittance.has_value();
+  dp.exterior_obstructions = inputs.obstructions.size();
   dp.ground_exact = light.ground_exact();
   dp.sky_exact = light.sky_exact();
   dp.luminaires_left_out = scene.luminaires.size();
@@ -104,9 +105,9 @@ Results run_daylight_scene(const Scene& scene, const Progress& progress) {
       }
       const OpeningLightParts p = light.at(g.points[i], g.normals[i]);
       r.SC[i] = light.sky_percent(p.sky);
-      r.ERC[i] = light.ground_percent(p.ground);
+      r.ERC[i] = light.external_percent(p);
       sky_error[i] = light.sky_percent(p.sky_error);
-      ground_error[i] = light.ground_percent(p.ground_error);
+      ground_error[i] = light.external_error_percent(p);
       evaluations.fetch_add(p.evaluations, std::memory_order_relaxed);
     });
     std::vector<double> error_lx(n, 0.0);

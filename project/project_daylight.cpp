@@ -5,6 +5,7 @@
 
 #include "calc/daylight/clear_glass.h"
 #include "calc/opening_placement.h"
+#include "geometry/polygon.h"
 #include "geometry/room.h"
 #include "project/project_parts.h"
 
@@ -184,6 +185,38 @@ void resolve_en17037_planes(const JsonValue& en17037, const JsonValue& surfaces,
                " m: its EN 17037 fractions are not the standard's"});
     }
   }
+}
+
+std::vector<ExteriorObstruction> parse_obstructions(const JsonValue& list, const Scene& scene) {
+  check_count(list, kMaxExteriorObstructions, "exterior obstructions");
+  std::vector<ExteriorObstruction> out;
+  for (const auto& o : list.items()) {
+    o.expect_object();
+    ExteriorObstruction b;
+    b.name = o.has("name") ? o.at("name").as_string() : "obstruction " + std::to_string(out.size());
+    const auto box = o.at("box");
+    box.expect_object();
+    b.min = point3(box.at("min")), b.max = point3(box.at("max"));
+    box.report_unqueried();
+    if (!(b.min.x < b.max.x && b.min.y < b.max.y && b.min.z < b.max.z))
+      box.fail("exterior obstruction \"" + b.name +
+               "\": expected min < max in x, y and z (a box of positive volume)");
+    b.reflectance = o.at("reflectance").as_number_in(0.0, 1.0);
+    // Outside every room: touching a room's outside face is allowed (an overhang sits on the
+    // facade), sharing volume is not (it would be inside the room, where obstacles belong).
+    const geometry::Polygon2 footprint{
+        {b.min.x, b.min.y}, {b.max.x, b.min.y}, {b.max.x, b.max.y}, {b.min.x, b.max.y}};
+    for (const Room& room : scene.rooms) {
+      if (b.min.z < room.floor_z + room.height && b.max.z > room.floor_z &&
+          geometry::polygons_overlap(footprint, room.outline))
+        box.fail("exterior obstruction \"" + b.name + "\" reaches into room \"" + room.name +
+                 "\" (an obstruction lies outside every room; inside one, give it as an obstacle "
+                 "of the room)");
+    }
+    o.report_unqueried();
+    out.push_back(std::move(b));
+  }
+  return out;
 }
 
 void parse_openings(const JsonValue& openings, Scene& scene) {

@@ -91,6 +91,8 @@ Project parse_project(const nlohmann::json& doc, const std::string& label,
   if (auto o = root.find("openings")) parse_openings(*o, scene);
   if (auto d = root.find("daylight")) {
     scene.daylight = parse_daylight(*d);
+    if (auto o = d->find("obstructions"))
+      scene.daylight->obstructions = parse_obstructions(*o, scene);
     d->report_unqueried();
   }
   if (scene.settings.scene == LightingScene::daylight && !scene.daylight)

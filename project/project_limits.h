@@ -96,5 +96,8 @@ inline constexpr double kMinViewHorizontalPart = 1e-3;
 // and each point's integration over openings bounded.
 inline constexpr std::size_t kMaxOpenings = 1000;
 inline constexpr std::size_t kMaxOpeningCorners = 100;
+// Exterior obstructions (daylight.obstructions): every point's view through every opening is
+// cut along their edges, so their number multiplies each point's work.
+inline constexpr std::size_t kMaxExteriorObstructions = 1000;
 
 }  // namespace luxgrid::project

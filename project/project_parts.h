@@ -69,6 +69,9 @@ auto at_place(const JsonValue& where, F&& f) -> decltype(f()) {
 // openings and daylight (project_daylight.cpp): after the rooms, into `scene`.
 void parse_openings(const JsonValue& openings, calc::Scene& scene);
 calc::DaylightInputs parse_daylight(const JsonValue& d);
+// daylight.obstructions (`list`): boxes outside every room of `scene` (docs/project-format.md).
+std::vector<calc::ExteriorObstruction> parse_obstructions(const JsonValue& list,
+                                                          const calc::Scene& scene);
 // daylight.en17037's reference planes (`en17037`), once the surfaces are read: each a workplane
 // surface (every workplane when none is named), top-lit when all its room's openings are in the
 // ceiling; a warning for a plane not at EN 17037's height and border.

@@ -61,13 +61,22 @@ std::vector<std::string> daylight_notes(const calc::Plan& plan) {
                        format_double("%.2g", error_percent) + " % of E_h";
   };
   notes.push_back("daylight: sky component " + method(d.sky_exact, d.sky_error_percent));
-  notes.push_back("daylight: externally reflected component (ground) " +
-                  method(d.ground_exact, d.ground_error_percent));
+  notes.push_back("daylight: externally reflected component (ground" +
+                  std::string(d.exterior_obstructions > 0 ? " and exterior obstructions" : "") +
+                  ") " + method(d.ground_exact, d.ground_error_percent));
+  if (d.exterior_obstructions > 0)
+    notes.push_back(
+        "daylight: " + std::to_string(d.exterior_obstructions) +
+        " exterior obstructions hide the sky and the ground behind them; each face is seen "
+        "instead with the luminance rho / pi x the illuminance on it from the unobstructed sky "
+        "and ground (uniform over the face; the building, the other obstructions and "
+        "reflections between them neglected), counted in the externally reflected component; "
+        "the views through the openings are cut along the obstructions' edges");
   if (d.internally_reflected)
     notes.push_back(
         "daylight: internally reflected component: the light entering through the openings (" +
-        lm_text(d.flux_entering_lm) + ") lands on the rooms' surfaces (" +
-        lm_text(d.flux_on_surfaces_lm) +
+        lm_text(d.flux_entering_lm) + (d.exterior_obstructions > 0 ? " as if unobstructed" : "") +
+        ") lands on the rooms' surfaces (" + lm_text(d.flux_on_surfaces_lm) +
         ", each patch's share integrated by the sky and ground components' own integration) "
         "and is carried between them by the reflected light's interreflection, the openings "
         "holes in its mesh; " +

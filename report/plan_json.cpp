@@ -139,15 +139,15 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(VisibilityDecision, on, no_rooms, obstacles, 
 }  // namespace luxgrid::calc
 
 namespace luxgrid::calc {
-// The daylight scene's plan (calc/daylight_plan.h): every field by its name.
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DaylightPlan, sky, diffuse_horizontal_lx, ground_reflectance,
-                                   has_sun, sun_altitude_deg, sun_azimuth_deg, sun_from_site,
-                                   sky_integral_sr, sky_integral_error_sr, openings,
-                                   glazed_openings, sky_exact, ground_exact, relative_tolerance,
-                                   sky_error_percent, ground_error_percent, evaluations,
-                                   points_outside_rooms, internally_reflected, reflecting_surfaces,
-                                   indirect_off, flux_entering_lm, flux_on_surfaces_lm,
-                                   flux_escaping_lm, luminaires_left_out)
+// The daylight scene's plan (calc/daylight_plan.h): every field by its name (a field a results.json
+// written before it existed reads as its default).
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(
+    DaylightPlan, sky, diffuse_horizontal_lx, ground_reflectance, has_sun, sun_altitude_deg,
+    sun_azimuth_deg, sun_from_site, sky_integral_sr, sky_integral_error_sr, openings,
+    glazed_openings, exterior_obstructions, sky_exact, ground_exact, relative_tolerance,
+    sky_error_percent, ground_error_percent, evaluations, points_outside_rooms,
+    internally_reflected, reflecting_surfaces, indirect_off, flux_entering_lm, flux_on_surfaces_lm,
+    flux_escaping_lm, luminaires_left_out)
 }  // namespace luxgrid::calc
 
 namespace luxgrid::report {
