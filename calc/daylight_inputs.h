@@ -41,8 +41,11 @@ struct DaylightInputs {
   daylight::Site site;                       // north angle; latitude etc. when the sun is computed
   bool sun_from_site = false;                // the sun was computed from site and local time
   daylight::LocalTime local_time;            // when sun_from_site
-  double diffuse_horizontal_lx = 10000.0;    // E_h of the unobstructed sky
-  double ground_reflectance = 0.2;           // rho_g: the ground's luminance rho_g E_h / pi
+  // Direct sunlight through the openings (daylight.sun.direct_normal_lx): the sun's direct
+  // normal illuminance, lx (calc/daylight_sun.h); none: no direct sun, only the sky.
+  std::optional<double> direct_normal_lx;
+  double diffuse_horizontal_lx = 10000.0;  // E_h of the unobstructed sky
+  double ground_reflectance = 0.2;         // rho_g: the ground's luminance rho_g E_h / pi
   // Boxes outside every room (daylight.obstructions): they hide the sky and the ground behind
   // them and are seen instead (calc/exterior_obstructions.h).
   std::vector<ExteriorObstruction> obstructions;

@@ -46,6 +46,17 @@ struct DaylightPlan {
   // reflected light leaving through the openings. What the surfaces absorb is the rest.
   double flux_entering_lm = 0.0, flux_on_surfaces_lm = 0.0, flux_escaping_lm = 0.0;
   std::size_t luminaires_left_out = 0;  // the daylight scene lights nothing electric
+  // Direct sunlight (daylight.sun.direct_normal_lx; calc/daylight_sun.h), no part of DF: its
+  // direct normal illuminance (lx), the shadow samples per side of each sunlit patch part (0:
+  // no occlusion test, the sunlit areas exact), the flux entering through the openings, and
+  // when it is reflected (as the sky's: sun_reflected) its own run's patches, the part landing
+  // on the surfaces straight away and the reflected part leaving through the openings (lm).
+  bool direct_sun = false, sun_reflected = false;
+  double direct_normal_lx = 0.0;
+  int sun_shadow_samples = 0;
+  double sun_flux_entering_lm = 0.0, sun_flux_on_surfaces_lm = 0.0, sun_flux_escaping_lm = 0.0;
+  std::size_t sun_patches = 0;
+  double sun_patch_size_m = 0.0;
 };
 
 }  // namespace luxgrid::calc

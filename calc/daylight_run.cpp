@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include "calc/daylight_light.h"
+#include "calc/daylight_sun.h"
 #include "calc/indirect/indirect.h"
 #include "calc/pipeline.h"
 #include "calc/plan_estimates.h"
@@ -24,6 +25,65 @@ double daylight_tolerance(Quality q) {
   }
   return 0.01;
 }
+
+namespace {
+
+// Direct sunlight (calc/daylight_sun.h), no part of DF: at every point the sun through the
+// openings, and its reflected light from a run of the reflected light of its own with the sun's
+// flux on the patches as the first bounce (the sky's run stays as it was, so DF and IRC are the
+// same with the sun on or off); both added to E_direct, E_indirect and E, and kept apart as
+// E_sun_direct and E_sun_reflected.
+void add_direct_sun(const Scene& geometry_only, const geometry::Visibility* visibility,
+                    const std::shared_ptr<const geometry::Visibility>& visibility_test,
+                    Results& results, DaylightPlan& dp) {
+  const DaylightSun sun(geometry_only, visibility);
+  dp.direct_sun = true;
+  dp.direct_normal_lx = sun.direct_normal_lx();
+  dp.sun_shadow_samples = visibility ? DaylightSun::kShadowSamplesPerSide : 0;
+  for (std::size_t k = 0; k < sun.openings(); ++k)
+    dp.sun_flux_entering_lm += sun.entering_flux_lm(k);
+  for (SurfaceResult& r : results.surfaces) {
+    const geometry::SurfaceGrid& g = r.grid;
+    r.E_sun_direct.assign(g.points.size(), 0.0);
+    r.E_sun_reflected.assign(g.points.size(), 0.0);
+    tbb::parallel_for(std::size_t{0}, g.points.size(), [&](std::size_t i) {
+      if (!g.active.empty() && !g.active[i]) return;
+      r.E_sun_direct[i] = sun.at(g.points[i], g.normals[i]);
+    });
+  }
+  dp.sun_reflected = dp.internally_reflected;
+  if (dp.sun_reflected) {
+    Results sun_results;
+    for (const SurfaceResult& r : results.surfaces) {
+      SurfaceResult s;
+      s.grid = r.grid;
+      s.E_direct = r.E_sun_direct;  // the estimate's floor (plan_estimates.h)
+      sun_results.surfaces.push_back(std::move(s));
+    }
+    indirect::IndirectOptions options = indirect::indirect_options(geometry_only.settings);
+    options.visibility = visibility_test;
+    options.incident_flux_lm = [&sun](const indirect::PatchMesh& mesh) {
+      return sun.patch_flux_lm(mesh);
+    };
+    const IndirectEstimateInputs est = run_reflected_light(geometry_only, options, sun_results);
+    dp.sun_flux_on_surfaces_lm = sun_results.plan.indirect_run->received_flux_lm;
+    dp.sun_flux_escaping_lm = est.escaped_flux_lm;
+    dp.sun_patches = sun_results.plan.indirect_run->patches;
+    dp.sun_patch_size_m = sun_results.plan.indirect_run->patch_size_m;
+    for (std::size_t k = 0; k < results.surfaces.size(); ++k)
+      results.surfaces[k].E_sun_reflected = sun_results.surfaces[k].E_indirect;
+  }
+  for (SurfaceResult& r : results.surfaces) {
+    for (std::size_t i = 0; i < r.E.size(); ++i) {
+      r.E_direct[i] += r.E_sun_direct[i];
+      r.E_indirect[i] += r.E_sun_reflected[i];
+      r.E[i] = r.E_direct[i] + r.E_indirect[i];
+    }
+    r.stats = compute_statistics(r.E, r.grid.active);
+  }
+}
+
+}  // namespace
 
 Results run_daylight_scene(const Scene& scene, const Progress& progress) {
   (void)progress;
@@ -158,7 +218,11 @@ Results run_daylight_scene(const Scene& scene, const Progress& progress) {
   dp.evaluations = evaluations.load();
   dp.points_outside_rooms = outside.load();
   results.plan.daylight = dp;
+  // The estimates are of the sky's light (what DF holds); the sun's is added after them.
   estimate_errors(results, direct_estimate, indirect_estimate);
+  if (inputs.direct_normal_lx)
+    add_direct_sun(geometry_only, visibility, results.plan.visibility_test, results,
+                   *results.plan.daylight);
   if (dp.internally_reflected)
     results.timing_s.emplace_back(
         "indirect", std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count());

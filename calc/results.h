@@ -31,6 +31,10 @@ struct SurfaceResult {
   // illuminance per point: the daylight factor DF = SC + ERC + IRC, the sky component, the
   // externally and the internally reflected components. Empty in the other scenes.
   std::vector<double> DF, SC, ERC, IRC;
+  // The daylight scene with direct sun (daylight.sun.direct_normal_lx), lx per point: the sun's
+  // light straight through the openings and its reflected part. No part of DF; E_direct and
+  // E_indirect (and E) hold them besides the sky's. Empty without direct sun.
+  std::vector<double> E_sun_direct, E_sun_reflected;
 };
 
 struct Results {

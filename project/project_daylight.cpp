@@ -281,6 +281,19 @@ DaylightInputs parse_daylight(const JsonValue& d) {
       sun.azimuth_deg = s->at("azimuth_deg").as_number_in(-360.0, 360.0);
       out.sun = sun;
     }
+    if (auto e = s->find("direct_normal_lx")) {
+      // Direct sun switched on (docs/daylight.md, "Direct sunlight"): a finite positive
+      // illuminance, with the sun above the horizon (below it there is no direct sun to ask for).
+      const double lx = e->as_number();
+      if (!(lx > 0.0) || !std::isfinite(lx))
+        e->fail("expected the sun's direct normal illuminance in lx, a number > 0, got " +
+                number_text(lx) + " (no direct sun: leave out \"direct_normal_lx\")");
+      if (!(out.sun->altitude_deg > 0.0))
+        e->fail("direct sun asked for, but the sun is " + number_text(out.sun->altitude_deg) +
+                " degrees above the horizon: it shines through no opening (leave out "
+                "\"direct_normal_lx\")");
+      out.direct_normal_lx = lx;
+    }
     s->report_unqueried();
   }
   if (out.sky.kind == daylight::SkyKind::cie_general) {

@@ -90,6 +90,12 @@ void point_rows(const calc::SurfaceResult& r, size_t begin, size_t end, std::str
         if (g.active.empty() || g.active[k]) put(v);
       }
     }
+    if (!r.E_sun_direct.empty()) {
+      for (const double v : {r.E_sun_direct[k], r.E_sun_reflected[k]}) {
+        row.put(',');
+        if (g.active.empty() || g.active[k]) put(v);
+      }
+    }
     row.put('\n');
   }
 }
@@ -102,8 +108,8 @@ constexpr size_t kRowsPerChunk = 1024;
 
 std::string surface_csv(const calc::SurfaceResult& r) {
   if (r.grid.kind == geometry::SurfaceGrid::Kind::observers) return observers_csv(r);
-  std::string out =
-      std::string(kSurfaceCsvHeader) + (r.DF.empty() ? "" : kDaylightCsvColumns) + "\n";
+  std::string out = std::string(kSurfaceCsvHeader) + (r.DF.empty() ? "" : kDaylightCsvColumns) +
+                    (r.E_sun_direct.empty() ? "" : kSunCsvColumns) + "\n";
   point_rows(r, 0, r.grid.points.size(), out);
   return out;
 }
@@ -113,7 +119,8 @@ void write_surface_csv(std::ostream& out, const calc::SurfaceResult& r) {
     out << observers_csv(r);
     return;
   }
-  out << kSurfaceCsvHeader << (r.DF.empty() ? "" : kDaylightCsvColumns) << '\n';
+  out << kSurfaceCsvHeader << (r.DF.empty() ? "" : kDaylightCsvColumns)
+      << (r.E_sun_direct.empty() ? "" : kSunCsvColumns) << '\n';
   write_chunked(
       r.grid.points.size(), kRowsPerChunk,
       [&](size_t begin, size_t end, std::string& text) { point_rows(r, begin, end, text); },

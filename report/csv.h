@@ -14,6 +14,8 @@ inline constexpr const char* kSurfaceCsvHeader =
     "quantity";
 // The daylight scene's columns after those (percent of E_h; docs/daylight.md).
 inline constexpr const char* kDaylightCsvColumns = ",DF_percent,SC_percent,ERC_percent,IRC_percent";
+// With direct sun after those: the sun's direct and reflected parts of E, lx.
+inline constexpr const char* kSunCsvColumns = ",E_sun_direct_lx,E_sun_reflected_lx";
 
 std::string surface_csv(const calc::SurfaceResult& r);
 // The same text written to `out`, its rows formatted in parallel a chunk at a time: what the

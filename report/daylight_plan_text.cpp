@@ -83,6 +83,28 @@ std::vector<std::string> daylight_notes(const calc::Plan& plan) {
         lm_text(d.flux_escaping_lm) + " of the reflected light leave through the openings again");
   else
     notes.push_back("daylight: internally reflected component 0: " + irc_skipped_text(d));
+  if (d.direct_sun) {
+    notes.push_back(
+        "daylight: direct sun on, " + format_double("%.6g", d.direct_normal_lx) +
+        " lx normal to the sun: the sun a point direction, seen through an opening where the "
+        "ray towards it crosses the opening and nothing in the room hides it, times the "
+        "glazing's transmittance at its incidence and the opening's factors (sharp shadow "
+        "edges, no penumbra); " +
+        lm_text(d.sun_flux_entering_lm) +
+        " enter through the openings; no part of DF, added to E (E_sun_direct, E_sun_reflected)");
+    if (d.sun_reflected)
+      notes.push_back("daylight: the sun's reflected light by a run of its own (" +
+                      std::to_string(d.sun_patches) + " patches of " +
+                      format_double("%.3g", d.sun_patch_size_m) +
+                      " m), each patch's sunlit area the openings projected along the sun onto it" +
+                      (d.sun_shadow_samples > 0
+                           ? ", shadows inside the room sampled at " +
+                                 std::to_string(d.sun_shadow_samples * d.sun_shadow_samples) +
+                                 " points per sunlit triangle"
+                           : std::string(" (exact: nothing in the room casts a shadow)")) +
+                      "; " + lm_text(d.sun_flux_on_surfaces_lm) + " land on the surfaces, " +
+                      lm_text(d.sun_flux_escaping_lm) + " of its reflected light leave again");
+  }
   if (d.luminaires_left_out > 0)
     notes.push_back("daylight: " + std::to_string(d.luminaires_left_out) +
                     " luminaires left out (the daylight scene lights nothing electric)");

@@ -40,6 +40,11 @@ std::string sky_table(const calc::DaylightPlan& d, const calc::Scene* scene) {
                       format_double("%.1f", d.sun_azimuth_deg) +
                           "&deg; <span class=\"muted\">clockwise from true north</span>");
   }
+  if (d.direct_sun)
+    h += daylight_row("direct_normal_lx", "Direct sun",
+                      format_double("%.0f", d.direct_normal_lx) +
+                          " lx normal to the sun <span class=\"muted\">through the openings, "
+                          "in E (E<sub>sun</sub>), not in DF</span>");
   const calc::DaylightInputs* in = scene && scene->daylight ? &*scene->daylight : nullptr;
   if (in && in->sun_from_site) {
     const daylight::Site& s = in->site;

@@ -147,7 +147,9 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(
     glazed_openings, exterior_obstructions, sky_exact, ground_exact, relative_tolerance,
     sky_error_percent, ground_error_percent, evaluations, points_outside_rooms,
     internally_reflected, reflecting_surfaces, indirect_off, flux_entering_lm, flux_on_surfaces_lm,
-    flux_escaping_lm, luminaires_left_out)
+    flux_escaping_lm, luminaires_left_out, direct_sun, sun_reflected, direct_normal_lx,
+    sun_shadow_samples, sun_flux_entering_lm, sun_flux_on_surfaces_lm, sun_flux_escaping_lm,
+    sun_patches, sun_patch_size_m)
 }  // namespace luxgrid::calc
 
 namespace luxgrid::report {

@@ -339,6 +339,11 @@ calc::SurfaceResult read_surface(const json& s, const json& frame) {
     if (r.DF.size() != n || r.SC.size() != n || r.ERC.size() != n || r.IRC.size() != n)
       throw json::other_error::create(501, "the daylight arrays differ in length from points", &s);
   }
+  if (s.contains("E_sun_direct")) {
+    read_fields(s, "E_sun_direct", r.E_sun_direct, "E_sun_reflected", r.E_sun_reflected);
+    if (r.E_sun_direct.size() != n || r.E_sun_reflected.size() != n)
+      throw json::other_error::create(501, "the sun's arrays differ in length from points", &s);
+  }
   const json& st = s.at("stats");
   // A statistic results.json wrote as null (not finite) is refused by the type check.
   read_fields(st, "Emin", r.stats.Emin, "Eavg", r.stats.Eavg, "Emax", r.stats.Emax, "U0",

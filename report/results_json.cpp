@@ -105,6 +105,9 @@ nlohmann::json surface_json(const calc::SurfaceResult& r, size_t index, bool arr
                 {"Ud", r.stats.Ud}};
   // The daylight scene's components, percent of E_h (calc/results.h; docs/daylight.md).
   if (!r.DF.empty()) s["DF"] = r.DF, s["SC"] = r.SC, s["ERC"] = r.ERC, s["IRC"] = r.IRC;
+  // Direct sun (lx): no part of DF; E holds it.
+  if (!r.E_sun_direct.empty())
+    s["E_sun_direct"] = r.E_sun_direct, s["E_sun_reflected"] = r.E_sun_reflected;
   if (g.kind == geometry::SurfaceGrid::Kind::observers) {
     s["UGR_max"] = r.UGR_max ? json(*r.UGR_max) : json(nullptr);
     s["observers"] = observers_json(r.observers);

@@ -14,6 +14,7 @@
 #include "calc/indirect/indirect.h"
 #include "calc/pipeline.h"
 #include "project/project_file.h"
+#include "tests/calc/daylight_balance.h"
 
 namespace luxgrid::calc {
 namespace {
@@ -55,19 +56,13 @@ Scene irc_scene(const std::string& text) {
 TEST(DaylightIrc, SolveBalancesEnteringAbsorbedAndLeavingFlux) {
   const Scene s = irc_scene(irc_project(kFourByFour, kColours, "\"cie-overcast\"", kGlazedWindow));
   const DaylightLight light(s, nullptr, daylight_tolerance(Quality::standard));
-  indirect::IndirectOptions o;
-  o.quality = Quality::standard;
-  o.incident_flux_lm = [&light](const indirect::PatchMesh& m) { return light.patch_flux_lm(m); };
-  const auto solution = indirect::solve_indirect(s, o);
+  const auto solution = solve_with_first_bounce(
+      s, [&light](const indirect::PatchMesh& m) { return light.patch_flux_lm(m); });
   const double entering = light.entering_flux_lm(0);
   const double landing = solution->result.received_flux_lm;
   EXPECT_GT(entering, 0.0);
   EXPECT_NEAR(landing, entering, 0.003 * entering);
-  double absorbed = 0.0;
-  for (size_t i = 0; i < solution->mesh.patches.size(); ++i) {
-    const double rho = solution->mesh.patches[i].reflectance;
-    absorbed += (1.0 - rho) / rho * solution->exitant_flux_lm[i];
-  }
+  const double absorbed = absorbed_flux_lm(*solution);
   const double leaving = solution->result.escaped_flux_lm;
   EXPECT_GT(leaving, 0.0);
   EXPECT_NEAR(absorbed + leaving, landing, 2e-3 * landing);

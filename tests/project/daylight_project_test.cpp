@@ -179,5 +179,32 @@ TEST(DaylightProject, UnknownKeysRefused) {
   EXPECT_NE(error_of(d).find("/daylight/sky/turbidity"), std::string::npos);
 }
 
+// Direct sun (daylight.sun.direct_normal_lx): read when given, absent by default; a value that is
+// not a positive number, or the sun at or below the horizon, refused at its JSON pointer.
+TEST(DaylightProject, DirectSunReadAndBadValuesRefused) {
+  auto d = daylight_room();
+  EXPECT_FALSE(load(d).daylight->direct_normal_lx.has_value());
+  d["daylight"]["sun"]["direct_normal_lx"] = 80000;
+  EXPECT_EQ(*load(d).daylight->direct_normal_lx, 80000.0);
+  for (const double bad : {-1.0, 0.0}) {
+    d["daylight"]["sun"]["direct_normal_lx"] = bad;
+    EXPECT_NE(error_of(d).find("p.json /daylight/sun/direct_normal_lx: expected the sun's direct "
+                               "normal illuminance in lx, a number > 0"),
+              std::string::npos)
+        << error_of(d);
+  }
+  d["daylight"]["sun"]["direct_normal_lx"] = "bright";
+  EXPECT_NE(error_of(d).find("/daylight/sun/direct_normal_lx"), std::string::npos);
+  // Below the horizon (an overcast sky does not need the sun above it; direct sun does).
+  d["daylight"]["sky"]["type"] = "cie-overcast";
+  d["daylight"]["sun"] = {{"altitude_deg", -5}, {"azimuth_deg", 180}, {"direct_normal_lx", 1000}};
+  EXPECT_NE(error_of(d).find("/daylight/sun/direct_normal_lx: direct sun asked for, but the sun "
+                             "is -5 degrees above the horizon"),
+            std::string::npos)
+      << error_of(d);
+  d["daylight"]["sun"].erase("direct_normal_lx");
+  EXPECT_EQ(error_of(d), "(no error)");
+}
+
 }  // namespace
 }  // namespace luxgrid::project
