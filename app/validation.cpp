@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "app/run_project.h"
+#include "calc/plan_estimates.h"
 #include "calc/statistics.h"
 #include "project/json_reader.h"
 #include "project/safe_json.h"
@@ -102,7 +103,17 @@ double glare_value(const project::JsonValue& where, const calc::SurfaceResult& s
              "\" has " + std::to_string(k) + " views");
 }
 
-void check_case(const fs::path& dir, const fs::path& out_dir, ValidationReport& report) {
+// A check's relative tolerance at `quality`: a check held to standard's promise or tighter is
+// held to the quality's promise where that is tighter; a looser one (its README says why: the
+// reference's own uncertainty, a rounded printed value) keeps its own.
+double relative_tolerance_at(double rel_tol, std::optional<calc::Quality> quality) {
+  if (!quality) return rel_tol;
+  const double standard = calc::promised_error(calc::Quality::standard);
+  return rel_tol <= standard ? std::min(rel_tol, calc::promised_error(*quality)) : rel_tol;
+}
+
+void check_case(const fs::path& dir, const fs::path& out_dir, std::optional<calc::Quality> quality,
+                ValidationReport& report) {
   const std::string name = dir.filename().string();
   const fs::path expected_file = dir / "expected.json";
   const nlohmann::json doc =
@@ -118,6 +129,7 @@ void check_case(const fs::path& dir, const fs::path& out_dir, ValidationReport& 
     auto it = runs.find(sky);
     if (it != runs.end()) return it->second;
     RunOptions options;
+    options.quality = quality;
     if (!sky.empty()) options.daylight_sky = sky, options.report = false;
     RunOutcome outcome = run_project(
         dir / "project.json", out_dir / (sky.empty() ? name : name + "_sky_" + sky), options);
@@ -164,7 +176,8 @@ void check_case(const fs::path& dir, const fs::path& out_dir, ValidationReport& 
         row.quantity = s.grid.name + "." + st.as_string() + "(" + quantity + ")";
       }
     }
-    const double rel = c.has("rel_tol") ? c.at("rel_tol").as_non_negative() : 0.0;
+    const double rel =
+        relative_tolerance_at(c.has("rel_tol") ? c.at("rel_tol").as_non_negative() : 0.0, quality);
     const double abs = c.has("abs_tol") ? c.at("abs_tol").as_non_negative() : 0.0;
     if (!c.has("rel_tol") && !c.has("abs_tol")) c.fail("expected \"rel_tol\" and/or \"abs_tol\"");
     row.tolerance = std::max(rel * std::abs(row.expected), abs);
@@ -205,6 +218,9 @@ std::string ValidationReport::markdown() const {
   }
   for (const auto& e : case_errors) md += "\nERROR: " + e + "\n";
   for (const auto& p : pending) md += "\nPENDING (not run): " + p + "\n";
+  if (quality)
+    md += std::string("\nEvery case run at quality ") + calc::to_string(*quality) +
+          ", its checks held to the quality's promise (docs/validation.md).\n";
   return md;
 }
 
@@ -225,10 +241,12 @@ nlohmann::json ValidationReport::json() const {
   }
   j["case_errors"] = case_errors;
   j["pending"] = pending;
+  if (quality) j["quality"] = calc::to_string(*quality);
   return j;
 }
 
-ValidationReport run_validation(const fs::path& cases_dir, const fs::path& out_dir) {
+ValidationReport run_validation(const fs::path& cases_dir, const fs::path& out_dir,
+                                std::optional<calc::Quality> quality) {
   if (!fs::is_directory(cases_dir))
     throw InputError(SourceLocation{cases_dir.string()}, "not a folder of cases");
   std::vector<fs::path> dirs;
@@ -240,6 +258,7 @@ ValidationReport run_validation(const fs::path& cases_dir, const fs::path& out_d
   }
   std::sort(dirs.begin(), dirs.end());
   ValidationReport report;
+  report.quality = quality;
   if (fs::is_directory(cases_dir / "pending")) {
     for (const auto& entry : fs::directory_iterator(cases_dir / "pending")) {
       if (!entry.is_directory()) continue;
@@ -255,7 +274,7 @@ ValidationReport run_validation(const fs::path& cases_dir, const fs::path& out_d
                      "no case folders (project.json + expected.json)");
   for (const auto& d : dirs) {
     try {
-      check_case(d, out_dir, report);
+      check_case(d, out_dir, quality, report);
     } catch (const InputError& e) {
       report.case_errors.push_back(d.filename().string() + ": " + e.what());
     } catch (const CalculationError& e) {

@@ -2,10 +2,13 @@
 // The validation runner: each folder under cases/ with a project.json and an expected.json is
 // calculated and its values compared with the expected ones (docs/validation.md).
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "calc/scene.h"
 
 namespace luxgrid::app {
 
@@ -27,13 +30,18 @@ struct ValidationReport {
   // Cases under CASES_DIR/pending/: written, not yet run, because a capability they need is not
   // built; listed in every table so they are never forgotten (cases/pending/README.md).
   std::vector<std::string> pending;
+  std::optional<calc::Quality> quality;  // run_validation's, when given
   bool all_passed() const;
   std::string markdown() const;
   nlohmann::json json() const;
 };
 
-// Runs every case under `cases_dir`; each case's outputs go to out_dir/<case>/.
+// Runs every case under `cases_dir`; each case's outputs go to out_dir/<case>/. With `quality`,
+// every case runs at that quality (standard or high, the qualities with a promise) and each check
+// of a relative tolerance no looser than standard's promise is held to the quality's promise
+// where that is tighter (docs/validation.md, "At a quality").
 ValidationReport run_validation(const std::filesystem::path& cases_dir,
-                                const std::filesystem::path& out_dir);
+                                const std::filesystem::path& out_dir,
+                                std::optional<calc::Quality> quality = std::nullopt);
 
 }  // namespace luxgrid::app

@@ -1,6 +1,7 @@
 #include "calc/daylight_light.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <tbb/parallel_for.h>
@@ -39,6 +40,9 @@ constexpr double kSlowSkyStartEdge_rad = 0.5;
 // sphere) is integrated at its four quarters, else at its centroid: the midpoint rule's error,
 // about (diameter / distance)^2 / 24 of the patch's flux, is then below 0.3 %.
 constexpr double kQuartersWithin = 4.0;
+// Points per side of a cut patch at which its cells' light is sampled (daylight_light.h,
+// cell_flux_lm); the cells' centres are interpolated between them.
+constexpr int kCellSamplesPerSide = 2;
 
 }  // namespace
 
@@ -236,6 +240,48 @@ std::vector<double> DaylightLight::patch_flux_lm(const indirect::PatchMesh& mesh
       }
     }
     flux[i] = sum;
+  });
+  return flux;
+}
+
+std::vector<double> DaylightLight::cell_flux_lm(const indirect::PatchMesh& mesh,
+                                                const indirect::CellMesh& cells) const {
+  constexpr int kPerSide = indirect::kSubcellsPerSide, kCells = kPerSide * kPerSide;
+  constexpr int kSamples = kCellSamplesPerSide;
+  std::vector<double> flux(cells.mesh.patches.size(), 0.0);
+  if (openings_.empty()) return flux;
+  // Lagrange weights of the samples, at (k + 1/2) / kSamples along an edge, for the cells'
+  // centres, at (a + 1/2) / kPerSide.
+  std::array<std::array<double, kSamples>, kPerSide> weight{};
+  for (int a = 0; a < kPerSide; ++a) {
+    const double x = (a + 0.5) / kPerSide;
+    for (int k = 0; k < kSamples; ++k) {
+      double w = 1.0;
+      for (int j = 0; j < kSamples; ++j)
+        if (j != k) w *= (x - (j + 0.5) / kSamples) / ((k - j) / static_cast<double>(kSamples));
+      weight[a][k] = w;
+    }
+  }
+  // Cells come kCells at a time, patch by patch (subcells.h, cell_mesh).
+  tbb::parallel_for(std::size_t{0}, cells.patch.size() / kCells, [&](std::size_t k) {
+    const std::size_t c0 = k * kCells;
+    const indirect::Patch& p = mesh.patches[cells.patch[c0]];
+    const Vec3 o = p.polygon[0], e1 = p.polygon[1] - o, e2 = p.polygon[3] - o;
+    const Vec3 lift = p.normal * kPatchLift_m;
+    std::array<std::array<double, kSamples>, kSamples> E{};
+    for (int i = 0; i < kSamples; ++i)
+      for (int j = 0; j < kSamples; ++j) {
+        const Vec3 x = o + ((i + 0.5) / kSamples) * e1 + ((j + 0.5) / kSamples) * e2;
+        E[i][j] = illuminance_lx(at(x + lift, p.normal));
+      }
+    for (int a = 0; a < kPerSide; ++a)
+      for (int b = 0; b < kPerSide; ++b) {
+        double e = 0.0;
+        for (int i = 0; i < kSamples; ++i)
+          for (int j = 0; j < kSamples; ++j) e += weight[a][i] * weight[b][j] * E[i][j];
+        const std::size_t c = c0 + static_cast<std::size_t>(a * kPerSide + b);
+        flux[c] = std::max(0.0, e) * cells.mesh.patches[c].area_m2;
+      }
   });
   return flux;
 }

@@ -13,6 +13,7 @@
 #include "calc/daylight/gauss_kronrod.h"
 #include "calc/exterior_obstructions.h"
 #include "calc/indirect/patches.h"
+#include "calc/indirect/subcells.h"
 #include "calc/scene.h"
 #include "geometry/visibility.h"
 
@@ -66,6 +67,13 @@ class DaylightLight {
   // quarters where it has them (patches.h), else of each triangle of its fan, each weighted by
   // its area. Parallel over the patches.
   std::vector<double> patch_flux_lm(const indirect::PatchMesh& mesh) const;
+  // The same for the cells of subcells.h (`cells`, cut from patches of `mesh`): the illuminance
+  // at kCellSamplesPerSide^2 points of each cut patch, interpolated to its cells' centres
+  // (polynomial in each direction, clamped at 0), times the cell's area. The cells only spread
+  // their patch's light over it (subcells.h), for which the interpolation is as good as each
+  // cell's own integral (docs/daylight.md) at a fraction of the points.
+  std::vector<double> cell_flux_lm(const indirect::PatchMesh& mesh,
+                                   const indirect::CellMesh& cells) const;
 
   // The flux entering through opening `k` (lm): its area times the transmitted illuminance on
   // its plane, the same at every point of it (nothing outside the rooms is modelled): the sky

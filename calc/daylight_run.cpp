@@ -201,6 +201,10 @@ Results run_daylight_scene(const Scene& scene, const Progress& progress) {
     options.incident_flux_lm = [&light](const indirect::PatchMesh& mesh) {
       return light.patch_flux_lm(mesh);
     };
+    options.cell_incident_flux_lm = [&light](const indirect::PatchMesh& mesh,
+                                             const indirect::CellMesh& cells) {
+      return light.cell_flux_lm(mesh, cells);
+    };
     indirect_estimate = run_reflected_light(geometry_only, options, results);
     for (std::size_t k = 0; k < light.openings(); ++k)
       dp.flux_entering_lm += light.entering_flux_lm(k);

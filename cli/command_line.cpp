@@ -76,6 +76,10 @@ void add_validate(CLI::App& app, std::function<int()>& run) {
       "Folder of case folders (default: the repository's cases/, found from the binary)");
   cmd->add_option("-o,--output", opt->out, "Output folder for the tables and each case's results")
       ->capture_default_str();
+  cmd->add_option("--quality", opt->quality,
+                  "Run every case at this quality and hold its checks to the quality's promise "
+                  "(standard 1 %, high 0.3 %; docs/validation.md)")
+      ->check(CLI::IsMember({"standard", "high"}));
 }
 
 void add_info(CLI::App& app, std::function<int()>& run) {

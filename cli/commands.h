@@ -25,6 +25,7 @@ int run_report(const ReportArgs& args);
 // `luxgrid validate`: cli/validate_command.cpp.
 struct ValidateArgs {
   std::string cases, out = "validation.out";
+  std::string quality;  // --quality: every case at it, held to its promise (docs/validation.md)
 };
 int run_validate(const ValidateArgs& args);
 

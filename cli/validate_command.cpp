@@ -1,5 +1,6 @@
 // `luxgrid validate [CASES_DIR] [-o DIR]`
 #include <cstdio>
+#include <optional>
 
 #include "app/validation.h"
 #include "cli/commands.h"
@@ -12,7 +13,9 @@ int run_validate(const ValidateArgs& args) {
   const std::filesystem::path cases =
       args.cases.empty() ? find_repository_path("cases") : std::filesystem::path(args.cases);
   report::OutputFolder folder(args.out, {cases});
-  const app::ValidationReport report = app::run_validation(cases, folder.staging());
+  std::optional<calc::Quality> quality;
+  if (!args.quality.empty()) quality = calc::quality_from_string(args.quality);
+  const app::ValidationReport report = app::run_validation(cases, folder.staging(), quality);
   const std::string md = report.markdown();
   report::write_text_file(folder.file("validation.md"), md);
   report::write_text_file(folder.file("validation.json"), report.json().dump(1) + "\n");

@@ -484,8 +484,11 @@ IndirectResult gather_indirect(const IndirectSolution& solution, const Scene& sc
     for (size_t j = 0; j < near.size(); ++j) refine[j] = near[j].load(std::memory_order_relaxed);
     const CellMesh cells = cell_mesh(mesh, refine);
     if (!cells.mesh.patches.empty()) {
-      const FirstBounce cell_fb =
-          incident_light(scene, cells.mesh, options, room_visibility, clustered);
+      const std::vector<double> cell_incident_lm =
+          options.incident_flux_lm && options.cell_incident_flux_lm
+              ? options.cell_incident_flux_lm(mesh, cells)
+              : incident_light(scene, cells.mesh, options, room_visibility, clustered)
+                    .incident_flux_lm;
       std::vector<double> cell_indirect(cells.mesh.patches.size(), 0.0);
       // Near patches cell by cell; the far ones, whose light varies smoothly over a patch, at
       // the four corner cells of each patch, interpolated bilinearly to the others (subcells.h).
@@ -513,7 +516,7 @@ IndirectResult gather_indirect(const IndirectSolution& solution, const Scene& sc
           }
       });
       const SubcellExitance sub =
-          cell_exitance(mesh, cells, exitant, cell_fb.incident_flux_lm, cell_indirect);
+          cell_exitance(mesh, cells, exitant, cell_incident_lm, cell_indirect);
       res.refined_patches = sub.refined_patches;
       for (size_t r = 0; r < scene.rooms.size(); ++r)
         gather_sets[r] =

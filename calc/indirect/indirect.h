@@ -34,6 +34,8 @@
 
 namespace luxgrid::calc::indirect {
 
+struct CellMesh;  // subcells.h
+
 struct IndirectOptions {
   Quality quality = Quality::standard;
   int bounces = 0;            // 0: auto (converged; draft: 1); N >= 1: exactly N reflections
@@ -65,6 +67,11 @@ struct IndirectOptions {
   // straight from the sky and the ground landing on each patch of a mesh, lm. When set it
   // replaces the luminaires' first bounce, for the patches and for the cells of subcells.h.
   std::function<std::vector<double>(const PatchMesh&)> incident_flux_lm;
+  // With incident_flux_lm, the same for the cells of subcells.h (mesh: the patches they cut),
+  // when the light's source has a cheaper way to them than integrating each cell (the daylight
+  // scene interpolates within the cell's patch). Unset: incident_flux_lm on the cells' mesh.
+  std::function<std::vector<double>(const PatchMesh& mesh, const CellMesh& cells)>
+      cell_incident_flux_lm;
 };
 
 // Options from the project's settings (quality, bounces).
