@@ -84,6 +84,9 @@ TEST(DaylightCells, ReflectedLightMatchesEachCellIntegrated) {
   double worst = 0.0;
   for (std::size_t k = 0; k < each.E_indirect_per_surface.size(); ++k)
     for (std::size_t i = 0; i < each.E_indirect_per_surface[k].size(); ++i) {
+      // Points in the windows are left out (calc/points_in_openings.h): no surface there.
+      const auto& active = s.surfaces[k].active;
+      if (!active.empty() && !active[i]) continue;
       const double a = fast.E_indirect_per_surface[k][i], b = each.E_indirect_per_surface[k][i];
       ASSERT_GT(b, 0.0);
       worst = std::max(worst, std::abs(a - b) / b);
