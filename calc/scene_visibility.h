@@ -1,8 +1,9 @@
 #pragma once
 // Does light travel freely from a luminaire to a point? Walls of non-convex rooms, walls between
-// rooms and obstacles block it. The scene's faces for geometry's AABB tree (geometry/occlusion.h,
-// the geometry::Visibility that direct, indirect light and glare ask), built once per scene,
-// queried from TBB workers, and the plan's decision whether the scene needs one. No CGAL here.
+// rooms and obstacles block it. The scene's faces for geometry's occlusion test
+// (geometry/occlusion.h, the geometry::Visibility that direct, indirect light and glare ask), built
+// once per scene, queried from TBB workers, and the plan's decision whether the scene needs one. No
+// CGAL here.
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,7 +34,7 @@ struct VisibilityDecision {
   size_t points_outside = 0;                  // active surface points outside every room
 };
 
-// The scene's AABB tree over scene_faces: visible(from, to) is true when nothing lies between;
+// The scene's occlusion test over scene_faces: visible(from, to) is true when nothing lies between;
 // hits within geometry::kOcclusionEndAllowance_m (1 um) of either end are ignored, so a luminaire
 // on the ceiling and a point on a floor, wall or obstacle top see each other. nullptr when nothing
 // can block light: at most one room, convex, no obstacles, every luminaire and every active surface

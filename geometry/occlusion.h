@@ -1,7 +1,10 @@
 #pragma once
-// The scene's visibility test (geometry/visibility.h): a CGAL AABB tree of the triangles of a set
-// of faces, built once, queried from many threads. No CGAL in this header (pimpl; the
-// implementation is geometry/cgal/occlusion.cpp, in the luxgrid_geometry_cgal library).
+// The scene's visibility test (geometry/visibility.h): Intel Embree 3's occlusion query over the
+// triangles of a set of faces, built once, queried from many threads. Embree only proposes the
+// faces a segment may cross; geometry/face_crossing.h's rule decides each in double, so grazing
+// configurations (a segment through an L's reflex corner, along the ceiling) get the rule's
+// answer, not rounding's. No Embree in this header (pimpl; the implementation is
+// geometry/embree/occlusion.cpp, in the luxgrid_geometry_embree library).
 #include <memory>
 #include <vector>
 
@@ -24,9 +27,9 @@ class OcclusionTree final : public Visibility {
   OcclusionTree(const OcclusionTree&) = delete;
   OcclusionTree& operator=(const OcclusionTree&) = delete;
 
-  // True when no face crosses the open segment from `a` to `b`, shortened by
-  // kOcclusionEndAllowance_m at both ends. Thread-safe (const, the tree is built in the
-  // constructor).
+  // True when no face crosses the segment from `a` to `b` by geometry/face_crossing.h's rule
+  // (shortened by kOcclusionEndAllowance_m at both ends, grazing faces and edges by its rule).
+  // Thread-safe (const, the scene is built in the constructor).
   bool visible(const Vec3& a, const Vec3& b) const override;
 
   size_t triangle_count() const;

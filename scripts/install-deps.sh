@@ -3,7 +3,7 @@
 # Run as root on Debian 12 (bookworm). Quiet when everything is there already.
 set -euo pipefail
 packages=(cmake make g++ pkg-config
-          libcgal-dev libglm-dev libdeflate-dev libpng-dev libfreetype-dev nlohmann-json3-dev libtbb-dev libcli11-dev nettle-dev
+          libcgal-dev libembree-dev libglm-dev libdeflate-dev libpng-dev libfreetype-dev nlohmann-json3-dev libtbb-dev libcli11-dev nettle-dev
           libgtest-dev libbenchmark-dev fonts-dejavu-core python3 chromium poppler-utils clang-format
           # The Python package (python/, docs/python.md) and its tests.
           python3-dev pybind11-dev python3-numpy python3-pandas python3-distributed python3-pytest

@@ -1,0 +1,135 @@
+#include "geometry/occlusion.h"
+
+#include <embree3/rtcore.h>
+
+#include <limits>
+#include <stdexcept>
+
+#include "geometry/face_crossing.h"
+
+namespace luxgrid::geometry {
+
+namespace {
+
+// Embree tests in float about the scene's centre: its errors are a few float ulps of the scene's
+// half-size. Triangles are grown and rays lengthened by this much, so that every face the segment
+// crosses by geometry/face_crossing.h's rule is among Embree's candidates; that rule, in double,
+// then decides each candidate (filter_candidate). 1e-5 of the size is about 170 ulps.
+double candidate_margin_m(double half_size_m) {
+  return kOcclusionEndAllowance_m + 1e-5 * half_size_m;
+}
+
+// `t` scaled about its incentre so that each edge moves out by `margin_m`.
+std::array<Vec3, 3> grown(const std::array<Vec3, 3>& t, double margin_m) {
+  const double la = glm::length(t[1] - t[2]), lb = glm::length(t[2] - t[0]),
+               lc = glm::length(t[0] - t[1]);
+  const double perimeter = la + lb + lc;
+  const double area = 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
+  const Vec3 incentre = (la * t[0] + lb * t[1] + lc * t[2]) / perimeter;
+  const double inradius = 2.0 * area / perimeter;
+  const double scale = (inradius + margin_m) / inradius;
+  return {incentre + scale * (t[0] - incentre), incentre + scale * (t[1] - incentre),
+          incentre + scale * (t[2] - incentre)};
+}
+
+// The query's segment, for the filter.
+struct SegmentContext {
+  RTCIntersectContext context;  // first: Embree passes a pointer to it back to the filter
+  Vec3 a, b;
+  const std::vector<FaceSheet>* sheets;
+  const std::vector<unsigned>* face_of;
+};
+
+void filter_candidate(const RTCFilterFunctionNArguments* args) {
+  const auto* q = reinterpret_cast<const SegmentContext*>(args->context);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
+    const FaceSheet& face = (*q->sheets)[(*q->face_of)[prim]];
+    if (!segment_crosses(face, q->a, q->b)) args->valid[i] = 0;
+  }
+}
+
+}  // namespace
+
+struct OcclusionTree::Impl {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  Vec3 centre{0.0};  // vertices are stored relative to it
+  double margin_m = 0.0;
+  std::vector<FaceSheet> sheets;
+  std::vector<unsigned> face_of;  // per triangle, its face in `sheets`
+};
+
+OcclusionTree::OcclusionTree(const std::vector<Face>& faces) : impl_(std::make_unique<Impl>()) {
+  std::vector<std::array<Vec3, 3>> tris;
+  for (const auto& f : faces) {
+    for (const auto& t : triangulate_face(f)) {
+      if (!(glm::length(glm::cross(t[1] - t[0], t[2] - t[0])) > 0.0)) continue;  // degenerate
+      tris.push_back(t);
+      impl_->face_of.push_back(static_cast<unsigned>(impl_->sheets.size()));
+    }
+    impl_->sheets.push_back(face_sheet(f));
+  }
+  if (tris.empty()) return;
+  Vec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const auto& t : tris)
+    for (const auto& p : t) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  impl_->centre = 0.5 * (lo + hi);
+  impl_->margin_m = candidate_margin_m(0.5 * glm::length(hi - lo));
+  impl_->device = rtcNewDevice(nullptr);
+  if (!impl_->device) throw std::runtime_error("embree: cannot create a device");
+  impl_->scene = rtcNewScene(impl_->device);
+  rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
+  RTCGeometry g = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+      g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * tris.size()));
+  auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), tris.size()));
+  for (size_t i = 0; i < tris.size(); ++i) {
+    const auto big = grown(tris[i], impl_->margin_m);
+    for (size_t k = 0; k < 3; ++k) {
+      const Vec3 p = big[k] - impl_->centre;
+      for (int c = 0; c < 3; ++c) v[9 * i + 3 * k + c] = static_cast<float>(p[c]);
+      idx[3 * i + k] = static_cast<unsigned>(3 * i + k);
+    }
+  }
+  rtcSetGeometryOccludedFilterFunction(g, filter_candidate);
+  rtcCommitGeometry(g);
+  rtcAttachGeometry(impl_->scene, g);
+  rtcReleaseGeometry(g);
+  rtcCommitScene(impl_->scene);
+}
+
+OcclusionTree::~OcclusionTree() {
+  if (impl_->scene) rtcReleaseScene(impl_->scene);
+  if (impl_->device) rtcReleaseDevice(impl_->device);
+}
+
+bool OcclusionTree::visible(const Vec3& a, const Vec3& b) const {
+  if (!impl_->scene) return true;
+  const Vec3 d = b - a;
+  const double len = glm::length(d);
+  if (!(len > 2.0 * kOcclusionEndAllowance_m)) return true;  // the ends touch: nothing between
+  // The ray from `margin` before `a` to `margin` after `b`: candidates, not the answer.
+  const Vec3 dir = d / len;
+  const Vec3 o = a - impl_->margin_m * dir - impl_->centre;
+  SegmentContext q;
+  rtcInitIntersectContext(&q.context);
+  q.a = a, q.b = b, q.sheets = &impl_->sheets, q.face_of = &impl_->face_of;
+  RTCRay ray;
+  ray.org_x = static_cast<float>(o.x), ray.org_y = static_cast<float>(o.y);
+  ray.org_z = static_cast<float>(o.z);
+  ray.dir_x = static_cast<float>(dir.x), ray.dir_y = static_cast<float>(dir.y);
+  ray.dir_z = static_cast<float>(dir.z);
+  ray.tnear = 0.0f;
+  ray.tfar = static_cast<float>(len + 2.0 * impl_->margin_m);
+  ray.time = 0.0f, ray.mask = 0xFFFFFFFFu, ray.id = 0, ray.flags = 0;
+  rtcOccluded1(impl_->scene, &q.context, &ray);
+  return ray.tfar >= 0.0f;  // Embree sets tfar to -inf on an accepted hit
+}
+
+size_t OcclusionTree::triangle_count() const { return impl_->face_of.size(); }
+
+}  // namespace luxgrid::geometry
