@@ -152,7 +152,8 @@ def main():
     rows = [(f"luxgrid {q}", lambda q=q: luxgrid(pts, sky, glazed, q))
             for q in ("draft", "standard", "high")]
     rows += [(f"rtrace -ab 1 -ad {ad}", lambda ad=ad: radiance(pts, ad)) for ad in sys.argv[4:]]
-    radiance_scene(sky, glazed)
+    if sys.argv[4:]:
+        radiance_scene(sky, glazed)
     for name, run in rows:
         vals, cpu = run()
         worst, mean = errors(vals, ref)

@@ -118,6 +118,7 @@ class DaylightLight {
   std::vector<PreparedOpening> openings_;
   daylight::QuadratureResult sky_integral_;
   double relative_tolerance_ = 0.0, ground_reflectance_ = 0.0, diffuse_horizontal_lx_ = 0.0;
+  double absolute_floor_of_eh_ = 0.0;  // the integration's absolute tolerance, fraction of E_h
   bool sky_exact_ = false, ground_exact_ = false;
   std::vector<std::array<double, kBoxFaces>> face_luminance_per_eh_;  // per exterior obstruction
   double max_start_edge_rad_ = kPi;  // aperture_integral.h: the sky's start subdivision
