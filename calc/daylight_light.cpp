@@ -10,6 +10,7 @@
 #include "calc/daylight/plane_illuminance.h"
 #include "calc/daylight/sky_normalisation.h"
 #include "calc/opening_placement.h"
+#include "calc/plan_estimates.h"
 #include "calc/scene_visibility.h"
 #include "geometry/polygon.h"
 #include "geometry/polygon3.h"
@@ -28,7 +29,6 @@ constexpr int kMaxTrianglesPerOpening = 16384;
 // at 1e-5 left floor points beside a glazed window wall (DF 0.1 %, the glass seen at grazing
 // angles) 0.33 % off at `high`.
 constexpr double kAbsoluteToleranceOfEh = 1e-5;
-constexpr double kStandardTolerance = 0.01;
 // The widest edge a triangle starts with under a general sky, seen from the point
 // (aperture_integral.h): 0.15 rad (8.6 degrees), under half the scale on which its indicatrix
 // changes near the sun, so its nodes cannot all miss the sun's brightening.
@@ -56,7 +56,7 @@ DaylightLight::DaylightLight(const Scene& scene, const geometry::Visibility* vis
       visibility_(visibility),
       relative_tolerance_(relative_tolerance),
       absolute_floor_of_eh_(kAbsoluteToleranceOfEh *
-                            std::min(1.0, relative_tolerance / kStandardTolerance)) {
+                            std::min(1.0, relative_tolerance / promised_error(Quality::standard))) {
   const DaylightInputs& inputs = *scene.daylight;
   ground_reflectance_ = inputs.ground_reflectance;
   diffuse_horizontal_lx_ = inputs.diffuse_horizontal_lx;
