@@ -1,6 +1,7 @@
 #include "calc/indirect/clustered.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -26,15 +27,23 @@ constexpr double kFrontTolerance_m = 1e-9;
 // patches, so that most nodes are decided for all of them at once), and blocks refined at a time
 // before their links are appended (16 384 patches).
 constexpr size_t kBlockPatches = 32;
+// bit[k] = 1 << k: the mask bit of a block's k-th patch (a table, so that the loops over the
+// patches vectorise).
+constexpr auto kBits = [] {
+  std::array<uint32_t, kBlockPatches> b{};
+  for (size_t k = 0; k < kBlockPatches; ++k) b[k] = uint32_t(1) << k;
+  return b;
+}();
 constexpr size_t kWaveBlocks = 512;
-// Links per patch times opening^2, measured on the 100 x 50 x 6 m hall (300 links per patch at
-// opening 0.4, 760 at 0.25, 1 260 at 0.2): the count reserved before the lists are built.
-constexpr double kLinksPerPatchOpening2 = 50.0;
-
-struct Link {
-  uint32_t receiver, source;
-  float factor;
-};
+// Blocks whose factors are summed into one partial total per node (2 048 patches), and ranges
+// summed at a time (each a partial of the nodes' count of doubles).
+constexpr size_t kSumBlocks = 64;
+constexpr size_t kSumWave = 8;
+// Stored bytes per patch times opening^2 (ClusterBlock: 8 bytes per whole node of a block, 8 per
+// near link), measured at standard's opening 0.2: the 100 x 50 x 6 m hall 87 at 0.5 m patches,
+// 157 at 1 m; the 200 x 100 x 6 m hall 80 and 161 (at 1 m more of the patches lie near an edge,
+// where the links are near ones).
+constexpr double kStoredBytesPerPatchOpening2 = 170.0;
 
 // Builds the tree of patches idx[lo, hi) (room-local), pre-order, returns its root.
 uint32_t build_tree(const PatchMesh& mesh, size_t begin, std::vector<uint32_t>& idx, size_t lo,
@@ -78,6 +87,43 @@ uint32_t build_tree(const PatchMesh& mesh, size_t begin, std::vector<uint32_t>& 
 
 bool is_leaf(const ClusterNode& c) { return c.child[0] == ClusterNode::kNone; }
 
+// whole_node_factor from the parts: source a's centroid and normal, receiver b's normal,
+// centroid (bx, by, bz) and area. In components and branch-free (the tests applied to the
+// computed value), so that the loops over a block's patches vectorise; d2 > 0 between the
+// centroids of two faces.
+inline double node_factor(const Vec3& a_centroid, const Vec3& a_normal, const Vec3& b_normal,
+                          double bx, double by, double bz, double b_area_m2) {
+  const double dx = bx - a_centroid.x, dy = by - a_centroid.y, dz = bz - a_centroid.z;
+  const double h_src = a_normal.x * dx + a_normal.y * dy + a_normal.z * dz;
+  const double h_dst = -(b_normal.x * dx + b_normal.y * dy + b_normal.z * dz);
+  const double f =
+      b_area_m2 * point_kernel_pi_per_m2(h_src, h_dst, dx * dx + dy * dy + dz * dz) / kPi;
+  return h_src > 0.0 && h_dst > 0.0 ? f : 0.0;
+}
+
+// A block's patches' geometry as arrays, for the loops over them.
+struct BlockLeaves {
+  size_t count = 0;
+  Vec3 normal{0.0};  // one face's
+  double x[kBlockPatches], y[kBlockPatches], z[kBlockPatches], area_m2[kBlockPatches];
+
+  BlockLeaves(const ClusterBlock& blk, const std::vector<ClusterNode>& nodes)
+      : count(blk.leaves.size()) {
+    for (size_t k = 0; k < count; ++k) {
+      const ClusterNode& b = nodes[blk.leaves[k]];
+      normal = b.normal;
+      x[k] = b.centroid.x, y[k] = b.centroid.y, z[k] = b.centroid.z, area_m2[k] = b.area_m2;
+    }
+  }
+  // whole_node_factor(a, leaf k) for each bit k of `mask` (0 elsewhere), into f.
+  void factors(const ClusterNode& a, uint32_t mask, double* f) const {
+    for (size_t k = 0; k < count; ++k) {
+      const double v = node_factor(a.centroid, a.normal, normal, x[k], y[k], z[k], area_m2[k]);
+      f[k] = (kBits[k] & mask) != 0 ? v : 0.0;
+    }
+  }
+};
+
 // Some part of each of the two clusters lies in front of the other's plane. If not, one is wholly
 // on or behind the other's plane and every factor between their patches is 0.
 bool face_each_other(const ClusterNode& a, const ClusterNode& b) {
@@ -87,9 +133,23 @@ bool face_each_other(const ClusterNode& a, const ClusterNode& b) {
 
 }  // namespace
 
+size_t ClusteredTransfer::link_bytes() const {
+  size_t b = blocks.size() * sizeof(ClusterBlock);
+  for (const ClusterBlock& blk : blocks)
+    b += (blk.leaves.capacity() + blk.whole_node.capacity() + blk.whole_mask.capacity() +
+          blk.near_begin.capacity() + blk.near_source.capacity()) *
+             sizeof(uint32_t) +
+         blk.near_factor.capacity() * sizeof(float);
+  return b;
+}
+
 size_t ClusteredTransfer::bytes() const {
-  return nodes.size() * sizeof(ClusterNode) + 2 * link_begin.size() * sizeof(uint64_t) +
-         link_source.size() * (sizeof(uint32_t) + sizeof(float)) + n * sizeof(double);
+  return nodes.size() * sizeof(ClusterNode) + link_bytes() + n * sizeof(double);
+}
+
+double whole_node_factor(const ClusterNode& a, const ClusterNode& b) {
+  return node_factor(a.centroid, a.normal, b.normal, b.centroid.x, b.centroid.y, b.centroid.z,
+                     b.area_m2);
 }
 
 bool use_clustered_transfer(const Room& room, double patch_size_m) {
@@ -131,16 +191,15 @@ double patch_pair_form_factor(const Patch& source, const Patch& receiver, double
 }
 
 ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far_ratio,
-                                     bool renormalise) {
+                                     bool renormalise, size_t max_link_bytes) {
   ClusteredTransfer T;
   T.begin = mesh.room_begin[room];
   T.n = mesh.room_begin[room + 1] - T.begin;
   // The quality's opening, or a wider one where its links would not fit kMaxClusteredLinkBytes
-  // (about kLinksPerPatchOpening2 / opening^2 links per patch, with a fifth to spare): reference
-  // on a hall of 250 000 patches would need ~3 200 links per patch at its 0.125.
-  const double fit =
-      std::sqrt(1.2 * kLinksPerPatchOpening2 * static_cast<double>(T.n) *
-                (sizeof(uint32_t) + sizeof(float)) / static_cast<double>(kMaxClusteredLinkBytes));
+  // (about kStoredBytesPerPatchOpening2 / opening^2 bytes per patch, with a fifth to spare):
+  // reference on a hall of 250 000 patches would need ~2.7 GB at its 0.125.
+  const double fit = std::sqrt(1.2 * kStoredBytesPerPatchOpening2 * static_cast<double>(T.n) /
+                               static_cast<double>(max_link_bytes));
   T.opening = std::max(cluster_opening(far_ratio), fit);
   const double far = std::isfinite(far_ratio) ? far_ratio : kClusteredReferenceFarRatio;
   const size_t n = T.n;
@@ -162,10 +221,9 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
   const size_t node_count = T.nodes.size();
 
   // Receiver blocks: subtrees of at most kBlockPatches patches of each face's tree, with their
-  // patches and largest patch diameter.
-  struct Block {
+  // leaves and largest patch diameter.
+  struct BlockRoot {
     uint32_t node = 0, face = 0;
-    std::vector<uint32_t> patches;
     double max_diameter_m = 0.0;
   };
   std::vector<uint32_t> count(node_count, 0);  // patches under each node
@@ -173,7 +231,7 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
     const ClusterNode& c = T.nodes[a];
     count[a] = is_leaf(c) ? 1 : count[c.child[0]] + count[c.child[1]];
   }
-  std::vector<Block> blocks;
+  std::vector<BlockRoot> block_roots;
   for (size_t f = 0; f < T.roots.size(); ++f) {
     std::vector<uint32_t> stack{T.roots[f]};
     while (!stack.empty()) {
@@ -184,60 +242,54 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
         stack.push_back(T.nodes[r].child[0]);
         continue;
       }
-      Block blk;
-      blk.node = r, blk.face = uint32_t(f);
+      BlockRoot root;
+      ClusterBlock blk;
+      root.node = r, root.face = uint32_t(f);
       std::vector<uint32_t> sub{r};
       while (!sub.empty()) {
         const uint32_t x = sub.back();
         sub.pop_back();
         const ClusterNode& c = T.nodes[x];
         if (is_leaf(c)) {
-          blk.patches.push_back(c.patch);
-          blk.max_diameter_m = std::max(blk.max_diameter_m, c.diameter_m);
+          blk.leaves.push_back(x);
+          root.max_diameter_m = std::max(root.max_diameter_m, c.diameter_m);
         } else {
           sub.push_back(c.child[1]);
           sub.push_back(c.child[0]);
         }
       }
-      blocks.push_back(std::move(blk));
+      block_roots.push_back(root);
+      T.blocks.push_back(std::move(blk));
     }
   }
-  std::vector<uint32_t> leaf_of(n);
-  for (uint32_t a = 0; a < node_count; ++a)
-    if (is_leaf(T.nodes[a])) leaf_of[T.nodes[a].patch] = a;
 
-  // The interaction list of each receiving patch. A block first descends each other face's tree
-  // once for all its patches: a node culled for the block's box is culled for each patch, one
-  // accepted for the box (its diameter and the block's patches' below the opening ratio times
-  // the smallest distance, each wholly in front of the other) is accepted by each patch, one
-  // that no patch can accept (its diameter above the opening ratio times the largest distance)
-  // is opened; the rest (and leaves) are where each patch continues the descent by itself. The
-  // links are those of a descent per patch from the roots.
+  // The interaction lists. A block first descends each other face's tree once for all its
+  // patches: a node culled for the block's box is culled for each patch; one accepted for the box
+  // (its diameter and the block's patches' below the opening ratio times the smallest distance,
+  // each wholly in front of the other) is accepted by each patch and kept once for the block
+  // (all bits of its ClusterBlock::whole_mask); one that no patch can accept (its diameter above
+  // the opening ratio times the largest distance) is opened; the rest (and leaves) are where each
+  // patch continues the descent by itself, into its own links. The links are those of a descent per
+  // patch from the roots (Clustered.BlockSharedLinksAreThoseOfADescentPerPatch).
   const double opening2 = T.opening * T.opening;
-  constexpr size_t kLinkBytes = sizeof(uint32_t) + sizeof(float);
-  T.link_begin.assign(n, 0);
-  T.link_end.assign(n, 0);
-  // Reserved at the expected count (kLinksPerPatchOpening2 / opening^2 per patch, plus a tenth):
-  // growing by doubling copied the links several times (a tenth of the hall's run, with the page
-  // faults of each new block).
-  const size_t expected = static_cast<size_t>(1.1 * kLinksPerPatchOpening2 / opening2 * n);
-  T.link_source.reserve(expected);
-  T.link_factor.reserve(expected);
-  std::vector<std::vector<Link>> block_links(kWaveBlocks);
-  // In waves of kWaveBlocks blocks, appended after each wave: the links are held twice (per block
-  // and compressed) for one wave only.
-  for (size_t wave = 0; wave < blocks.size(); wave += kWaveBlocks) {
-    const size_t wave_end = std::min(blocks.size(), wave + kWaveBlocks);
+  // In waves of kWaveBlocks blocks, the memory checked after each.
+  size_t stored_bytes = 0;
+  for (size_t wave = 0; wave < T.blocks.size(); wave += kWaveBlocks) {
+    const size_t wave_end = std::min(T.blocks.size(), wave + kWaveBlocks);
     tbb::parallel_for(wave, wave_end, [&](size_t w) {
-      const Block& blk = blocks[w];
-      const ClusterNode& R = T.nodes[blk.node];
-      std::vector<Link>& out = block_links[w - wave];
-      std::vector<uint32_t> accepted, candidates, stack;
-      // Per patch, grouped by patch: links of blk.patches[k] go to per_patch[k].
-      std::vector<std::vector<Link>> per_patch(blk.patches.size());
+      const BlockRoot& root = block_roots[w];
+      const ClusterNode& R = T.nodes[root.node];
+      ClusterBlock& blk = T.blocks[w];
+      std::vector<uint32_t> candidates, stack;
+      // The nodes patches take by themselves (node, k: taken by blk.leaves[k]), and per patch its
+      // links to single source patches.
+      std::vector<std::pair<uint32_t, uint32_t>> own;
+      const uint32_t all =
+          blk.leaves.size() == 32 ? ~uint32_t(0) : (uint32_t(1) << blk.leaves.size()) - 1;
+      std::vector<std::vector<std::pair<uint32_t, float>>> near(blk.leaves.size());
       for (size_t f = 0; f < T.roots.size(); ++f) {
-        if (f == blk.face) continue;  // a face does not light itself
-        accepted.clear(), candidates.clear();
+        if (f == root.face) continue;  // a face does not light itself
+        candidates.clear();
         stack.push_back(T.roots[f]);
         while (!stack.empty()) {
           const uint32_t a_id = stack.back();
@@ -248,11 +300,12 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
             candidates.push_back(a_id);
             continue;
           }
-          const double dm = std::max(a.diameter_m, blk.max_diameter_m);
+          const double dm = std::max(a.diameter_m, root.max_diameter_m);
           if (dm * dm < opening2 * geometry::box_distance2(a.centroid, R.lo, R.hi) &&
               box_min_height(a.normal, a.centroid, R.lo, R.hi) > -kFrontTolerance_m &&
               box_min_height(R.normal, R.centroid, a.lo, a.hi) > -kFrontTolerance_m) {
-            accepted.push_back(a_id);
+            blk.whole_node.push_back(a_id);
+            blk.whole_mask.push_back(all);
             continue;
           }
           const Vec3 far_corner =
@@ -264,22 +317,9 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
           }
           candidates.push_back(a_id);
         }
-        for (size_t k = 0; k < blk.patches.size(); ++k) {
-          const uint32_t i = blk.patches[k];
-          const ClusterNode& b = T.nodes[leaf_of[i]];
-          const Patch& dst = mesh.patches[T.begin + i];
-          std::vector<Link>& mine = per_patch[k];
-          for (const uint32_t a_id : accepted) {
-            const ClusterNode& a = T.nodes[a_id];
-            if (!(box_max_height(a.normal, a.centroid, b.lo, b.hi) > kEdgeOnDistance_m)) continue;
-            const Vec3 d = b.centroid - a.centroid;
-            const double h_src = glm::dot(a.normal, d), h_dst = -glm::dot(b.normal, d);
-            if (h_src > 0.0 && h_dst > 0.0) {
-              const double f =
-                  b.area_m2 * point_kernel_pi_per_m2(h_src, h_dst, glm::dot(d, d)) / kPi;
-              mine.push_back({i, a_id, static_cast<float>(f)});
-            }
-          }
+        for (size_t k = 0; k < blk.leaves.size(); ++k) {
+          const ClusterNode& b = T.nodes[blk.leaves[k]];
+          const Patch& dst = mesh.patches[T.begin + b.patch];
           for (const uint32_t c : candidates) {
             stack.push_back(c);
             while (!stack.empty()) {
@@ -289,7 +329,7 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
               if (!face_each_other(a, b)) continue;
               if (is_leaf(a)) {
                 const double f = patch_pair_form_factor(mesh.patches[T.begin + a.patch], dst, far);
-                if (f > 0.0) mine.push_back({i, a_id, static_cast<float>(f)});
+                if (f > 0.0) near[k].push_back({a_id, static_cast<float>(f)});
                 continue;
               }
               // A source node is taken whole when it and the receiver are small against their
@@ -297,16 +337,11 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
               // then of second order in the opening ratio (the first-order terms vanish at the
               // area-weighted centroid, for a node of uniform exitance).
               const Vec3 d = b.centroid - a.centroid;
-              const double d2 = glm::dot(d, d);
               const double dm = std::max(a.diameter_m, b.diameter_m);
-              if (dm * dm < opening2 * d2 &&
+              if (dm * dm < opening2 * glm::dot(d, d) &&
                   box_min_height(a.normal, a.centroid, b.lo, b.hi) > -kFrontTolerance_m &&
                   box_min_height(b.normal, b.centroid, a.lo, a.hi) > -kFrontTolerance_m) {
-                const double h_src = glm::dot(a.normal, d), h_dst = -glm::dot(b.normal, d);
-                if (h_src > 0.0 && h_dst > 0.0) {
-                  const double f = b.area_m2 * point_kernel_pi_per_m2(h_src, h_dst, d2) / kPi;
-                  mine.push_back({i, a_id, static_cast<float>(f)});
-                }
+                if (whole_node_factor(a, b) > 0.0) own.push_back({a_id, uint32_t(k)});
                 continue;
               }
               stack.push_back(a.child[0]);
@@ -315,51 +350,83 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
           }
         }
       }
-      for (auto& mine : per_patch) out.insert(out.end(), mine.begin(), mine.end());
-    });
-    // Appended in block order, each block copied in parallel at its offset.
-    std::vector<size_t> offset(wave_end - wave + 1, T.link_source.size());
-    for (size_t w = wave; w < wave_end; ++w)
-      offset[w - wave + 1] = offset[w - wave] + block_links[w - wave].size();
-    T.link_source.resize(offset.back());
-    T.link_factor.resize(offset.back());
-    tbb::parallel_for(wave, wave_end, [&](size_t w) {
-      std::vector<Link>& links = block_links[w - wave];
-      const size_t o = offset[w - wave];
-      for (size_t k = 0; k < links.size(); ++k) {
-        const Link& l = links[k];
-        if (k == 0 || l.receiver != links[k - 1].receiver) T.link_begin[l.receiver] = o + k;
-        T.link_source[o + k] = l.source;
-        T.link_factor[o + k] = l.factor;
-        T.link_end[l.receiver] = o + k + 1;
+      // The own nodes merged into one entry per node, in node order.
+      std::sort(own.begin(), own.end());
+      for (size_t e = 0; e < own.size(); ++e) {
+        if (e == 0 || own[e].first != own[e - 1].first) {
+          blk.whole_node.push_back(own[e].first);
+          blk.whole_mask.push_back(0);
+        }
+        blk.whole_mask.back() |= uint32_t(1) << own[e].second;
       }
-      std::vector<Link>().swap(links);
+      blk.whole_node.shrink_to_fit();
+      blk.whole_mask.shrink_to_fit();
+      size_t near_count = 0;
+      for (const auto& links : near) near_count += links.size();
+      blk.near_begin.reserve(near.size() + 1);
+      blk.near_source.reserve(near_count);
+      blk.near_factor.reserve(near_count);
+      blk.near_begin.push_back(0);
+      for (const auto& links : near) {
+        for (const auto& [source, factor] : links) {
+          blk.near_source.push_back(source);
+          blk.near_factor.push_back(factor);
+        }
+        blk.near_begin.push_back(static_cast<uint32_t>(blk.near_source.size()));
+      }
     });
-    if (T.link_source.size() * kLinkBytes > kMaxClusteredLinkBytes)
+    for (size_t w = wave; w < wave_end; ++w) {
+      const ClusterBlock& blk = T.blocks[w];
+      stored_bytes += (blk.whole_node.size() + blk.whole_mask.size() + blk.near_source.size()) *
+                          sizeof(uint32_t) +
+                      blk.near_factor.size() * sizeof(float);
+    }
+    if (stored_bytes > max_link_bytes)
       throw CalculationError("indirect: room " + std::to_string(room) + " (" + std::to_string(n) +
                              " patches): the clustered transfer needs more than " +
-                             std::to_string(kMaxClusteredLinkBytes / kBytesPerMegabyte) +
+                             std::to_string(max_link_bytes / kBytesPerMegabyte) +
                              " MB of links (limit)");
   }
-  if (T.link_source.capacity() > T.link_source.size() + T.link_source.size() / 4) {
-    T.link_source.shrink_to_fit();
-    T.link_factor.shrink_to_fit();
-  }
 
-  // Total factor per patch: its own links' and its ancestors' (the stored floats, in double).
-  // Summed per fixed range of links (in range order below: the same result on any number of
-  // threads), in parallel.
-  constexpr size_t kSumRange = size_t(1) << 22;
-  const size_t ranges = (T.link_source.size() + kSumRange - 1) / kSumRange;
-  std::vector<std::vector<double>> partial(ranges);
-  tbb::parallel_for(size_t(0), ranges, [&](size_t r) {
-    partial[r].assign(node_count, 0.0);
-    for (size_t k = r * kSumRange, e = std::min(T.link_source.size(), k + kSumRange); k < e; ++k)
-      partial[r][T.link_source[k]] += static_cast<double>(T.link_factor[k]);
-  });
+  // Total factor per patch: its own links' and its ancestors' (the floats the sweeps use, in
+  // double), and the count of links. Summed per fixed range of blocks, in range order below (the
+  // same result on any number of threads), kSumWave ranges at a time in parallel.
+  const size_t ranges = (T.blocks.size() + kSumBlocks - 1) / kSumBlocks;
   std::vector<double> total(node_count, 0.0);
-  for (const auto& p : partial)
-    for (size_t a = 0; a < node_count; ++a) total[a] += p[a];
+  std::vector<std::vector<double>> partial(std::min(ranges, kSumWave));
+  std::vector<size_t> partial_links(partial.size());
+  for (size_t wave = 0; wave < ranges; wave += kSumWave) {
+    const size_t wave_end = std::min(ranges, wave + kSumWave);
+    tbb::parallel_for(wave, wave_end, [&](size_t r) {
+      std::vector<double>& sum = partial[r - wave];
+      sum.assign(node_count, 0.0);
+      size_t links = 0;
+      for (size_t w = r * kSumBlocks, e = std::min(T.blocks.size(), w + kSumBlocks); w < e; ++w) {
+        const ClusterBlock& blk = T.blocks[w];
+        const BlockLeaves leaves(blk, T.nodes);
+        double f[kBlockPatches];
+        for (size_t e = 0; e < blk.whole_node.size(); ++e) {
+          leaves.factors(T.nodes[blk.whole_node[e]], blk.whole_mask[e], f);
+          double s = 0.0;
+          for (size_t k = 0; k < leaves.count; ++k) {
+            s += f[k];
+            links += f[k] > 0.0;
+          }
+          sum[blk.whole_node[e]] += s;
+        }
+        for (size_t l = 0; l < blk.near_source.size(); ++l)
+          sum[blk.near_source[l]] += static_cast<double>(blk.near_factor[l]);
+        links += blk.near_source.size();
+      }
+      partial_links[r - wave] = links;
+    });
+    for (size_t r = wave; r < wave_end; ++r) {
+      const std::vector<double>& sum = partial[r - wave];
+      for (size_t a = 0; a < node_count; ++a) total[a] += sum[a];
+      T.link_count += partial_links[r - wave];
+    }
+  }
+  std::vector<std::vector<double>>().swap(partial);
   for (size_t a = 0; a < node_count; ++a) {
     const ClusterNode& c = T.nodes[a];
     if (is_leaf(c)) continue;
@@ -389,16 +456,24 @@ void apply_clustered(const ClusteredTransfer& T, const std::vector<double>& shot
         is_leaf(c) ? shot[c.patch] * T.source_scale[c.patch] : flux[c.child[0]] + flux[c.child[1]];
   }
   received.resize(T.n);
-  tbb::parallel_for(size_t(0), T.n, [&](size_t i) {
-    const uint64_t k0 = T.link_begin[i], k1 = T.link_end[i];
-    double s0 = 0.0, s1 = 0.0;
-    uint64_t k = k0;
-    for (; k + 2 <= k1; k += 2) {
-      s0 += static_cast<double>(T.link_factor[k]) * flux[T.link_source[k]];
-      s1 += static_cast<double>(T.link_factor[k + 1]) * flux[T.link_source[k + 1]];
+  tbb::parallel_for(size_t(0), T.blocks.size(), [&](size_t w) {
+    const ClusterBlock& blk = T.blocks[w];
+    const BlockLeaves leaves(blk, T.nodes);
+    const size_t count = leaves.count;
+    double sum[kBlockPatches] = {};
+    double f[kBlockPatches];
+    for (size_t e = 0; e < blk.whole_node.size(); ++e) {
+      const double f_a = flux[blk.whole_node[e]];
+      if (f_a == 0.0) continue;
+      leaves.factors(T.nodes[blk.whole_node[e]], blk.whole_mask[e], f);
+      for (size_t k = 0; k < count; ++k) sum[k] += f[k] * f_a;
     }
-    if (k < k1) s0 += static_cast<double>(T.link_factor[k]) * flux[T.link_source[k]];
-    received[i] = s0 + s1;
+    for (size_t k = 0; k < count; ++k) {
+      double s = sum[k];
+      for (uint32_t l = blk.near_begin[k]; l < blk.near_begin[k + 1]; ++l)
+        s += static_cast<double>(blk.near_factor[l]) * flux[blk.near_source[l]];
+      received[T.nodes[blk.leaves[k]].patch] = s;
+    }
   });
 }
 

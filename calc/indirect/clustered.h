@@ -32,6 +32,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "calc/indirect/limits.h"
 #include "calc/indirect/patches.h"
 #include "calc/scene.h"
 
@@ -49,25 +50,48 @@ struct ClusterNode {
   static constexpr uint32_t kNone = UINT32_MAX;
 };
 
+// The receivers of one descent: at most 32 patches of one face (a subtree of its tree), which
+// descend the other faces' trees together and share their lists.
+struct ClusterBlock {
+  std::vector<uint32_t> leaves;  // the patches' leaf nodes (ClusterNode::patch: the patch)
+  // The source nodes its patches take whole, each once for the block: node whole_node[e] is
+  // linked to leaves[k] for each bit k of whole_mask[e] (all bits: a node accepted for the
+  // block's bounding box). The factor is the point kernel (whole_node_factor), computed from the
+  // two nodes in every sweep instead of stored: neighbouring patches take mostly the same nodes,
+  // so a node costs 8 bytes per block instead of 8 per patch.
+  std::vector<uint32_t> whole_node;
+  std::vector<uint32_t> whole_mask;
+  // Each patch's links to single source patches, with the dense path's factor
+  // (patch_pair_form_factor, stored: mostly exact or quarter-rule factors of nearby patches):
+  // those of leaves[k] are [near_begin[k], near_begin[k + 1]), a source leaf and its factor.
+  std::vector<uint32_t> near_begin;
+  std::vector<uint32_t> near_source;
+  std::vector<float> near_factor;
+};
+
 struct ClusteredTransfer {
   size_t begin = 0, n = 0;  // patches [begin, begin + n) of the mesh
   // Nodes of all faces, each face's tree in pre-order (a parent before its children).
   std::vector<ClusterNode> nodes;
   std::vector<uint32_t> roots;  // per face
-  // Interaction lists by receiving patch: the links of patch i are [link_begin[i], link_end[i]),
-  // each a source node link_source[k] and its factor link_factor[k] (F per unit flux leaving the
-  // source node).
-  std::vector<uint64_t> link_begin, link_end;
-  std::vector<uint32_t> link_source;
-  std::vector<float> link_factor;
+  std::vector<ClusterBlock> blocks;
   std::vector<double> source_scale;  // per patch: kept / its total factor (1 if not renormalised)
   double max_row_correction = 0.0;   // largest |kept - total factor| before renormalisation
   // The acceptance ratio the links were built with: cluster_opening(far_ratio), or wider where
   // that many links would not fit kMaxClusteredLinkBytes (a note says so).
   double opening = 0.0;
-  size_t links() const { return link_source.size(); }
-  size_t bytes() const;  // memory of the nodes and links
+  // Links (patch, node) with a factor > 0, shared and own: what a list per patch would hold.
+  size_t link_count = 0;
+  size_t links() const { return link_count; }
+  size_t link_bytes() const;  // memory of the blocks (their nodes and links)
+  size_t bytes() const;       // memory of the nodes and blocks
 };
+
+// F[a -> b] per unit flux leaving node a, for a node that receiving patch b (its leaf node) takes
+// whole: the point kernel between their centroids, b's area x h_src h_dst / (pi d^4), 0 unless
+// each centroid lies in front of the other's plane. Computed in
+// each sweep (and once for the totals the scale is made from: the same numbers), not stored.
+double whole_node_factor(const ClusterNode& a, const ClusterNode& b);
 
 // True when `room` is solved with the clustered transfer at `patch_size_m`: its outline is convex,
 // it has no obstacles (nothing blocks light inside it) and its surface area / size^2 exceeds
@@ -98,12 +122,15 @@ inline constexpr double kClusteredReferenceFarRatio = 8.0;
 // The operator of room `room` (its visibility must be null: nothing blocks). `renormalise`:
 // scale each patch's shot to a total factor of its kept fraction (patches.h: 1 in a closed room,
 // less the share leaving through openings). Parallel. Throws
-// CalculationError when the links would exceed kMaxClusteredLinkBytes (limits.h).
+// CalculationError when the links would exceed max_link_bytes (kMaxClusteredLinkBytes, limits.h;
+// a larger one only for finer references, IndirectOptions::max_clustered_link_bytes).
 ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far_ratio,
-                                     bool renormalise = true);
+                                     bool renormalise = true,
+                                     size_t max_link_bytes = kMaxClusteredLinkBytes);
 
 // received[i] = sum over sources j of F[j -> i] x shot[j] x source_scale[j] (room-local
-// indices): one sweep of the bounce series. `work` is scratch of nodes.size() doubles x 2.
+// indices): one sweep of the bounce series, block by block in parallel (the shared links'
+// factors computed as it goes). `work` is scratch of nodes.size() doubles.
 void apply_clustered(const ClusteredTransfer& T, const std::vector<double>& shot,
                      std::vector<double>& received, std::vector<double>& work);
 

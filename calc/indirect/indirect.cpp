@@ -394,7 +394,8 @@ std::unique_ptr<const IndirectSolution> solve_indirect(const Scene& scene,
       none.n = end - begin;
       sol = solve_radiosity(none, rho, incident, 1, tol);
     } else if (budgets.clustered[r]) {
-      const ClusteredTransfer T = clustered_transfer(mesh, static_cast<int>(r), room_far[r]);
+      const ClusteredTransfer T = clustered_transfer(mesh, static_cast<int>(r), room_far[r], true,
+                                                     options.max_clustered_link_bytes);
       res.max_row_correction = std::max(res.max_row_correction, T.max_row_correction);
       // A wider ratio than the quality's is not what the quality's accuracy was measured with
       // (docs/indirect.md, "Large rooms"): a warning, not a note.
@@ -405,7 +406,7 @@ std::unique_ptr<const IndirectSolution> solve_indirect(const Scene& scene,
         n.opening = T.opening;
         n.quality_opening = cluster_opening(room_far[r]);
         n.patches = T.n;
-        n.limit_mb = kMaxClusteredLinkBytes / kBytesPerMegabyte;
+        n.limit_mb = options.max_clustered_link_bytes / kBytesPerMegabyte;
         res.warnings.push_back(std::move(n));
       }
       res.clustered_rooms += 1;

@@ -45,6 +45,9 @@ struct IndirectOptions {
   // together at most kMaxTotalPatches (limits.h).
   size_t max_patches_per_room = kDefaultPatchesPerRoom;
   double far_ratio = 0.0;  // 0: the quality's (draft 3, standard 5, high 8, reference: never)
+  // The links of one clustered room at most (clustered.h); a larger value only for finer
+  // references than a project can ask for (bench/hall_reference.cpp: a smaller opening ratio).
+  size_t max_clustered_link_bytes = kMaxClusteredLinkBytes;
   double tolerance = 0.0;  // 0: the quality's (draft 1e-2, standard 1e-3, high 1e-4, ref 1e-6)
   // Patches a receiver comes close to gathered cell by cell (subcells.h); draft does not.
   bool refine_near_patches = true;
