@@ -15,14 +15,23 @@
 // of second order in that ratio: the first-order terms vanish at the area-weighted centroid for
 // a node of uniform exitance); otherwise its children are tried; a single source patch takes the
 // dense path's factor (patch_pair_form_factor: exact, quarter rule or point kernel by far_ratio). A
-// link stores F[node -> patch] per unit flux leaving the node: A_i x kernel / pi.
+// link is F[node -> patch] per unit flux leaving the node: A_i x kernel / pi.
+//
+// Storage: neighbouring receivers take mostly the same source nodes, and a node taken whole needs
+// nothing but the two centroids and normals for its factor. So the receivers descend in blocks
+// of up to 32 patches of one face (ClusterBlock), each source node a block's patches take whole is
+// kept once for the block with a 32-bit mask of the patches that take it, and its factors are
+// computed in each sweep (whole_node_factor); only the links to single nearby source patches
+// (exact or quarter-rule factors, costly) are stored with their factor. On the 200 x 100 x 6 m
+// hall at standard: 260 million links in 347 MB, where lists of (node, float) per patch took
+// 8 bytes a link (2.1 GB; docs/indirect.md, "Large rooms").
 //
 // Receivers are not clustered: a receiving cluster spreads what it gathers uniformly over its
 // patches, an error of first order in its size (the irradiance from a nearby wall falls across
 // it), measured at 25 % of the transferred light on single patches of a 12 x 8 x 3 m room.
 //
 // One transfer (a sweep): the shot flux of each patch is pulled up the trees (a node's flux is its
-// patches' sum) and every patch sums its list.
+// patches' sum) and every patch sums its links, block by block.
 //
 // Flux conservation: the factor a patch j shoots with in all is the sum over j and its ancestors
 // of their links' factors (the light of a node leaves from each of its patches). Each patch's
@@ -116,7 +125,8 @@ double cluster_opening(double far_ratio);
 inline constexpr double kClusteredLinksPerPatch = 1260.0;
 // The far ratio a clustered room uses at `reference` quality, where the dense path is always
 // exact: 8 patch (or cluster) diameters, the opening ratio 0.125 (as `high`; the links of a finer
-// one would not fit kMaxClusteredLinkBytes on a large hall, where the ratio is widened anyway).
+// one would not fit kMaxClusteredLinkBytes on a large hall, where the ratio is widened anyway:
+// the 250 000 patches of the largest would need about 2.7 GB at 0.125).
 inline constexpr double kClusteredReferenceFarRatio = 8.0;
 
 // The operator of room `room` (its visibility must be null: nothing blocks). `renormalise`:

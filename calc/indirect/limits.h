@@ -29,13 +29,16 @@ inline constexpr size_t kMaxTotalPatches = 100000;
 // sqrt(10 000 / 4 000) = 1.6 times coarser than asked, and its results stay exactly as they were.
 inline constexpr size_t kClusteredAbovePatches = kMaxPatchesPerRoom;
 // Patches per clustered room at most: 174 400 patches mesh a 200 x 100 x 6 m hall at 0.5 m; a
-// patch with its polygon, tree node and gather entry takes about 0.7 kB, and its links 8 bytes
-// each, about 300 at standard (2.4 kB) and 760 at high (6 kB), so 250 000 patches take about
-// 0.8 GB at standard; at high or reference the links' own limit below widens the opening ratio
-// (clustered.h). Above it the patch size grows to fit, as for the dense budget.
+// patch with its polygon, tree node and gather entry takes about 0.7 kB, and its links about
+// 170 / opening^2 bytes at most (clustered.h: shared per block of patches, only the near ones
+// stored with their factor; 2 kB at standard on that hall, 4 kB at a patch size of 1 m), so
+// 250 000 patches take about 0.7 GB at standard; at high or reference the links' own limit below
+// widens the opening ratio (clustered.h). Above it the patch size grows to fit, as for the dense
+// budget.
 inline constexpr size_t kMaxClusteredPatchesPerRoom = 250000;
-// The links of one clustered room at most (8 bytes each): rooms are solved one after the other
-// and each room's links are freed before the next, as the dense matrices are.
+// The links of one clustered room at most (ClusteredTransfer::link_bytes: 8 bytes per whole node
+// of a block, 8 per near link): rooms are solved one after the other and each room's links are
+// freed before the next, as the dense matrices are.
 inline constexpr size_t kMaxClusteredLinkBytes = size_t(1500) * 1000000;
 // Patches in all clustered rooms together at most (the dense rooms count against
 // kMaxTotalPatches): 300 000 patches, about 150 MB with their polygons and gather entries.
