@@ -259,10 +259,9 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
               const Vec3 from = x + n * kGatherLift_m;
               const double v = visible_fraction(visibility, from, p, kGatherLift_m);
               // A shadow edge on the patch: resolved cell by cell (partial_visibility.h).
-              e = v > 0.0 && v < 1.0
-                      ? partial_cells_integral(x, n, {&from, 1}, p, cells, 0.0, far_ratio,
-                                               *visibility, kGatherLift_m, true)
-                      : e * v;
+              e = v > 0.0 && v < 1.0 ? partial_cells_integral(x, n, from, p, cells, 0.0, far_ratio,
+                                                              *visibility, kGatherLift_m)
+                                     : e * v;
             }
             near += e;
             continue;
@@ -272,8 +271,8 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
             const Vec3 from = x + n * kGatherLift_m;
             const double v = visible_fraction(visibility, from, p, kGatherLift_m);
             if (v > 0.0 && v < 1.0 && p.has_quarters) {
-              near += partial_cells_integral(x, n, {&from, 1}, p, nullptr, flux[k] / p.area_m2,
-                                             far_ratio, *visibility, kGatherLift_m, true);
+              near += partial_cells_integral(x, n, from, p, nullptr, flux[k] / p.area_m2, far_ratio,
+                                             *visibility, kGatherLift_m);
               continue;
             }
             f *= v;

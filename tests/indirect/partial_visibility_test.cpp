@@ -61,8 +61,7 @@ TEST(PartialVisibility, CellsResolveAShadowEdgeToACell) {
     const double exact = visible_part_form_factor(2.0 * edge);
     const double five =
         point_polygon_form_factor(x, n, p.polygon) * visible_fraction(&occluder, from, p, 1e-6);
-    const double cells =
-        partial_cells_integral(x, n, {&from, 1}, p, nullptr, 1.0, 5.0, occluder, 1e-6, true);
+    const double cells = partial_cells_integral(x, n, from, p, nullptr, 1.0, 5.0, occluder, 1e-6);
     // A cell is a quarter of the patch wide, its samples an eighth apart: the edge is placed to
     // within half a cell, so the error is at most the form factor of a strip of half a cell's
     // width at the edge (the strip's factor is at most its area's share at normal incidence,
@@ -85,12 +84,10 @@ TEST(PartialVisibility, WhollyVisibleCellsSumToThePatchFactor) {
   const Vec3 from = x + n * 1e-6;
   const HalfPlaneOccluder none(10.0);
   const double whole = point_polygon_form_factor(x, n, p.polygon);
-  EXPECT_NEAR(partial_cells_integral(x, n, {&from, 1}, p, nullptr, 1.0, 1e9, none, 1e-6, true),
-              whole, 1e-12);
+  EXPECT_NEAR(partial_cells_integral(x, n, from, p, nullptr, 1.0, 1e9, none, 1e-6), whole, 1e-12);
   std::vector<double> weight(kSubcellsPerSide * kSubcellsPerSide, 3.0);
-  EXPECT_NEAR(
-      partial_cells_integral(x, n, {&from, 1}, p, weight.data(), 0.0, 1e9, none, 1e-6, false),
-      3.0 * whole, 3e-12);
+  EXPECT_NEAR(partial_cells_integral(x, n, from, p, weight.data(), 0.0, 1e9, none, 1e-6),
+              3.0 * whole, 3e-12);
 }
 
 }  // namespace
