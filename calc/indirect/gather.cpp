@@ -7,6 +7,7 @@
 
 #include "calc/indirect/far_kernels.h"
 #include "calc/indirect/form_factor.h"
+#include "calc/indirect/partial_visibility.h"
 #include "geometry/box3.h"
 
 namespace luxgrid::calc::indirect {
@@ -165,11 +166,7 @@ double gather_cells(const Vec3& x, const Vec3& n, const Patch& p, const double* 
       if (!(m > 0.0)) continue;
       const SubcellCorners cell = subcell_corners(p, a, b);
       const Vec3 centre = 0.25 * (cell[0] + cell[1] + cell[2] + cell[3]);
-      const Vec3 d = x - centre;
-      const double f = glm::dot(d, d) > near_d2
-                           ? point_kernel_form_factor(x, n, centre, p.normal, cell_area)
-                           : point_polygon_form_factor(x, n, cell.data(), 4);
-      e += m * f;
+      e += m * subcell_form_factor(x, n, p, cell, centre, cell_area, near_d2);
     }
   return e;
 }
@@ -256,16 +253,30 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
           const Patch& p = mesh.patches[set.patch[k]];
           if (set.first_cell[k] >= 0 &&
               d2 < kSubcellReach * kSubcellReach * p.diameter_m * p.diameter_m) {
-            double e =
-                gather_cells(x, n, p, &set.cell_exitance_lm_m2[set.first_cell[k]], far_ratio);
-            if (e > 0.0 && visibility)
-              e *= visible_fraction(visibility, x + n * kGatherLift_m, p, kGatherLift_m);
+            const double* cells = &set.cell_exitance_lm_m2[set.first_cell[k]];
+            double e = gather_cells(x, n, p, cells, far_ratio);
+            if (e > 0.0 && visibility) {
+              const Vec3 from = x + n * kGatherLift_m;
+              const double v = visible_fraction(visibility, from, p, kGatherLift_m);
+              // A shadow edge on the patch: resolved cell by cell (partial_visibility.h).
+              e = v > 0.0 && v < 1.0 ? partial_cells_integral(x, n, from, p, cells, 0.0, far_ratio,
+                                                              *visibility, kGatherLift_m)
+                                     : e * v;
+            }
             near += e;
             continue;
           }
           double f = gather_form_factor(x, n, p, far_ratio, d2 > set.near_d2[k]);
-          if (f > 0.0 && visibility)
-            f *= visible_fraction(visibility, x + n * kGatherLift_m, p, kGatherLift_m);
+          if (f > 0.0 && visibility) {
+            const Vec3 from = x + n * kGatherLift_m;
+            const double v = visible_fraction(visibility, from, p, kGatherLift_m);
+            if (v > 0.0 && v < 1.0 && p.has_quarters) {
+              near += partial_cells_integral(x, n, from, p, nullptr, flux[k] / p.area_m2, far_ratio,
+                                             *visibility, kGatherLift_m);
+              continue;
+            }
+            f *= v;
+          }
           near += flux[k] / p.area_m2 * f;
         }
       }

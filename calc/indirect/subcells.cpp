@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "calc/indirect/form_factor.h"
+
 namespace luxgrid::calc::indirect {
 
 SubcellCorners subcell_corners(const Patch& p, int a, int b) {
@@ -10,6 +12,13 @@ SubcellCorners subcell_corners(const Patch& p, int a, int b) {
   const Vec3 e2 = (p.polygon[3] - o) / static_cast<double>(kSubcellsPerSide);
   const Vec3 c0 = o + static_cast<double>(a) * e1 + static_cast<double>(b) * e2;
   return {c0, c0 + e1, c0 + e1 + e2, c0 + e2};
+}
+
+double subcell_form_factor(const Vec3& x, const Vec3& n, const Patch& p, const SubcellCorners& cell,
+                           const Vec3& centre, double cell_area_m2, double near_d2) {
+  const Vec3 d = x - centre;
+  return glm::dot(d, d) > near_d2 ? point_kernel_form_factor(x, n, centre, p.normal, cell_area_m2)
+                                  : point_polygon_form_factor(x, n, cell.data(), 4);
 }
 
 CellMesh cell_mesh(const PatchMesh& mesh, const std::vector<char>& refine) {

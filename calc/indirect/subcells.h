@@ -49,6 +49,13 @@ inline constexpr double kCellNearGather = 3.0;
 using SubcellCorners = std::array<Vec3, 4>;
 SubcellCorners subcell_corners(const Patch& p, int a, int b);
 
+// The form factor from the point (x, n) to one cell of patch p (its corners and centre): the point
+// kernel on the cell beyond sqrt(near_d2) (far_ratio x the cell's diameter), Lambert's polygon
+// formula closer. The final gather's cells (gather.cpp) and partly hidden patches
+// (partial_visibility.h) both take it.
+double subcell_form_factor(const Vec3& x, const Vec3& n, const Patch& p, const SubcellCorners& cell,
+                           const Vec3& centre, double cell_area_m2, double near_d2);
+
 struct SubcellExitance {
   // Per patch of the mesh: the index in exitance_lm_m2 of its first cell, or -1 (not refined).
   std::vector<long> first;

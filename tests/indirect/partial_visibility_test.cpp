@@ -1,0 +1,94 @@
+// A patch partly hidden from a receiver (calc/indirect/partial_visibility.h): its cells, each with
+// its own visible fraction, against the exact form factor of the visible part (Lambert's polygon
+// formula on the part the occluder leaves), and against the five-sample fraction it replaces.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "calc/indirect/form_factor.h"
+#include "calc/indirect/partial_visibility.h"
+#include "calc/indirect/patches.h"
+#include "calc/indirect/subcells.h"
+
+namespace luxgrid::calc::indirect {
+namespace {
+
+// A thin occluder in the plane z = 0.5 covering x > edge: it blocks a segment from the origin
+// to the patch at z = 1 when the segment crosses that plane beyond the edge.
+class HalfPlaneOccluder final : public geometry::Visibility {
+ public:
+  explicit HalfPlaneOccluder(double edge_m) : edge_m_(edge_m) {}
+  bool visible(const Vec3& from, const Vec3& to) const override {
+    if ((from.z - 0.5) * (to.z - 0.5) > 0.0) return true;
+    const double t = (0.5 - from.z) / (to.z - from.z);
+    return !(from.x + t * (to.x - from.x) > edge_m_);
+  }
+
+ private:
+  double edge_m_;
+};
+
+// The 1 m square at z = 1 facing down (-z), corners counter-clockwise seen from below, with its
+// quarters as patches.cpp makes them.
+Patch ceiling_square() {
+  Patch p;
+  p.polygon = {Vec3(-0.5, -0.5, 1.0), Vec3(-0.5, 0.5, 1.0), Vec3(0.5, 0.5, 1.0),
+               Vec3(0.5, -0.5, 1.0)};
+  p.centroid = Vec3(0.0, 0.0, 1.0);
+  p.normal = Vec3(0.0, 0.0, -1.0);
+  p.area_m2 = 1.0;
+  p.diameter_m = std::sqrt(2.0);
+  p.has_quarters = true;
+  for (int q = 0; q < 4; ++q) p.quarter_centroid[q] = 0.5 * (p.polygon[q] + p.centroid);
+  return p;
+}
+
+// The patch's part with x <= x_max: Lambert's exact form factor from the origin (normal +z).
+double visible_part_form_factor(double x_max) {
+  const Polygon3 part = {Vec3(-0.5, -0.5, 1.0), Vec3(-0.5, 0.5, 1.0), Vec3(x_max, 0.5, 1.0),
+                         Vec3(x_max, -0.5, 1.0)};
+  return point_polygon_form_factor(Vec3(0.0), Vec3(0.0, 0.0, 1.0), part);
+}
+
+TEST(PartialVisibility, CellsResolveAShadowEdgeToACell) {
+  const Patch p = ceiling_square();
+  const Vec3 x(0.0), n(0.0, 0.0, 1.0);
+  const Vec3 from = x + n * 1e-6;
+  // Edges at several places across the patch (the shadow on the patch is at twice the edge's x).
+  for (double edge : {-0.2, -0.07, 0.03, 0.1, 0.17}) {
+    const HalfPlaneOccluder occluder(edge);
+    const double exact = visible_part_form_factor(2.0 * edge);
+    const double five =
+        point_polygon_form_factor(x, n, p.polygon) * visible_fraction(&occluder, from, p, 1e-6);
+    const double cells = partial_cells_integral(x, n, from, p, nullptr, 1.0, 5.0, occluder, 1e-6);
+    // A cell is a quarter of the patch wide, its samples an eighth apart: the edge is placed to
+    // within half a cell, so the error is at most the form factor of a strip of half a cell's
+    // width at the edge (the strip's factor is at most its area's share at normal incidence,
+    // bounded here by the factor of the strip directly overhead).
+    const double half_cell = 0.5 / kSubcellsPerSide;
+    const double strip = visible_part_form_factor(half_cell) - visible_part_form_factor(0.0);
+    EXPECT_NEAR(cells, exact, strip) << "edge " << edge;
+    // And better than the five samples it replaces, where those are off by more than a strip.
+    if (std::abs(five - exact) > strip) {
+      EXPECT_LT(std::abs(cells - exact), 0.5 * std::abs(five - exact)) << "edge " << edge;
+    }
+  }
+}
+
+TEST(PartialVisibility, WhollyVisibleCellsSumToThePatchFactor) {
+  // Nothing blocks: the cells' factors add up to the patch's (Lambert's formula is additive over
+  // a tiling), to 1e-12, and a per-cell weight scales each cell.
+  const Patch p = ceiling_square();
+  const Vec3 x(0.1, -0.2, 0.0), n(0.0, 0.0, 1.0);
+  const Vec3 from = x + n * 1e-6;
+  const HalfPlaneOccluder none(10.0);
+  const double whole = point_polygon_form_factor(x, n, p.polygon);
+  EXPECT_NEAR(partial_cells_integral(x, n, from, p, nullptr, 1.0, 1e9, none, 1e-6), whole, 1e-12);
+  std::vector<double> weight(kSubcellsPerSide * kSubcellsPerSide, 3.0);
+  EXPECT_NEAR(partial_cells_integral(x, n, from, p, weight.data(), 0.0, 1e9, none, 1e-6),
+              3.0 * whole, 3e-12);
+}
+
+}  // namespace
+}  // namespace luxgrid::calc::indirect
