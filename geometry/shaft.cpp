@@ -16,7 +16,7 @@ enum class Side { on, above, below, across };
 // boundary tolerance, plus the slack of segment ends and hits computed in double.
 constexpr double kOutlineMargin_m = kGrazing_m + 10.0 * kShaftSlack_m;
 
-double cross2(const Vec2& o, const Vec2& a, const Vec2& b) {
+double turn2(const Vec2& o, const Vec2& a, const Vec2& b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
@@ -29,11 +29,11 @@ std::vector<Vec2> convex_hull(std::vector<Vec2> p) {
   std::vector<Vec2> h(2 * p.size());
   size_t k = 0;
   for (size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross2(h[k - 2], h[k - 1], p[i]) <= 0.0) --k;
+    while (k >= 2 && turn2(h[k - 2], h[k - 1], p[i]) <= 0.0) --k;
     h[k++] = p[i];
   }
   for (size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && cross2(h[k - 2], h[k - 1], p[i]) <= 0.0) --k;
+    while (k >= t && turn2(h[k - 2], h[k - 1], p[i]) <= 0.0) --k;
     h[k++] = p[i];
   }
   h.resize(k - 1);
@@ -48,8 +48,7 @@ double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
 }
 
 bool segments_within(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d, double margin) {
-  const double d1 = cross2(a, b, c), d2 = cross2(a, b, d), d3 = cross2(c, d, a),
-               d4 = cross2(c, d, b);
+  const double d1 = turn2(a, b, c), d2 = turn2(a, b, d), d3 = turn2(c, d, a), d4 = turn2(c, d, b);
   if (((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) &&
       ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)))
     return true;  // proper crossing
@@ -66,7 +65,7 @@ bool in_convex(const Vec2& p, const std::vector<Vec2>& q, double margin) {
   for (size_t i = 0; i < q.size(); ++i) {
     const Vec2& a = q[i];
     const Vec2& b = q[(i + 1) % q.size()];
-    if (cross2(a, b, p) < -margin * glm::length(b - a)) return false;
+    if (turn2(a, b, p) < -margin * glm::length(b - a)) return false;
   }
   return true;
 }
