@@ -5,6 +5,8 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -12,6 +14,7 @@
 
 #include "calc/nearfield/models.h"
 #include "calc/nearfield/table_rung_scratch.h"
+#include "geometry/pair_visibility.h"
 #include "photometry/distribution_texture.h"
 #include "util/simd.h"
 
@@ -183,9 +186,17 @@ std::vector<double> direct_illuminance(const Plan& plan,
         // Soft shadows: the near-field models test visibility per node, the far field from
         // the opening's centre.
         nearfield::SwitchWeights w;
-        const double pair =
-            nearfield::hybrid_illuminance(emitter, grid.points[i], receiver, plan.near_model,
-                                          plan.near_switch, visibility, &w, &scratch);
+        // The pair's shaft verdict serves its quadrature nodes (geometry/pair_visibility.h).
+        const std::span<const Vec3> opening = emitter.vertices.empty()
+                                                  ? std::span<const Vec3>(&emitter.centroid, 1)
+                                                  : std::span<const Vec3>(emitter.vertices);
+        const std::optional<geometry::PairVisibility> shaft =
+            visibility ? std::make_optional<geometry::PairVisibility>(
+                             *visibility, opening, std::span<const Vec3>(&grid.points[i], 1))
+                       : std::nullopt;
+        const double pair = nearfield::hybrid_illuminance(emitter, grid.points[i], receiver,
+                                                          plan.near_model, plan.near_switch,
+                                                          shaft ? &*shaft : nullptr, &w, &scratch);
         sum += pair;
         if (estimated_error_lx) error_lx += pair * nearfield::estimated_pair_error(emitter, w);
         if (!counts) continue;

@@ -31,6 +31,8 @@ class OcclusionTree final : public Visibility {
   // (shortened by kOcclusionEndAllowance_m at both ends, grazing faces and edges by its rule).
   // Thread-safe (const, the scene is built in the constructor).
   bool visible(const Vec3& a, const Vec3& b) const override;
+  // geometry/shaft.h's verdict over the same faces.
+  Shaft classify(std::span<const Vec3> a, std::span<const Vec3> b) const override;
 
   size_t triangle_count() const;
 

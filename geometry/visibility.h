@@ -5,6 +5,7 @@
 // through a `const Visibility*`, where null means "nothing blocks light" and costs nothing.
 // Plain doubles, no CGAL: calc/nearfield (the hot path, built without CGAL) uses it too. The
 // scene's implementation is the AABB tree of geometry/occlusion.h; tests implement their own.
+#include <span>
 #include <vector>
 
 #include "geometry/box3.h"
@@ -12,12 +13,21 @@
 
 namespace luxgrid::geometry {
 
+// What every segment between two elements says (geometry/shaft.h).
+enum class Shaft { visible, hidden, partial };
+
 class Visibility {
  public:
   virtual ~Visibility() = default;
   // True when nothing lies between `from` and `to` (m, world). Symmetric. Called from worker
   // threads: implementations must be thread-safe.
   virtual bool visible(const Vec3& from, const Vec3& to) const = 0;
+  // `visible` or `hidden` only when visible() says so for every segment from a point of `a` to a
+  // point of `b` (each element a point, segment or planar polygon by its corners, its convex
+  // hull; geometry/shaft.h); `partial` when unknown. The default knows nothing.
+  virtual Shaft classify(std::span<const Vec3> /*a*/, std::span<const Vec3> /*b*/) const {
+    return Shaft::partial;
+  }
 };
 
 // True when `visibility` is set and says the segment is blocked (null: nothing blocks).
@@ -37,6 +47,10 @@ class BoxFilteredVisibility final : public Visibility {
     for (const Box3& box : boxes_)
       if (segment_meets_box(from, to, box)) return exact_.visible(from, to);
     return true;
+  }
+  // Every segment the exact test passes, this one passes too; a hidden one may miss the boxes.
+  Shaft classify(std::span<const Vec3> a, std::span<const Vec3> b) const override {
+    return exact_.classify(a, b) == Shaft::visible ? Shaft::visible : Shaft::partial;
   }
 
  private:

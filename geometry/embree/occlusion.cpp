@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "geometry/face_crossing.h"
+#include "geometry/shaft.h"
 
 namespace luxgrid::geometry {
 
@@ -53,6 +54,8 @@ void filter_candidate(const RTCFilterFunctionNArguments* args) {
 }  // namespace
 
 struct OcclusionTree::Impl {
+  explicit Impl(const std::vector<Face>& faces) : shafts(faces) {}
+  ShaftClassifier shafts;
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   Vec3 centre{0.0};  // vertices are stored relative to it
@@ -61,7 +64,8 @@ struct OcclusionTree::Impl {
   std::vector<unsigned> face_of;  // per triangle, its face in `sheets`
 };
 
-OcclusionTree::OcclusionTree(const std::vector<Face>& faces) : impl_(std::make_unique<Impl>()) {
+OcclusionTree::OcclusionTree(const std::vector<Face>& faces)
+    : impl_(std::make_unique<Impl>(faces)) {
   std::vector<std::array<Vec3, 3>> tris;
   for (const auto& f : faces) {
     for (const auto& t : triangulate_face(f)) {
@@ -128,6 +132,10 @@ bool OcclusionTree::visible(const Vec3& a, const Vec3& b) const {
   ray.time = 0.0f, ray.mask = 0xFFFFFFFFu, ray.id = 0, ray.flags = 0;
   rtcOccluded1(impl_->scene, &q.context, &ray);
   return ray.tfar >= 0.0f;  // Embree sets tfar to -inf on an accepted hit
+}
+
+Shaft OcclusionTree::classify(std::span<const Vec3> a, std::span<const Vec3> b) const {
+  return impl_->scene ? impl_->shafts.classify(a, b) : Shaft::visible;
 }
 
 size_t OcclusionTree::triangle_count() const { return impl_->face_of.size(); }
