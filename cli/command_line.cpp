@@ -110,6 +110,9 @@ void add_diff(CLI::App& app, std::function<int()>& run) {
          "--tol", opt->tol,
          "Largest allowed relative point difference (0.01 = 1 %); above it the exit code is 1")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--promise", opt->promise,
+                "Measure as the qualities promise: |A - B| / B at the points brighter than 1 % of "
+                "their surface's maximum in B, with the worst point's place and values");
 }
 
 void add_cost(CLI::App& app, std::function<int()>& run) {

@@ -43,7 +43,8 @@ int run_info(const InfoArgs& args);
 // `luxgrid diff`: cli/diff_command.cpp.
 struct DiffArgs {
   std::string a, b;
-  double tol = -1.0;  // negative: report only, never fail
+  double tol = -1.0;     // negative: report only, never fail
+  bool promise = false;  // the promise's measure (report::promise_error) instead of the floor's
 };
 int run_diff(const DiffArgs& args);
 

@@ -15,12 +15,22 @@ namespace luxgrid::report {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// kRelativeFloor of the reference's largest value: the floor of point_difference's measure and
+// the brightness promise_error's points must exceed.
+double relative_floor(const std::vector<double>& b) {
+  double bmax = 0.0;
+  for (double v : b) bmax = std::max(bmax, std::abs(v));
+  return kRelativeFloor * bmax;
+}
+
+}  // namespace
+
 PointDifference point_difference(const std::vector<double>& a, const std::vector<double>& b) {
   PointDifference d;
   if (a.empty() || a.size() != b.size()) return d;
-  double bmax = 0.0;
-  for (double v : b) bmax = std::max(bmax, std::abs(v));
-  const double floor = kRelativeFloor * bmax;
+  const double floor = relative_floor(b);
   double sum = 0.0;
   for (size_t i = 0; i < a.size(); ++i) {
     const double diff = std::abs(a[i] - b[i]);
@@ -34,6 +44,22 @@ PointDifference point_difference(const std::vector<double>& a, const std::vector
   }
   d.mean_rel = sum / static_cast<double>(a.size());
   return d;
+}
+
+PromiseError promise_error(const std::vector<double>& a, const std::vector<double>& b) {
+  PromiseError e;
+  if (a.empty() || a.size() != b.size()) return e;
+  const double floor = relative_floor(b);
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (!(std::abs(b[i]) > floor)) continue;
+    ++e.bright_points;
+    const double rel = std::abs(a[i] - b[i]) / std::abs(b[i]);
+    if (rel > e.max_rel || e.bright_points == 1) {
+      e.max_rel = rel;
+      e.worst_index = i;
+    }
+  }
+  return e;
 }
 
 namespace {
@@ -58,11 +84,61 @@ std::vector<double> numbers_at(const nlohmann::json& s, const char* key, const s
   return out;
 }
 
+// s["points"] as positions in metres; empty when the surface holds none (a reduced reference may
+// leave them out).
+std::vector<std::array<double, 3>> points_at(const nlohmann::json& s, const std::string& label,
+                                             size_t index) {
+  std::vector<std::array<double, 3>> out;
+  const auto it = s.find("points");
+  if (it == s.end()) return out;
+  const std::string where = "/surfaces/" + std::to_string(index) + "/points";
+  if (!it->is_array()) throw InputError(SourceLocation{label, 0, 0, where}, "expected an array");
+  out.reserve(it->size());
+  for (size_t i = 0; i < it->size(); ++i) {
+    const auto& p = (*it)[i];
+    if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() ||
+        !p[2].is_number()) {
+      throw InputError(SourceLocation{label, 0, 0, where + "/" + std::to_string(i)},
+                       "expected [x, y, z] in metres");
+    }
+    out.push_back({p[0].get<double>(), p[1].get<double>(), p[2].get<double>()});
+  }
+  return out;
+}
+
+// Two results compared point by point must have calculated the same points: a grid moved by a
+// changed project would otherwise pass as a difference in light. 1e-6 m is far below any grid's
+// spacing and far above the printing of a double.
+void check_same_points(const std::string& name, const std::vector<std::array<double, 3>>& pa,
+                       const std::string& label_a, const std::vector<std::array<double, 3>>& pb,
+                       const std::string& label_b) {
+  constexpr double kSamePointM = 1e-6;
+  if (pa.empty() || pb.empty()) return;
+  if (pa.size() != pb.size()) {
+    throw InputError("surface \"" + name + "\": " + label_a + " has " + std::to_string(pa.size()) +
+                     " points, " + label_b + " has " + std::to_string(pb.size()));
+  }
+  for (size_t i = 0; i < pa.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(pa[i][k] - pb[i][k]) > kSamePointM) {
+        char at[160];
+        std::snprintf(at, sizeof at, "point %zu is at (%.6g, %.6g, %.6g) m in %s", i, pa[i][0],
+                      pa[i][1], pa[i][2], label_a.c_str());
+        char other[160];
+        std::snprintf(other, sizeof other, " and at (%.6g, %.6g, %.6g) m in %s", pb[i][0], pb[i][1],
+                      pb[i][2], label_b.c_str());
+        throw InputError("surface \"" + name + "\": " + at + other);
+      }
+    }
+  }
+}
+
 // The points both files calculated: results.json marks the points a grid left out (outside an
 // L-shaped workplane, inside an obstacle) "active": false; their E is 0 in both and would only
-// dilute the mean difference. Files without the array (format 1) count every point.
-void keep_active(const nlohmann::json& sa, const nlohmann::json& sb, std::vector<double>& ea,
-                 std::vector<double>& eb) {
+// dilute the mean difference. Files without the array (format 1) count every point. Returns the
+// kept points' indices in the file.
+std::vector<size_t> keep_active(const nlohmann::json& sa, const nlohmann::json& sb,
+                                std::vector<double>& ea, std::vector<double>& eb) {
   auto flags = [&](const nlohmann::json& s) {
     std::vector<bool> out(ea.size(), true);
     const auto it = s.find("active");
@@ -71,15 +147,16 @@ void keep_active(const nlohmann::json& sa, const nlohmann::json& sb, std::vector
     return out;
   };
   const auto fa = flags(sa), fb = flags(sb);
-  size_t n = 0;
+  std::vector<size_t> kept;
   for (size_t i = 0; i < ea.size(); ++i) {
     if (!(fa[i] && fb[i])) continue;
-    ea[n] = ea[i];
-    eb[n] = eb[i];
-    ++n;
+    ea[kept.size()] = ea[i];
+    eb[kept.size()] = eb[i];
+    kept.push_back(i);
   }
-  ea.resize(n);
-  eb.resize(n);
+  ea.resize(kept.size());
+  eb.resize(kept.size());
+  return kept;
 }
 
 calc::Statistics stats_of(const nlohmann::json& s) {
@@ -153,9 +230,24 @@ ResultsDiff diff_results(const nlohmann::json& a, const std::string& label_a,
                        std::to_string(ea.size()) + " points, " + label_b + " has " +
                        std::to_string(eb.size()));
     }
-    keep_active(sa[i], other, ea, eb);
-    SurfaceDiff d{name, ea.size(), point_difference(ea, eb), stats_of(sa[i]), stats_of(other)};
+    const auto pa = points_at(sa[i], label_a, i);
+    check_same_points(name, pa, label_a, points_at(other, label_b, j), label_b);
+    const auto kept = keep_active(sa[i], other, ea, eb);
+    SurfaceDiff d;
+    d.name = name;
+    d.points = ea.size();
+    d.diff = point_difference(ea, eb);
+    d.a = stats_of(sa[i]);
+    d.b = stats_of(other);
+    d.promise = promise_error(ea, eb);
+    if (d.promise.bright_points > 0) {
+      d.promise_a_lx = ea[d.promise.worst_index];
+      d.promise_b_lx = eb[d.promise.worst_index];
+      d.promise.worst_index = kept[d.promise.worst_index];
+      if (d.promise.worst_index < pa.size()) d.promise_point_m = pa[d.promise.worst_index];
+    }
     out.max_rel = std::max(out.max_rel, d.diff.max_rel);
+    out.promise_max_rel = std::max(out.promise_max_rel, d.promise.max_rel);
     out.surfaces.push_back(std::move(d));
   }
   return out;
@@ -186,6 +278,33 @@ std::string format_diff(const ResultsDiff& d) {
     out += line;
   }
   std::snprintf(line, sizeof line, "largest relative difference: %.3f %%\n", 100.0 * d.max_rel);
+  out += line;
+  return out;
+}
+
+std::string format_promise_diff(const ResultsDiff& d) {
+  std::string out;
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "A = %s\nB = %s (reference)\nerror: |A - B| / B at the points where B is brighter "
+                "than %g %% of its surface's largest B\n",
+                d.label_a.c_str(), d.label_b.c_str(), 100.0 * kRelativeFloor);
+  out += line;
+  std::snprintf(line, sizeof line, "%-20s %6s %6s %9s  %6s  %-26s  %19s\n", "surface", "points",
+                "bright", "max error", "index", "at x, y, z m", "E A / B lx");
+  out += line;
+  for (const auto& s : d.surfaces) {
+    char at[64] = "-";
+    if (s.promise_point_m) {
+      std::snprintf(at, sizeof at, "%.3f, %.3f, %.3f", (*s.promise_point_m)[0],
+                    (*s.promise_point_m)[1], (*s.promise_point_m)[2]);
+    }
+    std::snprintf(line, sizeof line, "%-20s %6zu %6zu %8.3f%%  %6zu  %-26s  %9.2f %9.2f\n",
+                  s.name.c_str(), s.points, s.promise.bright_points, 100.0 * s.promise.max_rel,
+                  s.promise.worst_index, at, s.promise_a_lx, s.promise_b_lx);
+    out += line;
+  }
+  std::snprintf(line, sizeof line, "largest error: %.3f %%\n", 100.0 * d.promise_max_rel);
   out += line;
   return out;
 }

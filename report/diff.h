@@ -1,7 +1,9 @@
 #pragma once
 // Comparing two calculations point by point: `luxgrid diff A B`, the regression tests, and the
 // accuracy-versus-time table of `luxgrid cost` all use the same measure of difference.
+#include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,21 +29,38 @@ struct PointDifference {
 // the surface).
 PointDifference point_difference(const std::vector<double>& a, const std::vector<double>& b);
 
+// The promise's measure (docs/accuracy.md, "The plan's own estimate"): |a - b| / b at the points
+// where b is brighter than kRelativeFloor of the surface's largest b. The darker points are
+// promised nothing and count neither way (point_difference's floor would still charge them).
+struct PromiseError {
+  double max_rel = 0.0;  // largest relative error over the bright points, 0.01 = 1 %
+  size_t worst_index = 0;
+  size_t bright_points = 0;  // points brighter than the floor
+};
+PromiseError promise_error(const std::vector<double>& a, const std::vector<double>& b);
+
 struct SurfaceDiff {
   std::string name;
   size_t points = 0;  // the points both files calculated (active in both)
   PointDifference diff;
   calc::Statistics a, b;
+  PromiseError promise;  // worst_index counts the surface's points in the file, active or not
+  double promise_a_lx = 0.0, promise_b_lx = 0.0;         // E of A and B at promise's worst point
+  std::optional<std::array<double, 3>> promise_point_m;  // where it is, when A holds "points"
 };
 
 struct ResultsDiff {
   std::string label_a, label_b;
   std::vector<SurfaceDiff> surfaces;
-  double max_rel = 0.0;  // over all surfaces
+  double max_rel = 0.0;          // over all surfaces
+  double promise_max_rel = 0.0;  // the promise's measure, over all surfaces
 };
 
 // Compares two results.json documents surface by surface (matched by name). Throws InputError
-// naming the file and the surface when the two do not describe the same surfaces and points.
+// naming the file and the surface when the two do not describe the same surfaces and points (the
+// same count, and where both hold "points", the same positions within 1e-6 m). Only "format"
+// and each surface's "name" and "E" are required: a reference kept for a test may be a results
+// file reduced to its surfaces' names, points, "active" flags and E (tests/rooms/README.md).
 ResultsDiff diff_results(const nlohmann::json& a, const std::string& label_a,
                          const nlohmann::json& b, const std::string& label_b);
 
@@ -75,5 +94,8 @@ std::string format_cost_table(const CostTable& t);
 
 // The table `luxgrid diff` prints: one line per surface, the statistics side by side.
 std::string format_diff(const ResultsDiff& d);
+
+// The table `luxgrid diff --promise` prints: per surface the promise's measure, its point and E.
+std::string format_promise_diff(const ResultsDiff& d);
 
 }  // namespace luxgrid::report

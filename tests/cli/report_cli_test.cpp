@@ -220,6 +220,35 @@ TEST(ReportCli, DiffComparesAndGatesOnTolerance) {
       luxgrid("diff " + quote(dir / "b.out") + " " + quote(dir / "a.out") + " --tol 0.11").code, 0);
 }
 
+TEST(ReportCli, DiffPromiseGatesOnTheBrightPointsAgainstAReducedReference) {
+  // The reference reduced to what `diff` reads (format, each surface's name, points, active, E),
+  // as tests/rooms keep theirs; b is 10 % brighter at every point, all of them above 1 % of the
+  // maximum (I h / d^3 over a 4 x 4 m floor 3 m below).
+  const fs::path dir = scratch("diff_promise");
+  write(dir / "a.json", black_room_project(""));
+  write(dir / "b.json", black_room_project("", 1100));
+  ASSERT_EQ(luxgrid("calc " + quote(dir / "a.json") + " --no-report").code, 0);
+  ASSERT_EQ(luxgrid("calc " + quote(dir / "b.json") + " --no-report").code, 0);
+  auto full = nlohmann::json::parse(read(dir / "a.out" / "results.json"));
+  nlohmann::json reduced = {{"format", full["format"]}, {"surfaces", nlohmann::json::array()}};
+  for (const auto& s : full["surfaces"]) {
+    reduced["surfaces"].push_back(
+        {{"name", s["name"]}, {"points", s["points"]}, {"active", s["active"]}, {"E", s["E"]}});
+  }
+  write(dir / "ref.json", reduced.dump());
+  const Outcome ten = luxgrid("diff " + quote(dir / "b.out") + " " + quote(dir / "ref.json") +
+                              " --promise --tol 0.05");
+  EXPECT_EQ(ten.code, 1) << ten.output;
+  EXPECT_NE(ten.output.find("floor                    16     16   10.000%"), std::string::npos)
+      << ten.output;
+  EXPECT_NE(ten.output.find("FAIL: above the tolerance of 5.000 %"), std::string::npos)
+      << ten.output;
+  EXPECT_EQ(luxgrid("diff " + quote(dir / "b.out") + " " + quote(dir / "ref.json") +
+                    " --promise --tol 0.11")
+                .code,
+            0);
+}
+
 TEST(ReportCli, DiffOfDifferentSurfacesIsBadInput) {
   const fs::path dir = scratch("diff_surfaces");
   write(dir / "a.json", black_room_project(""));

@@ -88,6 +88,67 @@ TEST(Diff, DifferentPointCountsAreNamed) {
   }
 }
 
+TEST(Diff, PromiseMeasureLeavesThePointsAtOrBelowOnePercentOut) {
+  // Largest B 200, so the floor is 2 lx. 101 vs 100: 1 %; 3 vs 1.5 (dark): 75 % on the floor's
+  // measure, nothing on the promise's; 2.5 vs 2 (exactly at the floor, not brighter): left out.
+  const std::vector<double> a{101, 200, 3.0, 2.5}, b{100, 200, 1.5, 2.0};
+  const auto p = promise_error(a, b);
+  EXPECT_DOUBLE_EQ(p.max_rel, 0.01);
+  EXPECT_EQ(p.worst_index, 0u);
+  EXPECT_EQ(p.bright_points, 2u);
+  EXPECT_DOUBLE_EQ(point_difference(a, b).max_rel, 0.75);
+  // Relative to B's own value, not A's: 90 against 100 is 10 %, 100 against 90 is 11.1 %.
+  EXPECT_DOUBLE_EQ(promise_error({90, 200}, {100, 200}).max_rel, 0.1);
+  EXPECT_DOUBLE_EQ(promise_error({100, 200}, {90, 200}).max_rel, 10.0 / 90.0);
+}
+
+TEST(Diff, PromiseWorstPointIsTheFilesPointWithItsPlace) {
+  // The second point is left out (inactive): the worst of the others, 5 % at the file's third
+  // point, is reported with its index in the file, its position and both values.
+  auto a = results({{"wp", {100, 7, 105, 200}}});
+  auto b = results({{"wp", {100, 0, 100, 200}}});
+  a["format"] = b["format"] = "luxgrid-results/2";
+  a["surfaces"][0]["active"] = b["surfaces"][0]["active"] = {true, false, true, true};
+  a["surfaces"][0]["points"] = b["surfaces"][0]["points"] = {
+      {0.5, 0.5, 0.8}, {1.5, 0.5, 0.8}, {2.5, 0.5, 0.8}, {3.5, 0.5, 0.8}};
+  const auto d = diff_results(a, "a", b, "b");
+  const auto& s = d.surfaces[0];
+  EXPECT_DOUBLE_EQ(s.promise.max_rel, 0.05);
+  EXPECT_EQ(s.promise.worst_index, 2u);
+  EXPECT_EQ(s.promise.bright_points, 3u);
+  EXPECT_DOUBLE_EQ(s.promise_a_lx, 105.0);
+  EXPECT_DOUBLE_EQ(s.promise_b_lx, 100.0);
+  ASSERT_TRUE(s.promise_point_m.has_value());
+  EXPECT_DOUBLE_EQ((*s.promise_point_m)[0], 2.5);
+  EXPECT_DOUBLE_EQ(d.promise_max_rel, 0.05);
+  const std::string text = format_promise_diff(d);
+  EXPECT_NE(text.find("wp                        3      3    5.000%       2  2.500, 0.500, 0.800"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("largest error: 5.000 %"), std::string::npos) << text;
+}
+
+TEST(Diff, PointsThatMovedAreBadInput) {
+  // The same counts but a grid shifted by 1 mm: not the same points, whatever E says.
+  auto a = results({{"wp", {100, 100}}});
+  auto b = results({{"wp", {100, 100}}});
+  a["surfaces"][0]["points"] = {{0.5, 0.5, 0.8}, {1.5, 0.5, 0.8}};
+  b["surfaces"][0]["points"] = {{0.5, 0.5, 0.8}, {1.501, 0.5, 0.8}};
+  try {
+    diff_results(a, "A.json", b, "B.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "surface \"wp\": point 1 is at (1.5, 0.5, 0.8) m in A.json and at (1.501, 0.5, "
+                 "0.8) m in B.json");
+  }
+  // Within 1e-6 m they are the same; a file without points (a reduced reference) is not checked.
+  b["surfaces"][0]["points"][1][0] = 1.5 + 5e-7;
+  EXPECT_NO_THROW(diff_results(a, "A.json", b, "B.json"));
+  b["surfaces"][0].erase("points");
+  EXPECT_NO_THROW(diff_results(a, "A.json", b, "B.json"));
+}
+
 TEST(Diff, NotAResultsFile) {
   EXPECT_THROW(diff_results(nlohmann::json::object(), "A.json", results({}), "B.json"), InputError);
 }
