@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "geometry/occlusion.h"
+#include "geometry/polygon.h"
 
 namespace luxgrid::geometry {
 
@@ -40,27 +41,20 @@ std::vector<Vec2> convex_hull(std::vector<Vec2> p) {
   return h;
 }
 
-double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const double dd = glm::dot(d, d);
-  const double t = dd > 0.0 ? std::clamp(glm::dot(p - a, d) / dd, 0.0, 1.0) : 0.0;
-  return glm::length(p - (a + t * d));
-}
-
 bool segments_within(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d, double margin) {
   const double d1 = turn2(a, b, c), d2 = turn2(a, b, d), d3 = turn2(c, d, a), d4 = turn2(c, d, b);
   if (((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) &&
       ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)))
     return true;  // proper crossing
-  return std::min({point_segment_distance(a, c, d), point_segment_distance(b, c, d),
-                   point_segment_distance(c, a, b), point_segment_distance(d, a, b)}) <= margin;
+  return std::min({distance_to_segment(a, c, d), distance_to_segment(b, c, d),
+                   distance_to_segment(c, a, b), distance_to_segment(d, a, b)}) <= margin;
 }
 
 // True when `p` lies in the convex counter-clockwise polygon `q` grown by `margin`.
 bool in_convex(const Vec2& p, const std::vector<Vec2>& q, double margin) {
   if (q.size() < 3) {
     if (q.size() == 1) return glm::length(p - q[0]) <= margin;
-    return point_segment_distance(p, q[0], q[1]) <= margin;
+    return distance_to_segment(p, q[0], q[1]) <= margin;
   }
   for (size_t i = 0; i < q.size(); ++i) {
     const Vec2& a = q[i];
@@ -73,7 +67,7 @@ bool in_convex(const Vec2& p, const std::vector<Vec2>& q, double margin) {
 // True when the segment ab comes within `margin` of the convex polygon `q` (hull order).
 bool segment_meets_convex(const Vec2& a, const Vec2& b, const std::vector<Vec2>& q, double margin) {
   if (in_convex(a, q, margin) || in_convex(b, q, margin)) return true;
-  if (q.size() == 1) return point_segment_distance(q[0], a, b) <= margin;
+  if (q.size() == 1) return distance_to_segment(q[0], a, b) <= margin;
   for (size_t i = 0; i < q.size(); ++i)
     if (segments_within(a, b, q[i], q[(i + 1) % q.size()], margin)) return true;
   return false;
