@@ -5,26 +5,38 @@
 // Writes the maintained E_indirect of every active point of every surface, one
 // "surface,i,x,y,z,E_indirect_maintained_lx" line each, as the surface CSVs of `calc` give them
 // (docs/indirect.md, "Large rooms": how the 200 x 100 m hall's standard compares with it).
-// Run: build/bench/hall_reference PROJECT.json FAR_RATIO LINK_MB OUT.csv
+// Run: build/bench/hall_reference PROJECT.json FAR_RATIO LINK_MB OUT.csv [PATCH_SIZE_M [BUDGET]]
+// The optional patch size (m) and per-room patch budget (at most kMaxPatchesPerRoom, limits.h)
+// make a room of ordinary size a finer reference than its quality meshes it at: for
+// examples/lshape at `reference`, 0.15 m and 10 000 patches (docs/accuracy.md). A FAR_RATIO of 0
+// keeps the quality's (at `reference`: exact factors, no point kernel).
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <string>
 
 #include "calc/indirect/indirect.h"
+#include "calc/scene_visibility.h"
 #include "project/project_file.h"
 
 int main(int argc, char** argv) {
   using namespace luxgrid;
-  if (argc != 5) {
-    std::fprintf(stderr, "usage: hall_reference PROJECT.json FAR_RATIO LINK_MB OUT.csv\n");
+  if (argc < 5 || argc > 7) {
+    std::fprintf(stderr,
+                 "usage: hall_reference PROJECT.json FAR_RATIO LINK_MB OUT.csv [PATCH_SIZE_M "
+                 "[BUDGET]]\n");
     return 2;
   }
   try {
     const project::Project p = project::load_project(argv[1]);
     const calc::Scene& scene = p.scene;
     calc::indirect::IndirectOptions options = calc::indirect::indirect_options(scene.settings);
-    options.far_ratio = std::atof(argv[2]);
+    if (std::atof(argv[2]) > 0.0) options.far_ratio = std::atof(argv[2]);
+    if (argc > 5) options.patch_size_m = std::atof(argv[5]);
+    if (argc > 6) options.max_patches_per_room = static_cast<size_t>(std::atol(argv[6]));
+    // What blocks light, as the plan makes it (null for a convex room without obstacles).
+    calc::VisibilityDecision decision;
+    options.visibility = calc::make_visibility(scene, decision);
     options.max_clustered_link_bytes =
         static_cast<size_t>(std::atof(argv[3]) * calc::indirect::kBytesPerMegabyte);
     const calc::indirect::IndirectResult r =
