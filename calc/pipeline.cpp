@@ -277,6 +277,7 @@ IndirectEstimateInputs run_reflected_light(const Scene& scene,
   run.vpls = r.vpls;
   run.residual = r.residual;
   run.refined_patches = r.refined_patches;
+  run.split_patches = r.split_patches;
   run.subcell_reach = indirect::kSubcellReach;
   run.subcells_per_side = indirect::kSubcellsPerSide;
   run.received_flux_lm = r.received_flux_lm;

@@ -80,6 +80,7 @@ struct IndirectRunPlan {
   size_t vpls = 0;
   double residual = 0.0;
   size_t refined_patches = 0;  // cut into subcells_per_side^2 cells, seen closer than subcell_reach
+  size_t split_patches = 0;    // cut into quarters where the light jumps (indirect/split_mask.h)
   double subcell_reach = 0.0;  // patch diameters
   int subcells_per_side = 0;
   double received_flux_lm = 0.0, emitted_flux_lm = 0.0, luminaire_flux_lm = 0.0;

@@ -120,12 +120,12 @@ void from_json(const nlohmann::json& j, IntensityLookupChoice& c) {
 }
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IntensityLookupPlan, group, choice)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IndirectRunPlan, bounces_asked, bounces_run, tail_added, patches,
-                                   patch_size_m, vpls, residual, refined_patches, subcell_reach,
-                                   subcells_per_side, received_flux_lm, emitted_flux_lm,
-                                   luminaire_flux_lm, part_outside, clustered_rooms,
-                                   clustered_links, visibility, obstacles, estimated,
-                                   coarse_patch_size_m, probe_points_per_surface, worst_patch_size,
-                                   worst_bounces)
+                                   patch_size_m, vpls, residual, refined_patches, split_patches,
+                                   subcell_reach, subcells_per_side, received_flux_lm,
+                                   emitted_flux_lm, luminaire_flux_lm, part_outside,
+                                   clustered_rooms, clustered_links, visibility, obstacles,
+                                   estimated, coarse_patch_size_m, probe_points_per_surface,
+                                   worst_patch_size, worst_bounces)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PatchRefinement, outcome, from_m, to_m, estimate, surface,
                                    work_pairs, work_limit_pairs, budget_error)
 NLOHMANN_JSON_SERIALIZE_ENUM(SceneNote::Kind,

@@ -297,6 +297,9 @@ std::string indirect_run_text(const calc::IndirectRunPlan& r) {
                     format_double("%.3g", r.patch_size_m) + " m, " + count_text(r.vpls) +
                     " virtual point lights, residual " +
                     (std::isfinite(r.residual) ? format_double("%.2g", r.residual) : "unbounded");
+  if (r.split_patches)
+    out += "; " + count_text(r.split_patches) +
+           " patches cut into quarters where the light jumps between neighbours";
   if (r.refined_patches)
     out += "; " + count_text(r.refined_patches) + " patches seen from closer than " +
            format_double("%.3g", r.subcell_reach) + " diameters refined into " +

@@ -20,6 +20,7 @@
 #include "calc/indirect/first_bounce.h"
 #include "calc/indirect/gather.h"
 #include "calc/indirect/radiosity.h"
+#include "calc/indirect/split_mask.h"
 #include "calc/indirect/subcells.h"
 #include "calc/scaled_distribution.h"
 #include "calc/scene_visibility.h"
@@ -52,6 +53,13 @@ double quality_patch_size(Quality q) {
   }
   return 0.5;
 }
+// The relative jump of exitance between neighbouring patches above which a patch is cut
+// (split_mask.h): 0 where the quality does not cut. `draft` promises nothing; `reference` is
+// meshed as finely as its budget allows already.
+double quality_split_jump(Quality q) {
+  return q == Quality::standard || q == Quality::high ? kSplitJump : 0.0;
+}
+
 double quality_far_ratio(Quality q) {
   switch (q) {
     case Quality::draft: return 3.0;
@@ -316,8 +324,11 @@ IndirectOptions indirect_options(const Settings& settings) {
   return o;
 }
 
-std::unique_ptr<const IndirectSolution> solve_indirect(const Scene& scene,
-                                                       const IndirectOptions& options_in) {
+namespace {
+
+// solve_indirect, returning the solution it may still change (the split's second solve).
+std::unique_ptr<IndirectSolution> solve_rooms(const Scene& scene,
+                                              const IndirectOptions& options_in) {
   const auto t0 = std::chrono::steady_clock::now();
   auto solution = std::make_unique<IndirectSolution>();
   IndirectSolution& sol_out = *solution;
@@ -335,7 +346,9 @@ std::unique_ptr<const IndirectSolution> solve_indirect(const Scene& scene,
                                                           : 0;
 
   const RoomBudgets budgets = room_budgets(scene, options, size);
-  sol_out.mesh = mesh_within_budget(scene, options, budgets, size, res.notes);
+  sol_out.mesh =
+      options.mesh ? *options.mesh : mesh_within_budget(scene, options, budgets, size, res.notes);
+  const size_t mesh_notes = res.notes.size();
   const PatchMesh& mesh = sol_out.mesh;
   res.clustered = budgets.clustered;
   res.patches = mesh.patches.size();
@@ -430,7 +443,50 @@ std::unique_ptr<const IndirectSolution> solve_indirect(const Scene& scene,
 
   sol_out.bounces = bounces;
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  // Patches where the light jumps, cut into quarters, and the rooms solved again on that mesh
+  // (split_mask.h): only rooms where something blocks light, solved densely, with bounces.
+  const double jump = quality_split_jump(options.quality);
+  if (options.split_patches && jump > 0.0 && bounces != 1) {
+    std::vector<char> split(mesh.patches.size(), 0);
+    size_t cut = 0;
+    for (size_t r = 0; r < scene.rooms.size(); ++r) {
+      // Only where something inside the room blocks light (a reflex corner, obstacles): in a
+      // convex room without obstacles the exitance changes smoothly and the mesh stays as it is.
+      const Room& room = scene.rooms[r];
+      if (!room_visibility[r] || budgets.clustered[r] ||
+          (outline_is_convex(room) && room.obstacles.empty()))
+        continue;
+      const size_t begin = mesh.room_begin[r], end = mesh.room_begin[r + 1];
+      const size_t budget = std::max(options.max_patches_per_room, end - begin);
+      const std::vector<char> room_split =
+          patches_to_split(mesh, begin, end, exitant, jump, budget - (end - begin));
+      for (size_t i = begin; i < end; ++i)
+        if (room_split[i]) split[i] = 1, ++cut;
+    }
+    if (cut > 0) {
+      IndirectOptions again = options;
+      again.split_patches = false;
+      again.mesh = std::make_shared<const PatchMesh>(split_patches(scene, mesh, split));
+      std::unique_ptr<IndirectSolution> finer = solve_rooms(scene, again);
+      IndirectResult& fr = finer->result;
+      // The notes of meshing the rooms (the budget) are the first solve's.
+      fr.notes.insert(fr.notes.begin(), res.notes.begin(), res.notes.begin() + mesh_notes);
+      fr.split_patches = cut;
+      fr.seconds += res.seconds;
+      finer->options.mesh.reset();
+      finer->options.split_patches = options.split_patches;
+      return finer;
+    }
+  }
   return solution;
+}
+
+}  // namespace
+
+std::unique_ptr<const IndirectSolution> solve_indirect(const Scene& scene,
+                                                       const IndirectOptions& options) {
+  return solve_rooms(scene, options);
 }
 
 IndirectResult gather_indirect(const IndirectSolution& solution, const Scene& scene,

@@ -51,6 +51,12 @@ struct IndirectOptions {
   double tolerance = 0.0;  // 0: the quality's (draft 1e-2, standard 1e-3, high 1e-4, ref 1e-6)
   // Patches a receiver comes close to gathered cell by cell (subcells.h); draft does not.
   bool refine_near_patches = true;
+  // In rooms where something blocks light (a reflex corner, obstacles), solved densely at
+  // `standard` or `high`: the patches whose exitance jumps against a neighbour's cut into quarters
+  // and the room solved again (split_mask.h).
+  bool split_patches = true;
+  // A mesh to solve on instead of meshing the rooms (the second solve of split_patches).
+  std::shared_ptr<const PatchMesh> mesh;
   // What blocks light between two points of the scene: the plan's visibility test (its AABB tree
   // of room and obstacle faces, calc/scene_visibility.h). Null: nothing blocks (make_visibility's
   // verdict for a convex room without obstacles).
@@ -93,6 +99,7 @@ struct IndirectResult {
   double residual = 0.0;  // largest over rooms, relative
   double patch_size_m = 0.0;
   size_t refined_patches = 0;      // patches gathered cell by cell (subcells.h)
+  size_t split_patches = 0;        // patches cut into quarters where the light jumps (split_mask.h)
   double emitted_flux_lm = 0.0;    // entering the rooms (the parts of the openings inside them)
   double luminaire_flux_lm = 0.0;  // of the luminaires that reach a room, whole
   bool part_outside = false;       // a share of it (beyond rounding) falls outside every room

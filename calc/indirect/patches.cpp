@@ -132,6 +132,20 @@ bool segment_enters_box(const Vec2& a, const Vec2& b, const Vec2& lo, const Vec2
   return t1 - t0 > 1e-12;
 }
 
+// Each patch's form factor to the openings of its room (PatchMesh::escape_fraction), when the
+// scene has openings.
+void set_escape_fractions(const Scene& scene, PatchMesh& mesh) {
+  if (scene.openings.empty()) return;
+  mesh.escape_fraction.assign(mesh.patches.size(), 0.0);
+  for (size_t i = 0; i < mesh.patches.size(); ++i) {
+    const Patch& p = mesh.patches[i];
+    for (const DaylightOpening& o : scene.openings)
+      if (o.room == static_cast<size_t>(p.room))
+        mesh.escape_fraction[i] += point_polygon_form_factor(p.centroid, p.normal, o.polygon);
+    mesh.escape_fraction[i] = std::min(mesh.escape_fraction[i], 1.0);
+  }
+}
+
 void add_patch(PatchMesh& mesh, Polygon3 poly, const Vec3& normal, double reflectance, int room,
                FaceKind face, int face_index) {
   Patch p;
@@ -373,17 +387,33 @@ PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m) {
     }
   }
   mesh.room_begin.push_back(mesh.patches.size());
-  if (!scene.openings.empty()) {
-    mesh.escape_fraction.assign(mesh.patches.size(), 0.0);
-    for (size_t i = 0; i < mesh.patches.size(); ++i) {
-      const Patch& p = mesh.patches[i];
-      for (const DaylightOpening& o : scene.openings)
-        if (o.room == static_cast<size_t>(p.room))
-          mesh.escape_fraction[i] += point_polygon_form_factor(p.centroid, p.normal, o.polygon);
-      mesh.escape_fraction[i] = std::min(mesh.escape_fraction[i], 1.0);
-    }
-  }
+  set_escape_fractions(scene, mesh);
   return mesh;
+}
+
+PatchMesh split_patches(const Scene& scene, const PatchMesh& mesh, const std::vector<char>& split) {
+  PatchMesh out;
+  out.patch_size_m = mesh.patch_size_m;
+  out.room_begin.push_back(0);
+  for (size_t r = 0; r + 1 < mesh.room_begin.size(); ++r) {
+    for (size_t i = mesh.room_begin[r]; i < mesh.room_begin[r + 1]; ++i) {
+      const Patch& p = mesh.patches[i];
+      if (!split[i] || !p.has_quarters) {
+        out.patches.push_back(p);
+        continue;
+      }
+      // Corners and edge midpoints of the parallelogram, each quarter counter-clockwise like it.
+      const Polygon3& q = p.polygon;
+      const Vec3 m01 = 0.5 * (q[0] + q[1]), m12 = 0.5 * (q[1] + q[2]), m23 = 0.5 * (q[2] + q[3]),
+                 m30 = 0.5 * (q[3] + q[0]), c = p.centroid;
+      for (const Polygon3& quarter : {Polygon3{q[0], m01, c, m30}, Polygon3{m01, q[1], m12, c},
+                                      Polygon3{c, m12, q[2], m23}, Polygon3{m30, c, m23, q[3]}})
+        add_patch(out, quarter, p.normal, p.reflectance, p.room, p.face, p.face_index);
+    }
+    out.room_begin.push_back(out.patches.size());
+  }
+  set_escape_fractions(scene, out);
+  return out;
 }
 
 double visible_fraction(const geometry::Visibility* visibility, const Vec3& from,

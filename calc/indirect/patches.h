@@ -75,6 +75,12 @@ struct PatchMesh {
 // leaks), or a reflectance outside [0, 1] (room faces or an obstacle, named).
 PatchMesh build_patch_mesh(const Scene& scene, double patch_size_m);
 
+// `mesh` with each patch marked in `split` (parallelograms only: Patch::has_quarters; others are
+// kept) replaced by its four quarters, in its place, so every room's patches stay together and
+// keep tiling its faces; the escape fractions are those of the new patches. split_mask.h says
+// which to cut.
+PatchMesh split_patches(const Scene& scene, const PatchMesh& mesh, const std::vector<char>& split);
+
 // Total surface area of a room's faces (floor + ceiling + walls), m^2, without obstacles.
 double room_surface_area(const Room& room);
 
