@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "calc/indirect/form_factor.h"
@@ -274,6 +275,7 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
   const double opening2 = T.opening * T.opening;
   // In waves of kWaveBlocks blocks, the memory checked after each.
   size_t stored_bytes = 0;
+  tbb::enumerable_thread_specific<std::vector<uint32_t>> own_masks;
   for (size_t wave = 0; wave < T.blocks.size(); wave += kWaveBlocks) {
     const size_t wave_end = std::min(T.blocks.size(), wave + kWaveBlocks);
     tbb::parallel_for(wave, wave_end, [&](size_t w) {
@@ -350,14 +352,22 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
           }
         }
       }
-      // The own nodes merged into one entry per node, in node order.
-      std::sort(own.begin(), own.end());
-      for (size_t e = 0; e < own.size(); ++e) {
-        if (e == 0 || own[e].first != own[e - 1].first) {
-          blk.whole_node.push_back(own[e].first);
-          blk.whole_mask.push_back(0);
-        }
-        blk.whole_mask.back() |= uint32_t(1) << own[e].second;
+      // The own nodes merged into one entry per node, in node order: the masks gathered in a
+      // per-thread array over the nodes (most nodes are taken by many of the block's patches,
+      // so only the distinct ones are sorted), then cleared for the next block.
+      std::vector<uint32_t>& own_mask = own_masks.local();
+      own_mask.resize(node_count, 0);
+      std::vector<uint32_t>& distinct = candidates;
+      distinct.clear();
+      for (const auto& [node, k] : own) {
+        if (own_mask[node] == 0) distinct.push_back(node);
+        own_mask[node] |= uint32_t(1) << k;
+      }
+      std::sort(distinct.begin(), distinct.end());
+      for (const uint32_t node : distinct) {
+        blk.whole_node.push_back(node);
+        blk.whole_mask.push_back(own_mask[node]);
+        own_mask[node] = 0;
       }
       blk.whole_node.shrink_to_fit();
       blk.whole_mask.shrink_to_fit();

@@ -1,6 +1,7 @@
 #include "calc/nearfield/table_far_bound.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -25,11 +26,12 @@ constexpr int kSubcells = 3;
 
 // What the bound reads of the bilinear table over a set of its cells (cd, per radian of arc):
 // the largest gradient, the largest second derivative along a great circle inside a cell, the
-// largest slope jumps across a gamma row line (of dI/dgamma) and across a C plane (of
-// dI/dC / sin gamma), what a pole cell's gradients may differ by, the dimmest value, the
-// largest jump of the value itself, and the narrowest cell.
+// largest slope jumps across the gamma row lines (of dI/dgamma) and the C planes (of
+// dI/dC / sin gamma) the footprint can reach, what a pole cell's gradients may differ by, the
+// dimmest value, the largest jump of the value itself, and the narrowest cell.
 struct Stats {
   double grad_max = 0.0;
+  double grad_g_max = 0.0, grad_c_max = 0.0;  // its parts along gamma and along C
   double hess_max = 0.0;
   double kink_row = 0.0, kink_c = 0.0, kink_pole = 0.0;
   double i_min = kInf;
@@ -38,6 +40,8 @@ struct Stats {
   bool any = false;
   void add(const Stats& o) {
     grad_max = std::max(grad_max, o.grad_max);
+    grad_g_max = std::max(grad_g_max, o.grad_g_max);
+    grad_c_max = std::max(grad_c_max, o.grad_c_max);
     hess_max = std::max(hess_max, o.hess_max);
     kink_row = std::max(kink_row, o.kink_row);
     kink_c = std::max(kink_c, o.kink_c);
@@ -48,6 +52,20 @@ struct Stats {
     dc_min = std::min(dc_min, o.dc_min);
     any = any || o.any;
   }
+};
+
+// A table cell: its own stats (no kinks) and the slope jumps on its four sides, each charged
+// only where the footprint reaches that side (a kink the footprint does not straddle adds
+// nothing to the remainder: docs/nearfield.md, "What the map bounds and what it measures").
+struct CellStats {
+  Stats inside;
+  double kink_row_lo = 0.0, kink_row_hi = 0.0;  // row lines j and j + 1
+  double kink_c_lo = 0.0, kink_c_hi = 0.0;      // C planes i and i + 1
+};
+
+// A table line left out of a bound: the footprint is known not to reach it (-1: none).
+struct Excluded {
+  long row = -1, plane = -1;
 };
 
 // A pole row: sin gamma below this.
@@ -66,9 +84,32 @@ class CellTable {
   }
   double peak() const { return peak_; }
   std::size_t planes() const { return nc_; }
+  std::size_t rows() const { return ng_; }
+  double row_rad(std::size_t j) const { return t_.grid().gamma_rad[j]; }
+  double plane_rad(std::size_t i) const { return t_.grid().c_rad[i]; }
 
-  // Over every table cell a cap of `radius` around the grid-frame direction (c, gamma) reaches.
-  Stats over_cap(double c, double gamma, double radius) const {
+  // The dimmest value of the bilinear table over the grid-frame rectangle [c0, c1] x [g0, g1]
+  // (c1 - c0 below 2 pi): on each cell's part of it the bilinear value is least at a corner of
+  // that part, so at the rectangle's corners, where its sides cross the table's lines, or at a
+  // table node inside.
+  double min_over_rect(double c0, double c1, double g0, double g1) const {
+    const auto& G = t_.grid().gamma_rad;
+    std::vector<double> cs{c0, c1}, gs{g0, g1};
+    for (std::size_t i = 0; i < 2 * nc_; ++i)
+      for (double shift : {-kTwoPi, 0.0})
+        if (c_at(i) + shift > c0 && c_at(i) + shift < c1) cs.push_back(c_at(i) + shift);
+    for (double g : G)
+      if (g > g0 && g < g1) gs.push_back(g);
+    double m = kInf;
+    for (double c : cs)
+      for (double g : gs) m = std::min(m, value(c, g));
+    return m;
+  }
+
+  // Over every table cell a cap of `radius` around the grid-frame direction (c, gamma) reaches;
+  // a row line's or C plane's slope jump only where the cap reaches the line, and never of the
+  // line `ex`.
+  Stats over_cap(double c, double gamma, double radius, Excluded ex = {}) const {
     const auto& G = t_.grid().gamma_rad;
     const double lo = gamma - radius, hi = gamma + radius;
     const bool pole = lo <= 0.0 || hi >= kPi;
@@ -89,9 +130,28 @@ class CellTable {
           }
       }
     }
+    // Whether the cap reaches C plane i (its meridian): within half_c of c around the circle.
+    auto reaches_plane = [&](std::size_t i) {
+      if (half_c >= kPi) return true;
+      for (double shift : {-kTwoPi, 0.0, kTwoPi})
+        if (std::abs(c_at(i) + shift - c) <= half_c) return true;
+      return false;
+    };
     for (std::size_t j = 0; j + 1 < ng_; ++j) {
       if (G[j + 1] < lo || G[j] > hi) continue;
-      for (std::size_t i : cols) s.add(cells_[i * (ng_ - 1) + j]);
+      const bool row_lo = G[j] >= lo && static_cast<long>(j) != ex.row;
+      const bool row_hi = G[j + 1] <= hi && static_cast<long>(j + 1) != ex.row;
+      for (std::size_t i : cols) {
+        const CellStats& cs = cells_[i * (ng_ - 1) + j];
+        s.add(cs.inside);
+        if (row_lo) s.kink_row = std::max(s.kink_row, cs.kink_row_lo);
+        if (row_hi) s.kink_row = std::max(s.kink_row, cs.kink_row_hi);
+        if (static_cast<long>(i) != ex.plane && reaches_plane(i))
+          s.kink_c = std::max(s.kink_c, cs.kink_c_lo);
+        const std::size_t i1 = (i + 1) % nc_;
+        if (static_cast<long>(i1) != ex.plane && reaches_plane(i1))
+          s.kink_c = std::max(s.kink_c, cs.kink_c_hi);
+      }
     }
     // Beyond the table's first or last row the intensity is 0: a jump by that row's value and a
     // slope jump by the slope next to it, where the row is not a pole.
@@ -112,6 +172,23 @@ class CellTable {
     const auto& C = t_.grid().c_rad;
     return i < nc_ ? C[i] : C[i - nc_] + kTwoPi;
   }
+  // The bilinear table at grid-frame (c, gamma), C taken around the circle.
+  double value(double c, double gamma) const {
+    const auto& G = t_.grid().gamma_rad;
+    const double gc = std::clamp(gamma, G.front(), G.back());
+    std::size_t j = std::upper_bound(G.begin(), G.end(), gc) - G.begin();
+    j = std::clamp<std::size_t>(j, 1, ng_ - 1) - 1;
+    const double tg = (gc - G[j]) / (G[j + 1] - G[j]);
+    if (nc_ == 1) return (1 - tg) * v(0, j) + tg * v(0, j + 1);
+    double cw = std::fmod(c - c_at(0), kTwoPi);
+    if (cw < 0) cw += kTwoPi;
+    cw += c_at(0);
+    std::size_t i = 0;
+    while (i + 1 < nc_ && c_at(i + 1) <= cw) ++i;
+    const double tc = std::clamp((cw - c_at(i)) / (c_at(i + 1) - c_at(i)), 0.0, 1.0);
+    return (1 - tc) * ((1 - tg) * v(i, j) + tg * v(i, j + 1)) +
+           tc * ((1 - tg) * v(i + 1, j) + tg * v(i + 1, j + 1));
+  }
   // dI/dgamma of gamma cell j on plane i, and dI/dC of C cell i on row j.
   double slope_g(std::size_t i, std::size_t j) const {
     const auto& G = t_.grid().gamma_rad;
@@ -121,12 +198,13 @@ class CellTable {
     return (v(i + 1, j) - v(i, j)) / (c_at(i + 1) - c_at(i));
   }
 
-  Stats cell(std::size_t i, std::size_t j) const {
+  CellStats cell(std::size_t i, std::size_t j) const {
     const auto& G = t_.grid().gamma_rad;
     const std::size_t i1 = nc_ == 1 ? i : i + 1;
     const double v00 = v(i, j), v01 = v(i, j + 1), v10 = v(i1, j), v11 = v(i1, j + 1);
     const double g0 = G[j], g1 = G[j + 1], dg = g1 - g0;
-    Stats s;
+    CellStats out;
+    Stats& s = out.inside;
     s.any = true;
     s.i_min = std::min({v00, v01, v10, v11});
     s.dg_min = dg;
@@ -147,13 +225,16 @@ class CellTable {
       s.dc_min = dc;
       c_abs = std::max(std::abs(v10 - v00), std::abs(v11 - v01)) / dc * inv_sin;
       if (pole_cell) s.jump = std::abs(sin0 <= kPoleSin ? v10 - v00 : v11 - v01);
-      // Slope jumps of dI/dC across the cell's two planes (plane i between C cells i - 1 and i).
-      for (std::size_t plane : {i, i + 1})
-        for (std::size_t row : {j, j + 1}) {
-          const double k =
-              std::abs(slope_c(plane % nc_, row) - slope_c((plane + nc_ - 1) % nc_, row));
-          s.kink_c = std::max(s.kink_c, k * inv_sin);
-        }
+      // Slope jumps of dI/dC across the cell's two planes (plane i between C cells i - 1 and i;
+      // linear in gamma along the plane, so largest at a row).
+      for (std::size_t plane : {i, i + 1}) {
+        double k = 0.0;
+        for (std::size_t row : {j, j + 1})
+          k = std::max(k,
+                       std::abs(slope_c(plane % nc_, row) - slope_c((plane + nc_ - 1) % nc_, row)) *
+                           inv_sin);
+        (plane == i ? out.kink_c_lo : out.kink_c_hi) = k;
+      }
       // The second derivative along a great circle (covariant, per radian^2): the twist over
       // sin gamma and the sphere's cot gamma terms; d2I/dgamma2 = d2I/dC2 = 0 (bilinear).
       const double f = std::abs(v11 - v10 - v01 + v00) / (dg * dc);
@@ -161,23 +242,28 @@ class CellTable {
     } else if (!pole_cell) {
       s.hess_max = cot * g_abs;
     }
-    // Slope jumps of dI/dgamma across the cell's two row lines (inside the table).
+    // Slope jumps of dI/dgamma across the cell's two row lines (inside the table; linear in C
+    // along the line, so largest at a plane).
     for (std::size_t plane : {i, i1}) {
       if (j > 0)
-        s.kink_row = std::max(s.kink_row, std::abs(slope_g(plane, j) - slope_g(plane, j - 1)));
+        out.kink_row_lo =
+            std::max(out.kink_row_lo, std::abs(slope_g(plane, j) - slope_g(plane, j - 1)));
       if (j + 2 < ng_)
-        s.kink_row = std::max(s.kink_row, std::abs(slope_g(plane, j + 1) - slope_g(plane, j)));
+        out.kink_row_hi =
+            std::max(out.kink_row_hi, std::abs(slope_g(plane, j + 1) - slope_g(plane, j)));
     }
     s.grad_max = std::hypot(g_abs, c_abs);
+    s.grad_g_max = g_abs;
+    s.grad_c_max = c_abs;
     // A pole cell: two of its gradients differ by at most twice the largest (the cone a bilinear
     // table makes at the pole), charged as one kink.
     if (pole_cell) s.kink_pole = 2.0 * s.grad_max;
-    return s;
+    return out;
   }
 
   const photometry::TabularDistribution& t_;
   std::size_t nc_ = 0, ng_ = 0;
-  std::vector<Stats> cells_;
+  std::vector<CellStats> cells_;
   double peak_ = 0.0;
   mutable std::vector<std::size_t> cols_scratch_;
 };
@@ -198,6 +284,7 @@ const photometry::TabularDistribution* bilinear_table(const Emitter& e) {
 // square distance of its points from the centroid (exact, from the fan of triangles).
 struct OpeningSize {
   double rho, rms;
+  bool flat;  // in the plane through its centroid normal to the luminaire's axis
 };
 
 // The table's part of the error over `region`, relative to `den` (cd), at distance d (x D) with
@@ -214,7 +301,7 @@ struct OpeningSize {
 // (H + G delta) s1^2 / 2. The weight g of each point (receivers at most 75 degrees from facing)
 // is within 1 + 25 delta of its mean.
 double table_part(const Stats& region, const OpeningSize& o, double d_over_D, double delta,
-                  double pole_distance, std::size_t planes, double den) {
+                  double pole_distance, double cos_gamma, std::size_t planes, double den) {
   if (!region.any) return region.jump / den;  // beyond the table: 0, up to the edge's jump
   const double s1 = o.rms / std::max(d_over_D - o.rho, 1e-9);
   const double rows = std::floor(delta / region.dg_min) + 1.0;
@@ -224,20 +311,32 @@ double table_part(const Stats& region, const OpeningSize& o, double d_over_D, do
   const double cs =
       planes > 1 ? std::min(static_cast<double>(planes), std::floor(c_span / region.dc_min) + 1.0)
                  : 0.0;
-  const double kinks = rows * region.kink_row + cs * region.kink_c + region.kink_pole;
+  // Across a row line the footprint spans the opening foreshortened by cos gamma (kForeshortened
+  // in table_far_bound.h); the line's normal turns by up to 2.73 delta over the footprint
+  // (away from the poles), 3 delta^2 more of the mean.
+  const double across_row =
+      cos_gamma < 1.0 ? 0.5 * cos_gamma * s1 + 5.0 * delta * delta : 0.5 * s1 + 2.0 * delta * delta;
+  const double kinks = rows * region.kink_row * across_row +
+                       (cs * region.kink_c + region.kink_pole) * (0.5 * s1 + 2.0 * delta * delta);
   const double remainder =
       (1.0 + 25.0 * delta) *
       std::min(2.0 * region.grad_max * s1,
-               kinks * (0.5 * s1 + 2.0 * delta * delta) +
-                   0.5 * (region.hess_max + region.grad_max * delta) * s1 * s1);
-  return (remainder + region.grad_max * kFirstOrderKappa * delta * delta + region.jump) / den;
+               kinks + 0.5 * (region.hess_max + region.grad_max * delta) * s1 * s1);
+  const double first_order =
+      (1.0 + 25.0 * delta) * s1 * s1 *
+      (kChordKappa * region.grad_max +
+       kWeightKappa * (cos_gamma * region.grad_g_max + region.grad_c_max) +
+       (cos_gamma < 1.0
+            ? kThirdOrderKappa * o.rho / std::max(d_over_D - o.rho, 1e-9) * region.grad_g_max
+            : 0.0));
+  return (remainder + first_order + region.jump) / den;
 }
 
 // What the part of a map cell from (g0, c0) (in samples) spanning 1 / kSubcells of it each way
 // needs (x D): the first rung of the ladder from which table_part is within `b` for every
-// direction in it.
-float subcell_need(const CellTable& cells, const glm::dmat3& to_grid, double g0, double c0,
-                   const OpeningSize& o, double floor_cd, double b) {
+// direction in it, with the table line `ex` left out.
+float subcell_need(const CellTable& cells, const glm::dmat3& to_grid, bool framed, double g0,
+                   double c0, const OpeningSize& o, double floor_cd, double b, Excluded ex) {
   constexpr double step = 1.0 / kSubcells;
   // Its directions lie within rc of its centre (corners and edge midpoints; the C edges are
   // small circles, bulging a hair beyond their chord: the margin).
@@ -251,15 +350,31 @@ float subcell_need(const CellTable& cells, const glm::dmat3& to_grid, double g0,
                                                              (g0 + fg * step) * kMapGammaStepRad)));
   rc += 0.1 * kDegToRad;
   const photometry::PhotometricAngles a = photometry::angles_of(to_grid * centre);
-  const Stats here = cells.over_cap(a.c, a.gamma, rc);
-  const double den = std::max(std::isfinite(here.i_min) ? here.i_min : 0.0, floor_cd);
+  // The dimmest value its directions see: where the table's grid is the map's, exactly over the
+  // part's rectangle of angles; else over every table cell its cap reaches.
+  double i_min = 0.0;
+  if (framed) {
+    const Stats here = cells.over_cap(a.c, a.gamma, rc);
+    i_min = std::isfinite(here.i_min) ? here.i_min : 0.0;
+  } else {
+    i_min = cells.min_over_rect(c0 * kMapCStepRad, (c0 + step) * kMapCStepRad,
+                                g0 * kMapGammaStepRad, (g0 + step) * kMapGammaStepRad);
+  }
+  const double den = std::max(i_min, floor_cd);
   auto passes = [&](int k) {
     const double d_over_D = kLadderStart * std::pow(kTableLadderRatio, k);
     const double delta = std::asin(std::min(1.0, o.rho / d_over_D));
     const double radius = rc + delta;
-    const Stats region = cells.over_cap(a.c, a.gamma, radius);
+    const Stats region = cells.over_cap(a.c, a.gamma, radius, ex);
     const double pole_distance = std::min(a.gamma - radius, kPi - a.gamma - radius) + delta;
-    return table_part(region, o, d_over_D, delta, pole_distance, cells.planes(), den) <= b;
+    // The largest |cos gamma| over the region (at an end of its gamma range), where the table's
+    // gamma is the angle from the flat opening's normal and the region keeps away from the poles.
+    double cos_gamma = 1.0;
+    if (!framed && o.flat && pole_distance - delta >= kForeshortenedPoleDistance)
+      cos_gamma =
+          std::max(std::abs(std::cos(a.gamma - radius)), std::abs(std::cos(a.gamma + radius)));
+    return table_part(region, o, d_over_D, delta, pole_distance, cos_gamma, cells.planes(), den) <=
+           b;
   };
   if (!passes(kTableLadderRungs - 1)) return kNearEverywhere;
   int lo = -1, hi = kTableLadderRungs - 1;  // lo fails (or none), hi passes
@@ -274,6 +389,28 @@ float subcell_need(const CellTable& cells, const glm::dmat3& to_grid, double g0,
   return static_cast<float>(kLadderStart * std::pow(kTableLadderRatio, hi));
 }
 
+// The table line a map line lies on (-1: none): map row g on a row of the table, map column c
+// on a C plane. Only where the table's grid is the luminaire's (no frame), so that the map's
+// interpolation fractions measure the angle from the line.
+long table_row_on(const CellTable& cells, int g) {
+  for (std::size_t j = 1; j + 1 < cells.rows(); ++j)  // the poles are points, not lines
+    if (std::abs(cells.row_rad(j) - g * kMapGammaStepRad) < 1e-9) return static_cast<long>(j);
+  return -1;
+}
+long table_plane_on(const CellTable& cells, int c) {
+  if (cells.planes() < 2) return -1;
+  const double c_rad = (c % kCSamples) * kMapCStepRad;
+  for (std::size_t i = 0; i < cells.planes(); ++i)
+    if (std::abs(std::remainder(cells.plane_rad(i) - c_rad, kTwoPi)) < 1e-9)
+      return static_cast<long>(i);
+  return -1;
+}
+
+// What a map cell allows at its four corners (1 / d, x 1/D; corner k = 2 dg + dc of (g + dg,
+// c + dc)): the map interpolates 1 / d bilinearly inside the cell, so a bound on every corner
+// that keeps the interpolant at or below what each direction of the cell allows.
+using CornerAllow = std::array<double, 4>;
+
 }  // namespace
 
 std::vector<float> table_far_bound_over_D(const Emitter& e, double budget,
@@ -281,7 +418,7 @@ std::vector<float> table_far_bound_over_D(const Emitter& e, double budget,
   const photometry::TabularDistribution* table = bilinear_table(e);
   if (!table || e.is_point() || !(e.largest_dimension_m > 0.0)) return {};
   const CellTable cells(*table);
-  OpeningSize o{0.0, 0.0};
+  OpeningSize o{0.0, 0.0, true};
   double second_moment = 0.0;  // integral of |x - c|^2 dA over the fan from the centroid (m^4)
   for (std::size_t k = 0; k < e.vertices.size(); ++k) {
     const Vec3 p = e.vertices[k] - e.centroid;
@@ -290,16 +427,28 @@ std::vector<float> table_far_bound_over_D(const Emitter& e, double budget,
     second_moment += area / 6.0 * (glm::dot(p, p) + glm::dot(q, q) + glm::dot(p, q));
     o.rho = std::max(o.rho, glm::length(p));
   }
+  for (const Vec3& v : e.vertices)
+    if (std::abs((e.world_to_local * (v - e.centroid)).z) > 1e-9 * e.largest_dimension_m)
+      o.flat = false;
   o.rho /= e.largest_dimension_m;
   o.rms = std::sqrt(second_moment / e.area_m2) / e.largest_dimension_m;
-  const glm::dmat3 to_grid = table->has_frame() ? table->table_from_luminaire() : glm::dmat3(1.0);
+  const bool framed = table->has_frame();
+  const glm::dmat3 to_grid = framed ? table->table_from_luminaire() : glm::dmat3(1.0);
   const double floor_cd = kDimFloor * cells.peak();
   // Relative to the near value: |far - near| <= b far is within b / (1 - b) of near.
   const double b = budget / (1.0 + budget);
+  // The map's lines that are table lines.
+  std::vector<long> row_on(kGammaSamples, -1), plane_on(kCSamples, -1);
+  if (!framed) {
+    for (int g = 0; g < kGammaSamples; ++g) row_on[g] = table_row_on(cells, g);
+    for (int c = 0; c < kCSamples; ++c) plane_on[c] = table_plane_on(cells, c);
+  }
 
   const int ncell = (kGammaSamples - 1) * kCSamples;
-  std::vector<float> cell_over_D(ncell, 0.0f);
+  std::vector<CornerAllow> allow(ncell, CornerAllow{});
+  std::vector<char> done(ncell, 0);
   auto sample_wanted = [&](int g, int c) { return wanted[g * kCSamples + c % kCSamples] > 0.0f; };
+  auto inverse = [](float need) { return need >= kNearEverywhere ? 0.0 : 1.0 / need; };
   for (int g = 0; g + 1 < kGammaSamples; ++g)
     for (int c = 0; c < kCSamples; ++c) {
       if (!(sample_wanted(g, c) || sample_wanted(g, c + 1) || sample_wanted(g + 1, c) ||
@@ -307,27 +456,68 @@ std::vector<float> table_far_bound_over_D(const Emitter& e, double budget,
         continue;
       // The cell in kSubcells x kSubcells parts, each with its own dimmest value and its own
       // neighbourhood of the table: the cell's need is the largest of theirs.
-      float need = 0.0f;
-      for (int sg = 0; sg < kSubcells; ++sg)
-        for (int sc = 0; sc < kSubcells; ++sc)
-          need =
-              std::max(need, subcell_need(cells, to_grid, g + static_cast<double>(sg) / kSubcells,
-                                          c + static_cast<double>(sc) / kSubcells, o, floor_cd, b));
-      cell_over_D[g * kCSamples + c] = need;
+      auto cell_need = [&](Excluded ex) {
+        float need = 0.0f;
+        for (int sg = 0; sg < kSubcells; ++sg)
+          for (int sc = 0; sc < kSubcells; ++sc)
+            need = std::max(
+                need, subcell_need(cells, to_grid, framed, g + static_cast<double>(sg) / kSubcells,
+                                   c + static_cast<double>(sc) / kSubcells, o, floor_cd, b, ex));
+        return need;
+      };
+      const double all = inverse(cell_need({}));
+      CornerAllow best{all, all, all, all};
+      // A table line L along a side of the cell: where the footprint does not reach L (its
+      // angle t from L above delta = asin(rho / d), i.e. 1 / d below sin t / rho), L's kink adds
+      // nothing, so a direction allows max(all, min(without_L, sin t / rho)). The interpolant
+      // keeps below that when the corners on L take all / 2, the others all / 2 plus q with
+      // q t_frac <= sin t / (2 rho) (t = t_frac x the cell's width across L, sin t >= t_frac x
+      // its sine), and every corner without_L: then it is at most min(without_L, all / 2 +
+      // sin t / (2 rho)) <= max(all, min(without_L, sin t / rho)). Taken where that allows more
+      // over the four corners than `all` alone.
+      auto try_line = [&](Excluded ex, std::array<bool, 4> on_line, double q) {
+        const double without = inverse(cell_need(ex));
+        if (!(without > all)) return;
+        CornerAllow option;
+        for (int k = 0; k < 4; ++k)
+          option[k] = std::min(without, 0.5 * all + (on_line[k] ? 0.0 : q));
+        double sum_option = 0.0, sum_best = 0.0;
+        for (int k = 0; k < 4; ++k) {
+          sum_option += option[k];
+          sum_best += best[k];
+        }
+        if (sum_option > sum_best) best = option;
+      };
+      if (all < 1.0 / kLadderStart) {
+        const double across_g = std::sin(kMapGammaStepRad) / (2.0 * o.rho);
+        const double sin_rows =
+            std::min(std::sin(g * kMapGammaStepRad), std::sin((g + 1) * kMapGammaStepRad));
+        const double across_c = sin_rows * std::sin(kMapCStepRad) / (2.0 * o.rho);
+        if (row_on[g] >= 0) try_line({row_on[g], -1}, {true, true, false, false}, across_g);
+        if (row_on[g + 1] >= 0) try_line({row_on[g + 1], -1}, {false, false, true, true}, across_g);
+        if (plane_on[c] >= 0) try_line({-1, plane_on[c]}, {true, false, true, false}, across_c);
+        const int c1 = (c + 1) % kCSamples;
+        if (plane_on[c1] >= 0) try_line({-1, plane_on[c1]}, {false, true, false, true}, across_c);
+      }
+      allow[g * kCSamples + c] = best;
+      done[g * kCSamples + c] = 1;
     }
-  // A sample carries the largest need of the (up to four) cells it is a corner of, so that the
-  // map's interpolation (in 1 / d, between a cell's corners) never asks less inside a cell.
+  // A sample carries the least its (up to four) cells allow at it, so that the map's
+  // interpolation (in 1 / d, between a cell's corners) never allows more inside a cell.
   std::vector<float> out(kGammaSamples * kCSamples, 0.0f);
   for (int g = 0; g < kGammaSamples; ++g)
     for (int c = 0; c < kCSamples; ++c) {
       if (!(wanted[g * kCSamples + c] > 0.0f)) continue;
-      float v = 0.0f;
-      for (int cg : {g - 1, g})
-        for (int cc : {c - 1, c}) {
-          if (cg < 0 || cg + 1 >= kGammaSamples) continue;
-          v = std::max(v, cell_over_D[cg * kCSamples + (cc + kCSamples) % kCSamples]);
+      double v = kInf;
+      for (int dg : {0, 1})
+        for (int dc : {0, 1}) {
+          const int cg = g - 1 + dg, cc = (c - 1 + dc + kCSamples) % kCSamples;
+          if (cg < 0 || cg + 1 >= kGammaSamples || !done[cg * kCSamples + cc]) continue;
+          // This sample is corner (1 - dg, 1 - dc) of that cell.
+          v = std::min(v, allow[cg * kCSamples + cc][2 * (1 - dg) + (1 - dc)]);
         }
-      out[g * kCSamples + c] = v;
+      out[g * kCSamples + c] =
+          v > 1.0 / kNearEverywhere ? static_cast<float>(1.0 / v) : kNearEverywhere;
     }
   return out;
 }

@@ -5,7 +5,7 @@
 // opening's point x to the receiver, g the receiver's weight cos / r^2) splits, with L the
 // intensity's gradient at w_c, into
 //   I(w_c) (mean g - g(c))                                  geometry: measured by the map
-// + L . (1/A) integral of (w_x - w_c) g(x) dA               first order: |.| <= G kappa delta^2
+// + L . (1/A) integral of (w_x - w_c) g(x) dA               first order: |.| <= (kappa terms) s1^2
 // + (1/A) integral of (I(w_x) - I(w_c) - L.(w_x - w_c)) g   the table's curvature, kinks, pole
 //                                                             and jumps: <= (osc delta + J) mean g
 // where delta = asin(rho / d) is the half-angle the opening (circumradius rho about its centroid)
@@ -24,10 +24,27 @@ namespace luxgrid::nearfield {
 inline constexpr double kTableShareOfPromise = 0.5;
 
 // Receivers turned at most this far from facing the opening (the map's five normals): the first
-// order term's kappa = 2 + 2 (2 + tan 75 degrees) ~ 13.5 (cos / r^2 varies over the opening by at
-// most 2 (2 + tan theta) delta of its mean, the chord w_x - w_c is -P x / d to (rho / d)^2), taken
-// as 16 for the terms of higher order down to d = 2 D.
-inline constexpr double kFirstOrderKappa = 16.0;
+// order term is L . (g(c) mean(w_x - w_c) + mean((w_x - w_c)(g(x) - g(c)))). The first mean
+// loses its linear part (c is the centroid), leaving the chord's curvature, at most
+// 1.5 |x - c|^2 / (d - rho)^2 (kChordKappa); in the second, |w_x - w_c| <= |x - c| / (d - rho)
+// and cos / r^2 moves from g(c) by at most (2 + tan 75 degrees) |x - c| / (d - rho) of it (the
+// distance 2, the cosine tan theta): at most (G_gamma cos + G_C) 5.73 s1^2 g(c) (kWeightKappa),
+// s1^2 = mean |x - c|^2 / (d - rho)^2 (both factors grow with |x - c|), with G_gamma and G_C
+// the gradient's parts and cos the foreshortening below. Each taken larger for the terms of
+// higher order down to d = 2 D.
+inline constexpr double kChordKappa = 2.0;
+inline constexpr double kWeightKappa = 8.0;
+
+// A flat opening (its plane normal to the luminaire's axis) seen at gamma from its axis is
+// foreshortened along gamma by |cos gamma|: w_x - w_c along the gamma direction is
+// cos gamma (x - c) . h / d to second order (h the horizontal of the C plane), so a row line's
+// kink and the gamma part of the gradient see cos gamma times the opening's spread. Used where
+// the table's grid is the luminaire's frame and the region keeps this far from the poles (there
+// the line's normal turns by at most (1 + cot) delta = 2.73 delta over the footprint).
+inline constexpr double kForeshortenedPoleDistance = 30.0 * kDegToRad;
+// The foreshortened gamma part's own second order: 1.5 |x - c|^2 / (d - rho)^2 times the weight's
+// 5.73 |x - c| / (d - rho), at most 8.6 rho / (d - rho) s1^2.
+inline constexpr double kThirdOrderKappa = 9.0;
 
 // Per map sample (gamma row-major, kCSamples per row, as FarFieldBound::d_far_over_D): the
 // distance (x D) beyond which the table's part above is within `budget` (relative to the
