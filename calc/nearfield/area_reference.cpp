@@ -5,8 +5,10 @@
 // which shares no code with the solid-angle models except the fan (for the split at the CP,
 // where the integrand peaks).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <queue>
+#include <span>
 #include <vector>
 
 #include "calc/nearfield/fan_sample.h"
@@ -26,6 +28,26 @@ const double kW0 = 9.0 / 40.0, kW1 = (155.0 - kS15) / 1200.0, kW2 = (155.0 + kS1
 // sees only a sliver would otherwise chase digits of a value that is zero for all purposes.
 constexpr double kAbsoluteFloorRelative = 1e-14;
 
+// Shadow guard (Cubature::make). A shadow edge that cuts off a corner of a triangle, or a strip
+// along one of its sides, can miss every node of its 7-point rule; the coarse and fine values then
+// agree on a wrong value. The corners see it: one visible where every node is hidden, or hidden
+// where every node is visible. A straight edge (every shadow edge is, at the scale of a small
+// triangle: an occluder's edge seen from the receiver) can keep at most this share of a
+// triangle's area from the rule's 7 nodes (11.6 %, the strip along a side, measured over 2e5
+// directions of the line), so that share x the largest unoccluded value is the error of each
+// child where the corners and nodes disagree. Judged by the peak guard instead (area x value, as
+// before), every triangle along a shadow edge kept its whole area as error, and refinement crept
+// along the edges at first order until the lookup budget ran out (examples/lshape: 71 of 1008
+// pairs of a coarse grid at 4 million lookups, docs/accuracy.md).
+constexpr double kSliverShare = 0.12;
+
+// A triangle whose nodes are partly seen and partly hidden straddles a shadow edge: a step, on
+// which the fine value converges at first order only, so |fine - coarse| is about its error, and
+// below it as often as above. Doubled it covers it: on CIE 171 case 5.7 (cases/, an exact value,
+// the shadow edge across the whole opening) the undoubled estimate at 1e-4 said 1.0e-4 where the
+// error was 1.8e-4; doubled, it says 1.0e-4 where the error is 6.3e-5.
+constexpr double kShadowEdgeFactor = 2.0;
+
 // Peak guard (Cubature::make): a vertex value above this many times the largest interior node
 // value of the triangle's children marks a peak the interior rule cannot see. Smooth integrands
 // stay far below it once a triangle is smaller than the receiver's distance (the geometric
@@ -39,13 +61,26 @@ struct Integrand {
   const geometry::Visibility* occluder = nullptr;  // per-sample visibility (fan_sample.h)
   Vec3 receiver{0.0};                              // unshifted receiver, world: segment end
   Vec3 origin{0.0};                                // shifted receiver, world: origin of `r`
-  double operator()(const Vec3& r) const {
+  // The integrand as if nothing were in the way (the peak guard's probe).
+  double unoccluded(const Vec3& r) const {
     const double d2 = glm::dot(r, r);
     if (!(d2 > 0.0)) return 0.0;
     const Vec3 w = r / std::sqrt(d2);
     const double weight = receiver_weight(what, w);
     if (!(weight > 0.0)) return 0.0;
-    const double value = e->intensity_towards(-w) * weight / d2 * inv_area;
+    return e->intensity_towards(-w) * weight / d2 * inv_area;
+  }
+  // What every segment from the triangle (a, b, c) (relative to `origin`, moved inwards as the
+  // nodes are) to the receiver says: a proof for all of its nodes (geometry/shaft.h).
+  geometry::Shaft classify(const Vec3& a, const Vec3& b, const Vec3& c) const {
+    if (!occluder) return geometry::Shaft::visible;
+    Vec3 corners[3] = {origin + a, origin + b, origin + c};
+    for (Vec3& p : corners) p += kVisibilityInsetRelative * (e->centroid - p);
+    return occluder->classify(std::span<const Vec3>(corners, 3),
+                              std::span<const Vec3>(&receiver, 1));
+  }
+  // `value` (the unoccluded integrand at `r`) where the receiver sees the point, else 0.
+  double occluded(const Vec3& r, double value) const {
     if (occluder && value != 0.0) {
       const Vec3 p = origin + r;
       if (!occluder->visible(p + kVisibilityInsetRelative * (e->centroid - p), receiver))
@@ -55,65 +90,143 @@ struct Integrand {
   }
 };
 
+// The integrand at a point: as if nothing were in the way, and as the receiver sees it.
+struct Sample {
+  double open = 0.0, seen = 0.0;
+};
+
+// What the nodes of a triangle's rules saw: the largest unoccluded value, and whether any node
+// with light was visible and any hidden.
+struct NodeSummary {
+  double open_max = 0.0;
+  bool any_seen = false, any_hidden = false;
+};
+
 struct Tri {
   Vec3 a, b, c;
+  Sample va, vb, vc;                       // the integrand at a, b, c (the guards')
+  Sample vab, vbc, vca;                    // and at the midpoints of the sides (the children's)
   double fine = 0.0;                       // sum of the four children's 7-point values
   double error = 0.0;                      // |7-point value of the parent - fine|
   double child[4] = {0.0, 0.0, 0.0, 0.0};  // the children's 7-point values, in split order
+  geometry::Shaft shaft = geometry::Shaft::partial;  // what the receiver sees of it, if proven
   bool operator<(const Tri& o) const { return error < o.error; }
 };
 
 class Cubature {
  public:
   explicit Cubature(const Integrand& f) : f_(f) {}
-  // The 7-point value of the triangle; `node_max` (optional) grows to its largest node value.
-  double rule(const Vec3& a, const Vec3& b, const Vec3& c, double* node_max = nullptr) {
+  // The 7-point value of the triangle; `nodes` (optional) takes in its nodes.
+  double rule(const Vec3& a, const Vec3& b, const Vec3& c, NodeSummary* nodes = nullptr) {
     evaluations_ += 7;
     const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
-    double largest = 0.0;
+    NodeSummary here;
     auto at = [&](double x, double y, double z) {
-      const double v = f_(x * a + y * b + z * c);
-      largest = std::max(largest, v);
-      return v;
+      const Sample v = sample(x * a + y * b + z * c);
+      here.open_max = std::max(here.open_max, v.open);
+      here.any_seen |= v.seen > 0.0;
+      here.any_hidden |= v.open > 0.0 && !(v.seen > 0.0);
+      return v.seen;
     };
     const double s = kW0 * at(1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0) +
                      kW1 * (at(kA1, kA1, kB1) + at(kA1, kB1, kA1) + at(kB1, kA1, kA1)) +
                      kW2 * (at(kA2, kA2, kB2) + at(kA2, kB2, kA2) + at(kB2, kA2, kA2));
-    if (node_max) *node_max = std::max(*node_max, largest);
+    if (nodes) {
+      nodes->open_max = std::max(nodes->open_max, here.open_max);
+      nodes->any_seen |= here.any_seen;
+      nodes->any_hidden |= here.any_hidden;
+    }
     return area * s;
   }
-  Tri make(const Vec3& a, const Vec3& b, const Vec3& c, double coarse) {
+  // `coarse`: the triangle's own 7-point value; `va`, `vb`, `vc`: the integrand at its vertices
+  // (a vertex is shared with the parent or a sibling: looked up once).
+  // `shaft`: the parent's verdict (a proof holds for its children); partial: asked here.
+  Tri make(const Vec3& a, const Vec3& b, const Vec3& c, double coarse, const Sample& va,
+           const Sample& vb, const Sample& vc, geometry::Shaft shaft) {
+    // A triangle the receiver provably sees whole (or not at all) needs no segment per node: the
+    // shaft's verdict answers each exactly as the occlusion test would (geometry/shaft.h).
+    shaft_ = shaft == geometry::Shaft::partial ? f_.classify(a, b, c) : shaft;
     const Vec3 ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
-    Tri t{a, b, c};
-    double node_max = 0.0;
-    t.child[0] = rule(a, ab, ca, &node_max);
-    t.child[1] = rule(ab, b, bc, &node_max);
-    t.child[2] = rule(ca, bc, c, &node_max);
-    t.child[3] = rule(ab, bc, ca, &node_max);
+    Tri t{a, b, c, va, vb, vc, vertex(ab), vertex(bc), vertex(ca)};
+    t.shaft = shaft_;
+    NodeSummary nodes[4];
+    t.child[0] = rule(a, ab, ca, &nodes[0]);
+    t.child[1] = rule(ab, b, bc, &nodes[1]);
+    t.child[2] = rule(ca, bc, c, &nodes[2]);
+    t.child[3] = rule(ab, bc, ca, &nodes[3]);
     t.fine = t.child[0] + t.child[1] + t.child[2] + t.child[3];
     t.error = std::abs(t.fine - coarse);
+    bool seen = false, hidden = false;
+    for (const NodeSummary& n : nodes) seen |= n.any_seen, hidden |= n.any_hidden;
+    if (seen && hidden) t.error *= kShadowEdgeFactor;
+    const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
     // Peak guard. Every node of the 7-point rule is interior, so a peak narrower than the
     // triangle that sits at a vertex is invisible to both the coarse and the fine value, and
     // their difference says "converged" on a wrong value. It happens where it matters: the fan's
     // apex is the receiver's foot point, where a downlight's beam lands on a receiver right
     // under it (a 5-degree spot 0.1 m below a 1 x 1 m opening: the rule alone gave 310 lx for
-    // 458.5 lx, tests/nearfield/reference_peak_test.cpp). So the vertices are looked at too (3 more
-    // lookups): when one exceeds kPeakRatio x every interior node, the triangle may hide up to
-    // area x that value, and that is its error until it is split fine enough.
-    evaluations_ += 3;
-    const double vertex_max = std::max({f_(a), f_(b), f_(c)});
-    if (vertex_max > kPeakRatio * node_max) {
-      const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
-      t.error = std::max(t.error, area * vertex_max);
+    // 458.5 lx, tests/nearfield/reference_peak_test.cpp). So the vertices are looked at too:
+    // when a visible one exceeds kPeakRatio x every interior node, the triangle may hide up to
+    // area x that value, and that is its error until it is split fine enough. The nodes are
+    // taken unoccluded: a peak is the beam's, and a shadow is the shadow guard's.
+    const double node_max =
+        std::max({nodes[0].open_max, nodes[1].open_max, nodes[2].open_max, nodes[3].open_max});
+    const double vertex_max = std::max({va.seen, vb.seen, vc.seen});
+    if (vertex_max > kPeakRatio * node_max) t.error = std::max(t.error, area * vertex_max);
+    // Shadow guard, per child: see kSliverShare.
+    const Sample* corners[4][3] = {{&t.va, &t.vab, &t.vca},
+                                   {&t.vab, &t.vb, &t.vbc},
+                                   {&t.vca, &t.vbc, &t.vc},
+                                   {&t.vab, &t.vbc, &t.vca}};
+    double sliver = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      bool corner_seen = false, corner_hidden = false;
+      double open_max = nodes[k].open_max;
+      for (const Sample* v : corners[k]) {
+        corner_seen |= v->seen > 0.0;
+        corner_hidden |= v->open > 0.0 && !(v->seen > 0.0);
+        open_max = std::max(open_max, v->open);
+      }
+      if ((corner_seen && !nodes[k].any_seen) || (corner_hidden && !nodes[k].any_hidden))
+        sliver += kSliverShare * 0.25 * area * open_max;
     }
+    t.error = std::max(t.error, sliver);
     return t;
   }
-  Tri make(const Vec3& a, const Vec3& b, const Vec3& c) { return make(a, b, c, rule(a, b, c)); }
+  Tri make(const Vec3& a, const Vec3& b, const Vec3& c) {
+    shaft_ = f_.classify(a, b, c);
+    const double coarse = rule(a, b, c);
+    const Sample va = vertex(a), vb = vertex(b), vc = vertex(c);
+    return make(a, b, c, coarse, va, vb, vc, shaft_);
+  }
+  // The four children of `t`, in split order (the parent kept their 7-point values, its `child`,
+  // and the integrand at their corners).
+  std::array<Tri, 4> split(const Tri& t) {
+    const Vec3 ab = 0.5 * (t.a + t.b), bc = 0.5 * (t.b + t.c), ca = 0.5 * (t.c + t.a);
+    return {make(t.a, ab, ca, t.child[0], t.va, t.vab, t.vca, t.shaft),
+            make(ab, t.b, bc, t.child[1], t.vab, t.vb, t.vbc, t.shaft),
+            make(ca, bc, t.c, t.child[2], t.vca, t.vbc, t.vc, t.shaft),
+            make(ab, bc, ca, t.child[3], t.vab, t.vbc, t.vca, t.shaft)};
+  }
   std::int64_t evaluations() const { return evaluations_; }
 
  private:
+  Sample sample(const Vec3& r) const {
+    const double open = f_.unoccluded(r);
+    switch (shaft_) {
+      case geometry::Shaft::visible: return {open, open};
+      case geometry::Shaft::hidden: return {open, 0.0};
+      case geometry::Shaft::partial: break;
+    }
+    return {open, f_.occluded(r, open)};
+  }
+  Sample vertex(const Vec3& r) {
+    ++evaluations_;
+    return sample(r);
+  }
   const Integrand& f_;
   std::int64_t evaluations_ = 0;
+  geometry::Shaft shaft_ = geometry::Shaft::partial;  // the triangle being sampled
 };
 
 }  // namespace
@@ -158,12 +271,9 @@ ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const
     queue.pop();
     value -= t.fine;
     error -= t.error;
-    const Vec3 ab = 0.5 * (t.a + t.b), bc = 0.5 * (t.b + t.c), ca = 0.5 * (t.c + t.a);
-    // The parent kept its children's 7-point values (its `fine`): each child only adds its own
-    // four children (28 lookups, not 35).
-    for (const Tri& child :
-         {cubature.make(t.a, ab, ca, t.child[0]), cubature.make(ab, t.b, bc, t.child[1]),
-          cubature.make(ca, bc, t.c, t.child[2]), cubature.make(ab, bc, ca, t.child[3])}) {
+    // The parent kept its children's 7-point values (its `fine`) and its vertex values: each
+    // child only adds its own four children (28 lookups, not 35) and the split's three midpoints.
+    for (const Tri& child : cubature.split(t)) {
       value += child.fine;
       error += child.error;
       queue.push(child);

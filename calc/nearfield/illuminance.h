@@ -63,7 +63,7 @@ double illuminance(const Emitter& emitter, const Vec3& point, const Vec3& normal
 // ladder: the far field (point kernel at the centroid); standard and high on a measured table
 // (no occluder) the table rung; every other case the area-form adaptive cubature
 // (reference_illuminance) at the rung's tolerance: standard kStandardAreaFormRelTol, high and
-// adaptive 1e-3 (or the model's), reference 1e-6 (or the model's). The Lambert-exact rungs
+// adaptive 1e-3 (or the model's), reference 1e-4 (or the model's). The Lambert-exact rungs
 // (two-kernel, Duffy-sinh, paper, subdivided) rest on closed forms of the planar kernel and have
 // no cylindrical form; the paper and subdivided models get the area form at 1e-3.
 double illuminance(const Emitter& emitter, const Vec3& point, const Receiver& receiver,

@@ -228,8 +228,9 @@ TEST(Cylindrical, OppositeHalvesMakeTheWhole) {
       const double sum = illuminance(e, x, Receiver::semi_cylindrical(f), m) +
                          illuminance(e, x, Receiver::semi_cylindrical(-f), m);
       // The far field and standard's table rung (fixed nodes) are linear in the weight: equal to
-      // rounding. The reference refines each integrand on its own, each to 1e-6 of its value.
-      const double tol = m.kind == ModelKind::reference ? 3e-6 : 1e-9;
+      // rounding. The reference refines each integrand on its own, each to 1e-4 of its value:
+      // the two halves and the whole are each within 1e-4 x (2 cyl), so 4e-4 of cyl in all.
+      const double tol = m.kind == ModelKind::reference ? 4e-4 : 1e-9;
       EXPECT_NEAR(sum, 2 * cyl, tol * cyl) << to_string(m);
     }
   }
