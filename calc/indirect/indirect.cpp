@@ -54,11 +54,8 @@ double quality_patch_size(Quality q) {
   return 0.5;
 }
 // The relative jump of exitance between neighbouring patches above which a patch is cut
-// (split_mask.h): 0 where the quality does not cut. `draft` promises nothing; `reference` is
-// meshed as finely as its budget allows already.
-double quality_split_jump(Quality q) {
-  return q == Quality::standard || q == Quality::high ? kSplitJump : 0.0;
-}
+// (split_mask.h): 0 where the quality does not cut (`draft`, which promises nothing).
+double quality_split_jump(Quality q) { return q == Quality::draft ? 0.0 : kSplitJump; }
 
 double quality_far_ratio(Quality q) {
   switch (q) {
@@ -321,6 +318,9 @@ IndirectOptions indirect_options(const Settings& settings) {
   IndirectOptions o;
   o.quality = settings.quality;
   o.bounces = settings.bounces;
+  // `reference` is the yardstick: as many patches as a dense matrix may hold, so that a room of
+  // ordinary size is meshed at its 0.2 m (docs/indirect.md, "Limits").
+  if (settings.quality == Quality::reference) o.max_patches_per_room = kMaxPatchesPerRoom;
   return o;
 }
 

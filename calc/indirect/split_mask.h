@@ -17,7 +17,7 @@
 
 namespace luxgrid::calc::indirect {
 
-// The jump `standard` and `high` cut at: 30 % of the larger exitance (measured above).
+// The jump every quality but `draft` cuts at: 30 % of the larger exitance (measured above).
 inline constexpr double kSplitJump = 0.3;
 
 // Per patch of `mesh` (1: cut it) among the patches [begin, end) of one room: a parallelogram
