@@ -21,13 +21,17 @@ double turn2(const Vec2& o, const Vec2& a, const Vec2& b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
-// Convex hull (counter-clockwise, no collinear points) of `p` [Andrew1979, monotone chain].
-std::vector<Vec2> convex_hull(std::vector<Vec2> p) {
+// Convex hull (counter-clockwise, no collinear points) of `p` [Andrew1979, monotone chain], into
+// `h`; `p` is sorted and its duplicates removed.
+const std::vector<Vec2>& convex_hull(std::vector<Vec2>& p, std::vector<Vec2>& h) {
   std::sort(p.begin(), p.end(),
             [](const Vec2& a, const Vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   p.erase(std::unique(p.begin(), p.end()), p.end());
-  if (p.size() < 3) return p;
-  std::vector<Vec2> h(2 * p.size());
+  if (p.size() < 3) {
+    h = p;
+    return h;
+  }
+  h.resize(2 * p.size());
   size_t k = 0;
   for (size_t i = 0; i < p.size(); ++i) {
     while (k >= 2 && turn2(h[k - 2], h[k - 1], p[i]) <= 0.0) --k;
@@ -40,6 +44,14 @@ std::vector<Vec2> convex_hull(std::vector<Vec2> p) {
   h.resize(k - 1);
   return h;
 }
+
+// The working vectors of one classification.
+struct Scratch {
+  std::vector<Vec3> corners;
+  std::vector<std::pair<size_t, size_t>> edges;
+  std::vector<double> h;
+  std::vector<Vec2> section, hull;
+};
 
 bool segments_within(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d, double margin) {
   const double d1 = turn2(a, b, c), d2 = turn2(a, b, d), d3 = turn2(c, d, a), d4 = turn2(c, d, b);
@@ -119,13 +131,50 @@ ShaftClassifier::ShaftClassifier(const std::vector<Face>& faces) {
     const Vec3& n = c.sheet.normal;
     for (int k = 0; k < 3; ++k)
       if (n[(k + 1) % 3] == 0.0 && n[(k + 2) % 3] == 0.0) c.axis = k;
+    const Polygon2& o = c.sheet.outline;
+    c.outline_lo = c.outline_hi = o.front();
+    for (const Vec2& p : o)
+      c.outline_lo = glm::min(c.outline_lo, p), c.outline_hi = glm::max(c.outline_hi, p);
+    c.rectangle = o.size() == 4;
+    for (size_t i = 0; c.rectangle && i < 4; ++i) {
+      const Vec2& p = o[i];
+      const Vec2& q = o[(i + 1) % 4];
+      const bool corner = (p.x == c.outline_lo.x || p.x == c.outline_hi.x) &&
+                          (p.y == c.outline_lo.y || p.y == c.outline_hi.y);
+      c.rectangle = corner && (p.x == q.x || p.y == q.y);
+    }
     faces_.push_back(std::move(c));
   }
 }
 
+size_t box_element(const Vec3& lo, const Vec3& hi, const Vec3& shift, std::array<Vec3, 8>& out) {
+  int free_axes[3], count = 0;
+  for (int k = 0; k < 3; ++k)
+    if (hi[k] > lo[k]) free_axes[count++] = k;
+  // Corner c of the box: bit i of c chooses hi along the i-th free axis.
+  const auto corner = [&](int c) {
+    Vec3 p = lo;
+    for (int i = 0; i < count; ++i)
+      if (c >> i & 1) p[free_axes[i]] = hi[free_axes[i]];
+    return p + shift;
+  };
+  if (count == 2) {  // round the rectangle, not in bit order
+    const int round[4] = {0, 1, 3, 2};
+    for (int i = 0; i < 4; ++i) out[i] = corner(round[i]);
+    return 4;
+  }
+  const int corners = 1 << count;
+  for (int c = 0; c < corners; ++c) out[c] = corner(c);
+  return static_cast<size_t>(corners);
+}
+
 Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b) const {
   if (a.empty() || b.empty()) return Shaft::partial;
-  std::vector<Vec3> corners(a.begin(), a.end());
+  // Scratch kept per thread: a verdict is asked millions of times (calc/indirect's gather asks
+  // one per receiver and chunk), and four fresh vectors each time cost more than the tests.
+  thread_local Scratch scratch;
+  std::vector<Vec3>& corners = scratch.corners;
+  corners.assign(a.begin(), a.end());
   corners.insert(corners.end(), b.begin(), b.end());
   Box3 shaft{corners.front(), corners.front()};
   for (const Vec3& p : corners) shaft.lo = glm::min(shaft.lo, p), shaft.hi = glm::max(shaft.hi, p);
@@ -136,14 +185,16 @@ Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b
   // An element this far off a plane keeps every shortened end off it, however the other element
   // lies within kShaftSlack_m of the plane.
   const double off_plane_m = std::max(4.0 * kShaftSlack_m / least_shortening, kShaftSlack_m);
-  std::vector<std::pair<size_t, size_t>> edges;
+  std::vector<std::pair<size_t, size_t>>& edges = scratch.edges;
+  edges.clear();
   hull_edges(a, 0, edges);
   hull_edges(b, a.size(), edges);
   for (size_t i = 0; i < a.size(); ++i)
     for (size_t j = 0; j < b.size(); ++j) edges.emplace_back(i, a.size() + j);
   const double reach = kOutlineMargin_m + kShaftSlack_m;
-  std::vector<double> h(corners.size());
-  std::vector<Vec2> section;
+  std::vector<double>& h = scratch.h;
+  h.resize(corners.size());
+  std::vector<Vec2>& section = scratch.section;
   bool partial = false;
   for (const Candidate& c : faces_) {
     bool apart = false;
@@ -193,8 +244,21 @@ Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b
           add(corners[i] + (corners[j] - corners[i]) * (hl / (hl - hr)));
       }
     if (section.empty()) continue;
-    const std::vector<Vec2> q = convex_hull(std::move(section));
-    section = {};
+    // The section's box against the outline's box, before the exact tests below: apart by the
+    // margin, the shaft passes beside the face; on a rectangle, a section well inside it is
+    // crossed by every segment from one side to the other (what the exact tests would find).
+    Vec2 qlo = section.front(), qhi = section.front();
+    for (const Vec2& p : section) qlo = glm::min(qlo, p), qhi = glm::max(qhi, p);
+    if (qhi.x < c.outline_lo.x - kOutlineMargin_m || qlo.x > c.outline_hi.x + kOutlineMargin_m ||
+        qhi.y < c.outline_lo.y - kOutlineMargin_m || qlo.y > c.outline_hi.y + kOutlineMargin_m)
+      continue;
+    const bool across =
+        (sa == Side::above && sb == Side::below) || (sa == Side::below && sb == Side::above);
+    if (c.rectangle && across && qlo.x > c.outline_lo.x + kOutlineMargin_m &&
+        qhi.x < c.outline_hi.x - kOutlineMargin_m && qlo.y > c.outline_lo.y + kOutlineMargin_m &&
+        qhi.y < c.outline_hi.y - kOutlineMargin_m)
+      return Shaft::hidden;
+    const std::vector<Vec2>& q = convex_hull(section, scratch.hull);
     bool inside = true, touches = false;
     for (const Vec2& p : q) {
       const Location where = locate(p, f.outline, kOutlineMargin_m);
@@ -204,9 +268,7 @@ Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b
     const bool edge_meets = outline_meets(f.outline, q, kOutlineMargin_m);
     if (!touches && !edge_meets) continue;  // the shaft passes beside the face
     // Every segment from one side to the other, crossing well inside the outline.
-    if (inside && !edge_meets &&
-        ((sa == Side::above && sb == Side::below) || (sa == Side::below && sb == Side::above)))
-      return Shaft::hidden;
+    if (inside && !edge_meets && across) return Shaft::hidden;
     partial = true;
   }
   return partial ? Shaft::partial : Shaft::visible;

@@ -16,6 +16,7 @@
 // Plain doubles, no CGAL, no Embree: a loop over the faces whose boxes meet the shaft's box, a
 // side test against each face's plane and, where the shaft crosses it, an overlap test of the
 // shaft's section (its convex hull in the face's frame) with the face's outline.
+#include <array>
 #include <span>
 #include <vector>
 
@@ -42,9 +43,19 @@ class ShaftClassifier {
     FaceSheet sheet;
     Box3 box;       // the face's corners, m
     int axis = -1;  // 0..2 when the normal is exactly a coordinate axis (its sign in `sheet`)
+    Vec2 outline_lo{0.0}, outline_hi{0.0};  // the outline's box in the face's frame, m
+    bool rectangle = false;                 // the outline is that box (4 corners, edges along u, v)
   };
   std::vector<Candidate> faces_;
 };
+
+// The box [lo, hi] moved by `shift`, as an element for ShaftClassifier::classify: its corners in
+// `out`, and their count. A box flat in one axis (the points of one face of a room, whose normal
+// is that axis) is a rectangle, its 4 corners in order round it; flat in two axes a segment (2),
+// in three a point (1); otherwise its 8 corners (a solid: every pair is a hull edge). A caller
+// that groups the sample points of several patches (calc/indirect: a chunk of one face) gets one
+// verdict for all the segments from them, as long as every point lies in the box.
+size_t box_element(const Vec3& lo, const Vec3& hi, const Vec3& shift, std::array<Vec3, 8>& out);
 
 // How far outside an element a segment's end may lie and still be covered by its verdict, and how
 // far from a plane a point counts as on it. Far above double rounding at 1 km (~1e-13 m), far

@@ -4,11 +4,14 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 
+#include "calc/indirect/chunk_verdict.h"
 #include "calc/indirect/far_kernels.h"
 #include "calc/indirect/form_factor.h"
 #include "calc/indirect/partial_visibility.h"
 #include "geometry/box3.h"
+#include "geometry/shaft.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -238,6 +241,14 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
           far += sum;
           continue;
         }
+        // The chunk's shaft verdicts from the receiver (chunk_verdict.h): every sample point of a
+        // patch, lifted off its face, lies in the patch's vertex box moved by the lift.
+        ChunkVerdict verdict(visibility != nullptr, [&, from = x + n * kGatherLift_m] {
+          std::array<Vec3, 8> corners;
+          const size_t count = geometry::box_element(ch.lo, ch.hi, m * kGatherLift_m, corners);
+          return visibility->classify(std::span<const Vec3>(&from, 1),
+                                      std::span<const Vec3>(corners.data(), count));
+        });
         for (size_t k = ch.begin; k < ch.end; ++k) {
           const Vec3 dx = x - Vec3(cx[k], cy[k], cz[k]);
           const double hm = glm::dot(m, dx);
@@ -255,7 +266,9 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
               d2 < kSubcellReach * kSubcellReach * p.diameter_m * p.diameter_m) {
             const double* cells = &set.cell_exitance_lm_m2[set.first_cell[k]];
             double e = gather_cells(x, n, p, cells, far_ratio);
-            if (e > 0.0 && visibility) {
+            const geometry::Shaft seen = e > 0.0 ? verdict.ask() : geometry::Shaft::visible;
+            if (seen == geometry::Shaft::hidden) continue;
+            if (seen == geometry::Shaft::partial) {
               const Vec3 from = x + n * kGatherLift_m;
               const double v = visible_fraction(visibility, from, p, kGatherLift_m);
               // A shadow edge on the patch: resolved cell by cell (partial_visibility.h).
@@ -267,7 +280,9 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
             continue;
           }
           double f = gather_form_factor(x, n, p, far_ratio, d2 > set.near_d2[k]);
-          if (f > 0.0 && visibility) {
+          const geometry::Shaft seen = f > 0.0 ? verdict.ask() : geometry::Shaft::visible;
+          if (seen == geometry::Shaft::hidden) continue;
+          if (seen == geometry::Shaft::partial) {
             const Vec3 from = x + n * kGatherLift_m;
             const double v = visible_fraction(visibility, from, p, kGatherLift_m);
             if (v > 0.0 && v < 1.0 && p.has_quarters) {

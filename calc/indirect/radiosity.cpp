@@ -4,12 +4,15 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "calc/indirect/chunk_verdict.h"
 #include "calc/indirect/far_kernels.h"
+#include "geometry/shaft.h"
 #include "util/error.h"
 
 namespace luxgrid::calc::indirect {
@@ -146,6 +149,10 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
       const double near_d2 = far_ratio * dst.diameter_m * far_ratio * dst.diameter_m;
       const double area_m2 = dst.area_m2;
       float* row = F.gather.data() + i * n;
+      // The receiver's sample points' element (visible_fraction lifts them off its face).
+      std::vector<Vec3> receiver;
+      if (visibility)
+        for (const Vec3& v : dst.polygon) receiver.push_back(v + dn * kShootLift_m);
       std::fill(row, row + n, 0.0f);
       for (const Chunk& c : chunks) {
         if (c.run == F.zero_begin[i]) continue;  // coplanar with i: zeros
@@ -164,12 +171,24 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
           }
           continue;
         }
+        // The chunk's shaft verdicts against the receiver (chunk_verdict.h): each source's
+        // shooting point lies in its centroid box moved by the lift, the receiver's sample points
+        // in its polygon moved by the lift (visible_fraction).
+        ChunkVerdict verdict(visibility != nullptr, [&] {
+          std::array<Vec3, 8> sources;
+          const size_t count = geometry::box_element(c.lo, c.hi, sn * kShootLift_m, sources);
+          return visibility->classify(std::span<const Vec3>(sources.data(), count),
+                                      std::span<const Vec3>(receiver.data(), receiver.size()));
+        });
         for (size_t k = c.begin; k < c.end; ++k) {
           const size_t j = order[k];
           if (i == j) continue;
           const Vec3 sc = centroid[j];
           double f = patch_pair_form_factor(sc, sn, dst, near_d2);
-          if (f > 0.0 && visibility)
+          const geometry::Shaft seen = f > 0.0 ? verdict.ask() : geometry::Shaft::visible;
+          if (seen == geometry::Shaft::hidden)
+            f = 0.0;
+          else if (seen == geometry::Shaft::partial)
             f *= visible_fraction(visibility, sc + sn * kShootLift_m, dst, kShootLift_m);
           row[j] = static_cast<float>(f);
         }

@@ -12,36 +12,14 @@
 #include "calc/indirect/patches.h"
 #include "calc/indirect/split_mask.h"
 #include "calc/scene_visibility.h"
-#include "geometry/room.h"
 #include "geometry/surface_grid.h"
-#include "photometry/builtin.h"
+#include "tests/indirect/l_room.h"
 
 namespace luxgrid::calc::indirect {
 namespace {
 
-// L-shape, 6 x 4 m less its 3 x 2 m corner, 2.5 m high, with a cabinet beside the reflex corner
-// and an isotropic source in the long leg: the short leg is lit round the corner and behind the
-// cabinet, where the light changes steeply.
-Scene l_scene() {
-  Room r;
-  r.name = "L";
-  r.outline = {{0, 0}, {6, 0}, {6, 2}, {3, 2}, {3, 4}, {0, 4}};
-  r.height = 2.5;
-  r.reflectance = {0.3, 0.6, 0.7};
-  r.obstacles.push_back(geometry::make_box("cabinet", {1.6, 1.7, 0.0}, {2.6, 2.1, 1.6}, 0.0, 0.5));
-  Luminaire l;
-  l.label = "iso";
-  l.pose.position = Vec3(4.5, 1.0, 2.3);
-  l.distribution = std::make_shared<photometry::IsotropicDistribution>(5000.0 / (4.0 * kPi));
-  Scene s;
-  s.name = "split";
-  s.rooms = {r};
-  s.luminaires = {l};
-  return s;
-}
-
 TEST(Split, QuartersTileWhatTheyReplace) {
-  const Scene s = l_scene();
+  const Scene s = l_scene("split");
   const PatchMesh mesh = build_patch_mesh(s, 0.5);
   std::vector<char> all(mesh.patches.size(), 1);
   const PatchMesh cut = split_patches(s, mesh, all);
@@ -124,7 +102,7 @@ double worst_relative(const std::vector<double>& a, const std::vector<double>& b
 }
 
 TEST(Split, AnLShapedRoomComesCloserToAFineSolve) {
-  const Scene s = l_scene();
+  const Scene s = l_scene("split");
   VisibilityDecision decision;
   const std::shared_ptr<const geometry::Visibility> vis = make_visibility(s, decision);
   ASSERT_TRUE(vis);
