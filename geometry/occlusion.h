@@ -31,6 +31,9 @@ class OcclusionTree final : public Visibility {
   // (shortened by kOcclusionEndAllowance_m at both ends, grazing faces and edges by its rule).
   // Thread-safe (const, the scene is built in the constructor).
   bool visible(const Vec3& a, const Vec3& b) const override;
+  // The same for several segments from one point, traced as one coherent stream (Embree's
+  // rtcOccluded1M), with the same answers.
+  void visible_from(const Vec3& a, std::span<const Vec3> b, bool* seen) const override;
   // geometry/shaft.h's verdict over the same faces.
   Shaft classify(std::span<const Vec3> a, std::span<const Vec3> b) const override;
 

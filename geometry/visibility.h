@@ -22,6 +22,13 @@ class Visibility {
   // True when nothing lies between `from` and `to` (m, world). Symmetric. Called from worker
   // threads: implementations must be thread-safe.
   virtual bool visible(const Vec3& from, const Vec3& to) const = 0;
+  // visible(from, to[i]) into seen[i] for every i (to.size() at most kMaxSegmentsFrom): the
+  // segments a calculation asks from one point at once (a patch's five sample points, a cell
+  // row), which an implementation may trace together. The answers are visible()'s.
+  virtual void visible_from(const Vec3& from, std::span<const Vec3> to, bool* seen) const {
+    for (size_t i = 0; i < to.size(); ++i) seen[i] = visible(from, to[i]);
+  }
+  static constexpr size_t kMaxSegmentsFrom = 16;
   // `visible` or `hidden` only when visible() says so for every segment from a point of `a` to a
   // point of `b` (each element a point, segment or planar polygon by its corners, its convex
   // hull; geometry/shaft.h); `partial` when unknown. The default knows nothing.
@@ -47,6 +54,24 @@ class BoxFilteredVisibility final : public Visibility {
     for (const Box3& box : boxes_)
       if (segment_meets_box(from, to, box)) return exact_.visible(from, to);
     return true;
+  }
+  // The segments that meet a box go to the exact test together.
+  void visible_from(const Vec3& from, std::span<const Vec3> to, bool* seen) const override {
+    if (to.size() > kMaxSegmentsFrom) return Visibility::visible_from(from, to, seen);
+    Vec3 exact_to[kMaxSegmentsFrom];
+    bool exact_seen[kMaxSegmentsFrom];
+    size_t index[kMaxSegmentsFrom], m = 0;
+    for (size_t i = 0; i < to.size(); ++i) {
+      seen[i] = true;
+      for (const Box3& box : boxes_)
+        if (segment_meets_box(from, to[i], box)) {
+          index[m] = i, exact_to[m++] = to[i];
+          break;
+        }
+    }
+    if (m == 0) return;
+    exact_.visible_from(from, std::span<const Vec3>(exact_to, m), exact_seen);
+    for (size_t k = 0; k < m; ++k) seen[index[k]] = exact_seen[k];
   }
   // Every segment the exact test passes, this one passes too; a hidden one may miss the boxes.
   Shaft classify(std::span<const Vec3> a, std::span<const Vec3> b) const override {

@@ -17,14 +17,17 @@ double partial_cells_integral(const Vec3& x, const Vec3& n, const Vec3& from, co
   // Every cell's centre first: the cells where the verdict changes are the edge's.
   std::array<SubcellCorners, kSide * kSide> cells;
   std::array<Vec3, kSide * kSide> centres;
+  std::array<Vec3, kSide * kSide> lifted;
   std::array<bool, kSide * kSide> centre_seen;
   for (int a = 0; a < kSide; ++a)
     for (int b = 0; b < kSide; ++b) {
       const int k = a * kSide + b;
       cells[k] = subcell_corners(p, a, b);
       centres[k] = 0.25 * (cells[k][0] + cells[k][1] + cells[k][2] + cells[k][3]);
-      centre_seen[k] = visibility.visible(from, centres[k] + lift);
+      lifted[k] = centres[k] + lift;
     }
+  static_assert(kSide * kSide <= geometry::Visibility::kMaxSegmentsFrom);
+  visibility.visible_from(from, lifted, centre_seen.data());
   const auto differs = [&](int k, int a, int b) {
     return a >= 0 && a < kSide && b >= 0 && b < kSide &&
            centre_seen[a * kSide + b] != centre_seen[k];
@@ -41,9 +44,12 @@ double partial_cells_integral(const Vec3& x, const Vec3& n, const Vec3& from, co
       if (differs(k, a - 1, b) || differs(k, a + 1, b) || differs(k, a, b - 1) ||
           differs(k, a, b + 1)) {
         // The edge runs through or beside this cell: its midpoints towards its corners too.
+        std::array<Vec3, 4> towards;
+        std::array<bool, 4> towards_seen;
+        for (size_t c = 0; c < 4; ++c) towards[c] = 0.5 * (cells[k][c] + centres[k]) + lift;
+        visibility.visible_from(from, towards, towards_seen.data());
         int count = centre_seen[k] ? 1 : 0;
-        for (const Vec3& corner : cells[k])
-          if (visibility.visible(from, 0.5 * (corner + centres[k]) + lift)) ++count;
+        for (const bool s : towards_seen) count += s ? 1 : 0;
         seen = count / 5.0;
       }
       sum += w * f * seen;

@@ -7,7 +7,9 @@
 #include "util/robust_math.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 
 namespace luxgrid::calc::indirect {
@@ -420,9 +422,18 @@ double visible_fraction(const geometry::Visibility* visibility, const Vec3& from
                         const Patch& target, double lift_m) {
   if (!visibility) return 1.0;
   const Vec3 lift = target.normal * lift_m;
-  int seen = visibility->visible(from, target.centroid + lift) ? 1 : 0;
-  for (const auto& v : target.polygon)
-    if (visibility->visible(from, 0.5 * (v + target.centroid) + lift)) ++seen;
+  // The centroid and the midpoints towards the corners, asked together (one coherent stream).
+  constexpr size_t kMax = geometry::Visibility::kMaxSegmentsFrom;
+  std::array<Vec3, kMax> to;
+  std::array<bool, kMax> seen_each;
+  const size_t count = std::min(target.polygon.size() + 1, kMax);
+  to[0] = target.centroid + lift;
+  for (size_t k = 1; k < count; ++k) to[k] = 0.5 * (target.polygon[k - 1] + target.centroid) + lift;
+  visibility->visible_from(from, std::span<const Vec3>(to.data(), count), seen_each.data());
+  int seen = 0;
+  for (size_t k = 0; k < count; ++k) seen += seen_each[k] ? 1 : 0;
+  for (size_t k = count; k <= target.polygon.size(); ++k)
+    if (visibility->visible(from, 0.5 * (target.polygon[k - 1] + target.centroid) + lift)) ++seen;
   return static_cast<double>(seen) / static_cast<double>(target.polygon.size() + 1);
 }
 

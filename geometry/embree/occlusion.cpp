@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <array>
 #include <limits>
 #include <stdexcept>
 
@@ -33,10 +34,11 @@ std::array<Vec3, 3> grown(const std::array<Vec3, 3>& t, double margin_m) {
           incentre + scale * (t[2] - incentre)};
 }
 
-// The query's segment, for the filter.
+// The query's segments, for the filter: from `a` to each of `b`, the ray's id its index.
 struct SegmentContext {
   RTCIntersectContext context;  // first: Embree passes a pointer to it back to the filter
-  Vec3 a, b;
+  Vec3 a;
+  const Vec3* b;
   const std::vector<FaceSheet>* sheets;
   const std::vector<unsigned>* face_of;
 };
@@ -46,9 +48,27 @@ void filter_candidate(const RTCFilterFunctionNArguments* args) {
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] == 0) continue;
     const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
+    const unsigned id = RTCRayN_id(args->ray, args->N, i);
     const FaceSheet& face = (*q->sheets)[(*q->face_of)[prim]];
-    if (!segment_crosses(face, q->a, q->b)) args->valid[i] = 0;
+    if (!segment_crosses(face, q->a, q->b[id])) args->valid[i] = 0;
   }
+}
+
+// The candidates' ray for the segment from `a` to `b` (length `len` > 0): from `margin_m` before
+// `a` to `margin_m` after `b`, relative to the scene's centre, in float.
+RTCRay candidate_ray(const Vec3& a, const Vec3& b, double len, double margin_m, const Vec3& centre,
+                     unsigned id) {
+  const Vec3 dir = (b - a) / len;
+  const Vec3 o = a - margin_m * dir - centre;
+  RTCRay ray;
+  ray.org_x = static_cast<float>(o.x), ray.org_y = static_cast<float>(o.y);
+  ray.org_z = static_cast<float>(o.z);
+  ray.dir_x = static_cast<float>(dir.x), ray.dir_y = static_cast<float>(dir.y);
+  ray.dir_z = static_cast<float>(dir.z);
+  ray.tnear = 0.0f;
+  ray.tfar = static_cast<float>(len + 2.0 * margin_m);
+  ray.time = 0.0f, ray.mask = 0xFFFFFFFFu, ray.id = id, ray.flags = 0;
+  return ray;
 }
 
 }  // namespace
@@ -113,25 +133,39 @@ OcclusionTree::~OcclusionTree() {
 
 bool OcclusionTree::visible(const Vec3& a, const Vec3& b) const {
   if (!impl_->scene) return true;
-  const Vec3 d = b - a;
-  const double len = glm::length(d);
+  const double len = glm::length(b - a);
   if (!(len > 2.0 * kOcclusionEndAllowance_m)) return true;  // the ends touch: nothing between
-  // The ray from `margin` before `a` to `margin` after `b`: candidates, not the answer.
-  const Vec3 dir = d / len;
-  const Vec3 o = a - impl_->margin_m * dir - impl_->centre;
   SegmentContext q;
   rtcInitIntersectContext(&q.context);
-  q.a = a, q.b = b, q.sheets = &impl_->sheets, q.face_of = &impl_->face_of;
-  RTCRay ray;
-  ray.org_x = static_cast<float>(o.x), ray.org_y = static_cast<float>(o.y);
-  ray.org_z = static_cast<float>(o.z);
-  ray.dir_x = static_cast<float>(dir.x), ray.dir_y = static_cast<float>(dir.y);
-  ray.dir_z = static_cast<float>(dir.z);
-  ray.tnear = 0.0f;
-  ray.tfar = static_cast<float>(len + 2.0 * impl_->margin_m);
-  ray.time = 0.0f, ray.mask = 0xFFFFFFFFu, ray.id = 0, ray.flags = 0;
+  q.a = a, q.b = &b, q.sheets = &impl_->sheets, q.face_of = &impl_->face_of;
+  RTCRay ray = candidate_ray(a, b, len, impl_->margin_m, impl_->centre, 0);
   rtcOccluded1(impl_->scene, &q.context, &ray);
   return ray.tfar >= 0.0f;  // Embree sets tfar to -inf on an accepted hit
+}
+
+void OcclusionTree::visible_from(const Vec3& a, std::span<const Vec3> b, bool* seen) const {
+  if (!impl_->scene || b.size() > kMaxSegmentsFrom) {
+    Visibility::visible_from(a, b, seen);
+    return;
+  }
+  SegmentContext q;
+  rtcInitIntersectContext(&q.context);
+  q.context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  q.a = a, q.b = b.data(), q.sheets = &impl_->sheets, q.face_of = &impl_->face_of;
+  std::array<RTCRay, kMaxSegmentsFrom> rays;
+  std::array<unsigned, kMaxSegmentsFrom> index;
+  unsigned m = 0;
+  for (size_t i = 0; i < b.size(); ++i) {
+    const double len = glm::length(b[i] - a);
+    seen[i] = true;  // the ends touch: nothing between
+    if (!(len > 2.0 * kOcclusionEndAllowance_m)) continue;
+    index[m] = static_cast<unsigned>(i);
+    rays[m++] =
+        candidate_ray(a, b[i], len, impl_->margin_m, impl_->centre, static_cast<unsigned>(i));
+  }
+  if (m == 0) return;
+  rtcOccluded1M(impl_->scene, &q.context, rays.data(), m, sizeof(RTCRay));
+  for (unsigned k = 0; k < m; ++k) seen[index[k]] = rays[k].tfar >= 0.0f;
 }
 
 Shaft OcclusionTree::classify(std::span<const Vec3> a, std::span<const Vec3> b) const {

@@ -117,6 +117,21 @@ TEST(Occlusion, AgreesWithTheRuleOverEveryFace) {
       ASSERT_EQ(tree.visible(points[i], points[j]), expected) << i << " " << j;
       blocked += expected ? 0 : 1;
     }
+  // The same segments asked from one point at a time in streams of 1 to 16 (visible_from): the
+  // same answers, segment by segment.
+  std::vector<Vec3> to;
+  std::vector<char> expected;
+  for (size_t i = 0; i < points.size(); i += 3) {
+    to.clear();
+    expected.clear();
+    for (size_t j = (i * 7) % 11; j < points.size() && to.size() < 1 + i % 16; j += 13) {
+      to.push_back(points[j]);
+      expected.push_back(brute(points[i], points[j]) ? 1 : 0);
+    }
+    bool seen[Visibility::kMaxSegmentsFrom];
+    tree.visible_from(points[i], to, seen);
+    for (size_t k = 0; k < to.size(); ++k) ASSERT_EQ(seen[k], expected[k] != 0) << i << " " << k;
+  }
   // Each lattice point and its mirror image about the reflex corner's edge (3, 3, z): the segment
   // between them passes through that edge.
   for (size_t i = 0; i < points.size() - 300; ++i) {
