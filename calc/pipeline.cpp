@@ -215,6 +215,9 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
       results.plan.refinements.push_back(std::move(step_taken));
       return;
     }
+    // The meshes before become the estimate's 2h and 4h (plan_estimates.h).
+    est.coarser_lx = std::move(est.coarse_lx);
+    est.coarser_patch_size_m = est.coarse_patch_size_m;
     est.coarse_lx = std::move(w.probe_lx);
     est.coarse_patch_size_m = size_m;
     step_taken.to_m = finer->result.patch_size_m;
@@ -263,6 +266,14 @@ IndirectEstimateInputs run_reflected_light(const Scene& scene,
     est.coarse_patch_size_m = c.patch_size_m;
     est.coarse_lx = c.E_indirect_per_surface;
     refine_patch_size(scene, results, options, solution, probes, est, gathered);
+    if (est.coarser_lx.empty()) {
+      // The estimate's 4h level where no refinement left one: a sixteenth of the patches.
+      coarse.patch_size_m = 2.0 * est.coarse_patch_size_m;
+      coarse.clustered = solution->result.clustered;
+      const indirect::IndirectResult c4 = indirect::compute_indirect(scene, probes, coarse);
+      est.coarser_patch_size_m = c4.patch_size_m;
+      est.coarser_lx = c4.E_indirect_per_surface;
+    }
   }
   const indirect::IndirectResult r =
       gathered ? std::move(*gathered) : indirect::gather_indirect(*solution, scene, scene.surfaces);
@@ -385,7 +396,8 @@ Results run_scene(const Scene& scene, const Progress& progress) {
     r.stats = compute_statistics(r.E, r.grid.active);
     check_finite(r);
   }
-  for (auto* part : {&indirect_estimate.coarse_lx, &direct_estimate.error_lx})
+  for (auto* part :
+       {&indirect_estimate.coarse_lx, &indirect_estimate.coarser_lx, &direct_estimate.error_lx})
     for (auto& surface : *part)
       for (double& e : surface) e *= mf;
   estimate_errors(results, direct_estimate, indirect_estimate);
