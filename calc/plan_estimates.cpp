@@ -37,6 +37,21 @@ std::vector<size_t> probe_points(const geometry::SurfaceGrid& grid) {
   return picked;
 }
 
+void add_shadow_probes(const geometry::SurfaceGrid& grid, const std::vector<double>& E_direct,
+                       std::vector<size_t>& picked) {
+  std::vector<char> taken(grid.points.size(), 0);
+  for (size_t i : picked) taken[i] = 1;
+  std::vector<size_t> rest;
+  for (size_t i = 0; i < grid.points.size(); ++i)
+    if ((grid.active.empty() || grid.active[i]) && !taken[i]) rest.push_back(i);
+  const size_t n = std::min(kShadowProbesPerSurface, rest.size());
+  std::partial_sort(rest.begin(), rest.begin() + static_cast<std::ptrdiff_t>(n), rest.end(),
+                    [&](size_t a, size_t b) {
+                      return E_direct[a] < E_direct[b] || (E_direct[a] == E_direct[b] && a < b);
+                    });
+  picked.insert(picked.end(), rest.begin(), rest.begin() + static_cast<std::ptrdiff_t>(n));
+}
+
 geometry::SurfaceGrid probe_grid(const geometry::SurfaceGrid& grid,
                                  const std::vector<size_t>& picked) {
   geometry::SurfaceGrid g;
@@ -173,7 +188,7 @@ void estimate_errors(Results& results, const DirectEstimateInputs& direct,
     run.patch_size_m = indirect.patch_size_m;
     run.coarse_patch_size_m = indirect.coarse_patch_size_m;
     run.coarser_patch_size_m = indirect.coarser_patch_size_m;
-    run.probe_points_per_surface = kProbePointsPerSurface;
+    run.probe_points_per_surface = kProbePointsPerSurface + kShadowProbesPerSurface;
     run.worst_patch_size = worst_patch;
     run.worst_bounces = worst_bounces;
   }

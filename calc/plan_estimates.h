@@ -8,7 +8,8 @@
 //   - the interreflection mesh's patch size h: Richardson extrapolation with the order measured
 //     per surface [Richardson1911] [Roache1994, the observed order]. The rooms are meshed as the
 //     run meshes them (each mesh cut where its own light jumps, the same rule at every size) at h,
-//     2h and 4h; the coarser two are gathered at up to kProbePointsPerSurface probe points only.
+//     2h and 4h; the coarser two are gathered at the probe points only (probe_points, evenly
+//     spread, and add_shadow_probes, where the direct light is weakest).
 //     Per surface, d1 = max |E(h) - E(2h)| and d2 = max |E(2h) - E(4h)| over the probes (relative
 //     to the point's E as the promise counts it); where E(h) = E(0) + c h^p, d2 / d1 = 2^p, so p =
 //     log2(d2 / d1) and E(h) - E(0) = d1 / (2^p - 1). The maxima, not each probe's ratio, give p: a
@@ -67,6 +68,18 @@ PatchErrorEstimate richardson_patch_error(double d_fine, double d_coarse);
 // Up to kProbePointsPerSurface active points of `grid`, evenly spread over its index order
 // (rows of a grid), and the grid reduced to them.
 std::vector<size_t> probe_points(const geometry::SurfaceGrid& grid);
+
+// Probes added per surface where its direct light is weakest: a point in a shadow gets its light
+// by reflection, so the reflected light's error is the largest share of its E there
+// (examples/lshape's workplane beside the cabinet: 1.5 % from `reference` where the evenly spread
+// probes see at most 0.5 % between h and 2h). They count in the estimate, not in the patch-size
+// choice (calc/pipeline.cpp), which the evenly spread probes make alone.
+inline constexpr size_t kShadowProbesPerSurface = 16;
+
+// Appends to `picked` (probe_points' choice) up to kShadowProbesPerSurface active points of
+// `grid` not in it: those with the smallest `E_direct` (per point of `grid`; ties: lower index).
+void add_shadow_probes(const geometry::SurfaceGrid& grid, const std::vector<double>& E_direct,
+                       std::vector<size_t>& picked);
 geometry::SurfaceGrid probe_grid(const geometry::SurfaceGrid& grid,
                                  const std::vector<size_t>& picked);
 
@@ -83,7 +96,9 @@ struct IndirectEstimateInputs {
   double residual = 0.0;  // relative to the reflected flux (largest over rooms)
   double patch_size_m = 0.0, coarse_patch_size_m = 0.0;
   std::vector<std::vector<size_t>> probe_index;  // per surface: the probe points
-  std::vector<std::vector<double>> coarse_lx;    // per surface: E_ind at 2h there, maintained lx
+  // Per surface: how many of probe_index are probe_points' (the rest: add_shadow_probes').
+  std::vector<size_t> spread_probes;
+  std::vector<std::vector<double>> coarse_lx;  // per surface: E_ind at 2h there, maintained lx
   // At 4h: as coarse_lx, for the measured order; empty where no 4h level was run.
   double coarser_patch_size_m = 0.0;
   std::vector<std::vector<double>> coarser_lx;

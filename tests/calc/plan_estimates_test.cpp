@@ -60,6 +60,42 @@ TEST(PlanEstimates, PatchSizeEstimateAtTheProbesIsTheWholeGridsOrDeclines) {
             -1.0);
 }
 
+// The shadow probes are the active points with the weakest direct light that the evenly spread
+// probes left out, each once: checked against sorting every point by E_direct.
+TEST(PlanEstimates, ShadowProbesAreTheDarkestPointsNotYetPicked) {
+  geometry::SurfaceGrid grid =
+      geometry::make_plane_grid("g", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 4.0, 4.0, 0.25);
+  const size_t n = grid.points.size();
+  grid.active.assign(n, true);
+  grid.active[3] = false;  // the darkest point, inactive: not a probe
+  std::vector<double> E_direct(n);
+  for (size_t i = 0; i < n; ++i)
+    E_direct[i] = 50.0 + 40.0 * std::sin(0.37 * static_cast<double>(i));
+  E_direct[3] = -1.0;
+  std::vector<size_t> picked = probe_points(grid);
+  const size_t spread = picked.size();
+  ASSERT_EQ(spread, kProbePointsPerSurface);
+  add_shadow_probes(grid, E_direct, picked);
+  ASSERT_EQ(picked.size(), spread + kShadowProbesPerSurface);
+  std::vector<size_t> expected;
+  for (size_t i = 0; i < n; ++i)
+    if (grid.active[i] &&
+        std::find(picked.begin(), picked.begin() + static_cast<std::ptrdiff_t>(spread), i) ==
+            picked.begin() + static_cast<std::ptrdiff_t>(spread))
+      expected.push_back(i);
+  std::sort(expected.begin(), expected.end(),
+            [&](size_t a, size_t b) { return E_direct[a] < E_direct[b]; });
+  expected.resize(kShadowProbesPerSurface);
+  EXPECT_EQ(std::vector<size_t>(picked.begin() + static_cast<std::ptrdiff_t>(spread), picked.end()),
+            expected);
+  // A surface with fewer points than probes: every active point once, nothing added.
+  geometry::SurfaceGrid small =
+      geometry::make_plane_grid("s", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0, 1.0, 0.25);
+  std::vector<size_t> all = probe_points(small);
+  add_shadow_probes(small, std::vector<double>(small.points.size(), 1.0), all);
+  EXPECT_EQ(all.size(), small.points.size());
+}
+
 // Richardson's estimate with the order measured recovers E(h) - E(0) exactly on sequences
 // E(h) = E0 + c h^p with p inside [kMinPatchOrder, kMaxPatchOrder] (to rounding: 1e-12
 // relative); outside it the estimate is the range's end's, d1 / 3 or d1.
@@ -205,9 +241,11 @@ TEST(PlanEstimates, PatchSizeEstimateBracketsTheErrorAgainstAFinerSolve) {
   options.patch_size_m = h / 4;
   std::vector<geometry::SurfaceGrid> probes;
   std::vector<std::vector<size_t>> picked;
-  for (const auto& g : scene.surfaces) {
-    picked.push_back(probe_points(g));
-    probes.push_back(probe_grid(g, picked.back()));
+  for (size_t s = 0; s < scene.surfaces.size(); ++s) {
+    // The run's probes: evenly spread, and where the direct light is weakest.
+    picked.push_back(probe_points(scene.surfaces[s]));
+    add_shadow_probes(scene.surfaces[s], run.surfaces[s].E_direct, picked.back());
+    probes.push_back(probe_grid(scene.surfaces[s], picked.back()));
   }
   const auto fine = indirect::compute_indirect(scene, probes, options).E_indirect_per_surface;
   int checked = 0;
