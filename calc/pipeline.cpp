@@ -126,8 +126,9 @@ double indirect_upper_bound_lx(const indirect::IndirectSolution& solution) {
   return kIndirectBoundMargin * m_max;
 }
 
-// The worst patch-size estimate over the surfaces for a solution, the surface it is on and each
-// surface's E_indirect at its probes. Gathered at the probe points only (their values are the
+// The worst patch-size difference d1 over the surfaces for a solution at the evenly spread probes
+// (the choice's, plan_estimates.h), the surface it is on and each surface's E_indirect at all
+// its probes. Gathered at the probe points only (their values are the
 // whole grid's there, indirect.h); at every point only where a probe may be darker than the
 // estimate's floor, which needs the surface's largest E: that gather is kept in `everywhere`,
 // the solution's results.
@@ -160,14 +161,19 @@ WorstPatchEstimate worst_patch_estimate(const Scene& scene, const Results& resul
   const double bound_lx = indirect_upper_bound_lx(solution);
   for (size_t s = 0; s < results.surfaces.size(); ++s) {
     const SurfaceResult& sr = results.surfaces[s];
-    double e = patch_size_estimate_at_probes(sr.grid, sr.E_direct, est.probe_index[s],
-                                             w.probe_lx[s], est.coarse_lx[s], bound_lx);
+    const auto spread = [&]<typename T>(const std::vector<T>& v) {
+      return std::vector(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(est.spread_probes[s]));
+    };
+    const std::vector<size_t> index = spread(est.probe_index[s]);
+    const std::vector<double> coarse = spread(est.coarse_lx[s]);
+    double e = patch_size_estimate_at_probes(sr.grid, sr.E_direct, index, spread(w.probe_lx[s]),
+                                             coarse, bound_lx);
     if (e < 0.0) {
       if (!w.everywhere) w.everywhere = indirect::gather_indirect(solution, scene, scene.surfaces);
       const std::vector<double>& E_ind = w.everywhere->E_indirect_per_surface[s];
       std::vector<double> E(sr.E_direct.size());
       for (size_t i = 0; i < E.size(); ++i) E[i] = sr.E_direct[i] + E_ind[i];
-      e = patch_size_estimate(sr.grid, E, E_ind, est.probe_index[s], est.coarse_lx[s]);
+      e = patch_size_estimate(sr.grid, E, E_ind, index, coarse);
     }
     if (e > w.worst) w.worst = e, w.surface = sr.grid.name;
   }
@@ -215,6 +221,9 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
       results.plan.refinements.push_back(std::move(step_taken));
       return;
     }
+    // The meshes before become the estimate's 2h and 4h (plan_estimates.h).
+    est.coarser_lx = std::move(est.coarse_lx);
+    est.coarser_patch_size_m = est.coarse_patch_size_m;
     est.coarse_lx = std::move(w.probe_lx);
     est.coarse_patch_size_m = size_m;
     step_taken.to_m = finer->result.patch_size_m;
@@ -251,8 +260,11 @@ IndirectEstimateInputs run_reflected_light(const Scene& scene,
   est.ran = true;
   if (scene.settings.quality != Quality::draft) {
     std::vector<geometry::SurfaceGrid> probes;
-    for (const auto& grid : scene.surfaces) {
+    for (size_t s = 0; s < scene.surfaces.size(); ++s) {
+      const geometry::SurfaceGrid& grid = scene.surfaces[s];
       est.probe_index.push_back(probe_points(grid));
+      est.spread_probes.push_back(est.probe_index.back().size());
+      add_shadow_probes(grid, results.surfaces[s].E_direct, est.probe_index.back());
       probes.push_back(probe_grid(grid, est.probe_index.back()));
     }
     indirect::IndirectOptions coarse = options;
@@ -263,6 +275,14 @@ IndirectEstimateInputs run_reflected_light(const Scene& scene,
     est.coarse_patch_size_m = c.patch_size_m;
     est.coarse_lx = c.E_indirect_per_surface;
     refine_patch_size(scene, results, options, solution, probes, est, gathered);
+    if (est.coarser_lx.empty()) {
+      // The estimate's 4h level where no refinement left one: a sixteenth of the patches.
+      coarse.patch_size_m = 2.0 * est.coarse_patch_size_m;
+      coarse.clustered = solution->result.clustered;
+      const indirect::IndirectResult c4 = indirect::compute_indirect(scene, probes, coarse);
+      est.coarser_patch_size_m = c4.patch_size_m;
+      est.coarser_lx = c4.E_indirect_per_surface;
+    }
   }
   const indirect::IndirectResult r =
       gathered ? std::move(*gathered) : indirect::gather_indirect(*solution, scene, scene.surfaces);
@@ -385,7 +405,8 @@ Results run_scene(const Scene& scene, const Progress& progress) {
     r.stats = compute_statistics(r.E, r.grid.active);
     check_finite(r);
   }
-  for (auto* part : {&indirect_estimate.coarse_lx, &direct_estimate.error_lx})
+  for (auto* part :
+       {&indirect_estimate.coarse_lx, &indirect_estimate.coarser_lx, &direct_estimate.error_lx})
     for (auto& surface : *part)
       for (double& e : surface) e *= mf;
   estimate_errors(results, direct_estimate, indirect_estimate);

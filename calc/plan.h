@@ -28,9 +28,11 @@ namespace luxgrid::calc {
 struct SurfaceEstimate {
   std::string surface;
   double direct = 0.0;       // far field and fixed rule where pairs use them: the map's measurement
-  double patch_size = -1.0;  // interreflection mesh: |E_ind(h) - E_ind(2h)| / E on probe points
-  double bounces = -1.0;     // bounces not followed: the radiosity residual x E_ind / E
-  size_t probe_points = 0;   // points the patch-size estimate was measured at
+  double patch_size = -1.0;  // interreflection mesh: Richardson's with the order measured
+  double patch_difference = -1.0;  // |E_ind(h) - E_ind(2h)| / E, the largest on probe points
+  double patch_order = -1.0;       // the order patch_size extrapolated with (plan_estimates.h)
+  double bounces = -1.0;           // bounces not followed: the radiosity residual x E_ind / E
+  size_t probe_points = 0;         // points the patch-size estimate was measured at
   double total() const {
     return std::max(direct, 0.0) + std::max(patch_size, 0.0) + std::max(bounces, 0.0);
   }
@@ -90,7 +92,7 @@ struct IndirectRunPlan {
   size_t obstacles = 0;
   // The plan's estimate of the run's error (calc/plan_estimates.h), when measured.
   bool estimated = false;
-  double coarse_patch_size_m = 0.0;
+  double coarse_patch_size_m = 0.0, coarser_patch_size_m = 0.0;
   size_t probe_points_per_surface = 0;
   double worst_patch_size = 0.0, worst_bounces = 0.0;  // relative, over the surfaces
 };

@@ -37,6 +37,21 @@ std::vector<size_t> probe_points(const geometry::SurfaceGrid& grid) {
   return picked;
 }
 
+void add_shadow_probes(const geometry::SurfaceGrid& grid, const std::vector<double>& E_direct,
+                       std::vector<size_t>& picked) {
+  std::vector<char> taken(grid.points.size(), 0);
+  for (size_t i : picked) taken[i] = 1;
+  std::vector<size_t> rest;
+  for (size_t i = 0; i < grid.points.size(); ++i)
+    if ((grid.active.empty() || grid.active[i]) && !taken[i]) rest.push_back(i);
+  const size_t n = std::min(kShadowProbesPerSurface, rest.size());
+  std::partial_sort(rest.begin(), rest.begin() + static_cast<std::ptrdiff_t>(n), rest.end(),
+                    [&](size_t a, size_t b) {
+                      return E_direct[a] < E_direct[b] || (E_direct[a] == E_direct[b] && a < b);
+                    });
+  picked.insert(picked.end(), rest.begin(), rest.begin() + static_cast<std::ptrdiff_t>(n));
+}
+
 geometry::SurfaceGrid probe_grid(const geometry::SurfaceGrid& grid,
                                  const std::vector<size_t>& picked) {
   geometry::SurfaceGrid g;
@@ -72,6 +87,28 @@ double patch_size_estimate(const geometry::SurfaceGrid& grid, const std::vector<
   }
   if (counted) *counted = count;
   return worst;
+}
+
+double coarse_level_difference(const geometry::SurfaceGrid& grid, const std::vector<double>& E,
+                               const std::vector<size_t>& probe_index,
+                               const std::vector<double>& coarse_lx,
+                               const std::vector<double>& coarser_lx) {
+  // patch_size_estimate's sum with the 2h level in E_ind(h)'s place: the same probes, the same
+  // denominators (E at h), so that d2 / d1 compares the differences alone.
+  std::vector<double> coarse_on_grid(E.size(), 0.0);
+  for (size_t k = 0; k < probe_index.size(); ++k) coarse_on_grid[probe_index[k]] = coarse_lx[k];
+  return patch_size_estimate(grid, E, coarse_on_grid, probe_index, coarser_lx);
+}
+
+PatchErrorEstimate richardson_patch_error(double d_fine, double d_coarse) {
+  if (d_coarse < 0.0) return {d_fine, 1.0};  // no 4h level: first order assumed
+  // d2 / d1 = 2^p where E(h) = E(0) + c h^p; d1 = 0 (the two finer meshes agree at every probe)
+  // has nothing to extrapolate. Ratios outside the range (d2 <= d1 and d2 = 0 included) take the
+  // range's ends.
+  double order = kMinPatchOrder;
+  if (d_fine > 0.0 && d_coarse > d_fine)
+    order = std::clamp(std::log2(d_coarse / d_fine), kMinPatchOrder, kMaxPatchOrder);
+  return {d_fine / (std::exp2(order) - 1.0), order};
 }
 
 double patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
@@ -127,9 +164,19 @@ void estimate_errors(Results& results, const DirectEstimateInputs& direct,
         if (counted(i))
           est.bounces = std::max(est.bounces, indirect.residual * r.E_indirect[i] / denom(i));
       est.patch_size = 0.0;
-      if (s < indirect.probe_index.size())
-        est.patch_size = patch_size_estimate(r.grid, r.E, r.E_indirect, indirect.probe_index[s],
-                                             indirect.coarse_lx[s], &est.probe_points);
+      if (s < indirect.probe_index.size()) {
+        est.patch_difference =
+            patch_size_estimate(r.grid, r.E, r.E_indirect, indirect.probe_index[s],
+                                indirect.coarse_lx[s], &est.probe_points);
+        const double d_coarse =
+            s < indirect.coarser_lx.size()
+                ? coarse_level_difference(r.grid, r.E, indirect.probe_index[s],
+                                          indirect.coarse_lx[s], indirect.coarser_lx[s])
+                : -1.0;
+        const PatchErrorEstimate p = richardson_patch_error(est.patch_difference, d_coarse);
+        est.patch_size = p.error;
+        est.patch_order = p.order;
+      }
       worst_patch = std::max(worst_patch, est.patch_size);
       worst_bounces = std::max(worst_bounces, est.bounces);
     }
@@ -140,7 +187,8 @@ void estimate_errors(Results& results, const DirectEstimateInputs& direct,
     run.estimated = true;
     run.patch_size_m = indirect.patch_size_m;
     run.coarse_patch_size_m = indirect.coarse_patch_size_m;
-    run.probe_points_per_surface = kProbePointsPerSurface;
+    run.coarser_patch_size_m = indirect.coarser_patch_size_m;
+    run.probe_points_per_surface = kProbePointsPerSurface + kShadowProbesPerSurface;
     run.worst_patch_size = worst_patch;
     run.worst_bounces = worst_bounces;
   }

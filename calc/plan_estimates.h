@@ -5,10 +5,20 @@
 //   - far field and fixed rule for a luminaire-point pair: the error the near/far map measured
 //     at the distance it chose (nearfield/far_field_bound.h), falling as d_far / d beyond it,
 //     weighted by each pair's share of the point's illuminance (nearfield::estimated_pair_error);
-//   - the interreflection mesh's patch size h: the indirect illuminance at h against the same
-//     room meshed at 2h, on a few probe points per surface. Patch-constant radiosity converges
-//     at least linearly in h, so E(h) - E(0) ~ E(2h) - E(h): |E_ind(h) - E_ind(2h)| bounds the
-//     error at h where the convergence is first order and overstates it where it is faster;
+//   - the interreflection mesh's patch size h: Richardson extrapolation with the order measured
+//     per surface [Richardson1911] [Roache1994, the observed order]. The rooms are meshed as the
+//     run meshes them (each mesh cut where its own light jumps, the same rule at every size) at h,
+//     2h and 4h; the coarser two are gathered at the probe points only (probe_points, evenly
+//     spread, and add_shadow_probes, where the direct light is weakest).
+//     Per surface, d1 = max |E(h) - E(2h)| and d2 = max |E(2h) - E(4h)| over the probes (relative
+//     to the point's E as the promise counts it); where E(h) = E(0) + c h^p, d2 / d1 = 2^p, so p =
+//     log2(d2 / d1) and E(h) - E(0) = d1 / (2^p - 1). The maxima, not each probe's ratio, give p: a
+//     probe's differences change sign from mesh to mesh where patch edges move, the surface's
+//     largest ones much less. p is clamped to [kMinPatchOrder, kMaxPatchOrder]
+//     (richardson_patch_error): a clamp only ever raises the estimate above what the measured
+//     order would give, except below kMinPatchOrder, where the coarse meshes are not in the
+//     asymptotic range (d2 <= d1 included) and the estimate is d1, the first-order one. Without a
+//     4h level (none was run) p = 1 is assumed and the estimate is d1;
 //   - bounces not followed: the radiosity residual (the geometric tail's estimated error, or
 //     for a fixed N the tail rho^N / (1 - rho) the solve did not follow, radiosity.h) times
 //     the point's indirect share E_ind / E;
@@ -27,13 +37,49 @@ namespace luxgrid::calc {
 // its surface's maximum; 0 when it promises no number (draft: none; reference: the yardstick).
 double promised_error(Quality q);
 
-// Probe points per surface for the patch-size estimate: the coarse run gathers at these only,
-// so it costs the coarse mesh (a quarter of the patches, 1/16 of the form factors) and little more.
+// Probe points per surface for the patch-size estimate: the coarse runs gather at these only,
+// so they cost the coarse meshes (a quarter and a sixteenth of the patches) and little more.
 inline constexpr size_t kProbePointsPerSurface = 48;
+
+// The range of orders of convergence in h the patch-size estimate extrapolates with, [1, 2], so
+// that the estimate lies between d1 / 3 and d1. Below: patch-constant radiosity is first order
+// in the exitance and a gathered point's E integrates that error, so a measured order below 1
+// (d2 <= d1 included) says the coarse meshes are not in the asymptotic range, not that the
+// error falls more slowly; the estimate then is d1, the first-order estimate the plan made before
+// it measured orders, never less. (Taking such orders at their word, down to 1/2, made the
+// office's activity faces 0.96 % against 0.18 % measured, docs/accuracy.md.) Above: the gather
+// of a piecewise-constant exitance over a smooth kernel can cancel the first-order term (the
+// midpoint rule's second order), but nothing in the method cancels the second; a measured order
+// above 2 is taken for a coincidence of the coarse meshes and clamped to 2 (the estimate d1 / 3,
+// larger than the measured order's).
+inline constexpr double kMinPatchOrder = 1.0;
+inline constexpr double kMaxPatchOrder = 2.0;
+
+// Richardson's estimate of the error at h from the differences between three meshes:
+// `d_fine` = |E(h) - E(2h)|, `d_coarse` = |E(2h) - E(4h)| (any common scale; d_coarse < 0: no
+// 4h level). `order` is the order it extrapolated with: measured and clamped, or 1 assumed
+// without a 4h level.
+struct PatchErrorEstimate {
+  double error = 0.0;
+  double order = 1.0;
+};
+PatchErrorEstimate richardson_patch_error(double d_fine, double d_coarse);
 
 // Up to kProbePointsPerSurface active points of `grid`, evenly spread over its index order
 // (rows of a grid), and the grid reduced to them.
 std::vector<size_t> probe_points(const geometry::SurfaceGrid& grid);
+
+// Probes added per surface where its direct light is weakest: a point in a shadow gets its light
+// by reflection, so the reflected light's error is the largest share of its E there
+// (examples/lshape's workplane beside the cabinet: 1.5 % from `reference` where the evenly spread
+// probes see at most 0.5 % between h and 2h). They count in the estimate, not in the patch-size
+// choice (calc/pipeline.cpp), which the evenly spread probes make alone.
+inline constexpr size_t kShadowProbesPerSurface = 16;
+
+// Appends to `picked` (probe_points' choice) up to kShadowProbesPerSurface active points of
+// `grid` not in it: those with the smallest `E_direct` (per point of `grid`; ties: lower index).
+void add_shadow_probes(const geometry::SurfaceGrid& grid, const std::vector<double>& E_direct,
+                       std::vector<size_t>& picked);
 geometry::SurfaceGrid probe_grid(const geometry::SurfaceGrid& grid,
                                  const std::vector<size_t>& picked);
 
@@ -50,16 +96,22 @@ struct IndirectEstimateInputs {
   double residual = 0.0;  // relative to the reflected flux (largest over rooms)
   double patch_size_m = 0.0, coarse_patch_size_m = 0.0;
   std::vector<std::vector<size_t>> probe_index;  // per surface: the probe points
-  std::vector<std::vector<double>> coarse_lx;    // per surface: E_ind at 2h there, maintained lx
+  // Per surface: how many of probe_index are probe_points' (the rest: add_shadow_probes').
+  std::vector<size_t> spread_probes;
+  std::vector<std::vector<double>> coarse_lx;  // per surface: E_ind at 2h there, maintained lx
+  // At 4h: as coarse_lx, for the measured order; empty where no 4h level was run.
+  double coarser_patch_size_m = 0.0;
+  std::vector<std::vector<double>> coarser_lx;
   // Not for the estimate: the reflected light leaving through openings (IndirectResult's), for
   // the daylight plan's balance.
   double escaped_flux_lm = 0.0;
 };
 
-// The patch-size estimate of one surface: the largest |E_ind(h) - E_ind(2h)| over its probe
-// points, relative to the point's E (direct + indirect) but no less than 1 % of the surface's
-// largest E, as the promise counts it. `E` and `E_indirect` per point of `grid`, `coarse_lx`
-// per probe; `counted` (if not null) gets the number of probes that count.
+// The difference between the meshes at h and 2h on one surface: the largest
+// |E_ind(h) - E_ind(2h)| over its probe points, relative to the point's E (direct + indirect) but
+// no less than 1 % of the surface's largest E, as the promise counts it (the patch-size choice
+// of calc/pipeline.cpp and d1 of the estimate). `E` and `E_indirect` per point of `grid`,
+// `coarse_lx` per probe; `counted` (if not null) gets the number of probes that count.
 double patch_size_estimate(const geometry::SurfaceGrid& grid, const std::vector<double>& E,
                            const std::vector<double>& E_indirect,
                            const std::vector<size_t>& probe_index,
@@ -76,6 +128,14 @@ double patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
                                      const std::vector<size_t>& probe_index,
                                      const std::vector<double>& E_indirect_probe,
                                      const std::vector<double>& coarse_lx, double max_indirect_lx);
+
+// d2 of the estimate: the largest |E_ind(2h) - E_ind(4h)| over the probes of one surface,
+// relative to the same denominators as patch_size_estimate (E at h), `coarse_lx` and
+// `coarser_lx` per probe.
+double coarse_level_difference(const geometry::SurfaceGrid& grid, const std::vector<double>& E,
+                               const std::vector<size_t>& probe_index,
+                               const std::vector<double>& coarse_lx,
+                               const std::vector<double>& coarser_lx);
 
 // Fills results.plan.promise, .estimates and the indirect run's estimate (report/plan_text.h
 // words them: a note per surface, a warning per surface whose estimate exceeds the promise).

@@ -124,8 +124,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IndirectRunPlan, bounces_asked, bounces_run, 
                                    subcell_reach, subcells_per_side, received_flux_lm,
                                    emitted_flux_lm, luminaire_flux_lm, part_outside,
                                    clustered_rooms, clustered_links, visibility, obstacles,
-                                   estimated, coarse_patch_size_m, probe_points_per_surface,
-                                   worst_patch_size, worst_bounces)
+                                   estimated, coarse_patch_size_m, coarser_patch_size_m,
+                                   probe_points_per_surface, worst_patch_size, worst_bounces)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PatchRefinement, outcome, from_m, to_m, estimate, surface,
                                    work_pairs, work_limit_pairs, budget_error)
 NLOHMANN_JSON_SERIALIZE_ENUM(SceneNote::Kind,
@@ -222,6 +222,8 @@ json plan_to_json(const calc::Plan& plan) {
     json one = {{"surface", e.surface}, {"probe_points", e.probe_points}};
     put_share(one, "direct", e.direct);
     put_share(one, "patch_size", e.patch_size);
+    put_share(one, "patch_difference", e.patch_difference);
+    put_share(one, "patch_order", e.patch_order);
     put_share(one, "bounces", e.bounces);
     put_finite(one, "total", e.total());
     estimates.push_back(std::move(one));
@@ -262,6 +264,8 @@ calc::Plan plan_from_json(const json& j) {
     e.at("surface").get_to(est.surface);
     est.direct = read_share(e, "direct");
     est.patch_size = read_share(e, "patch_size");
+    est.patch_difference = read_share(e, "patch_difference");
+    est.patch_order = read_share(e, "patch_order");
     est.bounces = read_share(e, "bounces");
     e.at("probe_points").get_to(est.probe_points);
     plan.estimates.push_back(std::move(est));

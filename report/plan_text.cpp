@@ -329,10 +329,12 @@ std::string indirect_text(const calc::Plan& plan) {
     const calc::IndirectRunPlan& r = *plan.indirect_run;
     char buf[256];
     std::snprintf(buf, sizeof buf,
-                  "; estimated error: patch size %.3g m up to %s of E (against %.3g m at up to %zu "
-                  "probe points per surface), bounces not followed up to %s of E",
+                  "; estimated error: patch size %.3g m up to %s of E (extrapolated from %.3g m "
+                  "and %.3g m at up to %zu probe points per surface), bounces not followed up to "
+                  "%s of E",
                   r.patch_size_m, percent2(r.worst_patch_size).c_str(), r.coarse_patch_size_m,
-                  r.probe_points_per_surface, percent2(r.worst_bounces).c_str());
+                  r.coarser_patch_size_m, r.probe_points_per_surface,
+                  percent2(r.worst_bounces).c_str());
     out += buf;
   }
   return out;
