@@ -12,6 +12,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "calc/nearfield/far_run.h"
 #include "calc/nearfield/models.h"
 #include "calc/nearfield/switch_run.h"
 #include "calc/nearfield/table_rung_scratch.h"
@@ -163,6 +164,8 @@ std::vector<double> direct_illuminance(const Plan& plan,
     // The table rung's buffers, grown on the chunk's first pairs and reused by the rest.
     nearfield::TableRungScratch scratch;
     std::vector<nearfield::SwitchWeights> weights;
+    std::vector<const nearfield::Emitter*> far_emitters;
+    std::vector<double> far_lux;
     if (far_runs) {
       for (size_t begin = range.begin(); begin != range.end();) {
         const uint32_t zone = reach ? reach->zone_of_point[begin] : 0;
@@ -188,11 +191,23 @@ std::vector<double> direct_illuminance(const Plan& plan,
       const nearfield::Receiver receiver = receiver_of(grid.quantity, grid.normals[i]);
       const Zone& zone = zones[reach ? reach->zone_of_point[i] : 0];
       const geometry::Visibility* visibility = zone.visibility;
+      // Without a visibility test on a plane, the pairs beyond their blend band are the far
+      // field alone: looked up together (nearfield/far_run.h: the same values pair by pair).
+      const bool far_together = automatic && !visibility && planar;
       if (automatic) {
         weights.resize(zone.emitters.size());
         nearfield::switch_weights_run(zone.emitters.data(), zone.emitters.size(), grid.points[i],
                                       weights.data());
       }
+      if (far_together) {
+        far_emitters.clear();
+        for (size_t j = 0; j < zone.emitters.size(); ++j)
+          if (weights[j].far >= 1.0) far_emitters.push_back(zone.emitters[j]);
+        far_lux.resize(far_emitters.size());
+        nearfield::far_field_pairs(far_emitters.data(), far_emitters.size(), grid.points[i],
+                                   grid.normals[i], far_lux.data());
+      }
+      size_t next_far = 0;
       for (size_t j = 0; j < zone.emitters.size(); ++j) {
         const nearfield::Emitter& emitter = *zone.emitters[j];
         // Soft shadows: the near-field models test visibility per node, the far field from
@@ -207,8 +222,13 @@ std::vector<double> direct_illuminance(const Plan& plan,
                              *visibility, opening, std::span<const Vec3>(&grid.points[i], 1))
                        : std::nullopt;
         const geometry::Visibility* occluder = shaft ? &*shaft : nullptr;
+        // A far pair's weights as hybrid_illuminance_weighted would pass them on (its `fixed` is
+        // read only where the far weight is below 1).
+        const bool far_pair = far_together && weights[j].far >= 1.0;
+        if (far_pair) w = weights[j];
         const double pair =
-            automatic
+            far_pair ? far_lux[next_far++]
+            : automatic
                 ? nearfield::hybrid_illuminance_weighted(emitter, grid.points[i], receiver,
                                                          plan.near_model, weights[j], occluder, &w,
                                                          &scratch)

@@ -2,6 +2,7 @@
 // The one interface every emitter model uses: luminous intensity in candela for a direction in
 // the luminaire's own frame. Frame (docs/photometry.md): gamma = 0 points to nadir (-z), C = 0
 // along +x (the luminaire's length axis), C = 90 along +y.
+#include <cstddef>
 #include <memory>
 #include <string>
 
@@ -26,6 +27,13 @@ class IntensityDistribution {
   // `direction` is a unit vector from the luminaire outward, in luminaire coordinates.
   // Returns a finite value >= 0 in cd (all multipliers and factors applied).
   virtual double intensity(const Vec3& direction) const = 0;
+  // intensity() of the n unit directions (x[k], y[k], z[k]) into out[k], the same values: a run
+  // of look-ups at once (calc/nearfield/far_run.h: a point's far-field pairs), which a
+  // distribution may do faster than one by one (TabularDistribution: the angles as lanes).
+  virtual void intensities(const double* x, const double* y, const double* z, std::size_t n,
+                           double* out) const {
+    for (std::size_t k = 0; k < n; ++k) out[k] = intensity(Vec3(x[k], y[k], z[k]));
+  }
   // The table behind this distribution when its (C, gamma) are the luminaire frame's own
   // (type C photometry), else {nullptr}: analytic profiles, textures, type A/B tables.
   virtual TableView table_view() const { return {}; }
