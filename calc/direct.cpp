@@ -12,7 +12,9 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "calc/nearfield/far_run.h"
 #include "calc/nearfield/models.h"
+#include "calc/nearfield/switch_run.h"
 #include "calc/nearfield/table_rung_scratch.h"
 #include "geometry/pair_visibility.h"
 #include "photometry/distribution_texture.h"
@@ -132,6 +134,7 @@ std::vector<double> direct_illuminance(const Plan& plan,
     std::vector<uint32_t> all;  // used when no reach is given
     const std::vector<uint32_t>* luminaires = nullptr;
     const geometry::Visibility* visibility = nullptr;
+    std::vector<const nearfield::Emitter*> emitters;  // the luminaires' emitters, in order
   };
   std::vector<Zone> zones(reach ? reach->reach.zone_count() : 1);
   for (size_t z = 0; z < zones.size(); ++z) {
@@ -145,7 +148,11 @@ std::vector<double> direct_illuminance(const Plan& plan,
       for (uint32_t k = 0; k < emitters.size(); ++k) zones[z].all[k] = k;
       zones[z].luminaires = &zones[z].all;
     }
+    for (const uint32_t k : *zones[z].luminaires) zones[z].emitters.push_back(&emitters[k]);
   }
+  // The automatic switch's weights of a point's pairs, computed for all its luminaires at once
+  // (nearfield/switch_run.h: the same weights as pair by pair).
+  const bool automatic = plan.near_switch == nearfield::NearFieldSwitch::automatic;
   // Far field everywhere on planes, nothing to occlude: the run loop (far_field_run).
   const bool planar = grid.quantity != geometry::Quantity::cylindrical &&
                       grid.quantity != geometry::Quantity::semi_cylindrical;
@@ -156,6 +163,9 @@ std::vector<double> direct_illuminance(const Plan& plan,
     DirectCounts local;
     // The table rung's buffers, grown on the chunk's first pairs and reused by the rest.
     nearfield::TableRungScratch scratch;
+    std::vector<nearfield::SwitchWeights> weights;
+    std::vector<const nearfield::Emitter*> far_emitters;
+    std::vector<double> far_lux;
     if (far_runs) {
       for (size_t begin = range.begin(); begin != range.end();) {
         const uint32_t zone = reach ? reach->zone_of_point[begin] : 0;
@@ -181,8 +191,25 @@ std::vector<double> direct_illuminance(const Plan& plan,
       const nearfield::Receiver receiver = receiver_of(grid.quantity, grid.normals[i]);
       const Zone& zone = zones[reach ? reach->zone_of_point[i] : 0];
       const geometry::Visibility* visibility = zone.visibility;
-      for (const uint32_t k : *zone.luminaires) {
-        const nearfield::Emitter& emitter = emitters[k];
+      // Without a visibility test on a plane, the pairs beyond their blend band are the far
+      // field alone: looked up together (nearfield/far_run.h: the same values pair by pair).
+      const bool far_together = automatic && !visibility && planar;
+      if (automatic) {
+        weights.resize(zone.emitters.size());
+        nearfield::switch_weights_run(zone.emitters.data(), zone.emitters.size(), grid.points[i],
+                                      weights.data());
+      }
+      if (far_together) {
+        far_emitters.clear();
+        for (size_t j = 0; j < zone.emitters.size(); ++j)
+          if (weights[j].far >= 1.0) far_emitters.push_back(zone.emitters[j]);
+        far_lux.resize(far_emitters.size());
+        nearfield::far_field_pairs(far_emitters.data(), far_emitters.size(), grid.points[i],
+                                   grid.normals[i], far_lux.data());
+      }
+      size_t next_far = 0;
+      for (size_t j = 0; j < zone.emitters.size(); ++j) {
+        const nearfield::Emitter& emitter = *zone.emitters[j];
         // Soft shadows: the near-field models test visibility per node, the far field from
         // the opening's centre.
         nearfield::SwitchWeights w;
@@ -194,9 +221,19 @@ std::vector<double> direct_illuminance(const Plan& plan,
             visibility ? std::make_optional<geometry::PairVisibility>(
                              *visibility, opening, std::span<const Vec3>(&grid.points[i], 1))
                        : std::nullopt;
-        const double pair = nearfield::hybrid_illuminance(emitter, grid.points[i], receiver,
-                                                          plan.near_model, plan.near_switch,
-                                                          shaft ? &*shaft : nullptr, &w, &scratch);
+        const geometry::Visibility* occluder = shaft ? &*shaft : nullptr;
+        // A far pair's weights as hybrid_illuminance_weighted would pass them on (its `fixed` is
+        // read only where the far weight is below 1).
+        const bool far_pair = far_together && weights[j].far >= 1.0;
+        if (far_pair) w = weights[j];
+        const double pair =
+            far_pair ? far_lux[next_far++]
+            : automatic
+                ? nearfield::hybrid_illuminance_weighted(emitter, grid.points[i], receiver,
+                                                         plan.near_model, weights[j], occluder, &w,
+                                                         &scratch)
+                : nearfield::hybrid_illuminance(emitter, grid.points[i], receiver, plan.near_model,
+                                                plan.near_switch, occluder, &w, &scratch);
         sum += pair;
         if (estimated_error_lx) error_lx += pair * nearfield::estimated_pair_error(emitter, w);
         if (!counts) continue;

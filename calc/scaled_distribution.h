@@ -9,6 +9,11 @@ class ScaledDistribution final : public photometry::IntensityDistribution {
   ScaledDistribution(photometry::DistributionPtr inner, double factor)
       : inner_(std::move(inner)), factor_(factor) {}
   double intensity(const Vec3& d) const override { return factor_ * inner_->intensity(d); }
+  void intensities(const double* x, const double* y, const double* z, std::size_t n,
+                   double* out) const override {
+    inner_->intensities(x, y, z, n, out);
+    for (std::size_t k = 0; k < n; ++k) out[k] = factor_ * out[k];
+  }
   photometry::TableView table_view() const override {
     photometry::TableView v = inner_->table_view();
     v.scale *= factor_;

@@ -6,6 +6,7 @@
 #include <glm/matrix.hpp>
 
 #include "util/error.h"
+#include "util/simd.h"
 #include "util/table_angle.h"
 
 namespace luxgrid::photometry {
@@ -227,6 +228,53 @@ double TabularDistribution::intensity(const Vec3& direction) const {
   // more than one plane.
   const double h = std::sqrt(d.x * d.x + d.y * d.y);
   return intensity_at(nc_ > 1 ? photometry::c_of(d.x, d.y, h) : 0.0, gamma_of(h, d.z));
+}
+
+namespace {
+
+// The photometric angles of directions [0, n) (n a multiple of the lanes) as lanes, and whether
+// the table gave each (table_angles_of); an AVX2 version where the processor has it.
+LUXGRID_LANE void table_angles_run_kernel(const double* x, const double* y, const double* z,
+                                          std::size_t n, double* c, double* gamma, bool* ok) {
+  for (std::size_t k = 0; k < n; k += simd::kLanes) {
+    simd::D4 lane_c, lane_gamma;
+    const simd::L4 held = table_angles_of(simd::load<simd::D4>(x + k), simd::load<simd::D4>(y + k),
+                                          simd::load<simd::D4>(z + k), lane_c, lane_gamma);
+    simd::store(lane_c, c + k);
+    simd::store(lane_gamma, gamma + k);
+    for (int l = 0; l < simd::kLanes; ++l) ok[k + l] = held[l] != 0;
+  }
+}
+
+LUXGRID_MULTIVERSION(void, table_angles_run,
+                     (const double* x, const double* y, const double* z, std::size_t n, double* c,
+                      double* gamma, bool* ok),
+                     (x, y, z, n, c, gamma, ok), table_angles_run_kernel)
+
+// Directions looked up per pass: the angles' buffers on the stack.
+constexpr std::size_t kAnglesRun = 64;
+
+}  // namespace
+
+void TabularDistribution::intensities(const double* x, const double* y, const double* z,
+                                      std::size_t n, double* out) const {
+  if (has_frame_) {
+    IntensityDistribution::intensities(x, y, z, n, out);
+    return;
+  }
+  double c[kAnglesRun], gamma[kAnglesRun];
+  bool ok[kAnglesRun];
+  for (std::size_t begin = 0; begin < n; begin += kAnglesRun) {
+    const std::size_t count = std::min(kAnglesRun, n - begin);
+    const std::size_t lanes = count - count % simd::kLanes;
+    table_angles_run(x + begin, y + begin, z + begin, lanes, c, gamma, ok);
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t i = begin + k;
+      // As intensity(): C only where the table has more than one plane.
+      out[i] = k < lanes && ok[k] ? intensity_at(nc_ > 1 ? c[k] : 0.0, gamma[k])
+                                  : intensity(Vec3(x[i], y[i], z[i]));
+    }
+  }
 }
 
 Vec3 TabularDistribution::luminaire_direction(double c, double g) const {

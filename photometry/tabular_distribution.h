@@ -43,6 +43,10 @@ class TabularDistribution final : public IntensityDistribution {
                                const glm::dmat3& table_from_luminaire = glm::dmat3(1.0));
 
   double intensity(const Vec3& direction) const override;
+  // Without a frame (type C) the angles of four directions at a time (table_angles_of), each
+  // looked up as intensity() looks it up; with one, one by one.
+  void intensities(const double* x, const double* y, const double* z, std::size_t n,
+                   double* out) const override;
   // Itself for type C; a type A/B grid's angles are not the luminaire frame's, so none.
   TableView table_view() const override { return has_frame_ ? TableView{} : TableView{this, 1.0}; }
   // Lookup by angles of the grid's own frame (radians; c any real, gamma in [0, pi]).

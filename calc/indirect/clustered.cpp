@@ -14,6 +14,7 @@
 #include "calc/indirect/limits.h"
 #include "geometry/box3.h"
 #include "util/error.h"
+#include "util/simd.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -92,8 +93,8 @@ bool is_leaf(const ClusterNode& c) { return c.child[0] == ClusterNode::kNone; }
 // centroid (bx, by, bz) and area. In components and branch-free (the tests applied to the
 // computed value), so that the loops over a block's patches vectorise; d2 > 0 between the
 // centroids of two faces.
-inline double node_factor(const Vec3& a_centroid, const Vec3& a_normal, const Vec3& b_normal,
-                          double bx, double by, double bz, double b_area_m2) {
+LUXGRID_LANE double node_factor(const Vec3& a_centroid, const Vec3& a_normal, const Vec3& b_normal,
+                                double bx, double by, double bz, double b_area_m2) {
   const double dx = bx - a_centroid.x, dy = by - a_centroid.y, dz = bz - a_centroid.z;
   const double h_src = a_normal.x * dx + a_normal.y * dy + a_normal.z * dz;
   const double h_dst = -(b_normal.x * dx + b_normal.y * dy + b_normal.z * dz);
@@ -108,7 +109,7 @@ struct BlockLeaves {
   Vec3 normal{0.0};  // one face's
   double x[kBlockPatches], y[kBlockPatches], z[kBlockPatches], area_m2[kBlockPatches];
 
-  BlockLeaves(const ClusterBlock& blk, const std::vector<ClusterNode>& nodes)
+  LUXGRID_LANE BlockLeaves(const ClusterBlock& blk, const std::vector<ClusterNode>& nodes)
       : count(blk.leaves.size()) {
     for (size_t k = 0; k < count; ++k) {
       const ClusterNode& b = nodes[blk.leaves[k]];
@@ -117,7 +118,7 @@ struct BlockLeaves {
     }
   }
   // whole_node_factor(a, leaf k) for each bit k of `mask` (0 elsewhere), into f.
-  void factors(const ClusterNode& a, uint32_t mask, double* f) const {
+  LUXGRID_LANE void factors(const ClusterNode& a, uint32_t mask, double* f) const {
     for (size_t k = 0; k < count; ++k) {
       const double v = node_factor(a.centroid, a.normal, normal, x[k], y[k], z[k], area_m2[k]);
       f[k] = (kBits[k] & mask) != 0 ? v : 0.0;
@@ -455,6 +456,37 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
   return T;
 }
 
+namespace {
+// sweep_block (clustered.h), written once and compiled for the baseline and for AVX2
+// (LUXGRID_MULTIVERSION): the loops over the block's patches are element by element, so four
+// lanes give the bits of two (or one), and the sum over the nodes keeps its order.
+LUXGRID_LANE void sweep_block_kernel(const ClusteredTransfer& T, size_t w, const double* flux,
+                                     double* received) {
+  const ClusterBlock& blk = T.blocks[w];
+  const BlockLeaves leaves(blk, T.nodes);
+  const size_t count = leaves.count;
+  double sum[kBlockPatches] = {};
+  double f[kBlockPatches];
+  for (size_t e = 0; e < blk.whole_node.size(); ++e) {
+    const double f_a = flux[blk.whole_node[e]];
+    if (f_a == 0.0) continue;
+    leaves.factors(T.nodes[blk.whole_node[e]], blk.whole_mask[e], f);
+    for (size_t k = 0; k < count; ++k) sum[k] += f[k] * f_a;
+  }
+  for (size_t k = 0; k < count; ++k) {
+    double s = sum[k];
+    for (uint32_t l = blk.near_begin[k]; l < blk.near_begin[k + 1]; ++l)
+      s += static_cast<double>(blk.near_factor[l]) * flux[blk.near_source[l]];
+    received[T.nodes[blk.leaves[k]].patch] = s;
+  }
+}
+
+}  // namespace
+
+LUXGRID_MULTIVERSION(void, sweep_block,
+                     (const ClusteredTransfer& T, size_t w, const double* flux, double* received),
+                     (T, w, flux, received), sweep_block_kernel)
+
 void apply_clustered(const ClusteredTransfer& T, const std::vector<double>& shot,
                      std::vector<double>& received, std::vector<double>& work) {
   const size_t m = T.nodes.size();
@@ -466,25 +498,8 @@ void apply_clustered(const ClusteredTransfer& T, const std::vector<double>& shot
         is_leaf(c) ? shot[c.patch] * T.source_scale[c.patch] : flux[c.child[0]] + flux[c.child[1]];
   }
   received.resize(T.n);
-  tbb::parallel_for(size_t(0), T.blocks.size(), [&](size_t w) {
-    const ClusterBlock& blk = T.blocks[w];
-    const BlockLeaves leaves(blk, T.nodes);
-    const size_t count = leaves.count;
-    double sum[kBlockPatches] = {};
-    double f[kBlockPatches];
-    for (size_t e = 0; e < blk.whole_node.size(); ++e) {
-      const double f_a = flux[blk.whole_node[e]];
-      if (f_a == 0.0) continue;
-      leaves.factors(T.nodes[blk.whole_node[e]], blk.whole_mask[e], f);
-      for (size_t k = 0; k < count; ++k) sum[k] += f[k] * f_a;
-    }
-    for (size_t k = 0; k < count; ++k) {
-      double s = sum[k];
-      for (uint32_t l = blk.near_begin[k]; l < blk.near_begin[k + 1]; ++l)
-        s += static_cast<double>(blk.near_factor[l]) * flux[blk.near_source[l]];
-      received[T.nodes[blk.leaves[k]].patch] = s;
-    }
-  });
+  tbb::parallel_for(size_t(0), T.blocks.size(),
+                    [&](size_t w) { sweep_block(T, w, flux, received.data()); });
 }
 
 }  // namespace luxgrid::calc::indirect

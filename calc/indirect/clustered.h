@@ -44,6 +44,7 @@
 #include "calc/indirect/limits.h"
 #include "calc/indirect/patches.h"
 #include "calc/scene.h"
+#include "util/simd.h"
 
 namespace luxgrid::calc::indirect {
 
@@ -143,6 +144,12 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
 // factors computed as it goes). `work` is scratch of nodes.size() doubles.
 void apply_clustered(const ClusteredTransfer& T, const std::vector<double>& shot,
                      std::vector<double>& received, std::vector<double>& work);
+// Block w's part of a sweep: received[i] for each patch i of the block, from `flux`, the
+// scaled shot per node (a node's: the sum of its patches'). apply_clustered calls the version this
+// processor runs; the baseline's and AVX2's give the same bits (the tests compare them).
+LUXGRID_MULTIVERSION_DECLARE(void, sweep_block,
+                             (const ClusteredTransfer& T, size_t w, const double* flux,
+                              double* received))
 
 // The form factor F[j -> i] between two patches as the dense matrix computes it (radiosity.h):
 // 0 when j lies on or behind i's plane, else the point kernel beyond far_ratio x D_i, the

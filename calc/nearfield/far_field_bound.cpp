@@ -248,8 +248,7 @@ struct GridSpot {
   double tg, tc;
 };
 
-GridSpot spot_of(const Vec3& u) {
-  const photometry::PhotometricAngles a = photometry::angles_of(u);
+GridSpot spot_of(const photometry::PhotometricAngles& a) {
   const double gamma_deg = a.gamma * kRadToDeg, c_deg = a.c * kRadToDeg;
   const double fg = std::clamp(gamma_deg / kGammaStepDeg, 0.0, kGammaSamples - 1.0);
   const double fc = c_deg / kCStepDeg;
@@ -261,14 +260,26 @@ GridSpot spot_of(const Vec3& u) {
   s.tc = fc - std::floor(fc);
   return s;
 }
+GridSpot spot_of(const Vec3& u) { return spot_of(photometry::angles_of(u)); }
 
 // Bilinear in 1 / d (the angular footprint a receiver needs): continuous, and a direction
 // needing the near field everywhere (1 / d = 0) does not swamp a whole cell.
-double interpolate_over_D(const std::vector<float>& map, const GridSpot& s) {
-  auto at = [&](int g, int c) { return 1.0 / static_cast<double>(map[g * kCSamples + c]); };
+// `inverse`: 1 / map per sample, made once (the same doubles), or empty.
+double interpolate_over_D(const std::vector<float>& map, const std::vector<double>& inverse,
+                          const GridSpot& s) {
+  auto at = [&](int g, int c) {
+    const int i = g * kCSamples + c;
+    return inverse.empty() ? 1.0 / static_cast<double>(map[i]) : inverse[i];
+  };
   const double inv = (1 - s.tg) * ((1 - s.tc) * at(s.g0, s.c0) + s.tc * at(s.g0, s.c1)) +
                      s.tg * ((1 - s.tc) * at(s.g0 + 1, s.c0) + s.tc * at(s.g0 + 1, s.c1));
   return 1.0 / std::max(inv, 1.0 / kNearEverywhere);
+}
+
+std::vector<double> inverse_of(const std::vector<float>& map) {
+  std::vector<double> inverse(map.size());
+  for (std::size_t i = 0; i < map.size(); ++i) inverse[i] = 1.0 / static_cast<double>(map[i]);
+  return inverse;
 }
 
 // Smoothstep from `start` to kBlendWidth x start: value and slope continuous along a ray.
@@ -408,14 +419,25 @@ void MapDemand::merge(const MapDemand& other) {
 }
 
 double FarFieldBound::distance_over_D(const Vec3& u) const {
-  return interpolate_over_D(d_far_over_D, spot_of(u));
+  return interpolate_over_D(d_far_over_D, inv_far_over_D, spot_of(u));
 }
 
 double FarFieldBound::fixed_distance_over_D(const Vec3& u) const {
-  return interpolate_over_D(d_fixed_over_D, spot_of(u));
+  return interpolate_over_D(d_fixed_over_D, inv_fixed_over_D, spot_of(u));
 }
 
 FarFieldBound::Weights FarFieldBound::weights(const Vec3& u, double distance_m) const {
+  return weights_at(u, nullptr, distance_m);
+}
+
+FarFieldBound::Weights FarFieldBound::weights(const photometry::PhotometricAngles& angles,
+                                              double distance_m) const {
+  return weights_at(Vec3(0.0), &angles, distance_m);
+}
+
+FarFieldBound::Weights FarFieldBound::weights_at(const Vec3& u,
+                                                 const photometry::PhotometricAngles* angles,
+                                                 double distance_m) const {
   Weights w;
   // Most pairs of a large room: beyond every direction's band (interpolate_over_D never exceeds
   // the largest sample, so this is the answer the lookup below would give).
@@ -424,11 +446,11 @@ FarFieldBound::Weights FarFieldBound::weights(const Vec3& u, double distance_m) 
     w.far_start_m = far_everywhere_over_D / kBlendWidth * largest_dimension_m;
     return w;
   }
-  const GridSpot s = spot_of(u);
-  w.far_start_m = interpolate_over_D(d_far_over_D, s) * largest_dimension_m;
+  const GridSpot s = angles ? spot_of(*angles) : spot_of(u);
+  w.far_start_m = interpolate_over_D(d_far_over_D, inv_far_over_D, s) * largest_dimension_m;
   w.far = ramp(distance_m, w.far_start_m);
   if (w.far < 1.0) {
-    w.fixed_start_m = interpolate_over_D(d_fixed_over_D, s) * largest_dimension_m;
+    w.fixed_start_m = interpolate_over_D(d_fixed_over_D, inv_fixed_over_D, s) * largest_dimension_m;
     w.fixed = ramp(distance_m, w.fixed_start_m);
   }
   return w;
@@ -449,6 +471,7 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
     bound->min_over_D = bound->max_over_D = bound->median_over_D = kLadderStart;
     bound->fixed_median_over_D = bound->fixed_max_over_D = kLadderStart;
     bound->far_everywhere_over_D = kBlendWidth * kLadderStart;
+    bound->inv_far_over_D = bound->inv_fixed_over_D = inverse_of(raw);
     return bound;
   }
   // What is measured: every sample out to the ladder's end, or what the demand reads.
@@ -548,6 +571,8 @@ std::shared_ptr<const FarFieldBound> build_far_field_bound(const Emitter& e,
                                        ? bound->d_far_over_D[i]
                                        : std::min(needs.read_over_D[i], kNearEverywhere));
   bound->far_everywhere_over_D = kBlendWidth * far_everywhere;
+  bound->inv_far_over_D = inverse_of(bound->d_far_over_D);
+  bound->inv_fixed_over_D = inverse_of(bound->d_fixed_over_D);
   // Summary for the plan over the samples the pairs read, undilated (what each direction
   // measured); those left to the near field out to their farthest receiver are counted apart.
   std::vector<float> far_read, fixed_read;

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "photometry/intensity_distribution.h"
 #include "util/robust_math.h"
 
 namespace luxgrid::nearfield {
@@ -104,6 +105,9 @@ struct FarFieldBound {
   // The same for the fixed rule (fixed_rule.h): d_fixed / D beyond which the fixed rule is
   // within the promise of the quality's rung, never beyond d_far (the far field is cheaper).
   std::vector<float> d_fixed_over_D;
+  // 1 / d_far_over_D and 1 / d_fixed_over_D per sample (what the interpolation reads: the same
+  // doubles, made once by build_far_field_bound); empty: computed at each look-up.
+  std::vector<double> inv_far_over_D, inv_fixed_over_D;
   bool near_everywhere_somewhere = false;  // some direction failed out to the ladder's end
   // The fixed rule's summary for the plan (undilated samples).
   double fixed_median_over_D = 0.0, fixed_max_over_D = 0.0;
@@ -151,6 +155,14 @@ struct FarFieldBound {
     double far_start_m = 0.0, fixed_start_m = 0.0;
   };
   Weights weights(const Vec3& local_dir, double distance_m) const;
+  // The same from the direction's photometric angles as photometry::angles_of gives them (the
+  // same weights: calc/nearfield/switch_run.h computes the angles of four pairs at once).
+  Weights weights(const photometry::PhotometricAngles& angles, double distance_m) const;
+
+ private:
+  // Both of the above: the angles when given, else those of `local_dir`.
+  Weights weights_at(const Vec3& local_dir, const photometry::PhotometricAngles* angles,
+                     double distance_m) const;
 };
 
 // Builds the map for `emitter` (its own frame is read from emitter.rotation, so the map is the

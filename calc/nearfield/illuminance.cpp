@@ -153,13 +153,17 @@ SwitchWeights switch_weights(const Emitter& e, const Vec3& point) {
   const double d = glm::length(r);
   if (e.far_bound) {
     if (!(d > 0.0)) return {};
-    const FarFieldBound::Weights w = e.far_bound->weights(e.world_to_local * (r / d), d);
-    return {w.far, e.rule_nodes.empty() ? 0.0 : w.fixed, w.far_start_m, w.fixed_start_m, d};
+    return switch_weights_of_bound(e, e.far_bound->weights(e.world_to_local * (r / d), d), d);
   }
   const double t = (d / size - kBlendStart) / (kBlendEnd - kBlendStart);
   if (t <= 0.0) return {};
   if (t >= 1.0) return {1.0, 0.0};
   return {t * t * (3.0 - 2.0 * t), 0.0};
+}
+
+SwitchWeights switch_weights_of_bound(const Emitter& e, const FarFieldBound::Weights& w,
+                                      double distance_m) {
+  return {w.far, e.rule_nodes.empty() ? 0.0 : w.fixed, w.far_start_m, w.fixed_start_m, distance_m};
 }
 
 double estimated_pair_error(const Emitter& e, const SwitchWeights& w) {
@@ -179,26 +183,14 @@ bool fixed_rule_may_serve(const Emitter& e, const Receiver& receiver, const Mode
          !table_rung_in_closed_form(e, receiver.direction);
 }
 
-double hybrid_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
-                          const Model& near_model, NearFieldSwitch mode,
-                          const geometry::Visibility* occ, TableRungScratch* scratch) {
-  return hybrid_illuminance(e, point, Receiver::planar(normal), near_model, mode, occ, nullptr,
-                            scratch);
-}
+namespace {
 
-double hybrid_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
-                          const Model& near_model, NearFieldSwitch mode,
-                          const geometry::Visibility* occ, SwitchWeights* used,
-                          TableRungScratch* scratch) {
+// The pair's illuminance by the models the weights `w` mix.
+double mixed_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
+                         const Model& near_model, const SwitchWeights& w,
+                         const geometry::Visibility* occ, SwitchWeights* used,
+                         TableRungScratch* scratch) {
   const Model far = Model::far_field();
-  SwitchWeights w;
-  if (mode == NearFieldSwitch::never) w.far = 1.0;
-  if (mode == NearFieldSwitch::automatic) {
-    w = switch_weights(e, point);
-    if (w.fixed > 0.0 && !fixed_rule_may_serve(e, receiver, near_model, occ)) w.fixed = 0.0;
-    if ((w.far > 0.0 || w.fixed > 0.0) && !e.is_point() && in_penumbra(e, point, occ))
-      w.far = 0.0, w.fixed = 0.0;
-  }
   if (used) *used = w;
   if (w.far >= 1.0) return illuminance(e, point, receiver, far, occ);
   double near = 0.0;
@@ -211,6 +203,38 @@ double hybrid_illuminance(const Emitter& e, const Vec3& point, const Receiver& r
   }
   if (w.far <= 0.0) return near;
   return (1.0 - w.far) * near + w.far * illuminance(e, point, receiver, far, occ);
+}
+
+}  // namespace
+
+double hybrid_illuminance(const Emitter& e, const Vec3& point, const Vec3& normal,
+                          const Model& near_model, NearFieldSwitch mode,
+                          const geometry::Visibility* occ, TableRungScratch* scratch) {
+  return hybrid_illuminance(e, point, Receiver::planar(normal), near_model, mode, occ, nullptr,
+                            scratch);
+}
+
+double hybrid_illuminance(const Emitter& e, const Vec3& point, const Receiver& receiver,
+                          const Model& near_model, NearFieldSwitch mode,
+                          const geometry::Visibility* occ, SwitchWeights* used,
+                          TableRungScratch* scratch) {
+  if (mode == NearFieldSwitch::automatic)
+    return hybrid_illuminance_weighted(e, point, receiver, near_model, switch_weights(e, point),
+                                       occ, used, scratch);
+  SwitchWeights w;
+  if (mode == NearFieldSwitch::never) w.far = 1.0;
+  return mixed_illuminance(e, point, receiver, near_model, w, occ, used, scratch);
+}
+
+double hybrid_illuminance_weighted(const Emitter& e, const Vec3& point, const Receiver& receiver,
+                                   const Model& near_model, const SwitchWeights& weights,
+                                   const geometry::Visibility* occ, SwitchWeights* used,
+                                   TableRungScratch* scratch) {
+  SwitchWeights w = weights;
+  if (w.fixed > 0.0 && !fixed_rule_may_serve(e, receiver, near_model, occ)) w.fixed = 0.0;
+  if ((w.far > 0.0 || w.fixed > 0.0) && !e.is_point() && in_penumbra(e, point, occ))
+    w.far = 0.0, w.fixed = 0.0;
+  return mixed_illuminance(e, point, receiver, near_model, w, occ, used, scratch);
 }
 
 }  // namespace luxgrid::nearfield

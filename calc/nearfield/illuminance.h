@@ -7,6 +7,7 @@
 #include <string>
 
 #include "calc/nearfield/emitter.h"
+#include "calc/nearfield/far_field_bound.h"
 #include "calc/nearfield/receiver_kernel.h"
 #include "geometry/visibility.h"
 
@@ -88,6 +89,11 @@ struct SwitchWeights {
   double far_start_m = 0.0, fixed_start_m = 0.0, distance_m = 0.0;
 };
 SwitchWeights switch_weights(const Emitter& emitter, const Vec3& point);
+// What switch_weights gives for an emitter with an error bound, from the bound's weights of the
+// pair at distance `distance_m` (> 0): the one place that turns the one into the other (for
+// switch_weights and calc/nearfield/switch_run.h).
+SwitchWeights switch_weights_of_bound(const Emitter& emitter, const FarFieldBound::Weights& w,
+                                      double distance_m);
 
 // The plan's estimate of a pair's relative error from the models `w` mixes (calc/plan_estimates.h):
 // the far field's measured error at d_far (FarFieldBound::far_error_measured) falling as
@@ -128,5 +134,13 @@ double hybrid_illuminance(const Emitter& emitter, const Vec3& point, const Recei
                           NearFieldSwitch mode = NearFieldSwitch::automatic,
                           const geometry::Visibility* occluder = nullptr,
                           SwitchWeights* used = nullptr, TableRungScratch* scratch = nullptr);
+// The same with mode automatic and the pair's switch_weights already computed (`weights`: what
+// switch_weights(emitter, point) gives, e.g. from switch_weights_run for a run of emitters).
+double hybrid_illuminance_weighted(const Emitter& emitter, const Vec3& point,
+                                   const Receiver& receiver, const Model& near_model,
+                                   const SwitchWeights& weights,
+                                   const geometry::Visibility* occluder = nullptr,
+                                   SwitchWeights* used = nullptr,
+                                   TableRungScratch* scratch = nullptr);
 
 }  // namespace luxgrid::nearfield
