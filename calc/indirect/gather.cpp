@@ -241,8 +241,8 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
           far += sum;
           continue;
         }
-        // The chunk's shaft verdicts from the receiver (chunk_verdict.h): every sample point of a
-        // patch, lifted off its face, lies in the patch's vertex box moved by the lift.
+        // The chunk's shaft verdict from the receiver (chunk_verdict.h): every sample point of its
+        // patches, lifted off their face, lies in the chunk's vertex box moved by the lift.
         ChunkVerdict verdict(visibility != nullptr, [&, from = x + n * kGatherLift_m] {
           std::array<Vec3, 8> corners;
           const size_t count = geometry::box_element(ch.lo, ch.hi, m * kGatherLift_m, corners);

@@ -171,7 +171,7 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
           }
           continue;
         }
-        // The chunk's shaft verdicts against the receiver (chunk_verdict.h): each source's
+        // The chunk's shaft verdict against the receiver (chunk_verdict.h): each source's
         // shooting point lies in its centroid box moved by the lift, the receiver's sample points
         // in its polygon moved by the lift (visible_fraction).
         ChunkVerdict verdict(visibility != nullptr, [&] {
