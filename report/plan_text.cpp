@@ -425,8 +425,8 @@ std::vector<std::string> plan_warnings(const calc::Plan& plan) {
       warnings.push_back("indirect: " + refinement_why(r, plan.quality) + ", but a mesh at " +
                          format_double("%.3g", r.to_m) + " m would cost " +
                          format_double("%.2g", r.work_pairs) +
-                         " form-factor pairs (a pair counting 8 where rays are traced), above the "
-                         "limit of " +
+                         " pairs and links (a dense room's form-factor pairs, a pair counting 8 "
+                         "where rays are traced; a clustered room's links), above the limit of " +
                          format_double("%.2g", r.work_limit_pairs) + "; the patch size stays " +
                          format_double("%.3g", r.from_m) + " m");
     if (r.outcome == calc::PatchRefinement::Outcome::over_budget)

@@ -13,6 +13,7 @@
 #include "calc/indirect/form_factor.h"
 #include "calc/indirect/limits.h"
 #include "geometry/box3.h"
+#include "geometry/shaft.h"
 #include "util/error.h"
 #include "util/simd.h"
 
@@ -133,6 +134,51 @@ bool face_each_other(const ClusterNode& a, const ClusterNode& b) {
          box_max_height(b.normal, b.centroid, a.lo, a.hi) > kEdgeOnDistance_m;
 }
 
+// Per node, the boxes of the points its patches' visibility segments end at: where each patch
+// shoots from (its centroid, as the dense matrix, radiosity.cpp) and where it is looked at
+// (visible_fraction's sample points: the centroid and the midpoints towards its corners). Both
+// lie inside the node's vertex box by a quarter of a patch and more, so the shaft of a node
+// along a wall does not graze that wall, which would leave it `partial`.
+struct SegmentEnds {
+  std::vector<geometry::Box3> shoot, sample;
+};
+SegmentEnds segment_ends(const PatchMesh& mesh, size_t begin,
+                         const std::vector<ClusterNode>& nodes) {
+  SegmentEnds e;
+  e.shoot.resize(nodes.size());
+  e.sample.resize(nodes.size());
+  for (size_t a = nodes.size(); a-- > 0;) {  // pre-order: children after their parent
+    const ClusterNode& c = nodes[a];
+    if (is_leaf(c)) {
+      const Patch& p = mesh.patches[begin + c.patch];
+      e.shoot[a] = e.sample[a] = {p.centroid, p.centroid};
+      for (const Vec3& v : p.polygon) {
+        const Vec3 m = 0.5 * (v + p.centroid);
+        e.sample[a].lo = glm::min(e.sample[a].lo, m), e.sample[a].hi = glm::max(e.sample[a].hi, m);
+      }
+      continue;
+    }
+    for (std::vector<geometry::Box3>* boxes : {&e.shoot, &e.sample}) {
+      const geometry::Box3 &l = (*boxes)[c.child[0]], &r = (*boxes)[c.child[1]];
+      (*boxes)[a] = {glm::min(l.lo, r.lo), glm::max(l.hi, r.hi)};
+    }
+  }
+  return e;
+}
+
+// The shaft verdict (geometry/shaft.h) for the segments between source node a's shooting points
+// and receiving node b's sample points, each box moved off its face by the lift.
+geometry::Shaft node_verdict(const geometry::Visibility& visibility, const SegmentEnds& ends,
+                             const std::vector<ClusterNode>& nodes, uint32_t a, uint32_t b) {
+  std::array<Vec3, 8> source, receiver;
+  const size_t ns = geometry::box_element(ends.shoot[a].lo, ends.shoot[a].hi,
+                                          nodes[a].normal * kShootLift_m, source);
+  const size_t nr = geometry::box_element(ends.sample[b].lo, ends.sample[b].hi,
+                                          nodes[b].normal * kShootLift_m, receiver);
+  return visibility.classify(std::span<const Vec3>(source.data(), ns),
+                             std::span<const Vec3>(receiver.data(), nr));
+}
+
 }  // namespace
 
 size_t ClusteredTransfer::link_bytes() const {
@@ -155,9 +201,10 @@ double whole_node_factor(const ClusterNode& a, const ClusterNode& b) {
 }
 
 bool use_clustered_transfer(const Room& room, double patch_size_m) {
-  return outline_is_convex(room) && room.obstacles.empty() &&
-         room_surface_area(room) / (patch_size_m * patch_size_m) >
-             static_cast<double>(kClusteredAbovePatches);
+  const double patches = room_surface_area(room) / (patch_size_m * patch_size_m);
+  const bool unobstructed = outline_is_convex(room) && room.obstacles.empty();
+  return patches >
+         static_cast<double>(unobstructed ? kClusteredAbovePatches : kClusteredVisibleAbovePatches);
 }
 
 double cluster_opening(double far_ratio) {
@@ -193,7 +240,8 @@ double patch_pair_form_factor(const Patch& source, const Patch& receiver, double
 }
 
 ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far_ratio,
-                                     bool renormalise, size_t max_link_bytes) {
+                                     bool renormalise, size_t max_link_bytes,
+                                     const geometry::Visibility* visibility) {
   ClusteredTransfer T;
   T.begin = mesh.room_begin[room];
   T.n = mesh.room_begin[room + 1] - T.begin;
@@ -221,6 +269,7 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
     k = e;
   }
   const size_t node_count = T.nodes.size();
+  const SegmentEnds ends = visibility ? segment_ends(mesh, T.begin, T.nodes) : SegmentEnds{};
 
   // Receiver blocks: subtrees of at most kBlockPatches patches of each face's tree, with their
   // leaves and largest patch diameter.
@@ -283,7 +332,10 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
       const BlockRoot& root = block_roots[w];
       const ClusterNode& R = T.nodes[root.node];
       ClusterBlock& blk = T.blocks[w];
-      std::vector<uint32_t> candidates, stack;
+      // Source nodes to descend, each with whether the block sees all of it (proven by a shaft
+      // verdict, or no visibility test); then those left to each patch, likewise.
+      std::vector<std::pair<uint32_t, bool>> stack, candidates;
+      std::vector<uint32_t> own_stack, distinct;
       // The nodes patches take by themselves (node, k: taken by blk.leaves[k]), and per patch its
       // links to single source patches.
       std::vector<std::pair<uint32_t, uint32_t>> own;
@@ -293,41 +345,68 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
       for (size_t f = 0; f < T.roots.size(); ++f) {
         if (f == root.face) continue;  // a face does not light itself
         candidates.clear();
-        stack.push_back(T.roots[f]);
+        stack.push_back({T.roots[f], visibility == nullptr});
         while (!stack.empty()) {
-          const uint32_t a_id = stack.back();
+          const auto [a_id, seen] = stack.back();
           stack.pop_back();
           const ClusterNode& a = T.nodes[a_id];
           if (!face_each_other(a, R)) continue;
+          // Where the node would be linked (taken whole, or left to each patch), what the block
+          // sees of it: hidden nodes are dropped, partly hidden ones opened (a leaf is left to each
+          // patch's own segments), visible ones need no more segments below them.
+          const auto verdict = [&] {
+            return seen ? geometry::Shaft::visible
+                        : node_verdict(*visibility, ends, T.nodes, a_id, root.node);
+          };
           if (is_leaf(a)) {
-            candidates.push_back(a_id);
+            const geometry::Shaft v = verdict();
+            if (v != geometry::Shaft::hidden)
+              candidates.push_back({a_id, v == geometry::Shaft::visible});
             continue;
           }
           const double dm = std::max(a.diameter_m, root.max_diameter_m);
-          if (dm * dm < opening2 * geometry::box_distance2(a.centroid, R.lo, R.hi) &&
+          const Vec3 far_corner =
+              glm::max(glm::abs(a.centroid - R.lo), glm::abs(a.centroid - R.hi));
+          const bool whole =
+              dm * dm < opening2 * geometry::box_distance2(a.centroid, R.lo, R.hi) &&
               box_min_height(a.normal, a.centroid, R.lo, R.hi) > -kFrontTolerance_m &&
-              box_min_height(R.normal, R.centroid, a.lo, a.hi) > -kFrontTolerance_m) {
+              box_min_height(R.normal, R.centroid, a.lo, a.hi) > -kFrontTolerance_m;
+          const bool open =
+              !whole && a.diameter_m * a.diameter_m >= opening2 * glm::dot(far_corner, far_corner);
+          const geometry::Shaft v = open ? geometry::Shaft::partial : verdict();
+          if (v == geometry::Shaft::hidden) continue;
+          if (v == geometry::Shaft::partial) {
+            stack.push_back({a.child[0], seen});
+            stack.push_back({a.child[1], seen});
+            continue;
+          }
+          if (whole) {
             blk.whole_node.push_back(a_id);
             blk.whole_mask.push_back(all);
             continue;
           }
-          const Vec3 far_corner =
-              glm::max(glm::abs(a.centroid - R.lo), glm::abs(a.centroid - R.hi));
-          if (a.diameter_m * a.diameter_m >= opening2 * glm::dot(far_corner, far_corner)) {
-            stack.push_back(a.child[0]);
-            stack.push_back(a.child[1]);
-            continue;
-          }
-          candidates.push_back(a_id);
+          candidates.push_back({a_id, true});
         }
         for (size_t k = 0; k < blk.leaves.size(); ++k) {
           const ClusterNode& b = T.nodes[blk.leaves[k]];
           const Patch& dst = mesh.patches[T.begin + b.patch];
-          for (const uint32_t c : candidates) {
-            stack.push_back(c);
-            while (!stack.empty()) {
-              const uint32_t a_id = stack.back();
-              stack.pop_back();
+          for (const auto& [c, seen] : candidates) {
+            if (!seen) {
+              // A source patch partly hidden from the block: the dense path's factor times the
+              // share of this patch its centroid sees (radiosity.cpp).
+              const ClusterNode& a = T.nodes[c];
+              if (!face_each_other(a, b)) continue;
+              double f = patch_pair_form_factor(mesh.patches[T.begin + a.patch], dst, far);
+              if (f > 0.0)
+                f *= visible_fraction(visibility, a.centroid + a.normal * kShootLift_m, dst,
+                                      kShootLift_m);
+              if (f > 0.0) near[k].push_back({c, static_cast<float>(f)});
+              continue;
+            }
+            own_stack.push_back(c);
+            while (!own_stack.empty()) {
+              const uint32_t a_id = own_stack.back();
+              own_stack.pop_back();
               const ClusterNode& a = T.nodes[a_id];
               if (!face_each_other(a, b)) continue;
               if (is_leaf(a)) {
@@ -347,8 +426,8 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
                 if (whole_node_factor(a, b) > 0.0) own.push_back({a_id, uint32_t(k)});
                 continue;
               }
-              stack.push_back(a.child[0]);
-              stack.push_back(a.child[1]);
+              own_stack.push_back(a.child[0]);
+              own_stack.push_back(a.child[1]);
             }
           }
         }
@@ -358,7 +437,6 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
       // so only the distinct ones are sorted), then cleared for the next block.
       std::vector<uint32_t>& own_mask = own_masks.local();
       own_mask.resize(node_count, 0);
-      std::vector<uint32_t>& distinct = candidates;
       distinct.clear();
       for (const auto& [node, k] : own) {
         if (own_mask[node] == 0) distinct.push_back(node);

@@ -44,6 +44,7 @@
 #include "calc/indirect/limits.h"
 #include "calc/indirect/patches.h"
 #include "calc/scene.h"
+#include "geometry/visibility.h"
 #include "util/simd.h"
 
 namespace luxgrid::calc::indirect {
@@ -130,14 +131,16 @@ inline constexpr double kClusteredLinksPerPatch = 1260.0;
 // the 250 000 patches of the largest would need about 2.7 GB at 0.125).
 inline constexpr double kClusteredReferenceFarRatio = 8.0;
 
-// The operator of room `room` (its visibility must be null: nothing blocks). `renormalise`:
+// The operator of room `room`. `visibility`: what blocks light inside it (null: nothing, a convex
+// room without obstacles); see "Visibility per link" above. `renormalise`:
 // scale each patch's shot to a total factor of its kept fraction (patches.h: 1 in a closed room,
 // less the share leaving through openings). Parallel. Throws
 // CalculationError when the links would exceed max_link_bytes (kMaxClusteredLinkBytes, limits.h;
 // a larger one only for finer references, IndirectOptions::max_clustered_link_bytes).
 ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far_ratio,
                                      bool renormalise = true,
-                                     size_t max_link_bytes = kMaxClusteredLinkBytes);
+                                     size_t max_link_bytes = kMaxClusteredLinkBytes,
+                                     const geometry::Visibility* visibility = nullptr);
 
 // received[i] = sum over sources j of F[j -> i] x shot[j] x source_scale[j] (room-local
 // indices): one sweep of the bounce series, block by block in parallel (the shared links'

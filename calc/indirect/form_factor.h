@@ -18,6 +18,10 @@ namespace luxgrid::calc::indirect {
 // anyway.
 inline constexpr double kEdgeOnDistance_m = 1e-9;
 inline constexpr double kCoplanarDistance_m = 1e-11;
+// Where visibility counts in patch-to-patch transfer, a source shoots from its centroid this far
+// in front of its patch, so that the segments from a wall patch do not start on the wall
+// (visible_fraction lifts the receiving patch's sample points by as much).
+inline constexpr double kShootLift_m = 1e-6;
 
 using geometry::Polygon2;
 using geometry::Polygon3;

@@ -327,8 +327,10 @@ IndirectOptions indirect_options(const Settings& settings) {
 namespace {
 
 // solve_indirect, returning the solution it may still change (the split's second solve).
-std::unique_ptr<IndirectSolution> solve_rooms(const Scene& scene,
-                                              const IndirectOptions& options_in) {
+// `clustered_split`: whether the rooms with the clustered transfer and visibility may still choose
+// their split before solving (false once they have, on the split mesh).
+std::unique_ptr<IndirectSolution> solve_rooms(const Scene& scene, const IndirectOptions& options_in,
+                                              bool clustered_split = true) {
   const auto t0 = std::chrono::steady_clock::now();
   auto solution = std::make_unique<IndirectSolution>();
   IndirectSolution& sol_out = *solution;
@@ -368,14 +370,15 @@ std::unique_ptr<IndirectSolution> solve_rooms(const Scene& scene,
     for (size_t r = 0; r < scene.rooms.size(); ++r)
       room_visibility[r] = outline_is_convex(scene.rooms[r]) ? &*obstacles_only : vis;
   }
-  // A clustered room is convex without obstacles: nothing blocks light inside it. Its far ratio
-  // is the quality's, or kClusteredReferenceFarRatio where that is infinite (reference): an
-  // always-exact gather or transfer over 10^5 patches is what clustering avoids.
+  // A clustered room's far ratio is the quality's, or kClusteredReferenceFarRatio where that is
+  // infinite (reference): an always-exact gather or transfer over 10^4 patches and more is what
+  // clustering avoids. In a convex one without obstacles nothing blocks light.
   auto& room_far = sol_out.room_far;
   room_far.assign(scene.rooms.size(), far_ratio);
   for (size_t r = 0; r < scene.rooms.size(); ++r)
     if (budgets.clustered[r]) {
-      room_visibility[r] = nullptr;
+      const Room& room = scene.rooms[r];
+      if (outline_is_convex(room) && room.obstacles.empty()) room_visibility[r] = nullptr;
       if (!std::isfinite(far_ratio)) room_far[r] = kClusteredReferenceFarRatio;
     }
 
@@ -386,6 +389,41 @@ std::unique_ptr<IndirectSolution> solve_rooms(const Scene& scene,
   res.luminaire_flux_lm = fb.luminaire_flux_lm;
   res.received_flux_lm = fb.received_flux_lm;
   for (double f : fb.vpl_flux_lm) res.vpl_flux_lm += f;
+
+  // A room where something blocks light is split where its light jumps (split_mask.h, below). A
+  // dense room chooses the patches from its solution, and is solved again; a room with the
+  // clustered transfer chooses them before solving, from its first bounce and the ambient term
+  // (ambient_exitance), since a solve of the unsplit mesh costs about as much as the split one.
+  const double jump = quality_split_jump(options.quality);
+  const bool splits = options.split_patches && jump > 0.0 && bounces != 1;
+  const auto needs_split = [&](size_t r) {
+    const Room& room = scene.rooms[r];
+    return room_visibility[r] && !(outline_is_convex(room) && room.obstacles.empty());
+  };
+  if (splits && clustered_split) {
+    std::vector<char> split(mesh.patches.size(), 0);
+    size_t cut = 0;
+    for (size_t r = 0; r < scene.rooms.size(); ++r) {
+      if (!budgets.clustered[r] || !needs_split(r)) continue;
+      const size_t begin = mesh.room_begin[r], end = mesh.room_begin[r + 1];
+      const std::vector<char> room_split = patches_to_split(
+          mesh, begin, end, ambient_exitance(mesh, begin, end, fb.incident_flux_lm), jump,
+          kMaxClusteredPatchesPerRoom - std::min(kMaxClusteredPatchesPerRoom, end - begin));
+      for (size_t i = begin; i < end; ++i)
+        if (room_split[i]) split[i] = 1, ++cut;
+    }
+    if (cut > 0) {
+      IndirectOptions again = options;
+      again.mesh = std::make_shared<const PatchMesh>(split_patches(scene, mesh, split));
+      std::unique_ptr<IndirectSolution> finer = solve_rooms(scene, again, false);
+      IndirectResult& fr = finer->result;
+      fr.notes.insert(fr.notes.begin(), res.notes.begin(), res.notes.begin() + mesh_notes);
+      fr.split_patches += cut;
+      fr.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      finer->options.mesh.reset();
+      return finer;
+    }
+  }
 
   // Exitant flux per patch, room by room (rooms are closed: no light passes between them).
   auto& exitant = sol_out.exitant_flux_lm;
@@ -407,8 +445,9 @@ std::unique_ptr<IndirectSolution> solve_rooms(const Scene& scene,
       none.n = end - begin;
       sol = solve_radiosity(none, rho, incident, 1, tol);
     } else if (budgets.clustered[r]) {
-      const ClusteredTransfer T = clustered_transfer(mesh, static_cast<int>(r), room_far[r], true,
-                                                     options.max_clustered_link_bytes);
+      const ClusteredTransfer T =
+          clustered_transfer(mesh, static_cast<int>(r), room_far[r], true,
+                             options.max_clustered_link_bytes, room_visibility[r]);
       res.max_row_correction = std::max(res.max_row_correction, T.max_row_correction);
       // A wider ratio than the quality's is not what the quality's accuracy was measured with
       // (docs/indirect.md, "Large rooms"): a warning, not a note.
@@ -444,19 +483,15 @@ std::unique_ptr<IndirectSolution> solve_rooms(const Scene& scene,
   sol_out.bounces = bounces;
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  // Patches where the light jumps, cut into quarters, and the rooms solved again on that mesh
-  // (split_mask.h): only rooms where something blocks light, solved densely, with bounces.
-  const double jump = quality_split_jump(options.quality);
-  if (options.split_patches && jump > 0.0 && bounces != 1) {
+  // Patches where the light jumps, cut into quarters, and the dense rooms solved again on that
+  // mesh (split_mask.h): only rooms where something blocks light, with bounces.
+  if (splits) {
     std::vector<char> split(mesh.patches.size(), 0);
     size_t cut = 0;
     for (size_t r = 0; r < scene.rooms.size(); ++r) {
       // Only where something inside the room blocks light (a reflex corner, obstacles): in a
       // convex room without obstacles the exitance changes smoothly and the mesh stays as it is.
-      const Room& room = scene.rooms[r];
-      if (!room_visibility[r] || budgets.clustered[r] ||
-          (outline_is_convex(room) && room.obstacles.empty()))
-        continue;
+      if (budgets.clustered[r] || !needs_split(r)) continue;
       const size_t begin = mesh.room_begin[r], end = mesh.room_begin[r + 1];
       const size_t budget = std::max(options.max_patches_per_room, end - begin);
       const std::vector<char> room_split =
@@ -468,11 +503,11 @@ std::unique_ptr<IndirectSolution> solve_rooms(const Scene& scene,
       IndirectOptions again = options;
       again.split_patches = false;
       again.mesh = std::make_shared<const PatchMesh>(split_patches(scene, mesh, split));
-      std::unique_ptr<IndirectSolution> finer = solve_rooms(scene, again);
+      std::unique_ptr<IndirectSolution> finer = solve_rooms(scene, again, false);
       IndirectResult& fr = finer->result;
       // The notes of meshing the rooms (the budget) are the first solve's.
       fr.notes.insert(fr.notes.begin(), res.notes.begin(), res.notes.begin() + mesh_notes);
-      fr.split_patches = cut;
+      fr.split_patches += cut;
       fr.seconds += res.seconds;
       finer->options.mesh.reset();
       finer->options.split_patches = options.split_patches;

@@ -51,8 +51,8 @@ struct IndirectOptions {
   double tolerance = 0.0;  // 0: the quality's (draft 1e-2, standard 1e-3, high 1e-4, ref 1e-6)
   // Patches a receiver comes close to gathered cell by cell (subcells.h); draft does not.
   bool refine_near_patches = true;
-  // In rooms where something blocks light (a reflex corner, obstacles), solved densely, at every
-  // quality but `draft`: the patches whose exitance jumps against a neighbour's cut into quarters
+  // In rooms where something blocks light (a reflex corner, obstacles), at every quality but
+  // `draft`: the patches whose exitance jumps against a neighbour's cut into quarters
   // and the room solved again (split_mask.h).
   bool split_patches = true;
   // A mesh to solve on instead of meshing the rooms (the second solve of split_patches).

@@ -28,6 +28,11 @@ inline constexpr size_t kMaxTotalPatches = 100000;
 // instead of a coarser dense mesh. Below it the dense path holds the room at most
 // sqrt(10 000 / 4 000) = 1.6 times coarser than asked, and its results stay exactly as they were.
 inline constexpr size_t kClusteredAbovePatches = kMaxPatchesPerRoom;
+// Rooms where something blocks light (a reflex corner, obstacles) whose mesh at the requested
+// patch size has more patches than this are solved with the clustered transfer with visibility
+// per link (clustered.h): in the dense matrix each of the n^2 pairs may trace rays, about 8 times
+// the work of an unobstructed pair (calc/pipeline.cpp), 1e7 at 1 100 patches.
+inline constexpr size_t kClusteredVisibleAbovePatches = 1100;
 // Patches per clustered room at most: 174 400 patches mesh a 200 x 100 x 6 m hall at 0.5 m; a
 // patch with its polygon, tree node and gather entry takes about 0.7 kB, and its links about
 // 170 / opening^2 bytes at most (clustered.h: shared per block of patches, only the near ones

@@ -22,9 +22,6 @@ using geometry::box_max_height;
 using geometry::box_min_height;
 
 namespace {
-// Shooting points sit this far in front of their patch, so that visibility tests from a wall
-// patch do not start on the wall.
-constexpr double kShootLift_m = 1e-6;
 // The geometric tail is added once the bounce ratio has changed by less than this (relative)
 // over the last sweep; below it the tail's shape error is negligible against the tolerances.
 constexpr double kRatioStability = 1e-4;

@@ -56,4 +56,25 @@ std::vector<char> patches_to_split(const PatchMesh& mesh, size_t begin, size_t e
   return split;
 }
 
+std::vector<double> ambient_exitance(const PatchMesh& mesh, size_t begin, size_t end,
+                                     const std::vector<double>& incident_flux_lm) {
+  std::vector<double> exitant(mesh.patches.size(), 0.0);
+  double area_m2 = 0.0, rho_area = 0.0, reflected_lm = 0.0;
+  for (size_t i = begin; i < end; ++i) {
+    const Patch& p = mesh.patches[i];
+    area_m2 += p.area_m2;
+    rho_area += p.reflectance * p.area_m2;
+    reflected_lm += p.reflectance * incident_flux_lm[i];
+  }
+  if (!(area_m2 > 0.0)) return exitant;
+  const double rho_mean = rho_area / area_m2;
+  // Reflectance 1 everywhere absorbs nothing: no finite ambient term, the first bounce alone.
+  const double ambient_lx = rho_mean < 1.0 ? reflected_lm / (area_m2 * (1.0 - rho_mean)) : 0.0;
+  for (size_t i = begin; i < end; ++i) {
+    const Patch& p = mesh.patches[i];
+    exitant[i] = p.reflectance * (incident_flux_lm[i] + p.area_m2 * ambient_lx);
+  }
+  return exitant;
+}
+
 }  // namespace luxgrid::calc::indirect

@@ -30,4 +30,14 @@ std::vector<char> patches_to_split(const PatchMesh& mesh, size_t begin, size_t e
                                    const std::vector<double>& exitant_flux_lm, double jump,
                                    size_t max_added);
 
+// The exitant flux of the patches [begin, end) of one room before it is solved (the entries of
+// other rooms 0), for patches_to_split: each patch's reflectance times its first-bounce flux
+// plus its area times the mean reflected irradiance of a closed room of the area-weighted mean
+// reflectance rho_m, sum_j rho_j Phi_j / (A (1 - rho_m)) (the ambient term of progressive
+// refinement, [CohenWallace1993]). The reflected light spread evenly damps the first bounce's jumps
+// about as a solve does where the reflected light changes slowly, which is where rooms with the
+// clustered transfer choose their split without solving the unsplit mesh first (indirect.cpp).
+std::vector<double> ambient_exitance(const PatchMesh& mesh, size_t begin, size_t end,
+                                     const std::vector<double>& incident_flux_lm);
+
 }  // namespace luxgrid::calc::indirect

@@ -189,8 +189,9 @@ TEST(Clustered, UniformClosedBoxConvergesToRhoE0OverOneMinusRho) {
 }
 
 // Which rooms take the clustered transfer: a convex room without obstacles whose mesh at the
-// requested size is beyond the dense matrix's limit keeps the requested size; the same room
-// with an obstacle (light blocked: dense, with visibility) is coarsened to the dense budget.
+// requested size is beyond the dense matrix's limit keeps the requested size; the same room with
+// an obstacle, or L-shaped, takes it too (with visibility per link) from far fewer patches, and a
+// small one of them does not (tests/indirect/clustered_visibility_test.cpp).
 TEST(Clustered, ALargeUnobstructedRoomKeepsItsPatchSize) {
   Scene s = scene_of(box_room(60, 40, 4, 0.2, 0.5, 0.7), {30, 20, 3.5}, 1e5);
   ASSERT_TRUE(use_clustered_transfer(s.rooms[0], 0.5));  // 5 600 m^2: 22 400 patches at 0.5 m
@@ -211,11 +212,13 @@ TEST(Clustered, ALargeUnobstructedRoomKeepsItsPatchSize) {
   table.z0 = 0.7, table.z1 = 0.75;
   table.reflectance = 0.5;
   s.rooms[0].obstacles = {table};
-  EXPECT_FALSE(use_clustered_transfer(s.rooms[0], 0.5));
+  EXPECT_TRUE(use_clustered_transfer(s.rooms[0], 0.5));
+  EXPECT_FALSE(use_clustered_transfer(s.rooms[0], 4.0));  // 350 patches
   Room l = s.rooms[0];
   l.obstacles.clear();
   l.outline = {{0, 0}, {60, 0}, {60, 20}, {30, 20}, {30, 40}, {0, 40}};
-  EXPECT_FALSE(use_clustered_transfer(l, 0.5));  // not convex: walls hide each other
+  EXPECT_TRUE(use_clustered_transfer(l, 0.5));  // not convex: walls hide each other
+  EXPECT_FALSE(use_clustered_transfer(l, 4.0));
 }
 
 // Where the clustered transfer is weakest: a low room lit only downwards, so the ceiling's light

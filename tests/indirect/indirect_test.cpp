@@ -763,8 +763,8 @@ TEST(Decision, SkipsWhenNotNeeded) {
   EXPECT_TRUE(decide_indirect(s).run);
 }
 
-// A cabinet, so that light is blocked inside the room and the dense budget applies (a convex room
-// without obstacles this large takes the clustered transfer and its own budget: below).
+// A cabinet: light is blocked inside the room, which takes the clustered transfer with visibility
+// per link above 1 100 patches (kClusteredVisibleAbovePatches) and its budget.
 geometry::Obstacle cabinet() {
   geometry::Obstacle o;
   o.name = "cabinet";
@@ -774,11 +774,12 @@ geometry::Obstacle cabinet() {
   return o;
 }
 
+// The dense budget: a convex room without obstacles of 4 000 to 10 000 patches keeps the dense
+// path (30 x 20 x 3 m: 1 500 m^2 of faces, 6 000 patches at standard's 0.5 m, 9 375 at 0.4 m).
 TEST(Decision, PatchBudgetIsEnforced) {
-  Scene s = scene_of(box_room(40, 20, 3, 0.2, 0.5, 0.7), {isotropic_at({20, 10, 2}, 1e5)});
-  s.rooms[0].obstacles = {cabinet()};
+  Scene s = scene_of(box_room(30, 20, 3, 0.2, 0.5, 0.7), {isotropic_at({15, 10, 2}, 1e5)});
   IndirectOptions o;
-  o.patch_size_m = 0.1;
+  o.patch_size_m = 0.4;
   try {
     compute_indirect(s, {}, o);
     FAIL();
@@ -789,8 +790,10 @@ TEST(Decision, PatchBudgetIsEnforced) {
   o.patch_size_m = 0.0;  // automatic: coarsened to fit
   const IndirectResult r = compute_indirect(s, {}, o);
   EXPECT_LE(r.patches, 4000u);
+  EXPECT_GT(r.patch_size_m, 0.5);
+  EXPECT_EQ(r.clustered_rooms, 0u);
   EXPECT_FALSE(r.notes.empty());
-  std::printf("[ budget ] 40 x 20 x 3 m: %zu patches of %.3g m (%.2f s)\n", r.patches,
+  std::printf("[ budget ] 30 x 20 x 3 m: %zu patches of %.3g m (%.2f s)\n", r.patches,
               r.patch_size_m, r.seconds);
 }
 
@@ -997,10 +1000,14 @@ TEST(BadInput, LeakingRoomAndBadObstacleAndBudgetNameTheObject) {
   EXPECT_EQ(message(s, o),
             "room 'box': 784000 patches at a patch size of 0.05 m exceed the budget of 250000 "
             "patches per room");
-  s.rooms[0].obstacles = {cabinet()};
-  o.patch_size_m = 0.1;
+  s.rooms[0].obstacles = {cabinet()};  // light blocked: the clustered budget all the same
   EXPECT_EQ(message(s, o),
-            "room 'box': 196000 patches at a patch size of 0.1 m exceed the budget of 4000 "
+            "room 'box': 784000 patches at a patch size of 0.05 m exceed the budget of 250000 "
+            "patches per room");
+  s = scene_of(box_room(30, 20, 3, 0.2, 0.5, 0.7), {isotropic_at({15, 10, 2}, 1e5)});
+  o.patch_size_m = 0.4;  // convex, no obstacles, 4 000 to 10 000 patches: the dense budget
+  EXPECT_EQ(message(s, o),
+            "room 'box': 9375 patches at a patch size of 0.4 m exceed the budget of 4000 "
             "patches per room");
 }
 
