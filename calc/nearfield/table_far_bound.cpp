@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include "calc/nearfield/emitter.h"
 #include "photometry/tabular_distribution.h"
 #include "util/ordered_tasks.h"
@@ -123,16 +125,22 @@ class CellTable {
     return m;
   }
 
-  // Whether over_cap(c, gamma, sin_gamma, radius, cols, ex) may charge a slope jump of the line
+  // The C half-width of a cap of `radius` around gamma (`sin_gamma` = sin gamma) where it holds
+  // no pole: asin(sin r / sin gamma); pi where it holds one.
+  static double cap_half_c(double gamma, double sin_gamma, double radius) {
+    const bool pole = gamma - radius <= 0.0 || gamma + radius >= kPi;
+    return pole ? kPi : std::asin(std::min(1.0, std::sin(radius) / sin_gamma));
+  }
+
+  // Whether over_cap(c, gamma, radius, half_c, cols, ex) may charge a slope jump of the line
   // `ex`: a row line within the cap's range of gamma, or a C plane the cap reaches. Where it does
   // not, over_cap gives the same with `ex` left out as with it.
-  bool cap_reaches_line(double c, double gamma, double sin_gamma, double radius,
-                        Excluded ex) const {
+  bool cap_reaches_line(double c, double gamma, double radius, double half_c, Excluded ex) const {
     if (ex.row >= 0) {
       const double g = t_.grid().gamma_rad[ex.row];
       if (g >= gamma - radius && g <= gamma + radius) return true;
     }
-    return ex.plane >= 0 && cap_reaches_plane(c, cap_half_c(gamma, sin_gamma, radius), ex.plane);
+    return ex.plane >= 0 && cap_reaches_plane(c, half_c, ex.plane);
   }
 
   // A C cell a cap reaches, and whether the cap reaches (and the bound charges) the slope jumps
@@ -146,13 +154,12 @@ class CellTable {
   using Cols = std::vector<Col>;
 
   // Over every table cell a cap of `radius` around the grid-frame direction (c, gamma) reaches
-  // (`sin_gamma` = sin gamma); a row line's or C plane's slope jump only where the cap reaches
-  // the line, and never of the line `ex`.
-  Stats over_cap(double c, double gamma, double sin_gamma, double radius, Cols& cols,
+  // (its C half-width `half_c`, cap_half_c's); a row line's or C plane's slope jump only where the
+  // cap reaches the line, and never of the line `ex`.
+  Stats over_cap(double c, double gamma, double radius, double half_c, Cols& cols,
                  Excluded ex = {}) const {
     const auto& G = t_.grid().gamma_rad;
     const double lo = gamma - radius, hi = gamma + radius;
-    const double half_c = cap_half_c(gamma, sin_gamma, radius);
     auto reaches_plane = [&](std::size_t i) { return cap_reaches_plane(c, half_c, i); };
     cols.clear();
     auto add_col = [&](std::size_t i) {
@@ -211,12 +218,6 @@ class CellTable {
   }
 
  private:
-  // The C half-width of a cap of `radius` around gamma where it holds no pole: asin(sin r /
-  // sin gamma); pi where it holds one.
-  static double cap_half_c(double gamma, double sin_gamma, double radius) {
-    const bool pole = gamma - radius <= 0.0 || gamma + radius >= kPi;
-    return pole ? kPi : std::asin(std::min(1.0, std::sin(radius) / sin_gamma));
-  }
   // Whether a cap around C = c of C half-width half_c reaches C plane i (its meridian): within
   // half_c of c around the circle.
   bool cap_reaches_plane(double c, double half_c, std::size_t i) const {
@@ -343,9 +344,17 @@ struct OpeningSize {
   bool flat;  // in the plane through its centroid normal to the luminaire's axis
 };
 
+// The C span (rad) of the footprint of half-angle delta of a direction whose footprint reaches
+// `pole_distance` (rad) from a pole: 2 asin(sin delta / sin pole_distance); pi when it reaches the
+// pole.
+double footprint_c_span(double delta, double pole_distance) {
+  if (!(pole_distance > delta)) return kPi;
+  return 2.0 * std::asin(std::min(1.0, std::sin(delta) / std::sin(pole_distance)));
+}
+
 // The table's part of the error over `region`, relative to `den` (cd), at distance d (x D) with
-// the footprint's half-angle delta = asin(rho / d); `pole_distance` (rad): how near a pole the
-// footprint of a direction of the part can reach.
+// the footprint's half-angle delta = asin(rho / d); `c_span` (rad): footprint_c_span's, how much
+// of C the footprint of a direction of the part spans.
 // The remainder R(x) = I(w_x) - I(w_c) - L . (w_x - w_c): along the great-circle arc from w_c to
 // w_x its slope changes by the slope jumps of the lines the arc crosses (each line once: crossing
 // back returns to the same cell; row lines at most delta / dgamma + 1, C planes the arc's C span
@@ -357,13 +366,10 @@ struct OpeningSize {
 // (H + G delta) s1^2 / 2. The weight g of each point (receivers at most 75 degrees from facing)
 // is within 1 + 25 delta of its mean.
 double table_part(const Stats& region, const OpeningSize& o, double d_over_D, double delta,
-                  double pole_distance, double cos_gamma, std::size_t planes, double den) {
+                  double c_span, double cos_gamma, std::size_t planes, double den) {
   if (!region.any) return region.jump / den;  // beyond the table: 0, up to the edge's jump
   const double s1 = o.rms / std::max(d_over_D - o.rho, 1e-9);
   const double rows = std::floor(delta / region.dg_min) + 1.0;
-  double c_span = kPi;
-  if (pole_distance > delta)
-    c_span = 2.0 * std::asin(std::min(1.0, std::sin(delta) / std::sin(pole_distance)));
   const double cs =
       planes > 1 ? std::min(static_cast<double>(planes), std::floor(c_span / region.dc_min) + 1.0)
                  : 0.0;
@@ -430,7 +436,8 @@ Subcell subcell_of(const CellTable& cells, const glm::dmat3& to_grid, bool frame
   // part's rectangle of angles; else over every table cell its cap reaches.
   double i_min = 0.0;
   if (framed) {
-    const Stats here = cells.over_cap(p.a.c, p.a.gamma, p.sin_gamma, p.rc, cols);
+    const Stats here = cells.over_cap(p.a.c, p.a.gamma, p.rc,
+                                      CellTable::cap_half_c(p.a.gamma, p.sin_gamma, p.rc), cols);
     i_min = std::isfinite(here.i_min) ? here.i_min : 0.0;
   } else {
     i_min = cells.min_over_rect(c0 * kMapCStepRad, (c0 + step) * kMapCStepRad,
@@ -440,41 +447,55 @@ Subcell subcell_of(const CellTable& cells, const glm::dmat3& to_grid, bool frame
   return p;
 }
 
-// What the search of a subcell with no line left out found at each rung: -1 not tried, 0 fails,
-// 1 passes.
-using RungMemo = std::array<signed char, kTableLadderRungs>;
+// One rung of one subcell's search, what no table line left out changes: the cap's radius and C
+// half-width, the footprint's C span and foreshortening; and whether the search with every line
+// passed there. Kept per thread for the map cell `cell` (worked out once, read by the searches
+// with a line left out).
+struct RungCap {
+  int cell = -1;
+  double radius = 0.0, half_c = 0.0, c_span = 0.0, cos_gamma = 1.0;
+  signed char pass = -1;  // with every line: -1 not tried, 0 fails, 1 passes
+};
 
-// What subcell `p` needs (x D): the first rung of the ladder from which table_part is within `b`
-// for every direction in it, with the table line `ex` left out. `memo`: filled by the search
-// with no line left out (which must come first), read by those with one.
+// What subcell `p` of map cell `cell` needs (x D): the first rung of the ladder from which
+// table_part is within `b` for every direction in it, with the table line `ex` left out.
+// `rungs`: the subcell's, one per rung; the search with no line left out must come first.
 float subcell_need(const CellTable& cells, bool framed, const Subcell& p, const Ladder& ladder,
-                   const OpeningSize& o, double b, Excluded ex, RungMemo& memo,
+                   const OpeningSize& o, double b, Excluded ex, int cell, RungCap* rungs,
                    CellTable::Cols& cols) {
   const photometry::PhotometricAngles& a = p.a;
   const bool excluding = ex.row >= 0 || ex.plane >= 0;
   auto passes = [&](int k) {
     const double d_over_D = ladder.d_over_D[k];
     const double delta = ladder.delta[k];
-    const double radius = p.rc + delta;
-    if (excluding && memo[k] >= 0) {
+    RungCap& r = rungs[k];
+    if (r.cell != cell) {
+      r.cell = cell;
+      r.pass = -1;
+      r.radius = p.rc + delta;
+      r.half_c = CellTable::cap_half_c(a.gamma, p.sin_gamma, r.radius);
+      const double pole_distance = std::min(a.gamma - r.radius, kPi - a.gamma - r.radius) + delta;
+      r.c_span = footprint_c_span(delta, pole_distance);
+      // The largest |cos gamma| over the region (at an end of its gamma range), where the table's
+      // gamma is the angle from the flat opening's normal and the region keeps away from the
+      // poles.
+      r.cos_gamma = 1.0;
+      if (!framed && o.flat && pole_distance - delta >= kForeshortenedPoleDistance)
+        r.cos_gamma = std::max(std::abs(std::cos(a.gamma - r.radius)),
+                               std::abs(std::cos(a.gamma + r.radius)));
+    }
+    if (excluding && r.pass >= 0) {
       // Leaving a line out only lowers the slope jumps charged, and table_part rises with them
       // step by step (sums and products of non-negative numbers, a minimum): a rung that passes
       // with the line passes without it. Where the cap does not reach the line, leaving it out
       // changes nothing. The same answers as over_cap's, without it.
-      if (memo[k] == 1) return true;
-      if (!cells.cap_reaches_line(a.c, a.gamma, p.sin_gamma, radius, ex)) return false;
+      if (r.pass == 1) return true;
+      if (!cells.cap_reaches_line(a.c, a.gamma, r.radius, r.half_c, ex)) return false;
     }
-    const Stats region = cells.over_cap(a.c, a.gamma, p.sin_gamma, radius, cols, ex);
-    const double pole_distance = std::min(a.gamma - radius, kPi - a.gamma - radius) + delta;
-    // The largest |cos gamma| over the region (at an end of its gamma range), where the table's
-    // gamma is the angle from the flat opening's normal and the region keeps away from the poles.
-    double cos_gamma = 1.0;
-    if (!framed && o.flat && pole_distance - delta >= kForeshortenedPoleDistance)
-      cos_gamma =
-          std::max(std::abs(std::cos(a.gamma - radius)), std::abs(std::cos(a.gamma + radius)));
-    const bool pass = table_part(region, o, d_over_D, delta, pole_distance, cos_gamma,
-                                 cells.planes(), p.den) <= b;
-    if (!excluding) memo[k] = pass ? 1 : 0;
+    const Stats region = cells.over_cap(a.c, a.gamma, r.radius, r.half_c, cols, ex);
+    const bool pass =
+        table_part(region, o, d_over_D, delta, r.c_span, r.cos_gamma, cells.planes(), p.den) <= b;
+    if (!excluding) r.pass = pass ? 1 : 0;
     return pass;
   };
   if (!passes(kTableLadderRungs - 1)) return kNearEverywhere;
@@ -559,10 +580,16 @@ std::vector<float> table_far_bound_over_D(const Emitter& e, double budget,
         todo.push_back(g * kCSamples + c);
   // The cells in parallel: each reads only the table and writes only its own corners, so the
   // map is the same whatever the order (tests/nearfield/table_far_bound_parallel_test.cpp).
+  // Each thread's scratch: the C cells of a cap, and the rungs of the cell it works on.
+  struct Scratch {
+    CellTable::Cols cols;
+    std::vector<RungCap> rungs = std::vector<RungCap>(kSubcells * kSubcells * kTableLadderRungs);
+  };
+  tbb::enumerable_thread_specific<Scratch> scratches;
   run_in_list_order(todo.size(), [&](std::size_t n) {
     const int g = todo[n] / kCSamples, c = todo[n] % kCSamples;
-    CellTable::Cols cols;
-    cols.reserve(cells.planes());
+    Scratch& scratch = scratches.local();
+    CellTable::Cols& cols = scratch.cols;
     // The cell in kSubcells x kSubcells parts, each with its own dimmest value and its own
     // neighbourhood of the table: the cell's need is the largest of theirs.
     std::array<Subcell, kSubcells * kSubcells> parts;
@@ -571,13 +598,11 @@ std::vector<float> table_far_bound_over_D(const Emitter& e, double budget,
         parts[sg * kSubcells + sc] =
             subcell_of(cells, to_grid, framed, g + static_cast<double>(sg) / kSubcells,
                        c + static_cast<double>(sc) / kSubcells, floor_cd, cols);
-    std::array<RungMemo, kSubcells * kSubcells> memos;
-    for (RungMemo& m : memos) m.fill(-1);
     auto cell_need = [&](Excluded ex) {
       float need = 0.0f;
       for (std::size_t q = 0; q < parts.size(); ++q)
-        need =
-            std::max(need, subcell_need(cells, framed, parts[q], ladder, o, b, ex, memos[q], cols));
+        need = std::max(need, subcell_need(cells, framed, parts[q], ladder, o, b, ex, todo[n],
+                                           scratch.rungs.data() + q * kTableLadderRungs, cols));
       return need;
     };
     const double all = inverse(cell_need({}));
