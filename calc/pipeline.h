@@ -1,5 +1,7 @@
 #pragma once
 // The whole calculation of a loaded scene: plan, direct, indirect, statistics, timings.
+#include <memory>
+
 #include "calc/direct.h"
 #include "calc/indirect/indirect.h"
 #include "calc/plan_estimates.h"
@@ -16,9 +18,10 @@ Results run_scene(const Scene& scene, const Progress& progress = {});
 // surface's E_indirect, with the plan's indirect run, notes and warnings. results.surfaces must
 // hold the grids and E_direct. Returns what estimate_errors needs. The normal and emergency
 // scenes call it with the luminaires' first bounce, the daylight scene with the light entering
-// through the openings (IndirectOptions::incident_flux_lm).
-IndirectEstimateInputs run_reflected_light(const Scene& scene,
-                                           const indirect::IndirectOptions& options,
-                                           Results& results);
+// through the openings (IndirectOptions::incident_flux_lm). `solution`: solve_indirect(scene,
+// options) when the caller has solved it already (null: solved here).
+IndirectEstimateInputs run_reflected_light(
+    const Scene& scene, const indirect::IndirectOptions& options, Results& results,
+    std::unique_ptr<const indirect::IndirectSolution> solution = nullptr);
 
 }  // namespace luxgrid::calc
