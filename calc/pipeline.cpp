@@ -245,15 +245,35 @@ indirect::IndirectOptions luminaire_reflected_light(const Scene& scene, const Sc
     options.intensity_lookup.emplace(distribution, lookup.lookup);
   return options;
 }
+
+// The estimate's mesh of twice the run's patch size: each room by the same method as the run it
+// estimates.
+indirect::IndirectOptions coarse_options(const indirect::IndirectOptions& options,
+                                         const indirect::IndirectSolution& run) {
+  indirect::IndirectOptions coarse = options;
+  coarse.patch_size_m = 2.0 * run.result.patch_size_m;
+  coarse.clustered = run.result.clustered;
+  return coarse;
+}
 }  // namespace
 
-IndirectEstimateInputs run_reflected_light(
-    const Scene& scene, const indirect::IndirectOptions& options, Results& results,
-    std::unique_ptr<const indirect::IndirectSolution> solution) {
+ReflectedSolutions solve_reflected_light(const Scene& scene,
+                                         const indirect::IndirectOptions& options) {
+  ReflectedSolutions solved;
+  solved.run = indirect::solve_indirect(scene, options);
+  if (scene.settings.quality != Quality::draft)
+    solved.coarse = indirect::solve_indirect(scene, coarse_options(options, *solved.run));
+  return solved;
+}
+
+IndirectEstimateInputs run_reflected_light(const Scene& scene,
+                                           const indirect::IndirectOptions& options,
+                                           Results& results, ReflectedSolutions solved) {
   IndirectEstimateInputs est;
   // Solved once per mesh; gathered at every point only for the mesh that gives the results (the
   // estimate's meshes are gathered at its probe points).
-  if (!solution) solution = indirect::solve_indirect(scene, options);
+  if (!solved.run) solved = solve_reflected_light(scene, options);
+  std::unique_ptr<const indirect::IndirectSolution> solution = std::move(solved.run);
   std::optional<indirect::IndirectResult> gathered;  // at every point, where already done
   est.ran = true;
   if (scene.settings.quality != Quality::draft) {
@@ -265,11 +285,10 @@ IndirectEstimateInputs run_reflected_light(
       add_shadow_probes(grid, results.surfaces[s].E_direct, est.probe_index.back());
       probes.push_back(probe_grid(grid, est.probe_index.back()));
     }
-    indirect::IndirectOptions coarse = options;
-    coarse.patch_size_m = 2.0 * solution->result.patch_size_m;
-    // Each room by the same method as the run it estimates.
-    coarse.clustered = solution->result.clustered;
-    const indirect::IndirectResult c = indirect::compute_indirect(scene, probes, coarse);
+    indirect::IndirectOptions coarse = coarse_options(options, *solution);
+    if (!solved.coarse) solved.coarse = indirect::solve_indirect(scene, coarse);
+    const indirect::IndirectResult c = indirect::gather_indirect(*solved.coarse, scene, probes);
+    solved.coarse.reset();
     est.coarse_patch_size_m = c.patch_size_m;
     est.coarse_lx = c.E_indirect_per_surface;
     refine_patch_size(scene, results, options, solution, probes, est, gathered);
@@ -362,20 +381,21 @@ Results run_scene(const Scene& scene, const Progress& progress) {
   results.plan.intensity_lookups = lookups.plan;
   results.timing_s.emplace_back("intensity_lookup", seconds_since(t_lookup));
 
-  // The reflected light's solution reads nothing of the direct light (only its estimate does, at
-  // the shadow probes): it is solved beside the direct light, each filling the threads the other
-  // leaves idle. The same bits either way: no part's result depends on the schedule.
+  // The reflected light's solutions read nothing of the direct light (only the estimate's gather
+  // does, at the shadow probes): they are solved beside the direct light, each filling the
+  // threads the other leaves idle. The same bits either way: no part's result depends on the
+  // schedule.
   std::optional<indirect::IndirectOptions> reflected;
   if (results.plan.indirect_decision.run)
     reflected = luminaire_reflected_light(scene, lookups, results.plan);
-  std::unique_ptr<const indirect::IndirectSolution> solution;
+  ReflectedSolutions solved;
   double solve_s = 0.0;
   auto solved_at = std::chrono::steady_clock::now();
   tbb::task_group beside;
   if (reflected)
     beside.run([&] {
       const auto t_solve = std::chrono::steady_clock::now();
-      solution = indirect::solve_indirect(scene, *reflected);
+      solved = solve_reflected_light(scene, *reflected);
       solved_at = std::chrono::steady_clock::now();
       solve_s = std::chrono::duration<double>(solved_at - t_solve).count();
     });
@@ -399,7 +419,7 @@ Results run_scene(const Scene& scene, const Progress& progress) {
   const auto t_rest = std::max(std::chrono::steady_clock::now(), solved_at);
   IndirectEstimateInputs indirect_estimate;
   if (reflected)
-    indirect_estimate = run_reflected_light(scene, *reflected, results, std::move(solution));
+    indirect_estimate = run_reflected_light(scene, *reflected, results, std::move(solved));
   if (scene.settings.scene == LightingScene::emergency) {
     // Not the project's "indirect" setting: the emergency scene switches reflections off [EN1838].
     results.plan.emergency_direct_only = true;
