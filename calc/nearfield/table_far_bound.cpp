@@ -74,10 +74,35 @@ struct Excluded {
 // A pole row: sin gamma below this.
 constexpr double kPoleSin = 1e-9;
 
-// The first i in [0, n) where `holds` fails, for a predicate that holds on a prefix (n if none).
+// The first i in [0, n) where `holds` fails, for a predicate that holds on a prefix (n if none):
+// from `near` outward in steps that double, then by bisection (the answer is one, wherever the
+// search starts; a start near it takes a few steps).
 template <class Predicate>
-std::size_t first_failing(std::size_t n, Predicate holds) {
-  std::size_t lo = 0, hi = n;
+std::size_t first_failing(std::size_t n, std::size_t near, Predicate holds) {
+  std::size_t lo = 0, hi = n;  // the answer lies in [lo, hi]; holds at lo - 1, fails at hi < n
+  if (near < n) {
+    if (holds(near)) {
+      lo = near + 1;
+      for (std::size_t step = 1; lo < n; step *= 2) {
+        const std::size_t probe = std::min(n - 1, lo + step - 1);
+        if (!holds(probe)) {
+          hi = probe;
+          break;
+        }
+        lo = probe + 1;
+      }
+    } else {
+      hi = near;
+      for (std::size_t step = 1; hi > 0; step *= 2) {
+        const std::size_t probe = hi > step ? hi - step : 0;
+        if (holds(probe)) {
+          lo = probe + 1;
+          break;
+        }
+        hi = probe;
+      }
+    }
+  }
   while (lo < hi) {
     const std::size_t mid = lo + (hi - lo) / 2;
     if (holds(mid))
@@ -150,8 +175,13 @@ class CellTable {
     bool plane_lo, plane_hi;
   };
   // The C cells of one cap: the caller's, one per thread, so that map cells can be bounded in
-  // parallel.
-  using Cols = std::vector<Col>;
+  // parallel. With where the searches for the last cap ended, to start the next one's from
+  // (a thread's caps follow each other around one direction).
+  struct Cols {
+    std::vector<Col> list;
+    std::array<std::size_t, 3> begin_near{}, end_near{};  // per shift of a turn
+    std::size_t row_near = 0;
+  };
 
   // Over every table cell a cap of `radius` around the grid-frame direction (c, gamma) reaches
   // (its C half-width `half_c`, cap_half_c's); a row line's or C plane's slope jump only where the
@@ -161,11 +191,11 @@ class CellTable {
     const auto& G = t_.grid().gamma_rad;
     const double lo = gamma - radius, hi = gamma + radius;
     auto reaches_plane = [&](std::size_t i) { return cap_reaches_plane(c, half_c, i); };
-    cols.clear();
+    cols.list.clear();
     auto add_col = [&](std::size_t i) {
       const std::size_t i1 = i + 1 == nc_ ? 0 : i + 1;
-      cols.push_back({i, static_cast<long>(i) != ex.plane && reaches_plane(i),
-                      static_cast<long>(i1) != ex.plane && reaches_plane(i1)});
+      cols.list.push_back({i, static_cast<long>(i) != ex.plane && reaches_plane(i),
+                           static_cast<long>(i1) != ex.plane && reaches_plane(i1)});
     };
     if (nc_ == 1 || half_c >= kPi) {
       for (std::size_t i = 0; i < nc_; ++i) add_col(i);
@@ -174,13 +204,14 @@ class CellTable {
       // shifted by a turn either way: for each shift a run of i (c_at ascends), found by
       // bisection; the runs in ascending order, each cell once.
       std::array<std::pair<std::size_t, std::size_t>, 3> runs;
-      int n = 0;
-      for (double shift : {-kTwoPi, 0.0, kTwoPi}) {
-        const std::size_t end =
-            first_failing(nc_, [&](std::size_t i) { return c_at(i) + shift <= c + half_c; });
-        const std::size_t begin =
-            first_failing(nc_, [&](std::size_t i) { return !(c_at(i + 1) + shift >= c - half_c); });
-        runs[n++] = {begin, end};
+      for (int n = 0; n < 3; ++n) {
+        const double shift = (n - 1) * kTwoPi;
+        const std::size_t end = cols.end_near[n] = first_failing(
+            nc_, cols.end_near[n], [&](std::size_t i) { return c_at(i) + shift <= c + half_c; });
+        const std::size_t begin = cols.begin_near[n] =
+            first_failing(nc_, cols.begin_near[n],
+                          [&](std::size_t i) { return !(c_at(i + 1) + shift >= c - half_c); });
+        runs[n] = {begin, end};
       }
       std::sort(runs.begin(), runs.end());
       std::size_t next = 0;
@@ -192,11 +223,12 @@ class CellTable {
     Stats s;
     // The rows the cap meets: from the first whose upper line reaches lo (gamma ascends) to the
     // last whose lower line is within hi.
-    for (std::size_t j = first_failing(ng_ - 1, [&](std::size_t k) { return G[k + 1] < lo; });
-         j + 1 < ng_ && !(G[j] > hi); ++j) {
+    cols.row_near =
+        first_failing(ng_ - 1, cols.row_near, [&](std::size_t k) { return G[k + 1] < lo; });
+    for (std::size_t j = cols.row_near; j + 1 < ng_ && !(G[j] > hi); ++j) {
       const bool row_lo = G[j] >= lo && static_cast<long>(j) != ex.row;
       const bool row_hi = G[j + 1] <= hi && static_cast<long>(j + 1) != ex.row;
-      for (const Col& col : cols) {
+      for (const Col& col : cols.list) {
         const CellStats& cs = cells_[col.i * (ng_ - 1) + j];
         s.add(cs.inside);
         if (row_lo) s.kink_row = std::max(s.kink_row, cs.kink_row_lo);
@@ -210,7 +242,7 @@ class CellTable {
     auto edge = [&](std::size_t row) {
       s.i_min = 0.0;
       s.kink_row = std::max(s.kink_row, s.grad_max);
-      for (const Col& col : cols) s.jump = std::max(s.jump, t_.grid().at(col.i, row));
+      for (const Col& col : cols.list) s.jump = std::max(s.jump, t_.grid().at(col.i, row));
     };
     if (lo < G.front() && G.front() > 1e-9) edge(0);
     if (hi > G.back() && G.back() < kPi - 1e-9) edge(ng_ - 1);
@@ -222,7 +254,7 @@ class CellTable {
   // half_c of c around the circle.
   bool cap_reaches_plane(double c, double half_c, std::size_t i) const {
     if (half_c >= kPi) return true;
-    for (double shift : {-kTwoPi, 0.0, kTwoPi})
+    for (double shift : {0.0, -kTwoPi, kTwoPi})  // the nearest first
       if (std::abs(c_at(i) + shift - c) <= half_c) return true;
     return false;
   }
