@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 
+#include <tbb/task_group.h>
+
 #include "calc/daylight_run.h"
 #include "calc/direct_reach.h"
 #include "calc/glare/ugr.h"
@@ -233,29 +235,45 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
   }
 }
 
-// Reflected light, when the plan's decision says the scene needs it (run_reflected_light with
-// the luminaires' first bounce).
-IndirectEstimateInputs run_indirect(const Scene& scene, const SceneLookups& lookups,
-                                    Results& results) {
-  const indirect::IndirectDecision& decision = results.plan.indirect_decision;
-  if (!decision.run) return {};
+// The reflected light of the luminaires' first bounce, as the plan decided it.
+indirect::IndirectOptions luminaire_reflected_light(const Scene& scene, const SceneLookups& lookups,
+                                                    const Plan& plan) {
   indirect::IndirectOptions options = indirect::indirect_options(scene.settings);
-  options.luminous_flux_lm = decision.luminous_flux_lm;
-  options.visibility = results.plan.visibility_test;
+  options.luminous_flux_lm = plan.indirect_decision.luminous_flux_lm;
+  options.visibility = plan.visibility_test;
   for (const auto& [distribution, lookup] : lookups.by_distribution)
     options.intensity_lookup.emplace(distribution, lookup.lookup);
-  return run_reflected_light(scene, options, results);
+  return options;
+}
+
+// The estimate's mesh of twice the run's patch size: each room by the same method as the run it
+// estimates.
+indirect::IndirectOptions coarse_options(const indirect::IndirectOptions& options,
+                                         const indirect::IndirectSolution& run) {
+  indirect::IndirectOptions coarse = options;
+  coarse.patch_size_m = 2.0 * run.result.patch_size_m;
+  coarse.clustered = run.result.clustered;
+  return coarse;
 }
 }  // namespace
 
+ReflectedSolutions solve_reflected_light(const Scene& scene,
+                                         const indirect::IndirectOptions& options) {
+  ReflectedSolutions solved;
+  solved.run = indirect::solve_indirect(scene, options);
+  if (scene.settings.quality != Quality::draft)
+    solved.coarse = indirect::solve_indirect(scene, coarse_options(options, *solved.run));
+  return solved;
+}
+
 IndirectEstimateInputs run_reflected_light(const Scene& scene,
                                            const indirect::IndirectOptions& options,
-                                           Results& results) {
+                                           Results& results, ReflectedSolutions solved) {
   IndirectEstimateInputs est;
   // Solved once per mesh; gathered at every point only for the mesh that gives the results (the
   // estimate's meshes are gathered at its probe points).
-  std::unique_ptr<const indirect::IndirectSolution> solution =
-      indirect::solve_indirect(scene, options);
+  if (!solved.run) solved = solve_reflected_light(scene, options);
+  std::unique_ptr<const indirect::IndirectSolution> solution = std::move(solved.run);
   std::optional<indirect::IndirectResult> gathered;  // at every point, where already done
   est.ran = true;
   if (scene.settings.quality != Quality::draft) {
@@ -267,11 +285,10 @@ IndirectEstimateInputs run_reflected_light(const Scene& scene,
       add_shadow_probes(grid, results.surfaces[s].E_direct, est.probe_index.back());
       probes.push_back(probe_grid(grid, est.probe_index.back()));
     }
-    indirect::IndirectOptions coarse = options;
-    coarse.patch_size_m = 2.0 * solution->result.patch_size_m;
-    // Each room by the same method as the run it estimates.
-    coarse.clustered = solution->result.clustered;
-    const indirect::IndirectResult c = indirect::compute_indirect(scene, probes, coarse);
+    indirect::IndirectOptions coarse = coarse_options(options, *solution);
+    if (!solved.coarse) solved.coarse = indirect::solve_indirect(scene, coarse);
+    const indirect::IndirectResult c = indirect::gather_indirect(*solved.coarse, scene, probes);
+    solved.coarse.reset();
     est.coarse_patch_size_m = c.patch_size_m;
     est.coarse_lx = c.E_indirect_per_surface;
     refine_patch_size(scene, results, options, solution, probes, est, gathered);
@@ -364,17 +381,50 @@ Results run_scene(const Scene& scene, const Progress& progress) {
   results.plan.intensity_lookups = lookups.plan;
   results.timing_s.emplace_back("intensity_lookup", seconds_since(t_lookup));
 
+  // The reflected light's solutions read nothing of the direct light (only the estimate's gather
+  // does, at the shadow probes): they are solved beside the direct light, each filling the
+  // threads the other leaves idle. The same bits either way: no part's result depends on the
+  // schedule.
+  std::optional<indirect::IndirectOptions> reflected;
+  if (results.plan.indirect_decision.run)
+    reflected = luminaire_reflected_light(scene, lookups, results.plan);
+  ReflectedSolutions solved;
+  double solve_s = 0.0;
+  auto solved_at = std::chrono::steady_clock::now();
+  tbb::task_group beside;
+  if (reflected)
+    beside.run([&] {
+      const auto t_solve = std::chrono::steady_clock::now();
+      solved = solve_reflected_light(scene, *reflected);
+      solved_at = std::chrono::steady_clock::now();
+      solve_s = std::chrono::duration<double>(solved_at - t_solve).count();
+    });
   const auto t_direct = std::chrono::steady_clock::now();
-  DirectEstimateInputs direct_estimate = run_direct(scene, lookups, results, progress);
+  DirectEstimateInputs direct_estimate;
+  try {
+    direct_estimate = run_direct(scene, lookups, results, progress);
+  } catch (...) {
+    // The direct light's error is the one reported, as when the solve came after it.
+    beside.cancel();
+    try {
+      beside.wait();
+    } catch (...) {
+    }
+    throw;
+  }
   results.timing_s.emplace_back("direct", seconds_since(t_direct));
 
-  const auto t_indirect = std::chrono::steady_clock::now();
-  IndirectEstimateInputs indirect_estimate = run_indirect(scene, lookups, results);
+  // The reflected light's phase: its solve's own wall time (beside the direct light) and the rest.
+  beside.wait();
+  const auto t_rest = std::max(std::chrono::steady_clock::now(), solved_at);
+  IndirectEstimateInputs indirect_estimate;
+  if (reflected)
+    indirect_estimate = run_reflected_light(scene, *reflected, results, std::move(solved));
   if (scene.settings.scene == LightingScene::emergency) {
     // Not the project's "indirect" setting: the emergency scene switches reflections off [EN1838].
     results.plan.emergency_direct_only = true;
   }
-  results.timing_s.emplace_back("indirect", seconds_since(t_indirect));
+  results.timing_s.emplace_back("indirect", solve_s + seconds_since(t_rest));
 
   // Glare at observers, from the initial values (UGR, like CIE 190's tables, carries no
   // maintenance factor; docs/glare.md).
