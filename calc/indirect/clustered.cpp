@@ -347,7 +347,9 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
         candidates.clear();
         stack.push_back({T.roots[f], visibility == nullptr});
         while (!stack.empty()) {
-          const auto [a_id, seen] = stack.back();
+          // Not a structured binding: the verdict's lambda captures them (clang before 16 refuses).
+          const uint32_t a_id = stack.back().first;
+          const bool seen = stack.back().second;
           stack.pop_back();
           const ClusterNode& a = T.nodes[a_id];
           if (!face_each_other(a, R)) continue;
