@@ -121,9 +121,11 @@ void hull_edges(std::span<const Vec3> e, size_t offset,
 }  // namespace
 
 ShaftClassifier::ShaftClassifier(const std::vector<Face>& faces) {
-  for (const Face& f : faces) {
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const Face& f = faces[i];
     if (f.corners.size() < 3) continue;
     Candidate c;
+    c.face = static_cast<uint32_t>(i);
     c.sheet = face_sheet(f);
     c.box.lo = c.box.hi = f.corners.front();
     for (const Vec3& p : f.corners)
@@ -169,7 +171,20 @@ size_t box_element(const Vec3& lo, const Vec3& hi, const Vec3& shift, std::array
 }
 
 Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b) const {
-  if (a.empty() || b.empty()) return Shaft::partial;
+  ShaftFaces undecided;
+  return classify(a, b, ShaftFaces{}, undecided);
+}
+
+Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b,
+                                const ShaftFaces& among, ShaftFaces& undecided) const {
+  // `among` may be `undecided` itself: the faces left are gathered here first.
+  ShaftFaces left;
+  left.count = 0;
+  const auto done = [&](Shaft verdict) {
+    undecided = verdict == Shaft::partial ? left : ShaftFaces{};
+    return verdict;
+  };
+  if (a.empty() || b.empty()) return done(Shaft::partial);
   // Scratch kept per thread: a verdict is asked millions of times (calc/indirect's gather asks
   // one per receiver and chunk), and four fresh vectors each time cost more than the tests.
   thread_local Scratch scratch;
@@ -196,7 +211,10 @@ Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b
   h.resize(corners.size());
   std::vector<Vec2>& section = scratch.section;
   bool partial = false;
-  for (const Candidate& c : faces_) {
+  const size_t candidates = among.narrowed() ? static_cast<size_t>(among.count) : faces_.size();
+  for (size_t i = 0; i < candidates; ++i) {
+    const uint32_t k = among.narrowed() ? among.face[i] : static_cast<uint32_t>(i);
+    const Candidate& c = faces_[k];
     bool apart = false;
     for (int k = 0; k < 3; ++k)
       apart = apart || shaft.hi[k] < c.box.lo[k] - reach || shaft.lo[k] > c.box.hi[k] + reach;
@@ -257,7 +275,7 @@ Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b
     if (c.rectangle && across && qlo.x > c.outline_lo.x + kOutlineMargin_m &&
         qhi.x < c.outline_hi.x - kOutlineMargin_m && qlo.y > c.outline_lo.y + kOutlineMargin_m &&
         qhi.y < c.outline_hi.y - kOutlineMargin_m)
-      return Shaft::hidden;
+      return done(Shaft::hidden);
     const std::vector<Vec2>& q = convex_hull(section, scratch.hull);
     bool inside = true, touches = false;
     for (const Vec2& p : q) {
@@ -268,10 +286,15 @@ Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b
     const bool edge_meets = outline_meets(f.outline, q, kOutlineMargin_m);
     if (!touches && !edge_meets) continue;  // the shaft passes beside the face
     // Every segment from one side to the other, crossing well inside the outline.
-    if (inside && !edge_meets && across) return Shaft::hidden;
+    if (inside && !edge_meets && across) return done(Shaft::hidden);
     partial = true;
+    // Past kMaxFaces the shaft is not narrowed: every face stays a candidate.
+    if (left.narrowed() && left.count < ShaftFaces::kMaxFaces)
+      left.face[static_cast<size_t>(left.count++)] = k;
+    else
+      left.count = -1;
   }
-  return partial ? Shaft::partial : Shaft::visible;
+  return done(partial ? Shaft::partial : Shaft::visible);
 }
 
 }  // namespace luxgrid::geometry

@@ -71,19 +71,25 @@ struct Integrand {
     return e->intensity_towards(-w) * weight / d2 * inv_area;
   }
   // What every segment from the triangle (a, b, c) (relative to `origin`, moved inwards as the
-  // nodes are) to the receiver says: a proof for all of its nodes (geometry/shaft.h).
-  geometry::Shaft classify(const Vec3& a, const Vec3& b, const Vec3& c) const {
+  // nodes are) to the receiver says: a proof for all of its nodes (geometry/shaft.h). Within the
+  // faces `among` that the classification of a triangle holding it left undecided; the faces it
+  // leaves go to `undecided`, and decide its nodes (geometry/visibility.h, ShaftFaces).
+  geometry::Shaft classify(const Vec3& a, const Vec3& b, const Vec3& c,
+                           const geometry::ShaftFaces& among,
+                           geometry::ShaftFaces& undecided) const {
     if (!occluder) return geometry::Shaft::visible;
     Vec3 corners[3] = {origin + a, origin + b, origin + c};
     for (Vec3& p : corners) p += kVisibilityInsetRelative * (e->centroid - p);
-    return occluder->classify(std::span<const Vec3>(corners, 3),
-                              std::span<const Vec3>(&receiver, 1));
+    return occluder->classify_within(std::span<const Vec3>(corners, 3),
+                                     std::span<const Vec3>(&receiver, 1), among, undecided);
   }
-  // `value` (the unoccluded integrand at `r`) where the receiver sees the point, else 0.
-  double occluded(const Vec3& r, double value) const {
+  // `value` (the unoccluded integrand at `r`) where the receiver sees the point, else 0; `faces`:
+  // what the classification of a triangle holding the point left undecided.
+  double occluded(const Vec3& r, double value, const geometry::ShaftFaces& faces) const {
     if (occluder && value != 0.0) {
       const Vec3 p = origin + r;
-      if (!occluder->visible(p + kVisibilityInsetRelative * (e->centroid - p), receiver))
+      if (!occluder->visible_among(p + kVisibilityInsetRelative * (e->centroid - p), receiver,
+                                   faces))
         return 0.0;
     }
     return value;
@@ -110,6 +116,7 @@ struct Tri {
   double error = 0.0;                      // |7-point value of the parent - fine|
   double child[4] = {0.0, 0.0, 0.0, 0.0};  // the children's 7-point values, in split order
   geometry::Shaft shaft = geometry::Shaft::partial;  // what the receiver sees of it, if proven
+  geometry::ShaftFaces faces;  // where partial, the faces that decide its nodes
   bool operator<(const Tri& o) const { return error < o.error; }
 };
 
@@ -140,15 +147,43 @@ class Cubature {
   }
   // `coarse`: the triangle's own 7-point value; `va`, `vb`, `vc`: the integrand at its vertices
   // (a vertex is shared with the parent or a sibling: looked up once).
-  // `shaft`: the parent's verdict (a proof holds for its children); partial: asked here.
+  // `shaft`: the parent's verdict (a proof holds for its children); partial: asked here, within
+  // the faces the parent's left (`faces`).
   Tri make(const Vec3& a, const Vec3& b, const Vec3& c, double coarse, const Sample& va,
-           const Sample& vb, const Sample& vc, geometry::Shaft shaft) {
+           const Sample& vb, const Sample& vc, geometry::Shaft shaft,
+           const geometry::ShaftFaces& faces) {
     // A triangle the receiver provably sees whole (or not at all) needs no segment per node: the
     // shaft's verdict answers each exactly as the occlusion test would (geometry/shaft.h).
-    shaft_ = shaft == geometry::Shaft::partial ? f_.classify(a, b, c) : shaft;
+    shaft_ = shaft == geometry::Shaft::partial ? f_.classify(a, b, c, faces, faces_) : shaft;
+    return made(a, b, c, coarse, va, vb, vc);
+  }
+  Tri make(const Vec3& a, const Vec3& b, const Vec3& c) {
+    shaft_ = f_.classify(a, b, c, geometry::ShaftFaces{}, faces_);
+    const double coarse = rule(a, b, c);
+    const Sample va = vertex(a), vb = vertex(b), vc = vertex(c);
+    return made(a, b, c, coarse, va, vb, vc);
+  }
+  // The four children of `t`, in split order (the parent kept their 7-point values, its `child`,
+  // and the integrand at their corners).
+  std::array<Tri, 4> split(const Tri& t) {
+    const Vec3 ab = 0.5 * (t.a + t.b), bc = 0.5 * (t.b + t.c), ca = 0.5 * (t.c + t.a);
+    return {make(t.a, ab, ca, t.child[0], t.va, t.vab, t.vca, t.shaft, t.faces),
+            make(ab, t.b, bc, t.child[1], t.vab, t.vb, t.vbc, t.shaft, t.faces),
+            make(ca, bc, t.c, t.child[2], t.vca, t.vbc, t.vc, t.shaft, t.faces),
+            make(ab, bc, ca, t.child[3], t.vab, t.vbc, t.vca, t.shaft, t.faces)};
+  }
+  std::int64_t evaluations() const { return evaluations_; }
+
+ private:
+  // The triangle classified (shaft_, faces_): its children's rules, the midpoints, the guards.
+  Tri made(const Vec3& a, const Vec3& b, const Vec3& c, double coarse, const Sample& va,
+           const Sample& vb, const Sample& vc) {
     const Vec3 ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
-    Tri t{a, b, c, va, vb, vc, vertex(ab), vertex(bc), vertex(ca)};
+    Tri t;
+    t.a = a, t.b = b, t.c = c, t.va = va, t.vb = vb, t.vc = vc;
+    t.vab = vertex(ab), t.vbc = vertex(bc), t.vca = vertex(ca);
     t.shaft = shaft_;
+    t.faces = faces_;
     NodeSummary nodes[4];
     t.child[0] = rule(a, ab, ca, &nodes[0]);
     t.child[1] = rule(ab, b, bc, &nodes[1]);
@@ -193,24 +228,6 @@ class Cubature {
     t.error = std::max(t.error, sliver);
     return t;
   }
-  Tri make(const Vec3& a, const Vec3& b, const Vec3& c) {
-    shaft_ = f_.classify(a, b, c);
-    const double coarse = rule(a, b, c);
-    const Sample va = vertex(a), vb = vertex(b), vc = vertex(c);
-    return make(a, b, c, coarse, va, vb, vc, shaft_);
-  }
-  // The four children of `t`, in split order (the parent kept their 7-point values, its `child`,
-  // and the integrand at their corners).
-  std::array<Tri, 4> split(const Tri& t) {
-    const Vec3 ab = 0.5 * (t.a + t.b), bc = 0.5 * (t.b + t.c), ca = 0.5 * (t.c + t.a);
-    return {make(t.a, ab, ca, t.child[0], t.va, t.vab, t.vca, t.shaft),
-            make(ab, t.b, bc, t.child[1], t.vab, t.vb, t.vbc, t.shaft),
-            make(ca, bc, t.c, t.child[2], t.vca, t.vbc, t.vc, t.shaft),
-            make(ab, bc, ca, t.child[3], t.vab, t.vbc, t.vca, t.shaft)};
-  }
-  std::int64_t evaluations() const { return evaluations_; }
-
- private:
   Sample sample(const Vec3& r) const {
     const double open = f_.unoccluded(r);
     switch (shaft_) {
@@ -218,7 +235,7 @@ class Cubature {
       case geometry::Shaft::hidden: return {open, 0.0};
       case geometry::Shaft::partial: break;
     }
-    return {open, f_.occluded(r, open)};
+    return {open, f_.occluded(r, open, faces_)};
   }
   Sample vertex(const Vec3& r) {
     ++evaluations_;
@@ -227,6 +244,7 @@ class Cubature {
   const Integrand& f_;
   std::int64_t evaluations_ = 0;
   geometry::Shaft shaft_ = geometry::Shaft::partial;  // the triangle being sampled
+  geometry::ShaftFaces faces_;                        // and the faces that decide its nodes
 };
 
 }  // namespace
