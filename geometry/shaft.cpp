@@ -133,18 +133,6 @@ ShaftClassifier::ShaftClassifier(const std::vector<Face>& faces) {
     const Vec3& n = c.sheet.normal;
     for (int k = 0; k < 3; ++k)
       if (n[(k + 1) % 3] == 0.0 && n[(k + 2) % 3] == 0.0) c.axis = k;
-    const Polygon2& o = c.sheet.outline;
-    c.outline_lo = c.outline_hi = o.front();
-    for (const Vec2& p : o)
-      c.outline_lo = glm::min(c.outline_lo, p), c.outline_hi = glm::max(c.outline_hi, p);
-    c.rectangle = o.size() == 4;
-    for (size_t i = 0; c.rectangle && i < 4; ++i) {
-      const Vec2& p = o[i];
-      const Vec2& q = o[(i + 1) % 4];
-      const bool corner = (p.x == c.outline_lo.x || p.x == c.outline_hi.x) &&
-                          (p.y == c.outline_lo.y || p.y == c.outline_hi.y);
-      c.rectangle = corner && (p.x == q.x || p.y == q.y);
-    }
     faces_.push_back(std::move(c));
   }
 }
@@ -267,14 +255,17 @@ Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b
     // crossed by every segment from one side to the other (what the exact tests would find).
     Vec2 qlo = section.front(), qhi = section.front();
     for (const Vec2& p : section) qlo = glm::min(qlo, p), qhi = glm::max(qhi, p);
-    if (qhi.x < c.outline_lo.x - kOutlineMargin_m || qlo.x > c.outline_hi.x + kOutlineMargin_m ||
-        qhi.y < c.outline_lo.y - kOutlineMargin_m || qlo.y > c.outline_hi.y + kOutlineMargin_m)
+    if (qhi.x < c.sheet.outline_lo.x - kOutlineMargin_m ||
+        qlo.x > c.sheet.outline_hi.x + kOutlineMargin_m ||
+        qhi.y < c.sheet.outline_lo.y - kOutlineMargin_m ||
+        qlo.y > c.sheet.outline_hi.y + kOutlineMargin_m)
       continue;
     const bool across =
         (sa == Side::above && sb == Side::below) || (sa == Side::below && sb == Side::above);
-    if (c.rectangle && across && qlo.x > c.outline_lo.x + kOutlineMargin_m &&
-        qhi.x < c.outline_hi.x - kOutlineMargin_m && qlo.y > c.outline_lo.y + kOutlineMargin_m &&
-        qhi.y < c.outline_hi.y - kOutlineMargin_m)
+    if (c.sheet.rectangle && across && qlo.x > c.sheet.outline_lo.x + kOutlineMargin_m &&
+        qhi.x < c.sheet.outline_hi.x - kOutlineMargin_m &&
+        qlo.y > c.sheet.outline_lo.y + kOutlineMargin_m &&
+        qhi.y < c.sheet.outline_hi.y - kOutlineMargin_m)
       return done(Shaft::hidden);
     const std::vector<Vec2>& q = convex_hull(section, scratch.hull);
     bool inside = true, touches = false;

@@ -52,8 +52,6 @@ class ShaftClassifier {
     FaceSheet sheet;
     Box3 box;       // the face's corners, m
     int axis = -1;  // 0..2 when the normal is exactly a coordinate axis (its sign in `sheet`)
-    Vec2 outline_lo{0.0}, outline_hi{0.0};  // the outline's box in the face's frame, m
-    bool rectangle = false;                 // the outline is that box (4 corners, edges along u, v)
   };
   std::vector<Candidate> faces_;
 };
