@@ -35,7 +35,9 @@ inline constexpr double kGrazing_m = 1e-9;
 struct FaceSheet {
   Vec3 origin{0.0}, u{1, 0, 0}, v{0, 1, 0}, normal{0, 0, 1};
   Polygon2 outline;
-  bool solid = false;  // an obstacle's face: grown, not shrunk, at its boundary
+  bool solid = false;                     // an obstacle's face: grown, not shrunk, at its boundary
+  Vec2 outline_lo{0.0}, outline_hi{0.0};  // the outline's box in the face's frame, m
+  bool rectangle = false;                 // the outline is that box (4 corners, edges along u, v)
 };
 
 FaceSheet face_sheet(const Face& face);

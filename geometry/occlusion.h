@@ -36,6 +36,13 @@ class OcclusionTree final : public Visibility {
   void visible_from(const Vec3& a, std::span<const Vec3> b, bool* seen) const override;
   // geometry/shaft.h's verdict over the same faces.
   Shaft classify(std::span<const Vec3> a, std::span<const Vec3> b) const override;
+  // The same, narrowed (geometry/visibility.h): the faces left are the classifier's.
+  Shaft classify_within(std::span<const Vec3> a, std::span<const Vec3> b, const ShaftFaces& among,
+                        ShaftFaces& undecided) const override;
+  // visible(from, to) from the faces left alone: each decided by the same rule
+  // (geometry/face_crossing.h) on the same segment as the trace's candidates are, so the same
+  // answer, since every face the trace could accept is among them.
+  bool visible_among(const Vec3& from, const Vec3& to, const ShaftFaces& faces) const override;
 
   size_t triangle_count() const;
 

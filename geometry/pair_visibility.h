@@ -42,6 +42,18 @@ class PairVisibility final : public Visibility {
   Shaft classify(std::span<const Vec3> a, std::span<const Vec3> b) const override {
     return exact_.classify(a, b);
   }
+  Shaft classify_within(std::span<const Vec3> a, std::span<const Vec3> b, const ShaftFaces& among,
+                        ShaftFaces& undecided) const override {
+    return exact_.classify_within(a, b, among, undecided);
+  }
+  // A caller that narrows classified the segment's shaft itself: not counted towards the pair's
+  // verdict, which answers only when already known.
+  bool visible_among(const Vec3& from, const Vec3& to, const ShaftFaces& faces) const override {
+    if (verdict_ != Shaft::partial && ((within(from, box_a_) && within(to, box_b_)) ||
+                                       (within(from, box_b_) && within(to, box_a_))))
+      return verdict_ == Shaft::visible;
+    return exact_.visible_among(from, to, faces);
+  }
 
   // The verdict once classified (`partial` before).
   Shaft verdict() const { return verdict_; }

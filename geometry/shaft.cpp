@@ -121,9 +121,11 @@ void hull_edges(std::span<const Vec3> e, size_t offset,
 }  // namespace
 
 ShaftClassifier::ShaftClassifier(const std::vector<Face>& faces) {
-  for (const Face& f : faces) {
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const Face& f = faces[i];
     if (f.corners.size() < 3) continue;
     Candidate c;
+    c.face = static_cast<uint32_t>(i);
     c.sheet = face_sheet(f);
     c.box.lo = c.box.hi = f.corners.front();
     for (const Vec3& p : f.corners)
@@ -131,18 +133,6 @@ ShaftClassifier::ShaftClassifier(const std::vector<Face>& faces) {
     const Vec3& n = c.sheet.normal;
     for (int k = 0; k < 3; ++k)
       if (n[(k + 1) % 3] == 0.0 && n[(k + 2) % 3] == 0.0) c.axis = k;
-    const Polygon2& o = c.sheet.outline;
-    c.outline_lo = c.outline_hi = o.front();
-    for (const Vec2& p : o)
-      c.outline_lo = glm::min(c.outline_lo, p), c.outline_hi = glm::max(c.outline_hi, p);
-    c.rectangle = o.size() == 4;
-    for (size_t i = 0; c.rectangle && i < 4; ++i) {
-      const Vec2& p = o[i];
-      const Vec2& q = o[(i + 1) % 4];
-      const bool corner = (p.x == c.outline_lo.x || p.x == c.outline_hi.x) &&
-                          (p.y == c.outline_lo.y || p.y == c.outline_hi.y);
-      c.rectangle = corner && (p.x == q.x || p.y == q.y);
-    }
     faces_.push_back(std::move(c));
   }
 }
@@ -169,7 +159,20 @@ size_t box_element(const Vec3& lo, const Vec3& hi, const Vec3& shift, std::array
 }
 
 Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b) const {
-  if (a.empty() || b.empty()) return Shaft::partial;
+  ShaftFaces undecided;
+  return classify(a, b, ShaftFaces{}, undecided);
+}
+
+Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b,
+                                const ShaftFaces& among, ShaftFaces& undecided) const {
+  // `among` may be `undecided` itself: the faces left are gathered here first.
+  ShaftFaces left;
+  left.count = 0;
+  const auto done = [&](Shaft verdict) {
+    undecided = verdict == Shaft::partial ? left : ShaftFaces{};
+    return verdict;
+  };
+  if (a.empty() || b.empty()) return done(Shaft::partial);
   // Scratch kept per thread: a verdict is asked millions of times (calc/indirect's gather asks
   // one per receiver and chunk), and four fresh vectors each time cost more than the tests.
   thread_local Scratch scratch;
@@ -196,7 +199,10 @@ Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b
   h.resize(corners.size());
   std::vector<Vec2>& section = scratch.section;
   bool partial = false;
-  for (const Candidate& c : faces_) {
+  const size_t candidates = among.narrowed() ? static_cast<size_t>(among.count) : faces_.size();
+  for (size_t i = 0; i < candidates; ++i) {
+    const uint32_t k = among.narrowed() ? among.face[i] : static_cast<uint32_t>(i);
+    const Candidate& c = faces_[k];
     bool apart = false;
     for (int k = 0; k < 3; ++k)
       apart = apart || shaft.hi[k] < c.box.lo[k] - reach || shaft.lo[k] > c.box.hi[k] + reach;
@@ -249,15 +255,18 @@ Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b
     // crossed by every segment from one side to the other (what the exact tests would find).
     Vec2 qlo = section.front(), qhi = section.front();
     for (const Vec2& p : section) qlo = glm::min(qlo, p), qhi = glm::max(qhi, p);
-    if (qhi.x < c.outline_lo.x - kOutlineMargin_m || qlo.x > c.outline_hi.x + kOutlineMargin_m ||
-        qhi.y < c.outline_lo.y - kOutlineMargin_m || qlo.y > c.outline_hi.y + kOutlineMargin_m)
+    if (qhi.x < c.sheet.outline_lo.x - kOutlineMargin_m ||
+        qlo.x > c.sheet.outline_hi.x + kOutlineMargin_m ||
+        qhi.y < c.sheet.outline_lo.y - kOutlineMargin_m ||
+        qlo.y > c.sheet.outline_hi.y + kOutlineMargin_m)
       continue;
     const bool across =
         (sa == Side::above && sb == Side::below) || (sa == Side::below && sb == Side::above);
-    if (c.rectangle && across && qlo.x > c.outline_lo.x + kOutlineMargin_m &&
-        qhi.x < c.outline_hi.x - kOutlineMargin_m && qlo.y > c.outline_lo.y + kOutlineMargin_m &&
-        qhi.y < c.outline_hi.y - kOutlineMargin_m)
-      return Shaft::hidden;
+    if (c.sheet.rectangle && across && qlo.x > c.sheet.outline_lo.x + kOutlineMargin_m &&
+        qhi.x < c.sheet.outline_hi.x - kOutlineMargin_m &&
+        qlo.y > c.sheet.outline_lo.y + kOutlineMargin_m &&
+        qhi.y < c.sheet.outline_hi.y - kOutlineMargin_m)
+      return done(Shaft::hidden);
     const std::vector<Vec2>& q = convex_hull(section, scratch.hull);
     bool inside = true, touches = false;
     for (const Vec2& p : q) {
@@ -268,10 +277,15 @@ Shaft ShaftClassifier::classify(std::span<const Vec3> a, std::span<const Vec3> b
     const bool edge_meets = outline_meets(f.outline, q, kOutlineMargin_m);
     if (!touches && !edge_meets) continue;  // the shaft passes beside the face
     // Every segment from one side to the other, crossing well inside the outline.
-    if (inside && !edge_meets && across) return Shaft::hidden;
+    if (inside && !edge_meets && across) return done(Shaft::hidden);
     partial = true;
+    // Past kMaxFaces the shaft is not narrowed: every face stays a candidate.
+    if (left.narrowed() && left.count < ShaftFaces::kMaxFaces)
+      left.face[static_cast<size_t>(left.count++)] = k;
+    else
+      left.count = -1;
   }
-  return partial ? Shaft::partial : Shaft::visible;
+  return done(partial ? Shaft::partial : Shaft::visible);
 }
 
 }  // namespace luxgrid::geometry

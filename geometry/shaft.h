@@ -37,14 +37,21 @@ class ShaftClassifier {
   // corners in double (a quadrature node on an opening, a point lifted off a patch) may lie a few
   // rounding errors (1e-15 m) outside: kShaftSlack_m covers them.
   Shaft classify(std::span<const Vec3> a, std::span<const Vec3> b) const;
+  // The same verdict over the faces `among` alone (ShaftFaces{}: every face), which must hold
+  // every face that may cross a segment (what classifying a shaft that contains this one left
+  // undecided): the faces this shaft leaves undecided go to `undecided` when it is `partial`.
+  // Numbers are this classifier's (face_of below).
+  Shaft classify(std::span<const Vec3> a, std::span<const Vec3> b, const ShaftFaces& among,
+                 ShaftFaces& undecided) const;
+  // The index, in the constructor's `faces`, of the classifier's face `k`.
+  uint32_t face_of(uint32_t k) const { return faces_[k].face; }
 
  private:
   struct Candidate {
+    uint32_t face = 0;  // its index in the constructor's `faces`
     FaceSheet sheet;
     Box3 box;       // the face's corners, m
     int axis = -1;  // 0..2 when the normal is exactly a coordinate axis (its sign in `sheet`)
-    Vec2 outline_lo{0.0}, outline_hi{0.0};  // the outline's box in the face's frame, m
-    bool rectangle = false;                 // the outline is that box (4 corners, edges along u, v)
   };
   std::vector<Candidate> faces_;
 };

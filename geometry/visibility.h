@@ -5,6 +5,8 @@
 // through a `const Visibility*`, where null means "nothing blocks light" and costs nothing.
 // Plain doubles, no CGAL: calc/nearfield (the hot path, built without CGAL) uses it too. The
 // scene's implementation is the AABB tree of geometry/occlusion.h; tests implement their own.
+#include <array>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -15,6 +17,21 @@ namespace luxgrid::geometry {
 
 // What every segment between two elements says (geometry/shaft.h).
 enum class Shaft { visible, hidden, partial };
+
+// The faces of a visibility test that may cross some segment of a shaft: those its
+// classification left undecided (Visibility::classify_within), as the test's own face numbers.
+// Every other face provably crosses none of the shaft's segments, so a segment of the shaft is
+// blocked exactly when one of these crosses it: a few face tests instead of a trace through the
+// scene (Visibility::visible_among). A sub-shaft (a part of one element) classified within them
+// keeps fewer still, so the faces left shrink as an integration refines towards a shadow edge.
+struct ShaftFaces {
+  static constexpr int kMaxFaces = 12;
+  // The faces, or -1 when the shaft is not narrowed (more than kMaxFaces, or a test that does not
+  // narrow): every face of the test may cross a segment.
+  int count = -1;
+  std::array<uint32_t, kMaxFaces> face{};
+  bool narrowed() const { return count >= 0; }
+};
 
 class Visibility {
  public:
@@ -34,6 +51,20 @@ class Visibility {
   // hull; geometry/shaft.h); `partial` when unknown. The default knows nothing.
   virtual Shaft classify(std::span<const Vec3> /*a*/, std::span<const Vec3> /*b*/) const {
     return Shaft::partial;
+  }
+  // classify(a, b) for a shaft inside one whose classification left the faces `among` (a part of
+  // an element already classified; a ShaftFaces{} when none was: every face), and when the
+  // verdict is `partial`, the faces still undecided into `undecided`. The default does not
+  // narrow.
+  virtual Shaft classify_within(std::span<const Vec3> a, std::span<const Vec3> b,
+                                const ShaftFaces& /*among*/, ShaftFaces& undecided) const {
+    undecided = ShaftFaces{};
+    return classify(a, b);
+  }
+  // visible(from, to) for a segment of a shaft whose classify_within left `faces`: the same
+  // answer, from those faces alone. The default traces the segment.
+  virtual bool visible_among(const Vec3& from, const Vec3& to, const ShaftFaces& /*faces*/) const {
+    return visible(from, to);
   }
 };
 

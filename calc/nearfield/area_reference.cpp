@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <queue>
 #include <span>
 #include <vector>
@@ -70,20 +71,47 @@ struct Integrand {
     if (!(weight > 0.0)) return 0.0;
     return e->intensity_towards(-w) * weight / d2 * inv_area;
   }
+  // unoccluded(r[k]) into out[k] for k < n (at most kMaxBatch): the same formula, the
+  // intensities looked up together (IntensityDistribution::intensities: the same values, a table's
+  // angles computed as lanes).
+  static constexpr int kMaxBatch = 28;
+  void unoccluded(const Vec3* r, int n, double* out) const {
+    double x[kMaxBatch], y[kMaxBatch], z[kMaxBatch], weight[kMaxBatch], d2[kMaxBatch],
+        cd[kMaxBatch];
+    int index[kMaxBatch], m = 0;
+    for (int k = 0; k < n; ++k) {
+      out[k] = 0.0;
+      d2[m] = glm::dot(r[k], r[k]);
+      if (!(d2[m] > 0.0)) continue;
+      const Vec3 w = r[k] / std::sqrt(d2[m]);
+      weight[m] = receiver_weight(what, w);
+      if (!(weight[m] > 0.0)) continue;
+      const Vec3 local = e->world_to_local * -w;  // as intensity_towards(-w) turns it
+      x[m] = local.x, y[m] = local.y, z[m] = local.z, index[m++] = k;
+    }
+    e->distribution->intensities(x, y, z, static_cast<size_t>(m), cd);
+    for (int j = 0; j < m; ++j) out[index[j]] = cd[j] * weight[j] / d2[j] * inv_area;
+  }
   // What every segment from the triangle (a, b, c) (relative to `origin`, moved inwards as the
-  // nodes are) to the receiver says: a proof for all of its nodes (geometry/shaft.h).
-  geometry::Shaft classify(const Vec3& a, const Vec3& b, const Vec3& c) const {
+  // nodes are) to the receiver says: a proof for all of its nodes (geometry/shaft.h). Within the
+  // faces `among` that the classification of a triangle holding it left undecided; the faces it
+  // leaves go to `undecided`, and decide its nodes (geometry/visibility.h, ShaftFaces).
+  geometry::Shaft classify(const Vec3& a, const Vec3& b, const Vec3& c,
+                           const geometry::ShaftFaces& among,
+                           geometry::ShaftFaces& undecided) const {
     if (!occluder) return geometry::Shaft::visible;
     Vec3 corners[3] = {origin + a, origin + b, origin + c};
     for (Vec3& p : corners) p += kVisibilityInsetRelative * (e->centroid - p);
-    return occluder->classify(std::span<const Vec3>(corners, 3),
-                              std::span<const Vec3>(&receiver, 1));
+    return occluder->classify_within(std::span<const Vec3>(corners, 3),
+                                     std::span<const Vec3>(&receiver, 1), among, undecided);
   }
-  // `value` (the unoccluded integrand at `r`) where the receiver sees the point, else 0.
-  double occluded(const Vec3& r, double value) const {
+  // `value` (the unoccluded integrand at `r`) where the receiver sees the point, else 0; `faces`:
+  // what the classification of a triangle holding the point left undecided.
+  double occluded(const Vec3& r, double value, const geometry::ShaftFaces& faces) const {
     if (occluder && value != 0.0) {
       const Vec3 p = origin + r;
-      if (!occluder->visible(p + kVisibilityInsetRelative * (e->centroid - p), receiver))
+      if (!occluder->visible_among(p + kVisibilityInsetRelative * (e->centroid - p), receiver,
+                                   faces))
         return 0.0;
     }
     return value;
@@ -110,50 +138,137 @@ struct Tri {
   double error = 0.0;                      // |7-point value of the parent - fine|
   double child[4] = {0.0, 0.0, 0.0, 0.0};  // the children's 7-point values, in split order
   geometry::Shaft shaft = geometry::Shaft::partial;  // what the receiver sees of it, if proven
-  bool operator<(const Tri& o) const { return error < o.error; }
+  geometry::ShaftFaces faces;  // where partial, the faces that decide its nodes
+};
+
+// The triangles waiting to be split, the largest error first. The heap holds each triangle's
+// error and its slot in `slots` (a freed slot is reused): its sifts move 16 bytes, not a whole
+// triangle, through the same comparisons of the same errors as a heap of triangles, so the
+// triangles come out in the same order.
+class SplitQueue {
+ public:
+  void push(const Tri& t) {
+    uint32_t slot = 0;
+    if (free_.empty()) {
+      slot = static_cast<uint32_t>(slots_.size());
+      slots_.push_back(t);
+    } else {
+      slot = free_.back();
+      free_.pop_back();
+      slots_[slot] = t;
+    }
+    heap_.push({t.error, slot});
+  }
+  bool empty() const { return heap_.empty(); }
+  // The triangle with the largest error, valid until release().
+  const Tri& top() const { return slots_[heap_.top().slot]; }
+  // Removes the top triangle; its slot is taken by the next push.
+  void release() {
+    free_.push_back(heap_.top().slot);
+    heap_.pop();
+  }
+
+ private:
+  struct Entry {
+    double error;
+    uint32_t slot;
+    bool operator<(const Entry& o) const { return error < o.error; }
+  };
+  std::priority_queue<Entry> heap_;
+  std::vector<Tri> slots_;
+  std::vector<uint32_t> free_;
 };
 
 class Cubature {
  public:
   explicit Cubature(const Integrand& f) : f_(f) {}
-  // The 7-point value of the triangle; `nodes` (optional) takes in its nodes.
-  double rule(const Vec3& a, const Vec3& b, const Vec3& c, NodeSummary* nodes = nullptr) {
-    evaluations_ += 7;
-    const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
-    NodeSummary here;
-    auto at = [&](double x, double y, double z) {
-      const Sample v = sample(x * a + y * b + z * c);
-      here.open_max = std::max(here.open_max, v.open);
-      here.any_seen |= v.seen > 0.0;
-      here.any_hidden |= v.open > 0.0 && !(v.seen > 0.0);
-      return v.seen;
-    };
-    const double s = kW0 * at(1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0) +
-                     kW1 * (at(kA1, kA1, kB1) + at(kA1, kB1, kA1) + at(kB1, kA1, kA1)) +
-                     kW2 * (at(kA2, kA2, kB2) + at(kA2, kB2, kA2) + at(kB2, kA2, kA2));
-    if (nodes) {
-      nodes->open_max = std::max(nodes->open_max, here.open_max);
-      nodes->any_seen |= here.any_seen;
-      nodes->any_hidden |= here.any_hidden;
+  // The 7-point values of `count` triangles (corners `tri[k]`) into `value[k]`, their nodes into
+  // `nodes[k]`: rule() on each, the 7 x count intensities looked up together.
+  template <int count>
+  void rules(const Vec3 (&tri)[count][3], double (&value)[count], NodeSummary (&nodes)[count]) {
+    static_assert(7 * count <= Integrand::kMaxBatch);
+    evaluations_ += 7 * count;
+    Vec3 r[7 * count];
+    for (int k = 0; k < count; ++k) {
+      const Vec3 &a = tri[k][0], &b = tri[k][1], &c = tri[k][2];
+      const auto at = [&](double x, double y, double z) { return x * a + y * b + z * c; };
+      Vec3* q = r + 7 * k;
+      q[0] = at(1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0);
+      q[1] = at(kA1, kA1, kB1), q[2] = at(kA1, kB1, kA1), q[3] = at(kB1, kA1, kA1);
+      q[4] = at(kA2, kA2, kB2), q[5] = at(kA2, kB2, kA2), q[6] = at(kB2, kA2, kA2);
     }
-    return area * s;
+    double open[7 * count];
+    f_.unoccluded(r, 7 * count, open);
+    for (int k = 0; k < count; ++k) {
+      NodeSummary here;
+      double seen[7];
+      for (int j = 0; j < 7; ++j) {
+        const Sample v = occluded(r[7 * k + j], open[7 * k + j]);
+        here.open_max = std::max(here.open_max, v.open);
+        here.any_seen |= v.seen > 0.0;
+        here.any_hidden |= v.open > 0.0 && !(v.seen > 0.0);
+        seen[j] = v.seen;
+      }
+      const Vec3 &a = tri[k][0], &b = tri[k][1], &c = tri[k][2];
+      const double area = 0.5 * glm::length(glm::cross(b - a, c - a));
+      const double sum =
+          kW0 * seen[0] + kW1 * (seen[1] + seen[2] + seen[3]) + kW2 * (seen[4] + seen[5] + seen[6]);
+      nodes[k].open_max = std::max(nodes[k].open_max, here.open_max);
+      nodes[k].any_seen |= here.any_seen;
+      nodes[k].any_hidden |= here.any_hidden;
+      value[k] = area * sum;
+    }
+  }
+  // The 7-point value of the triangle.
+  double rule(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 tri[1][3] = {{a, b, c}};
+    double value[1];
+    NodeSummary nodes[1];
+    rules(tri, value, nodes);
+    return value[0];
   }
   // `coarse`: the triangle's own 7-point value; `va`, `vb`, `vc`: the integrand at its vertices
   // (a vertex is shared with the parent or a sibling: looked up once).
-  // `shaft`: the parent's verdict (a proof holds for its children); partial: asked here.
+  // `shaft`: the parent's verdict (a proof holds for its children); partial: asked here, within
+  // the faces the parent's left (`faces`).
   Tri make(const Vec3& a, const Vec3& b, const Vec3& c, double coarse, const Sample& va,
-           const Sample& vb, const Sample& vc, geometry::Shaft shaft) {
+           const Sample& vb, const Sample& vc, geometry::Shaft shaft,
+           const geometry::ShaftFaces& faces) {
     // A triangle the receiver provably sees whole (or not at all) needs no segment per node: the
     // shaft's verdict answers each exactly as the occlusion test would (geometry/shaft.h).
-    shaft_ = shaft == geometry::Shaft::partial ? f_.classify(a, b, c) : shaft;
+    shaft_ = shaft == geometry::Shaft::partial ? f_.classify(a, b, c, faces, faces_) : shaft;
+    return made(a, b, c, coarse, va, vb, vc);
+  }
+  Tri make(const Vec3& a, const Vec3& b, const Vec3& c) {
+    shaft_ = f_.classify(a, b, c, geometry::ShaftFaces{}, faces_);
+    const double coarse = rule(a, b, c);
+    const Sample va = vertex(a), vb = vertex(b), vc = vertex(c);
+    return made(a, b, c, coarse, va, vb, vc);
+  }
+  // The four children of `t`, in split order (the parent kept their 7-point values, its `child`,
+  // and the integrand at their corners).
+  std::array<Tri, 4> split(const Tri& t) {
+    const Vec3 ab = 0.5 * (t.a + t.b), bc = 0.5 * (t.b + t.c), ca = 0.5 * (t.c + t.a);
+    return {make(t.a, ab, ca, t.child[0], t.va, t.vab, t.vca, t.shaft, t.faces),
+            make(ab, t.b, bc, t.child[1], t.vab, t.vb, t.vbc, t.shaft, t.faces),
+            make(ca, bc, t.c, t.child[2], t.vca, t.vbc, t.vc, t.shaft, t.faces),
+            make(ab, bc, ca, t.child[3], t.vab, t.vbc, t.vca, t.shaft, t.faces)};
+  }
+  std::int64_t evaluations() const { return evaluations_; }
+
+ private:
+  // The triangle classified (shaft_, faces_): its children's rules, the midpoints, the guards.
+  Tri made(const Vec3& a, const Vec3& b, const Vec3& c, double coarse, const Sample& va,
+           const Sample& vb, const Sample& vc) {
     const Vec3 ab = 0.5 * (a + b), bc = 0.5 * (b + c), ca = 0.5 * (c + a);
-    Tri t{a, b, c, va, vb, vc, vertex(ab), vertex(bc), vertex(ca)};
+    Tri t;
+    t.a = a, t.b = b, t.c = c, t.va = va, t.vb = vb, t.vc = vc;
+    t.vab = vertex(ab), t.vbc = vertex(bc), t.vca = vertex(ca);
     t.shaft = shaft_;
+    t.faces = faces_;
     NodeSummary nodes[4];
-    t.child[0] = rule(a, ab, ca, &nodes[0]);
-    t.child[1] = rule(ab, b, bc, &nodes[1]);
-    t.child[2] = rule(ca, bc, c, &nodes[2]);
-    t.child[3] = rule(ab, bc, ca, &nodes[3]);
+    const Vec3 children[4][3] = {{a, ab, ca}, {ab, b, bc}, {ca, bc, c}, {ab, bc, ca}};
+    rules(children, t.child, nodes);
     t.fine = t.child[0] + t.child[1] + t.child[2] + t.child[3];
     t.error = std::abs(t.fine - coarse);
     bool seen = false, hidden = false;
@@ -193,32 +308,15 @@ class Cubature {
     t.error = std::max(t.error, sliver);
     return t;
   }
-  Tri make(const Vec3& a, const Vec3& b, const Vec3& c) {
-    shaft_ = f_.classify(a, b, c);
-    const double coarse = rule(a, b, c);
-    const Sample va = vertex(a), vb = vertex(b), vc = vertex(c);
-    return make(a, b, c, coarse, va, vb, vc, shaft_);
-  }
-  // The four children of `t`, in split order (the parent kept their 7-point values, its `child`,
-  // and the integrand at their corners).
-  std::array<Tri, 4> split(const Tri& t) {
-    const Vec3 ab = 0.5 * (t.a + t.b), bc = 0.5 * (t.b + t.c), ca = 0.5 * (t.c + t.a);
-    return {make(t.a, ab, ca, t.child[0], t.va, t.vab, t.vca, t.shaft),
-            make(ab, t.b, bc, t.child[1], t.vab, t.vb, t.vbc, t.shaft),
-            make(ca, bc, t.c, t.child[2], t.vca, t.vbc, t.vc, t.shaft),
-            make(ab, bc, ca, t.child[3], t.vab, t.vbc, t.vca, t.shaft)};
-  }
-  std::int64_t evaluations() const { return evaluations_; }
-
- private:
-  Sample sample(const Vec3& r) const {
-    const double open = f_.unoccluded(r);
+  Sample sample(const Vec3& r) const { return occluded(r, f_.unoccluded(r)); }
+  // The sample at `r` whose unoccluded integrand is `open`.
+  Sample occluded(const Vec3& r, double open) const {
     switch (shaft_) {
       case geometry::Shaft::visible: return {open, open};
       case geometry::Shaft::hidden: return {open, 0.0};
       case geometry::Shaft::partial: break;
     }
-    return {open, f_.occluded(r, open)};
+    return {open, f_.occluded(r, open, faces_)};
   }
   Sample vertex(const Vec3& r) {
     ++evaluations_;
@@ -227,6 +325,7 @@ class Cubature {
   const Integrand& f_;
   std::int64_t evaluations_ = 0;
   geometry::Shaft shaft_ = geometry::Shaft::partial;  // the triangle being sampled
+  geometry::ShaftFaces faces_;                        // and the faces that decide its nodes
 };
 
 }  // namespace
@@ -256,7 +355,7 @@ ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const
   }
   const Integrand f{&e, receiver, 1.0 / e.area_m2, occluder, point, fan.receiver};
   Cubature cubature(f);
-  std::priority_queue<Tri> queue;
+  SplitQueue queue;
   double value = 0.0, error = 0.0;
   for (int i = 0; i < fan.triangles; ++i) {
     Tri t = cubature.make(fan.apex, fan.rim[i], fan.rim[i + 1]);
@@ -267,13 +366,14 @@ ReferenceResult reference_illuminance(const Emitter& e, const Vec3& point, const
   const double floor = kAbsoluteFloorRelative * std::abs(value);
   while (!queue.empty() && error > std::max(rel_tol * std::abs(value), floor) &&
          cubature.evaluations() < max_evaluations) {
-    const Tri t = queue.top();
-    queue.pop();
+    const Tri& t = queue.top();
     value -= t.fine;
     error -= t.error;
     // The parent kept its children's 7-point values (its `fine`) and its vertex values: each
     // child only adds its own four children (28 lookups, not 35) and the split's three midpoints.
-    for (const Tri& child : cubature.split(t)) {
+    const std::array<Tri, 4> children = cubature.split(t);
+    queue.release();
+    for (const Tri& child : children) {
       value += child.fine;
       error += child.error;
       queue.push(child);

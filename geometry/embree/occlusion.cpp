@@ -82,6 +82,9 @@ struct OcclusionTree::Impl {
   double margin_m = 0.0;
   std::vector<FaceSheet> sheets;
   std::vector<unsigned> face_of;  // per triangle, its face in `sheets`
+  // Per face, whether the trace has a triangle of it (a face whose triangles are all degenerate
+  // is never a candidate, so it never blocks).
+  std::vector<bool> traced;
 };
 
 OcclusionTree::OcclusionTree(const std::vector<Face>& faces)
@@ -93,6 +96,8 @@ OcclusionTree::OcclusionTree(const std::vector<Face>& faces)
       tris.push_back(t);
       impl_->face_of.push_back(static_cast<unsigned>(impl_->sheets.size()));
     }
+    impl_->traced.push_back(impl_->face_of.size() > 0 &&
+                            impl_->face_of.back() == impl_->sheets.size());
     impl_->sheets.push_back(face_sheet(f));
   }
   if (tris.empty()) return;
@@ -170,6 +175,25 @@ void OcclusionTree::visible_from(const Vec3& a, std::span<const Vec3> b, bool* s
 
 Shaft OcclusionTree::classify(std::span<const Vec3> a, std::span<const Vec3> b) const {
   return impl_->scene ? impl_->shafts.classify(a, b) : Shaft::visible;
+}
+
+Shaft OcclusionTree::classify_within(std::span<const Vec3> a, std::span<const Vec3> b,
+                                     const ShaftFaces& among, ShaftFaces& undecided) const {
+  if (!impl_->scene) {
+    undecided = ShaftFaces{};
+    return Shaft::visible;
+  }
+  return impl_->shafts.classify(a, b, among, undecided);
+}
+
+bool OcclusionTree::visible_among(const Vec3& from, const Vec3& to, const ShaftFaces& faces) const {
+  if (!impl_->scene) return true;
+  if (!faces.narrowed()) return visible(from, to);
+  for (int i = 0; i < faces.count; ++i) {
+    const uint32_t face = impl_->shafts.face_of(faces.face[static_cast<size_t>(i)]);
+    if (impl_->traced[face] && segment_crosses(impl_->sheets[face], from, to)) return false;
+  }
+  return true;
 }
 
 size_t OcclusionTree::triangle_count() const { return impl_->face_of.size(); }

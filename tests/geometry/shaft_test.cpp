@@ -15,24 +15,9 @@ namespace {
 
 using test::kL;
 
-struct Lcg {
-  uint64_t state = 20250117;
-  double operator()() {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return static_cast<double>(state >> 11) * 0x1.0p-53;
-  }
-};
+using test::Lcg;
 
-std::vector<Face> scene() {
-  auto faces = room_faces(RoomShape{"L", kL, 0.0, 3.0, 0.2, 0.5, 0.7});
-  for (const auto& o : {make_box("cabinet", {1, 1, 0}, {2, 2, 1.8}, 0.35, 0.4),
-                        make_box("column", {4, 1, 0}, {5, 2, 3}, 0.0, 0.5),
-                        make_box("desk", {1, 4, 0.7}, {2.5, 5, 0.75}, 0.0, 0.5)}) {
-    const auto f = obstacle_faces(o);
-    faces.insert(faces.end(), f.begin(), f.end());
-  }
-  return faces;
-}
+std::vector<Face> scene() { return test::furnished_l_faces(); }
 
 // Points of the element: its corners, points on its edges, random points inside (convex
 // combinations), and its centroid.
