@@ -39,4 +39,30 @@ class ChunkVerdict {
   geometry::Shaft verdict_ = geometry::Shaft::partial;
 };
 
+// The final gather's verdict of one chunk against one receiver point (gather.cpp): asked at the
+// first patch that needs visibility, narrowed (geometry/visibility.h classify_within) so that a
+// patch of a partial chunk gets its own verdict from the faces the chunk's left undecided
+// (partial_visibility.h undecided_patch_integral), a few face tests each. `classify(faces)` gives
+// the verdict and fills `faces`; it is called at most once.
+template <class Classify>
+class NarrowingChunkVerdict {
+ public:
+  NarrowingChunkVerdict(bool active, Classify classify) : active_(active), classify_(classify) {}
+
+  geometry::Shaft ask() {
+    if (!active_) return geometry::Shaft::visible;
+    if (!asked_) verdict_ = classify_(faces_), asked_ = true;
+    return verdict_;
+  }
+  // The faces the chunk's verdict left undecided (after ask() said `partial`).
+  const geometry::ShaftFaces& faces() const { return faces_; }
+
+ private:
+  bool active_;
+  Classify classify_;
+  bool asked_ = false;
+  geometry::Shaft verdict_ = geometry::Shaft::partial;
+  geometry::ShaftFaces faces_;
+};
+
 }  // namespace luxgrid::calc::indirect

@@ -243,12 +243,14 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
         }
         // The chunk's shaft verdict from the receiver (chunk_verdict.h): every sample point of its
         // patches, lifted off their face, lies in the chunk's vertex box moved by the lift.
-        ChunkVerdict verdict(visibility != nullptr, [&, from = x + n * kGatherLift_m] {
-          std::array<Vec3, 8> corners;
-          const size_t count = geometry::box_element(ch.lo, ch.hi, m * kGatherLift_m, corners);
-          return visibility->classify(std::span<const Vec3>(&from, 1),
-                                      std::span<const Vec3>(corners.data(), count));
-        });
+        NarrowingChunkVerdict verdict(
+            visibility != nullptr, [&, from = x + n * kGatherLift_m](geometry::ShaftFaces& faces) {
+              std::array<Vec3, 8> corners;
+              const size_t count = geometry::box_element(ch.lo, ch.hi, m * kGatherLift_m, corners);
+              return visibility->classify_within(std::span<const Vec3>(&from, 1),
+                                                 std::span<const Vec3>(corners.data(), count),
+                                                 geometry::ShaftFaces{}, faces);
+            });
         for (size_t k = ch.begin; k < ch.end; ++k) {
           const Vec3 dx = x - Vec3(cx[k], cy[k], cz[k]);
           const double hm = glm::dot(m, dx);
@@ -268,14 +270,11 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
             double e = gather_cells(x, n, p, cells, far_ratio);
             const geometry::Shaft seen = e > 0.0 ? verdict.ask() : geometry::Shaft::visible;
             if (seen == geometry::Shaft::hidden) continue;
-            if (seen == geometry::Shaft::partial) {
-              const Vec3 from = x + n * kGatherLift_m;
-              const double v = visible_fraction(visibility, from, p, kGatherLift_m);
-              // A shadow edge on the patch: resolved cell by cell (partial_visibility.h).
-              e = v > 0.0 && v < 1.0 ? partial_cells_integral(x, n, from, p, cells, 0.0, far_ratio,
-                                                              *visibility, kGatherLift_m)
-                                     : e * v;
-            }
+            // The chunk leaves it undecided: its own verdict, then cell by cell where a shadow
+            // edge crosses it (partial_visibility.h).
+            if (seen == geometry::Shaft::partial)
+              e = undecided_patch_integral(x, n, x + n * kGatherLift_m, p, cells, 0.0, e, far_ratio,
+                                           *visibility, kGatherLift_m, verdict.faces());
             near += e;
             continue;
           }
@@ -284,13 +283,14 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
           if (seen == geometry::Shaft::hidden) continue;
           if (seen == geometry::Shaft::partial) {
             const Vec3 from = x + n * kGatherLift_m;
-            const double v = visible_fraction(visibility, from, p, kGatherLift_m);
-            if (v > 0.0 && v < 1.0 && p.has_quarters) {
-              near += partial_cells_integral(x, n, from, p, nullptr, flux[k] / p.area_m2, far_ratio,
-                                             *visibility, kGatherLift_m);
+            if (p.has_quarters) {
+              const double exitance = flux[k] / p.area_m2;
+              near +=
+                  undecided_patch_integral(x, n, from, p, nullptr, exitance, exitance * f,
+                                           far_ratio, *visibility, kGatherLift_m, verdict.faces());
               continue;
             }
-            f *= v;
+            f *= visible_fraction(visibility, from, p, kGatherLift_m);
           }
           near += flux[k] / p.area_m2 * f;
         }

@@ -1,33 +1,76 @@
 #include "calc/indirect/partial_visibility.h"
 
 #include <array>
+#include <span>
 
 #include "calc/indirect/subcells.h"
 
 namespace luxgrid::calc::indirect {
 
+namespace {
+
+constexpr int kSide = kSubcellsPerSide;
+
+// The share of a cell's five samples (its centre and the midpoints towards its corners, lifted)
+// seen from `from`: by the faces left undecided where the cell's shaft verdict narrowed them,
+// by a trace otherwise.
+double five_sample_share(const Vec3& from, const SubcellCorners& cell, const Vec3& centre,
+                         const Vec3& lift, const geometry::Visibility& visibility,
+                         const geometry::ShaftFaces* faces) {
+  std::array<Vec3, 5> samples;
+  samples[0] = centre + lift;
+  for (size_t c = 0; c < 4; ++c) samples[c + 1] = 0.5 * (cell[c] + centre) + lift;
+  int count = 0;
+  if (faces) {
+    for (const Vec3& s : samples) count += visibility.visible_among(from, s, *faces) ? 1 : 0;
+  } else {
+    std::array<bool, 5> seen;
+    visibility.visible_from(from, samples, seen.data());
+    for (const bool s : seen) count += s ? 1 : 0;
+  }
+  return count / 5.0;
+}
+
+}  // namespace
+
 double partial_cells_integral(const Vec3& x, const Vec3& n, const Vec3& from, const Patch& p,
                               const double* cell_weight, double uniform_weight, double far_ratio,
-                              const geometry::Visibility& visibility, double lift_m) {
-  constexpr int kSide = kSubcellsPerSide;
+                              const geometry::Visibility& visibility, double lift_m,
+                              const geometry::ShaftFaces& faces) {
   const double cell_diameter = p.diameter_m / kSide;
   const double cell_area = p.area_m2 / (kSide * kSide);
   const double near_d2 = far_ratio * far_ratio * cell_diameter * cell_diameter;
   const Vec3 lift = p.normal * lift_m;
-  // Every cell's centre first: the cells where the verdict changes are the edge's.
   std::array<SubcellCorners, kSide * kSide> cells;
   std::array<Vec3, kSide * kSide> centres;
-  std::array<Vec3, kSide * kSide> lifted;
-  std::array<bool, kSide * kSide> centre_seen;
   for (int a = 0; a < kSide; ++a)
     for (int b = 0; b < kSide; ++b) {
       const int k = a * kSide + b;
       cells[k] = subcell_corners(p, a, b);
       centres[k] = 0.25 * (cells[k][0] + cells[k][1] + cells[k][2] + cells[k][3]);
-      lifted[k] = centres[k] + lift;
     }
-  static_assert(kSide * kSide <= geometry::Visibility::kMaxSegmentsFrom);
-  visibility.visible_from(from, lifted, centre_seen.data());
+  // Every cell's centre first, from the faces left where the patch's verdict narrowed them: the
+  // cells where the verdict changes are the edge's.
+  const bool narrowed = faces.narrowed();
+  const geometry::ShaftFaces* among = narrowed ? &faces : nullptr;
+  std::array<bool, kSide * kSide> centre_seen{};
+  {
+    std::array<Vec3, kSide * kSide> lifted;
+    for (int k = 0; k < kSide * kSide; ++k) lifted[k] = centres[k] + lift;
+    static_assert(kSide * kSide <= geometry::Visibility::kMaxSegmentsFrom);
+    if (narrowed) {
+      for (int k = 0; k < kSide * kSide; ++k)
+        centre_seen[k] = visibility.visible_among(from, lifted[k], faces);
+    } else {
+      visibility.visible_from(from, lifted, centre_seen.data());
+    }
+  }
+  // Every centre agreeing in a patch whose own verdict is partial: the edge passes between them
+  // (a shadow sliver along the border, or a thin occluder's shadow between centres). Each cell's
+  // own verdict finds it, where the faces are narrowed.
+  bool agree = true;
+  for (int k = 1; k < kSide * kSide; ++k) agree = agree && centre_seen[k] == centre_seen[0];
+  const bool by_cell = narrowed && agree;
   const auto differs = [&](int k, int a, int b) {
     return a >= 0 && a < kSide && b >= 0 && b < kSide &&
            centre_seen[a * kSide + b] != centre_seen[k];
@@ -41,20 +84,40 @@ double partial_cells_integral(const Vec3& x, const Vec3& n, const Vec3& from, co
       const double f = subcell_form_factor(x, n, p, cells[k], centres[k], cell_area, near_d2);
       if (!(f > 0.0)) continue;
       double seen = centre_seen[k] ? 1.0 : 0.0;
-      if (differs(k, a - 1, b) || differs(k, a + 1, b) || differs(k, a, b - 1) ||
-          differs(k, a, b + 1)) {
+      if (by_cell) {
+        std::array<Vec3, 4> corners;
+        for (size_t c = 0; c < 4; ++c) corners[c] = cells[k][c] + lift;
+        geometry::ShaftFaces cell_faces;
+        const geometry::Shaft verdict =
+            visibility.classify_within(std::span<const Vec3>(&from, 1), corners, faces, cell_faces);
+        if (verdict == geometry::Shaft::partial)
+          seen = five_sample_share(from, cells[k], centres[k], lift, visibility, &cell_faces);
+        else
+          seen = verdict == geometry::Shaft::visible ? 1.0 : 0.0;
+      } else if (differs(k, a - 1, b) || differs(k, a + 1, b) || differs(k, a, b - 1) ||
+                 differs(k, a, b + 1)) {
         // The edge runs through or beside this cell: its midpoints towards its corners too.
-        std::array<Vec3, 4> towards;
-        std::array<bool, 4> towards_seen;
-        for (size_t c = 0; c < 4; ++c) towards[c] = 0.5 * (cells[k][c] + centres[k]) + lift;
-        visibility.visible_from(from, towards, towards_seen.data());
-        int count = centre_seen[k] ? 1 : 0;
-        for (const bool s : towards_seen) count += s ? 1 : 0;
-        seen = count / 5.0;
+        seen = five_sample_share(from, cells[k], centres[k], lift, visibility, among);
       }
       sum += w * f * seen;
     }
   return sum;
+}
+
+double undecided_patch_integral(const Vec3& x, const Vec3& n, const Vec3& from, const Patch& p,
+                                const double* cell_weight, double uniform_weight, double whole,
+                                double far_ratio, const geometry::Visibility& visibility,
+                                double lift_m, const geometry::ShaftFaces& among) {
+  std::array<Vec3, 4> corners;
+  for (size_t c = 0; c < 4; ++c) corners[c] = p.polygon[c] + p.normal * lift_m;
+  geometry::ShaftFaces faces;
+  switch (visibility.classify_within(std::span<const Vec3>(&from, 1), corners, among, faces)) {
+    case geometry::Shaft::visible: return whole;
+    case geometry::Shaft::hidden: return 0.0;
+    case geometry::Shaft::partial: break;
+  }
+  return partial_cells_integral(x, n, from, p, cell_weight, uniform_weight, far_ratio, visibility,
+                                lift_m, faces);
 }
 
 }  // namespace luxgrid::calc::indirect

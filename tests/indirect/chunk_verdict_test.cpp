@@ -1,6 +1,7 @@
 // Shaft verdicts per chunk of patches (calc/indirect/chunk_verdict.h): the form factors and the
-// final gather in an L-shaped room with a cabinet give the same numbers to the bit with the
-// verdicts as with every segment traced, and trace far fewer segments; the verdict is asked
+// final gather in an L-shaped room with a cabinet give the same numbers with the verdicts as with
+// every segment traced (the form factors to the bit, the gather to its cells' resolution), and
+// trace far fewer segments; the verdict is asked
 // lazily, once, on the chunk's second patch that needs visibility.
 #include <gtest/gtest.h>
 
@@ -66,7 +67,15 @@ TEST(ChunkVerdict, FormFactorsAreTheSameToTheBitWithFewerSegments) {
   EXPECT_LT(static_cast<double>(with.segments), 0.7 * static_cast<double>(without.segments));
 }
 
-TEST(ChunkVerdict, GatherIsTheSameToTheBitWithFewerSegments) {
+// The gather's chunk verdicts are proofs, and so are the verdicts a partial chunk's patches then
+// get (partial_visibility.h undecided_patch_integral). Without any verdict every patch is
+// integrated cell by cell with sampled visibility; with them a patch proven seen or hidden is
+// taken whole or skipped, and one proven partial whose cell centres all agree is resolved by the
+// cells' own verdicts (an edge between the samples, which the sampled rule misses). The two differ
+// only where a shadow edge crosses a patch, each placing it to within half a cell (0.05 m at these
+// 0.4 m patches): measured 0.135 % at most, so within 0.3 % at every point, with far fewer
+// segments traced.
+TEST(ChunkVerdict, GatherAgreesWithFewerSegments) {
   Fixture f;
   const Counting with(*f.exact, true), without(*f.exact, false);
   // Exitances that differ from patch to patch, so a missing or extra term shows.
@@ -81,7 +90,7 @@ TEST(ChunkVerdict, GatherIsTheSameToTheBitWithFewerSegments) {
                                  std::pair{Vec3(x, y, 2.499), Vec3(0, 0, -1)}}) {
         const double a = gather_set_point(f.mesh, set, p, n, 5.0, &with);
         const double b = gather_set_point(f.mesh, set, p, n, 5.0, &without);
-        EXPECT_EQ(a, b) << "at " << p.x << ", " << p.y << ", " << p.z;
+        EXPECT_NEAR(a, b, 3e-3 * b) << "at " << p.x << ", " << p.y << ", " << p.z;
         ++points;
       }
     }

@@ -10,6 +10,7 @@
 #include "calc/indirect/partial_visibility.h"
 #include "calc/indirect/patches.h"
 #include "calc/indirect/subcells.h"
+#include "geometry/occlusion.h"
 
 namespace luxgrid::calc::indirect {
 namespace {
@@ -88,6 +89,50 @@ TEST(PartialVisibility, WhollyVisibleCellsSumToThePatchFactor) {
   std::vector<double> weight(kSubcellsPerSide * kSubcellsPerSide, 3.0);
   EXPECT_NEAR(partial_cells_integral(x, n, from, p, weight.data(), 0.0, 1e9, none, 1e-6),
               3.0 * whole, 3e-12);
+}
+
+// The scene's visibility test (geometry/occlusion.h) over one thin occluder in the plane z = 0.5
+// covering edge_m <= x <= edge_m + 2, |y| <= 2: from the origin its shadow on the patch at z = 1
+// is x >= 2 edge_m.
+geometry::OcclusionTree sheet_occluder(double edge_m) {
+  geometry::Face f;
+  f.kind = geometry::Face::Kind::obstacle;
+  f.label = "sheet";
+  f.corners = {Vec3(edge_m, -2.0, 0.5), Vec3(edge_m + 2.0, -2.0, 0.5), Vec3(edge_m + 2.0, 2.0, 0.5),
+               Vec3(edge_m, 2.0, 0.5)};
+  f.normal = Vec3(0.0, 0.0, 1.0);
+  return geometry::OcclusionTree({f});
+}
+
+TEST(PartialVisibility, AnEdgeBetweenEverySampleIsFoundByTheShaftVerdicts) {
+  // A shadow covering the patch's strip 0.4 <= x <= 0.5: the five samples (x = 0, +-0.25) and the
+  // sixteen cell centres (x = +-0.125, +-0.375) all see the light, so both sampled rules call
+  // the patch wholly seen. The patch's own shaft verdict is partial, and each cell's verdict
+  // within the faces it left finds the edge in the outer column of cells, whose five samples
+  // (x = 0.3125, 0.375, 0.4375) place it to within the strip bound of the test above. The
+  // five-sample answer is off by the whole strip's factor, five times that bound and more.
+  const Patch p = ceiling_square();
+  const Vec3 x(0.0), n(0.0, 0.0, 1.0);
+  const Vec3 from = x + n * 1e-6;
+  const double whole = point_polygon_form_factor(x, n, p.polygon);
+  const geometry::OcclusionTree occluder = sheet_occluder(0.2);
+  const double exact = visible_part_form_factor(0.4);
+  const double five = whole * visible_fraction(&occluder, from, p, 1e-6);
+  EXPECT_EQ(five, whole);
+  const double resolved = undecided_patch_integral(x, n, from, p, nullptr, 1.0, whole, 5.0,
+                                                   occluder, 1e-6, geometry::ShaftFaces{});
+  const double half_cell = 0.5 / kSubcellsPerSide;
+  const double strip = visible_part_form_factor(half_cell) - visible_part_form_factor(0.0);
+  EXPECT_NEAR(resolved, exact, 0.2 * strip);
+  EXPECT_GT(std::abs(five - exact), 5.0 * std::abs(resolved - exact));
+  // A patch the occluder cannot touch, and one wholly in its shadow: its verdict alone decides,
+  // to the bit.
+  EXPECT_EQ(undecided_patch_integral(x, n, from, p, nullptr, 1.0, whole, 5.0, sheet_occluder(0.3),
+                                     1e-6, geometry::ShaftFaces{}),
+            whole);
+  EXPECT_EQ(undecided_patch_integral(x, n, from, p, nullptr, 1.0, whole, 5.0, sheet_occluder(-1.0),
+                                     1e-6, geometry::ShaftFaces{}),
+            0.0);
 }
 
 }  // namespace
