@@ -11,8 +11,8 @@ LUXGRID_EXTRA_PACKAGES="clang ${LUXGRID_EXTRA_PACKAGES:-}" bash scripts/install-
 LUXGRID_UNITY_BUILD=ON bash scripts/build.sh
 status=0
 bash scripts/check-format.sh || status=1
-# `promise`: the non-convex rooms held to each quality's promise (tests/rooms/README.md), left out
-# until `standard` keeps it there; run them with `ctest --test-dir build -L promise`.
+# `promise`: the promise tests of the non-convex rooms not yet kept (tests/rooms/README.md), left
+# out; the ones kept run here (label `rooms`). Run the others with `ctest --test-dir build -L promise`.
 ctest --test-dir build --output-on-failure -j"$(nproc)" -LE promise || status=1
 bash fuzz/run.sh || status=1
 if [ "$status" -ne 0 ]; then echo "run-tests.sh: some tests failed (see above)" >&2; fi
