@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 
 #include "calc/indirect/chunk_verdict.h"
@@ -11,6 +12,7 @@
 #include "calc/indirect/form_factor.h"
 #include "calc/indirect/partial_visibility.h"
 #include "geometry/box3.h"
+#include "geometry/narrowed_visibility.h"
 #include "geometry/shaft.h"
 
 namespace luxgrid::calc::indirect {
@@ -242,13 +244,23 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
           continue;
         }
         // The chunk's shaft verdict from the receiver (chunk_verdict.h): every sample point of its
-        // patches, lifted off their face, lies in the chunk's vertex box moved by the lift.
+        // patches, lifted off their face, lies in the chunk's vertex box moved by the lift. Where
+        // it is partial, the patches' segments (and their cells') ask only the faces it left
+        // undecided (geometry/narrowed_visibility.h): the same answers.
+        geometry::ShaftFaces chunk_faces;
+        std::optional<geometry::NarrowedVisibility> narrowed;
         ChunkVerdict verdict(visibility != nullptr, [&, from = x + n * kGatherLift_m] {
           std::array<Vec3, 8> corners;
           const size_t count = geometry::box_element(ch.lo, ch.hi, m * kGatherLift_m, corners);
-          return visibility->classify(std::span<const Vec3>(&from, 1),
-                                      std::span<const Vec3>(corners.data(), count));
+          return visibility->classify_within(std::span<const Vec3>(&from, 1),
+                                             std::span<const Vec3>(corners.data(), count),
+                                             geometry::ShaftFaces{}, chunk_faces);
         });
+        const auto partial_visibility = [&]() -> const geometry::Visibility* {
+          if (!chunk_faces.narrowed()) return visibility;
+          if (!narrowed) narrowed.emplace(*visibility, chunk_faces);
+          return &*narrowed;
+        };
         for (size_t k = ch.begin; k < ch.end; ++k) {
           const Vec3 dx = x - Vec3(cx[k], cy[k], cz[k]);
           const double hm = glm::dot(m, dx);
@@ -270,10 +282,11 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
             if (seen == geometry::Shaft::hidden) continue;
             if (seen == geometry::Shaft::partial) {
               const Vec3 from = x + n * kGatherLift_m;
-              const double v = visible_fraction(visibility, from, p, kGatherLift_m);
+              const geometry::Visibility* among = partial_visibility();
+              const double v = visible_fraction(among, from, p, kGatherLift_m);
               // A shadow edge on the patch: resolved cell by cell (partial_visibility.h).
               e = v > 0.0 && v < 1.0 ? partial_cells_integral(x, n, from, p, cells, 0.0, far_ratio,
-                                                              *visibility, kGatherLift_m)
+                                                              *among, kGatherLift_m)
                                      : e * v;
             }
             near += e;
@@ -284,10 +297,11 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
           if (seen == geometry::Shaft::hidden) continue;
           if (seen == geometry::Shaft::partial) {
             const Vec3 from = x + n * kGatherLift_m;
-            const double v = visible_fraction(visibility, from, p, kGatherLift_m);
+            const geometry::Visibility* among = partial_visibility();
+            const double v = visible_fraction(among, from, p, kGatherLift_m);
             if (v > 0.0 && v < 1.0 && p.has_quarters) {
               near += partial_cells_integral(x, n, from, p, nullptr, flux[k] / p.area_m2, far_ratio,
-                                             *visibility, kGatherLift_m);
+                                             *among, kGatherLift_m);
               continue;
             }
             f *= v;
