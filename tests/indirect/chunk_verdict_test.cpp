@@ -5,11 +5,13 @@
 //
 // Where a chunk's verdict is partial, its patches' segments ask only the faces the verdict left
 // undecided (geometry/narrowed_visibility.h, patches.h visible_fraction_within), and so do those
-// of a clustered room's partly hidden source patches: the form factors, the gather (refined
-// patches' cells too) and the clustered links are the same to the bit as with every such segment
-// traced through the scene, and few segments are still traced. The answer per segment is checked
-// against the trace by brute force in geometry (ShaftFaces.NarrowedAnswersEqualTheTraceForEvery
-// Segment); these tests hold the calculations that use it.
+// of a clustered room's partly hidden source patches, and the clustered descent classifies a
+// node among the faces its parent's verdict left: the form factors, the gather (refined patches'
+// cells too) and the clustered links are the same to the bit as with every such segment traced
+// through the scene and every verdict among all faces, and few segments are still traced. The
+// answer per segment is checked against the trace by brute force in geometry
+// (ShaftFaces.NarrowedAnswersEqualTheTraceForEvery Segment); these tests hold the calculations that
+// use it.
 #include <gtest/gtest.h>
 
 #include <atomic>
