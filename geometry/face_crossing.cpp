@@ -36,11 +36,22 @@ FaceSheet face_sheet(const Face& face) {
   return s;
 }
 
+ShortenedSegment shortened_segment(const Vec3& a, const Vec3& b) {
+  ShortenedSegment s;
+  s.a = a, s.b = b, s.d = b - a;
+  const double len = glm::length(s.d);
+  s.touches = !(len > 2.0 * kOcclusionEndAllowance_m);
+  if (!s.touches) s.step = s.d * (kOcclusionEndAllowance_m / len);
+  return s;
+}
+
 bool segment_crosses(const FaceSheet& face, const Vec3& a, const Vec3& b) {
-  const Vec3 d = b - a;
-  const double len = glm::length(d);
-  if (!(len > 2.0 * kOcclusionEndAllowance_m)) return false;  // the ends touch: nothing between
-  const Vec3 step = d * (kOcclusionEndAllowance_m / len);
+  return segment_crosses(face, shortened_segment(a, b));
+}
+
+bool segment_crosses(const FaceSheet& face, const ShortenedSegment& s) {
+  if (s.touches) return false;  // the ends touch: nothing between
+  const Vec3 &a = s.a, &b = s.b, &d = s.d, &step = s.step;
   const double da = glm::dot(a + step - face.origin, face.normal);
   const double db = glm::dot(b - step - face.origin, face.normal);
   if (!((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0))) return false;

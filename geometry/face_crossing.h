@@ -45,4 +45,15 @@ FaceSheet face_sheet(const Face& face);
 // True when the segment from `a` to `b` crosses `face` by the rule above.
 bool segment_crosses(const FaceSheet& face, const Vec3& a, const Vec3& b);
 
+// The segment from `a` to `b` as the rule reads it (its direction, and the end allowance's step
+// along it), computed once for a segment asked of several faces (Visibility::visible_among):
+// segment_crosses(face, shortened_segment(a, b)) is segment_crosses(face, a, b), the same
+// arithmetic.
+struct ShortenedSegment {
+  Vec3 a{0.0}, b{0.0}, d{0.0}, step{0.0};
+  bool touches = true;  // the ends within twice the allowance: nothing between
+};
+ShortenedSegment shortened_segment(const Vec3& a, const Vec3& b);
+bool segment_crosses(const FaceSheet& face, const ShortenedSegment& s);
+
 }  // namespace luxgrid::geometry

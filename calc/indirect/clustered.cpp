@@ -167,16 +167,19 @@ SegmentEnds segment_ends(const PatchMesh& mesh, size_t begin,
 }
 
 // The shaft verdict (geometry/shaft.h) for the segments between source node a's shooting points
-// and receiving node b's sample points, each box moved off its face by the lift.
+// and receiving node b's sample points, each box moved off its face by the lift, decided among
+// the faces `among` (those a shaft holding this one left undecided: the verdict of a's parent
+// against b; ShaftFaces{}: every face); where `partial`, the faces it leaves into `undecided`.
 geometry::Shaft node_verdict(const geometry::Visibility& visibility, const SegmentEnds& ends,
-                             const std::vector<ClusterNode>& nodes, uint32_t a, uint32_t b) {
+                             const std::vector<ClusterNode>& nodes, uint32_t a, uint32_t b,
+                             const geometry::ShaftFaces& among, geometry::ShaftFaces& undecided) {
   std::array<Vec3, 8> source, receiver;
   const size_t ns = geometry::box_element(ends.shoot[a].lo, ends.shoot[a].hi,
                                           nodes[a].normal * kShootLift_m, source);
   const size_t nr = geometry::box_element(ends.sample[b].lo, ends.sample[b].hi,
                                           nodes[b].normal * kShootLift_m, receiver);
-  return visibility.classify(std::span<const Vec3>(source.data(), ns),
-                             std::span<const Vec3>(receiver.data(), nr));
+  return visibility.classify_within(std::span<const Vec3>(source.data(), ns),
+                                    std::span<const Vec3>(receiver.data(), nr), among, undecided);
 }
 
 }  // namespace
@@ -333,8 +336,15 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
       const ClusterNode& R = T.nodes[root.node];
       ClusterBlock& blk = T.blocks[w];
       // Source nodes to descend, each with whether the block sees all of it (proven by a shaft
-      // verdict, or no visibility test); then those left to each patch, likewise.
-      std::vector<std::pair<uint32_t, bool>> stack, candidates;
+      // verdict, or no visibility test) and the faces that may still block some of its segments
+      // (those its parent's verdict left undecided: a node's shaft lies in its parent's, so no
+      // other face can); then those left to each patch, likewise.
+      struct Candidate {
+        uint32_t node = 0;
+        bool seen = false;
+        geometry::ShaftFaces faces;
+      };
+      std::vector<Candidate> stack, candidates;
       std::vector<uint32_t> own_stack, distinct;
       // The nodes patches take by themselves (node, k: taken by blk.leaves[k]), and per patch its
       // links to single source patches.
@@ -345,25 +355,27 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
       for (size_t f = 0; f < T.roots.size(); ++f) {
         if (f == root.face) continue;  // a face does not light itself
         candidates.clear();
-        stack.push_back({T.roots[f], visibility == nullptr});
+        stack.push_back({T.roots[f], visibility == nullptr, {}});
         while (!stack.empty()) {
-          // Not a structured binding: the verdict's lambda captures them (clang before 16 refuses).
-          const uint32_t a_id = stack.back().first;
-          const bool seen = stack.back().second;
+          const Candidate top = stack.back();
+          const uint32_t a_id = top.node;
+          const bool seen = top.seen;
           stack.pop_back();
           const ClusterNode& a = T.nodes[a_id];
           if (!face_each_other(a, R)) continue;
           // Where the node would be linked (taken whole, or left to each patch), what the block
           // sees of it: hidden nodes are dropped, partly hidden ones opened (a leaf is left to each
           // patch's own segments), visible ones need no more segments below them.
+          geometry::ShaftFaces undecided = top.faces;
           const auto verdict = [&] {
             return seen ? geometry::Shaft::visible
-                        : node_verdict(*visibility, ends, T.nodes, a_id, root.node);
+                        : node_verdict(*visibility, ends, T.nodes, a_id, root.node, top.faces,
+                                       undecided);
           };
           if (is_leaf(a)) {
             const geometry::Shaft v = verdict();
             if (v != geometry::Shaft::hidden)
-              candidates.push_back({a_id, v == geometry::Shaft::visible});
+              candidates.push_back({a_id, v == geometry::Shaft::visible, undecided});
             continue;
           }
           const double dm = std::max(a.diameter_m, root.max_diameter_m);
@@ -378,8 +390,8 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
           const geometry::Shaft v = open ? geometry::Shaft::partial : verdict();
           if (v == geometry::Shaft::hidden) continue;
           if (v == geometry::Shaft::partial) {
-            stack.push_back({a.child[0], seen});
-            stack.push_back({a.child[1], seen});
+            stack.push_back({a.child[0], seen, undecided});
+            stack.push_back({a.child[1], seen, undecided});
             continue;
           }
           if (whole) {
@@ -387,21 +399,23 @@ ClusteredTransfer clustered_transfer(const PatchMesh& mesh, int room, double far
             blk.whole_mask.push_back(all);
             continue;
           }
-          candidates.push_back({a_id, true});
+          candidates.push_back({a_id, true, {}});
         }
         for (size_t k = 0; k < blk.leaves.size(); ++k) {
           const ClusterNode& b = T.nodes[blk.leaves[k]];
           const Patch& dst = mesh.patches[T.begin + b.patch];
-          for (const auto& [c, seen] : candidates) {
-            if (!seen) {
+          for (const Candidate& cand : candidates) {
+            const uint32_t c = cand.node;
+            if (!cand.seen) {
               // A source patch partly hidden from the block: the dense path's factor times the
-              // share of this patch its centroid sees (radiosity.cpp).
+              // share of this patch its centroid sees (radiosity.cpp), its segments asking only
+              // the faces the leaf's verdict against the block left undecided: the same answers.
               const ClusterNode& a = T.nodes[c];
               if (!face_each_other(a, b)) continue;
               double f = patch_pair_form_factor(mesh.patches[T.begin + a.patch], dst, far);
               if (f > 0.0)
-                f *= visible_fraction(visibility, a.centroid + a.normal * kShootLift_m, dst,
-                                      kShootLift_m);
+                f *= visible_fraction_within(visibility, a.centroid + a.normal * kShootLift_m, dst,
+                                             kShootLift_m, cand.faces);
               if (f > 0.0) near[k].push_back({c, static_cast<float>(f)});
               continue;
             }

@@ -67,10 +67,9 @@ double partial_cells_integral(const Vec3& x, const Vec3& n, const Vec3& from, co
   }
   // Every centre agreeing in a patch whose own verdict is partial: the edge passes between them
   // (a shadow sliver along the border, or a thin occluder's shadow between centres). Each cell's
-  // own verdict finds it, where the faces are narrowed.
-  bool agree = true;
-  for (int k = 1; k < kSide * kSide; ++k) agree = agree && centre_seen[k] == centre_seen[0];
-  const bool by_cell = narrowed && agree;
+  // own verdict finds it (among the patch's faces where they are narrowed, among all otherwise).
+  bool by_cell = true;
+  for (int k = 1; k < kSide * kSide; ++k) by_cell = by_cell && centre_seen[k] == centre_seen[0];
   const auto differs = [&](int k, int a, int b) {
     return a >= 0 && a < kSide && b >= 0 && b < kSide &&
            centre_seen[a * kSide + b] != centre_seen[k];

@@ -16,13 +16,14 @@
 // integrated over its kSubcellsPerSide^2 cells (subcells.h), each with its own form factor from
 // the receiver (the point kernel beyond far_ratio x the cell's diameter, Lambert's polygon formula
 // closer) and its own visibility:
-// - where the patch's verdict narrowed the faces that may block to a few
-//   (geometry/visibility.h ShaftFaces), each cell's shaft verdict within them, and a cell still
-//   partial the share of five samples (its centre and the midpoints towards its corners) that
-//   are seen: only cells an edge crosses are sampled, and no edge is missed;
-// - otherwise (more faces than a narrowed shaft keeps) each cell's centre, and where a
-//   neighbouring cell's centre gets the other verdict (the edge runs through or beside it) the
-//   share of five samples: the edge placed to within half a cell, for 16 rays plus 4 per edge cell.
+// - each cell's centre, tested against the faces the patch's verdict left undecided where it
+//   narrowed them to a few (geometry/visibility.h ShaftFaces), traced otherwise; where a
+//   neighbouring cell's centre gets the other verdict (the edge runs through or beside it), the
+//   share of five samples (its centre and the midpoints towards its corners) that are seen: the
+//   edge placed to within half a cell, for 16 tests plus 4 per edge cell;
+// - where every centre agrees although the patch's verdict is partial (the edge passes between
+//   them), each cell's own shaft verdict, and a cell still partial its five samples: no edge is
+//   missed.
 
 #include "calc/indirect/patches.h"
 #include "geometry/visibility.h"

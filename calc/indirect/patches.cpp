@@ -3,6 +3,7 @@
 #include "calc/indirect/form_factor.h"
 #include "calc/opening_placement.h"
 #include "calc/scene_visibility.h"
+#include "geometry/narrowed_visibility.h"
 #include "util/error.h"
 #include "util/robust_math.h"
 
@@ -435,6 +436,14 @@ double visible_fraction(const geometry::Visibility* visibility, const Vec3& from
   for (size_t k = count; k <= target.polygon.size(); ++k)
     if (visibility->visible(from, 0.5 * (target.polygon[k - 1] + target.centroid) + lift)) ++seen;
   return static_cast<double>(seen) / static_cast<double>(target.polygon.size() + 1);
+}
+
+double visible_fraction_within(const geometry::Visibility* visibility, const Vec3& from,
+                               const Patch& target, double lift_m,
+                               const geometry::ShaftFaces& among) {
+  if (!visibility || !among.narrowed()) return visible_fraction(visibility, from, target, lift_m);
+  const geometry::NarrowedVisibility narrowed(*visibility, among);
+  return visible_fraction(&narrowed, from, target, lift_m);
 }
 
 }  // namespace luxgrid::calc::indirect

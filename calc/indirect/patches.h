@@ -101,4 +101,13 @@ std::vector<int> rooms_containing(const Scene& scene, const Vec3& p, double tole
 double visible_fraction(const geometry::Visibility* visibility, const Vec3& from,
                         const Patch& target, double lift_m);
 
+// visible_fraction(visibility, from, target, lift_m), the same number, where every segment lies in
+// a shaft whose classification left the faces `among` undecided (Visibility::classify_within):
+// where they are narrowed, each segment asks only them (geometry/narrowed_visibility.h), a few
+// plane tests instead of a trace through the scene, and gets the occlusion test's answer.
+// Otherwise the segments are traced as there.
+double visible_fraction_within(const geometry::Visibility* visibility, const Vec3& from,
+                               const Patch& target, double lift_m,
+                               const geometry::ShaftFaces& among);
+
 }  // namespace luxgrid::calc::indirect

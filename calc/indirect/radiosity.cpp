@@ -171,11 +171,16 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
         // The chunk's shaft verdict against the receiver (chunk_verdict.h): each source's
         // shooting point lies in its centroid box moved by the lift, the receiver's sample points
         // in its polygon moved by the lift (visible_fraction).
+        // Where it is partial, each source's segments ask only the faces it left undecided
+        // (geometry/narrowed_visibility.h): the same answers.
+        geometry::ShaftFaces chunk_faces;
         ChunkVerdict verdict(visibility != nullptr, [&] {
           std::array<Vec3, 8> sources;
           const size_t count = geometry::box_element(c.lo, c.hi, sn * kShootLift_m, sources);
-          return visibility->classify(std::span<const Vec3>(sources.data(), count),
-                                      std::span<const Vec3>(receiver.data(), receiver.size()));
+          return visibility->classify_within(
+              std::span<const Vec3>(sources.data(), count),
+              std::span<const Vec3>(receiver.data(), receiver.size()), geometry::ShaftFaces{},
+              chunk_faces);
         });
         for (size_t k = c.begin; k < c.end; ++k) {
           const size_t j = order[k];
@@ -186,7 +191,8 @@ FormFactorMatrix form_factors(const PatchMesh& mesh, int room,
           if (seen == geometry::Shaft::hidden)
             f = 0.0;
           else if (seen == geometry::Shaft::partial)
-            f *= visible_fraction(visibility, sc + sn * kShootLift_m, dst, kShootLift_m);
+            f *= visible_fraction_within(visibility, sc + sn * kShootLift_m, dst, kShootLift_m,
+                                         chunk_faces);
           row[j] = static_cast<float>(f);
         }
       }

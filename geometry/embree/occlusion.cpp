@@ -189,9 +189,10 @@ Shaft OcclusionTree::classify_within(std::span<const Vec3> a, std::span<const Ve
 bool OcclusionTree::visible_among(const Vec3& from, const Vec3& to, const ShaftFaces& faces) const {
   if (!impl_->scene) return true;
   if (!faces.narrowed()) return visible(from, to);
+  const ShortenedSegment segment = shortened_segment(from, to);  // once for all the faces
   for (int i = 0; i < faces.count; ++i) {
     const uint32_t face = impl_->shafts.face_of(faces.face[static_cast<size_t>(i)]);
-    if (impl_->traced[face] && segment_crosses(impl_->sheets[face], from, to)) return false;
+    if (impl_->traced[face] && segment_crosses(impl_->sheets[face], segment)) return false;
   }
   return true;
 }
