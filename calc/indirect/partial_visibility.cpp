@@ -67,8 +67,11 @@ double partial_cells_integral(const Vec3& x, const Vec3& n, const Vec3& from, co
   }
   // Every centre agreeing in a patch whose own verdict is partial: the edge passes between them
   // (a shadow sliver along the border, or a thin occluder's shadow between centres). Each cell's
-  // own verdict finds it (among the patch's faces where they are narrowed, among all otherwise).
-  bool by_cell = true;
+  // own verdict among the patch's faces finds it, where they are narrowed. Not otherwise: a test
+  // that cannot narrow (the obstacles-only filter of a convex room) calls every shaft near an
+  // obstacle partial, hidden ones too, and sixteen verdicts among all faces for each such patch
+  // cost a single-threaded run of tests/unusual/coincident_faces/box_given_twice 3.5 times its CPU.
+  bool by_cell = narrowed;
   for (int k = 1; k < kSide * kSide; ++k) by_cell = by_cell && centre_seen[k] == centre_seen[0];
   const auto differs = [&](int k, int a, int b) {
     return a >= 0 && a < kSide && b >= 0 && b < kSide &&

@@ -22,8 +22,8 @@
 //   share of five samples (its centre and the midpoints towards its corners) that are seen: the
 //   edge placed to within half a cell, for 16 tests plus 4 per edge cell;
 // - where every centre agrees although the patch's verdict is partial (the edge passes between
-//   them), each cell's own shaft verdict, and a cell still partial its five samples: no edge is
-//   missed.
+//   them) and the faces are narrowed, each cell's own shaft verdict among them, and a cell still
+//   partial its five samples: no edge is missed.
 
 #include "calc/indirect/patches.h"
 #include "geometry/visibility.h"
