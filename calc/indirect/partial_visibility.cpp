@@ -11,21 +11,20 @@ namespace {
 
 constexpr int kSide = kSubcellsPerSide;
 
-// The share of a cell's five samples (its centre and the midpoints towards its corners, lifted)
-// seen from `from`: by the faces left undecided where the cell's shaft verdict narrowed them,
-// by a trace otherwise.
+// The share of a cell's five samples (its centre, whose verdict `centre_seen` is known, and the
+// midpoints towards its corners, lifted) seen from `from`: the midpoints by the faces left
+// undecided where a shaft verdict narrowed them, by a trace otherwise.
 double five_sample_share(const Vec3& from, const SubcellCorners& cell, const Vec3& centre,
-                         const Vec3& lift, const geometry::Visibility& visibility,
+                         bool centre_seen, const Vec3& lift, const geometry::Visibility& visibility,
                          const geometry::ShaftFaces* faces) {
-  std::array<Vec3, 5> samples;
-  samples[0] = centre + lift;
-  for (size_t c = 0; c < 4; ++c) samples[c + 1] = 0.5 * (cell[c] + centre) + lift;
-  int count = 0;
+  std::array<Vec3, 4> towards;
+  for (size_t c = 0; c < 4; ++c) towards[c] = 0.5 * (cell[c] + centre) + lift;
+  int count = centre_seen ? 1 : 0;
   if (faces) {
-    for (const Vec3& s : samples) count += visibility.visible_among(from, s, *faces) ? 1 : 0;
+    for (const Vec3& s : towards) count += visibility.visible_among(from, s, *faces) ? 1 : 0;
   } else {
-    std::array<bool, 5> seen;
-    visibility.visible_from(from, samples, seen.data());
+    std::array<bool, 4> seen;
+    visibility.visible_from(from, towards, seen.data());
     for (const bool s : seen) count += s ? 1 : 0;
   }
   return count / 5.0;
@@ -93,13 +92,15 @@ double partial_cells_integral(const Vec3& x, const Vec3& n, const Vec3& from, co
         const geometry::Shaft verdict =
             visibility.classify_within(std::span<const Vec3>(&from, 1), corners, faces, cell_faces);
         if (verdict == geometry::Shaft::partial)
-          seen = five_sample_share(from, cells[k], centres[k], lift, visibility, &cell_faces);
+          seen = five_sample_share(from, cells[k], centres[k], centre_seen[k], lift, visibility,
+                                   &cell_faces);
         else
           seen = verdict == geometry::Shaft::visible ? 1.0 : 0.0;
       } else if (differs(k, a - 1, b) || differs(k, a + 1, b) || differs(k, a, b - 1) ||
                  differs(k, a, b + 1)) {
         // The edge runs through or beside this cell: its midpoints towards its corners too.
-        seen = five_sample_share(from, cells[k], centres[k], lift, visibility, among);
+        seen =
+            five_sample_share(from, cells[k], centres[k], centre_seen[k], lift, visibility, among);
       }
       sum += w * f * seen;
     }
