@@ -88,8 +88,7 @@ DirectEstimateInputs run_direct(const Scene& scene, const SceneLookups& lookups,
 // run before becoming the coarse one of the estimate (so each step costs one run at the finer
 // size), at most kMaxPatchRefinements times, never beyond the patch budget (limits.h) and never
 // beyond kRefineWorkLimit. The rest of the promise is left to the direct light's and the
-// bounces' estimates.
-constexpr double kPatchShareOfPromise = 0.5;
+// bounces' estimates (kPatchShareOfPromise, plan_estimates.h).
 constexpr int kMaxPatchRefinements = 2;
 // The work a finer mesh may cost: the form-factor pairs of its rooms (patches^2 per room, from
 // the rooms' areas), a pair counting kVisibilityPairCost times where the room needs visibility

@@ -37,6 +37,12 @@ namespace luxgrid::calc {
 // its surface's maximum; 0 when it promises no number (draft: none; reference: the yardstick).
 double promised_error(Quality q);
 
+// The share of a quality's promise the interreflection mesh's patch size is given: the run
+// refines the mesh while a surface's difference d1 exceeds it (calc/pipeline.cpp), and a
+// refinement a limit stopped is a warning only where the plan's estimate of the mesh that stayed
+// exceeds it (report/plan_text.h). The rest is the direct light's and the bounces'.
+inline constexpr double kPatchShareOfPromise = 0.5;
+
 // Probe points per surface for the patch-size estimate: the coarse runs gather at these only,
 // so they cost the coarse meshes (a quarter and a sixteenth of the patches) and little more.
 inline constexpr size_t kProbePointsPerSurface = 48;

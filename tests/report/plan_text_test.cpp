@@ -78,6 +78,42 @@ TEST(PlanText, WordsEachDecisionFromItsValues) {
             "surface's maximum");
 }
 
+// A refinement the work limit stopped: a warning where the estimate of the mesh that stayed
+// exceeds the patch size's half of the promise, a note where it does not (the refinement chooses
+// on the difference d1, the estimate extrapolates it with the measured order).
+TEST(PlanText, AStoppedRefinementWarnsOnlyWhereTheEstimateExceedsItsShare) {
+  calc::Plan p = sample_plan();
+  p.estimates.front().direct = 0.001;
+  p.estimates.front().patch_size = 0.0039;  // d1 0.8 % extrapolated with order 1.62
+  calc::PatchRefinement r;
+  r.outcome = calc::PatchRefinement::Outcome::work_over_limit;
+  r.from_m = 0.25, r.to_m = 0.125, r.estimate = 0.008, r.surface = "workplane";
+  r.work_pairs = 2.6e7, r.work_limit_pairs = 1e7;
+  p.refinements.push_back(r);
+  const std::string stop =
+      "indirect: the patch-size difference at 0.25 m (to the mesh at 0.5 m), 0.8 % on surface "
+      "'workplane', is above half of standard's promise, but a mesh at 0.125 m would cost 2.6e+07 "
+      "pairs and links (a dense room's form-factor pairs, a pair counting 8 where rays are "
+      "traced; a clustered room's links), above the limit of 1e+07; the patch size stays 0.25 m";
+  EXPECT_TRUE(plan_warnings(p).empty());
+  const auto notes = plan_notes(p);
+  ASSERT_FALSE(notes.empty());
+  EXPECT_EQ(notes.front(), stop +
+                               "; the estimate there, extrapolated with the order measured on "
+                               "three meshes, is at most 0.39 % on every surface, within the "
+                               "patch size's half of the promise");
+  // Just above the share (0.5 % of standard's 1 %): the same words as a warning, no note.
+  p.estimates.front().patch_size = 0.0051;
+  const auto warnings = plan_warnings(p);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings.front(), stop);
+  EXPECT_EQ(plan_notes(p).front().find("indirect:"), std::string::npos);
+  // Estimates not made: the stop stays a warning.
+  p.estimates.front().patch_size = 0.0039;
+  p.errors_estimated = false;
+  EXPECT_EQ(plan_warnings(p).size(), 1u);
+}
+
 TEST(PlanText, WordsTheSolversNotes) {
   using calc::indirect::IndirectNote;
   IndirectNote budget;

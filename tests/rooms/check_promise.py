@@ -1,8 +1,9 @@
 """A quality's promise on one room (ctest promise_<room>_<quality>, tests/rooms/README.md): runs
 `luxgrid calc PROJECT --quality Q` in a temporary folder and holds it to the room's stored
 reference with `luxgrid diff --promise --tol TOL` (every point brighter than 1 % of its surface's
-maximum within TOL of the reference), and to the plan's own estimates: none above the promise (a
-run that keeps the promise without knowing it still warns its user).
+maximum within TOL of the reference), to the plan's own estimates: none above the promise (a
+run that keeps the promise without knowing it still warns its user), and to no warning at all (a
+refinement a limit stopped where the estimate needed it warns too).
 
   python3 check_promise.py LUXGRID PROJECT REFERENCE QUALITY TOL
 
@@ -35,13 +36,17 @@ def main():
         print(diff.stdout + diff.stderr, end="")
         if diff.returncode not in (0, 1):
             return 2
-        plan = json.load(open(os.path.join(out, "results.json")))["plan"]
+        results = json.load(open(os.path.join(out, "results.json")))
+        plan = results["plan"]
         promise = plan.get("promise", 0.0)
         over = [e for e in plan.get("estimates", []) if promise > 0 and e["total"] > promise]
         for e in over:
             print(f"FAIL: surface '{e['surface']}': the plan's estimate {100 * e['total']:.2f} % "
                   f"exceeds {quality}'s promise of {100 * promise:g} %")
-        return 1 if diff.returncode == 1 or over else 0
+        warnings = results.get("warnings", [])
+        for w in warnings:
+            print(f"FAIL: the run warns: {w}")
+        return 1 if diff.returncode == 1 or over or warnings else 0
 
 
 if __name__ == "__main__":
