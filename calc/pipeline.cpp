@@ -83,13 +83,16 @@ DirectEstimateInputs run_direct(const Scene& scene, const SceneLookups& lookups,
   return estimates;
 }
 
-// The patch size chosen by the estimate: while a surface's patch-size estimate exceeds
-// kPatchShareOfPromise of the quality's promise, the rooms are meshed again at half the size, the
-// run before becoming the coarse one of the estimate (so each step costs one run at the finer
-// size), at most kMaxPatchRefinements times, never beyond the patch budget (limits.h) and never
-// beyond kRefineWorkLimit. The rest of the promise is left to the direct light's and the
-// bounces' estimates (kPatchShareOfPromise, plan_estimates.h).
-constexpr int kMaxPatchRefinements = 2;
+// The patch size chosen by the estimate: while a surface's patch-size difference exceeds
+// kPatchShareOfPromise of the quality's refinement target (plan_estimates.h: its promise, or
+// `reference`'s convergence target), the rooms are meshed again at half the size, the run before
+// becoming the coarse one of the estimate (so each step costs one run at the finer size), at most
+// `steps` times, never beyond the patch budget (limits.h) and never beyond `work_limit`. The rest
+// of the target is left to the direct light's and the bounces' estimates.
+struct RefinementRule {
+  int steps = 0;
+  double work_limit = 0.0;  // pairs and links, as refine_work counts them
+};
 // The work a finer mesh may cost: the form-factor pairs of its rooms (patches^2 per room, from
 // the rooms' areas), a pair counting kVisibilityPairCost times where the room needs visibility
 // tests (not convex, or with obstacles: each pair then traces rays). 1728 patches in the convex
@@ -97,6 +100,21 @@ constexpr int kMaxPatchRefinements = 2;
 // at 0.25 m with visibility would be 75 million, tens of seconds. A room with the clustered
 // transfer (calc/indirect/clustered.h) counts its links instead.
 constexpr double kRefineWorkLimit = 1e7;
+// `reference` halves its 0.2 m once where its own estimate asks for it, up to 5 x 10^7 links: a
+// 0.1 m mesh of about 400 m^2 of surface, as tests/rooms/ushape and tshape (36 566 and 35 028
+// patches, about a minute on two cores, tests/rooms/README.md); a hall beyond it stays at 0.2 m
+// and says so. Once: a second step would cost four times as much again (examples/lshape at
+// 0.05 m: 82 436 patches and 3.3 GB).
+constexpr double kReferenceRefineWorkLimit = 5e7;
+RefinementRule refinement_rule(Quality q) {
+  switch (q) {
+    case Quality::draft: return {};
+    case Quality::standard:
+    case Quality::high: return {2, kRefineWorkLimit};
+    case Quality::reference: return {1, kReferenceRefineWorkLimit};
+  }
+  return {};
+}
 constexpr double kVisibilityPairCost = 8.0;
 double refine_work(const Scene& scene, double patch_size_m) {
   double work = 0.0;
@@ -139,7 +157,7 @@ struct WorstPatchEstimate {
   std::vector<std::vector<double>> probe_lx;
   std::optional<indirect::IndirectResult> everywhere;
 };
-// `final`: no finer mesh can follow (its work would exceed kRefineWorkLimit), so this solution
+// `final`: no finer mesh can follow (its work would exceed the rule's limit), so this solution
 // gives the results whatever the estimate says: it is gathered at every point at once and the
 // probes read from that (the same bits as gathering them alone), instead of gathering the
 // probes twice.
@@ -188,15 +206,16 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
                        const std::vector<geometry::SurfaceGrid>& probes,
                        IndirectEstimateInputs& est,
                        std::optional<indirect::IndirectResult>& gathered) {
-  const double promise = promised_error(scene.settings.quality);
-  // Not when the bounces not followed already break the promise (a fixed bounce count): a finer
+  const double target = refinement_target(scene.settings.quality);
+  const RefinementRule rule = refinement_rule(scene.settings.quality);
+  // Not when the bounces not followed already exceed the target (a fixed bounce count): a finer
   // mesh cannot make up for them.
-  if (!(promise > 0.0) || solution->result.residual > promise) return;
-  for (int step = 0; step < kMaxPatchRefinements; ++step) {
-    const bool final = refine_work(scene, 0.5 * solution->result.patch_size_m) > kRefineWorkLimit;
+  if (!(target > 0.0) || solution->result.residual > target) return;
+  for (int step = 0; step < rule.steps; ++step) {
+    const bool final = refine_work(scene, 0.5 * solution->result.patch_size_m) > rule.work_limit;
     WorstPatchEstimate w = worst_patch_estimate(scene, results, *solution, probes, est, final);
     gathered = std::move(w.everywhere);
-    if (!(w.worst > kPatchShareOfPromise * promise)) return;
+    if (!(w.worst > kPatchShareOfPromise * target)) return;
     const double size_m = solution->result.patch_size_m;
     PatchRefinement step_taken;
     step_taken.from_m = size_m;
@@ -205,10 +224,10 @@ void refine_patch_size(const Scene& scene, Results& results, indirect::IndirectO
     options.patch_size_m = 0.5 * size_m;
     step_taken.to_m = options.patch_size_m;
     const double work = refine_work(scene, options.patch_size_m);
-    if (work > kRefineWorkLimit) {
+    if (work > rule.work_limit) {
       step_taken.outcome = PatchRefinement::Outcome::work_over_limit;
       step_taken.work_pairs = work;
-      step_taken.work_limit_pairs = kRefineWorkLimit;
+      step_taken.work_limit_pairs = rule.work_limit;
       results.plan.refinements.push_back(std::move(step_taken));
       return;
     }

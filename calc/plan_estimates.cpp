@@ -25,6 +25,10 @@ double promised_error(Quality q) {
   return 0.0;
 }
 
+double refinement_target(Quality q) {
+  return q == Quality::reference ? kReferenceConvergenceTarget : promised_error(q);
+}
+
 std::vector<size_t> probe_points(const geometry::SurfaceGrid& grid) {
   std::vector<size_t> active;
   for (size_t i = 0; i < grid.points.size(); ++i)

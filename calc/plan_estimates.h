@@ -37,10 +37,20 @@ namespace luxgrid::calc {
 // its surface's maximum; 0 when it promises no number (draft: none; reference: the yardstick).
 double promised_error(Quality q);
 
-// The share of a quality's promise the interreflection mesh's patch size is given: the run
-// refines the mesh while a surface's difference d1 exceeds it (calc/pipeline.cpp), and a
-// refinement a limit stopped is a warning only where the plan's estimate of the mesh that stayed
-// exceeds it (report/plan_text.h). The rest is the direct light's and the bounces'.
+// What `reference`, the yardstick, holds its own reflected light to: its estimate at most this at
+// every point (relative, as the promises count), so that a `high` run's 0.3 % is measured against
+// something several times finer.
+inline constexpr double kReferenceConvergenceTarget = 0.002;
+
+// The error the interreflection mesh is refined for (calc/pipeline.cpp): the promise at
+// `standard` and `high`, kReferenceConvergenceTarget at `reference`, 0 (no refinement) at
+// `draft`.
+double refinement_target(Quality q);
+
+// The share of that target the interreflection mesh's patch size is given: the run refines the
+// mesh while a surface's difference d1 exceeds it (calc/pipeline.cpp), and a refinement a limit
+// stopped is a warning only where the plan's estimate of the mesh that stayed exceeds it
+// (report/plan_text.h). The rest is the direct light's and the bounces'.
 inline constexpr double kPatchShareOfPromise = 0.5;
 
 // Probe points per surface for the patch-size estimate: the coarse runs gather at these only,

@@ -40,11 +40,18 @@ std::string emergency_output_text(const calc::EmergencyOutputNote& o) {
   return o.luminaire + ": " + what;
 }
 
+// What the mesh is refined for (calc::refinement_target): "standard's promise", or reference's
+// convergence target with its figure.
+std::string refinement_target_text(calc::Quality quality) {
+  if (quality == calc::Quality::reference)
+    return "reference's convergence target of " + percent2(calc::refinement_target(quality));
+  return std::string(calc::to_string(quality)) + "'s promise";
+}
+
 std::string refinement_why(const calc::PatchRefinement& r, calc::Quality quality) {
   return "the patch-size difference at " + format_double("%.3g", r.from_m) + " m (to the mesh at " +
          format_double("%.3g", 2.0 * r.from_m) + " m), " + format_double("%.2g", 100 * r.estimate) +
-         " % on surface '" + r.surface + "', is above half of " + calc::to_string(quality) +
-         "'s promise";
+         " % on surface '" + r.surface + "', is above half of " + refinement_target_text(quality);
 }
 
 // A refinement the work limit or the patch budget stopped (PatchRefinement's outcomes other than
@@ -79,13 +86,15 @@ double worst_patch_size_estimate(const calc::Plan& plan) {
 // against the room's reference).
 bool refinement_stop_within_share(const calc::Plan& plan) {
   const double worst = worst_patch_size_estimate(plan);
-  return plan.promise > 0.0 && worst >= 0.0 && worst <= calc::kPatchShareOfPromise * plan.promise;
+  const double target = calc::refinement_target(plan.quality);
+  return target > 0.0 && worst >= 0.0 && worst <= calc::kPatchShareOfPromise * target;
 }
 
 std::string refinement_stop_harmless_text(const calc::Plan& plan) {
   return "the estimate there, extrapolated with the order measured on three meshes, is at most " +
          format_double("%.2g", 100 * worst_patch_size_estimate(plan)) +
-         " % on every surface, within the patch size's half of the promise";
+         " % on every surface, within the patch size's half of " +
+         refinement_target_text(plan.quality);
 }
 
 }  // namespace

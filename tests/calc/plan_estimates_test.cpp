@@ -327,6 +327,36 @@ TEST(PlanEstimates, EstimateAbovePromiseIsAWarning) {
   EXPECT_TRUE(r.plan.refinements.empty());
 }
 
+// `reference`, the yardstick, halves its 0.2 m mesh once where its own patch-size difference is
+// above half its convergence target (kReferenceConvergenceTarget, 0.2 %): the office's 0.2 m
+// mesh differs from 0.4 m by up to 0.5 % (its ceiling), so it is solved at 0.1 m (10 400
+// patches, the clustered transfer), where the estimate from 0.1, 0.2 and 0.4 m is within the
+// target on every surface (measured: at most 0.105 %, the activity faces).
+TEST(PlanEstimates, ReferenceHalvesItsMeshWhereItsOwnEstimateAsks) {
+  Scene scene = office();
+  scene.settings.quality = Quality::reference;
+  const Results r = run_scene(scene);
+  ASSERT_EQ(r.plan.refinements.size(), 1u);
+  const PatchRefinement& step = r.plan.refinements.front();
+  EXPECT_EQ(step.outcome, PatchRefinement::Outcome::refined);
+  EXPECT_DOUBLE_EQ(step.from_m, 0.2);
+  EXPECT_DOUBLE_EQ(step.to_m, 0.1);
+  EXPECT_GT(step.estimate, kPatchShareOfPromise * kReferenceConvergenceTarget);
+  ASSERT_TRUE(r.plan.indirect_run.has_value());
+  EXPECT_DOUBLE_EQ(r.plan.indirect_run->patch_size_m, 0.1);
+  EXPECT_DOUBLE_EQ(r.plan.indirect_run->coarse_patch_size_m, 0.2);
+  EXPECT_DOUBLE_EQ(r.plan.indirect_run->coarser_patch_size_m, 0.4);
+  for (const SurfaceEstimate& e : r.plan.estimates) {
+    std::printf("office at reference, %s: patch-size estimate %.3f %%\n", e.surface.c_str(),
+                100 * e.patch_size);
+    EXPECT_LE(e.patch_size, kReferenceConvergenceTarget) << e.surface;
+  }
+  // The other qualities keep their promise as the target; draft refines nothing.
+  EXPECT_EQ(refinement_target(Quality::standard), promised_error(Quality::standard));
+  EXPECT_EQ(refinement_target(Quality::high), promised_error(Quality::high));
+  EXPECT_EQ(refinement_target(Quality::draft), 0.0);
+}
+
 // A convex room clustered at standard's 0.5 m (5 600 m^2: 22 400 patches) has 5 600 patches at
 // the estimate's 1 m: more than the dense budget of 4 000 and fewer than the clustered rooms'
 // threshold. The estimate meshes it by the same method as the run it estimates, so the run

@@ -101,15 +101,33 @@ TEST(PlanText, AStoppedRefinementWarnsOnlyWhereTheEstimateExceedsItsShare) {
   EXPECT_EQ(notes.front(), stop +
                                "; the estimate there, extrapolated with the order measured on "
                                "three meshes, is at most 0.39 % on every surface, within the "
-                               "patch size's half of the promise");
+                               "patch size's half of standard's promise");
   // Just above the share (0.5 % of standard's 1 %): the same words as a warning, no note.
   p.estimates.front().patch_size = 0.0051;
   const auto warnings = plan_warnings(p);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings.front(), stop);
   EXPECT_EQ(plan_notes(p).front().find("indirect:"), std::string::npos);
-  // Estimates not made: the stop stays a warning.
+  // At reference the target is its convergence target, not a promise.
+  p.quality = calc::Quality::reference;
+  p.promise = 0.0;
+  p.estimates.front().patch_size = 0.0009;
+  r.outcome = calc::PatchRefinement::Outcome::refined;
+  r.from_m = 0.2, r.to_m = 0.1, r.estimate = 0.0028;
+  p.refinements = {r};
+  EXPECT_EQ(plan_notes(p).front(),
+            "indirect: patch size refined from 0.2 m to 0.1 m: the patch-size difference at 0.2 m "
+            "(to the mesh at 0.4 m), 0.28 % on surface 'workplane', is above half of reference's "
+            "convergence target of 0.2 %");
+  p.quality = calc::Quality::standard;
+  p.promise = 0.01;
+  p.refinements = {};
+  r.outcome = calc::PatchRefinement::Outcome::work_over_limit;
+  r.from_m = 0.25, r.to_m = 0.125, r.estimate = 0.008;
+  p.refinements.push_back(r);
   p.estimates.front().patch_size = 0.0039;
+  ASSERT_TRUE(plan_warnings(p).empty());
+  // Estimates not made: the stop stays a warning.
   p.errors_estimated = false;
   EXPECT_EQ(plan_warnings(p).size(), 1u);
 }
