@@ -100,6 +100,9 @@ struct RefinementRule {
 // at 0.25 m with visibility would be 75 million, tens of seconds. A room with the clustered
 // transfer (calc/indirect/clustered.h) counts its links instead.
 constexpr double kRefineWorkLimit = 1e7;
+// `high` may spend three times that: its 0.3 % needs 0.125 m patches where something blocks light
+// (examples/lshape, tests/rooms/ushape and tshape: 1.5 to 2.6 x 10^7 links at 0.125 m).
+constexpr double kHighRefineWorkLimit = 3e7;
 // `reference` halves its 0.2 m once where its own estimate asks for it, up to 5 x 10^7 links: a
 // 0.1 m mesh of about 400 m^2 of surface, as tests/rooms/ushape and tshape (36 566 and 35 028
 // patches, about a minute on two cores, tests/rooms/README.md); a hall beyond it stays at 0.2 m
@@ -109,8 +112,8 @@ constexpr double kReferenceRefineWorkLimit = 5e7;
 RefinementRule refinement_rule(Quality q) {
   switch (q) {
     case Quality::draft: return {};
-    case Quality::standard:
-    case Quality::high: return {2, kRefineWorkLimit};
+    case Quality::standard: return {2, kRefineWorkLimit};
+    case Quality::high: return {2, kHighRefineWorkLimit};
     case Quality::reference: return {1, kReferenceRefineWorkLimit};
   }
   return {};

@@ -48,9 +48,9 @@ inline constexpr double kReferenceConvergenceTarget = 0.002;
 double refinement_target(Quality q);
 
 // The share of that target the interreflection mesh's patch size is given: the run refines the
-// mesh while a surface's difference d1 exceeds it (calc/pipeline.cpp), and a refinement a limit
-// stopped is a warning only where the plan's estimate of the mesh that stayed exceeds it
-// (report/plan_text.h). The rest is the direct light's and the bounces'.
+// mesh while a surface's difference d1 exceeds it (calc/pipeline.cpp); the rest is the direct
+// light's and the bounces'. A refinement a limit stopped is a warning only where the plan's
+// total estimate of the mesh that stayed exceeds the whole target (report/plan_text.h).
 inline constexpr double kPatchShareOfPromise = 0.5;
 
 // Probe points per surface for the patch-size estimate: the coarse runs gather at these only,

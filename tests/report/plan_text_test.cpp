@@ -78,13 +78,15 @@ TEST(PlanText, WordsEachDecisionFromItsValues) {
             "surface's maximum");
 }
 
-// A refinement the work limit stopped: a warning where the estimate of the mesh that stayed
-// exceeds the patch size's half of the promise, a note where it does not (the refinement chooses
-// on the difference d1, the estimate extrapolates it with the measured order).
-TEST(PlanText, AStoppedRefinementWarnsOnlyWhereTheEstimateExceedsItsShare) {
+// A refinement the work limit stopped: a warning where the plan's estimate of the mesh that
+// stayed exceeds the quality's target, a note where it does not (the refinement chooses on the
+// difference d1 against half the target, the estimate extrapolates d1 with the measured order and
+// adds the direct light's and the bounces').
+TEST(PlanText, AStoppedRefinementWarnsOnlyWhereTheEstimateExceedsTheTarget) {
   calc::Plan p = sample_plan();
   p.estimates.front().direct = 0.001;
   p.estimates.front().patch_size = 0.0039;  // d1 0.8 % extrapolated with order 1.62
+  p.estimates.front().bounces = 0.0;
   calc::PatchRefinement r;
   r.outcome = calc::PatchRefinement::Outcome::work_over_limit;
   r.from_m = 0.25, r.to_m = 0.125, r.estimate = 0.008, r.surface = "workplane";
@@ -99,19 +101,21 @@ TEST(PlanText, AStoppedRefinementWarnsOnlyWhereTheEstimateExceedsItsShare) {
   const auto notes = plan_notes(p);
   ASSERT_FALSE(notes.empty());
   EXPECT_EQ(notes.front(), stop +
-                               "; the estimate there, extrapolated with the order measured on "
-                               "three meshes, is at most 0.39 % on every surface, within the "
-                               "patch size's half of standard's promise");
-  // Just above the share (0.5 % of standard's 1 %): the same words as a warning, no note.
-  p.estimates.front().patch_size = 0.0051;
+                               "; the plan's estimate there (the patch size's extrapolated with "
+                               "the order measured on three meshes, with the direct light's and "
+                               "the bounces') is at most 0.49 % on every surface, within "
+                               "standard's promise");
+  // Above the promise: the same words as a warning beside the estimate's own, no note.
+  p.estimates.front().patch_size = 0.0095;
   const auto warnings = plan_warnings(p);
-  ASSERT_EQ(warnings.size(), 1u);
+  ASSERT_EQ(warnings.size(), 2u);
   EXPECT_EQ(warnings.front(), stop);
   EXPECT_EQ(plan_notes(p).front().find("indirect:"), std::string::npos);
   // At reference the target is its convergence target, not a promise.
   p.quality = calc::Quality::reference;
   p.promise = 0.0;
-  p.estimates.front().patch_size = 0.0009;
+  p.estimates.front().direct = 0.0;
+  p.estimates.front().patch_size = 0.0019;
   r.outcome = calc::PatchRefinement::Outcome::refined;
   r.from_m = 0.2, r.to_m = 0.1, r.estimate = 0.0028;
   p.refinements = {r};
@@ -119,14 +123,17 @@ TEST(PlanText, AStoppedRefinementWarnsOnlyWhereTheEstimateExceedsItsShare) {
             "indirect: patch size refined from 0.2 m to 0.1 m: the patch-size difference at 0.2 m "
             "(to the mesh at 0.4 m), 0.28 % on surface 'workplane', is above half of reference's "
             "convergence target of 0.2 %");
-  p.quality = calc::Quality::standard;
-  p.promise = 0.01;
-  p.refinements = {};
+  // A reference the work limit stopped above its target warns: the yardstick is not converged.
   r.outcome = calc::PatchRefinement::Outcome::work_over_limit;
-  r.from_m = 0.25, r.to_m = 0.125, r.estimate = 0.008;
-  p.refinements.push_back(r);
-  p.estimates.front().patch_size = 0.0039;
-  ASSERT_TRUE(plan_warnings(p).empty());
+  r.to_m = 0.1, r.work_pairs = 9e7, r.work_limit_pairs = 5e7;
+  p.refinements = {r};
+  p.estimates.front().patch_size = 0.0021;
+  ASSERT_EQ(plan_warnings(p).size(), 1u);
+  EXPECT_NE(plan_warnings(p).front().find("reference's convergence target of 0.2 %, but a mesh "
+                                          "at 0.1 m would cost 9e+07"),
+            std::string::npos);
+  p.estimates.front().patch_size = 0.0019;
+  EXPECT_TRUE(plan_warnings(p).empty());
   // Estimates not made: the stop stays a warning.
   p.errors_estimated = false;
   EXPECT_EQ(plan_warnings(p).size(), 1u);
