@@ -167,7 +167,7 @@ void estimate_errors(Results& results, const DirectEstimateInputs& direct,
       for (size_t i = 0; i < r.E.size(); ++i)
         if (counted(i))
           est.bounces = std::max(est.bounces, indirect.residual * r.E_indirect[i] / denom(i));
-      est.patch_size = 0.0;
+      // No probes: `draft` solves one mesh, and its patch size is not estimated (-1, not 0).
       if (s < indirect.probe_index.size()) {
         est.patch_difference =
             patch_size_estimate(r.grid, r.E, r.E_indirect, indirect.probe_index[s],

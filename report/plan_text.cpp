@@ -381,7 +381,14 @@ std::string indirect_text(const calc::Plan& plan) {
                         ? "off: the emergency scene counts direct light only (EN 1838)"
                     : plan.indirect_run ? indirect_run_text(*plan.indirect_run)
                                         : indirect_decision_text(plan.indirect_decision);
-  if (plan.indirect_run && plan.indirect_run->estimated) {
+  if (plan.indirect_run && plan.indirect_run->estimated &&
+      !(plan.indirect_run->coarse_patch_size_m > 0.0)) {
+    // `draft` solves one mesh: nothing to compare it with.
+    out +=
+        "; estimated error: patch size not estimated (one mesh solved), bounces not followed "
+        "up to " +
+        percent2(plan.indirect_run->worst_bounces) + " of E";
+  } else if (plan.indirect_run && plan.indirect_run->estimated) {
     const calc::IndirectRunPlan& r = *plan.indirect_run;
     char buf[256];
     std::snprintf(buf, sizeof buf,
@@ -467,8 +474,10 @@ std::vector<std::string> plan_notes(const calc::Plan& plan) {
         (plan.daylight ? " (sky and ground " : " (direct ") +
         (est.direct < 0.0 ? "not estimated: far field at every distance" : percent2(est.direct));
     if (ran)
-      line += ", patch size " + percent2(est.patch_size) + " on " + count_text(est.probe_points) +
-              " probe points, bounces " + percent2(est.bounces);
+      line += (est.patch_size < 0.0 ? std::string(", patch size not estimated (one mesh solved)")
+                                    : ", patch size " + percent2(est.patch_size) + " on " +
+                                          count_text(est.probe_points) + " probe points") +
+              ", bounces " + percent2(est.bounces);
     line += ")";
     if (plan.promise > 0.0) line += " against the promise of " + percent2(plan.promise);
     notes.push_back(line);

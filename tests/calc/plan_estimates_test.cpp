@@ -327,6 +327,21 @@ TEST(PlanEstimates, EstimateAbovePromiseIsAWarning) {
   EXPECT_TRUE(r.plan.refinements.empty());
 }
 
+// `draft` solves one mesh and has nothing to compare it with: its patch-size estimate is absent
+// (-1), not 0, while its bounces (one) are estimated.
+TEST(PlanEstimates, DraftDoesNotClaimAPatchSizeEstimate) {
+  Scene scene = office();
+  scene.settings.quality = Quality::draft;
+  const Results r = run_scene(scene);
+  ASSERT_TRUE(r.plan.indirect_run.has_value());
+  EXPECT_EQ(r.plan.indirect_run->coarse_patch_size_m, 0.0);
+  ASSERT_FALSE(r.plan.estimates.empty());
+  for (const SurfaceEstimate& e : r.plan.estimates) {
+    EXPECT_EQ(e.patch_size, -1.0) << e.surface;
+    EXPECT_GT(e.bounces, 0.0) << e.surface;
+  }
+}
+
 // `reference`, the yardstick, halves its 0.2 m mesh once where its own patch-size difference is
 // above half its convergence target (kReferenceConvergenceTarget, 0.2 %): the office's 0.2 m
 // mesh differs from 0.4 m by up to 0.5 % (its ceiling), so it is solved at 0.1 m (10 400

@@ -139,6 +139,27 @@ TEST(PlanText, AStoppedRefinementWarnsOnlyWhereTheEstimateExceedsTheTarget) {
   EXPECT_EQ(plan_warnings(p).size(), 1u);
 }
 
+// One mesh solved (draft): the words say the patch size is not estimated instead of quoting 0 %.
+TEST(PlanText, APatchSizeNotEstimatedIsSaid) {
+  calc::Plan p = sample_plan();
+  p.quality = calc::Quality::draft;
+  p.promise = 0.0;
+  calc::IndirectRunPlan run;
+  run.bounces_asked = 1, run.bounces_run = 1, run.patches = 108, run.patch_size_m = 1.0;
+  run.estimated = true, run.worst_bounces = 0.62;
+  p.indirect_run = run;
+  p.estimates.front().bounces = 0.62;
+  const std::string text = indirect_text(p);
+  EXPECT_NE(text.find("; estimated error: patch size not estimated (one mesh solved), bounces not "
+                      "followed up to 62 % of E"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("extrapolated"), std::string::npos) << text;
+  EXPECT_EQ(plan_notes(p).front(),
+            "estimated error at surface 'workplane': 64 % (direct 2 %, patch size not estimated "
+            "(one mesh solved), bounces 62 %)");
+}
+
 TEST(PlanText, WordsTheSolversNotes) {
   using calc::indirect::IndirectNote;
   IndirectNote budget;
