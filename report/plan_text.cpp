@@ -479,7 +479,10 @@ std::vector<std::string> plan_notes(const calc::Plan& plan) {
                                           count_text(est.probe_points) + " probe points") +
               ", bounces " + percent2(est.bounces);
     line += ")";
-    if (plan.promise > 0.0) line += " against the promise of " + percent2(plan.promise);
+    if (plan.promise > 0.0)
+      line += " against the promise of " + percent2(plan.promise);
+    else if (calc::refinement_target(plan.quality) > 0.0)
+      line += " against " + refinement_target_text(plan.quality);
     notes.push_back(line);
   }
   notes.push_back(

@@ -123,6 +123,10 @@ TEST(PlanText, AStoppedRefinementWarnsOnlyWhereTheEstimateExceedsTheTarget) {
             "indirect: patch size refined from 0.2 m to 0.1 m: the patch-size difference at 0.2 m "
             "(to the mesh at 0.4 m), 0.28 % on surface 'workplane', is above half of reference's "
             "convergence target of 0.2 %");
+  // The yardstick's own estimate is set against its target, as the others' against a promise.
+  EXPECT_EQ(plan_notes(p).at(1),
+            "estimated error at surface 'workplane': 0.19 % (direct 0 %) against reference's "
+            "convergence target of 0.2 %");
   // A reference the work limit stopped above its target warns: the yardstick is not converged.
   r.outcome = calc::PatchRefinement::Outcome::work_over_limit;
   r.to_m = 0.1, r.work_pairs = 9e7, r.work_limit_pairs = 5e7;
