@@ -381,24 +381,25 @@ std::string indirect_text(const calc::Plan& plan) {
                         ? "off: the emergency scene counts direct light only (EN 1838)"
                     : plan.indirect_run ? indirect_run_text(*plan.indirect_run)
                                         : indirect_decision_text(plan.indirect_decision);
-  if (plan.indirect_run && plan.indirect_run->estimated &&
-      !(plan.indirect_run->coarse_patch_size_m > 0.0)) {
-    // `draft` solves one mesh: nothing to compare it with.
-    out +=
-        "; estimated error: patch size not estimated (one mesh solved), bounces not followed "
-        "up to " +
-        percent2(plan.indirect_run->worst_bounces) + " of E";
-  } else if (plan.indirect_run && plan.indirect_run->estimated) {
+  if (plan.indirect_run && plan.indirect_run->estimated) {
     const calc::IndirectRunPlan& r = *plan.indirect_run;
-    char buf[256];
-    std::snprintf(buf, sizeof buf,
-                  "; estimated error: patch size %.3g m up to %s of E (extrapolated from %.3g m "
-                  "and %.3g m at up to %zu probe points per surface), bounces not followed up to "
-                  "%s of E",
-                  r.patch_size_m, percent2(r.worst_patch_size).c_str(), r.coarse_patch_size_m,
-                  r.coarser_patch_size_m, r.probe_points_per_surface,
-                  percent2(r.worst_bounces).c_str());
-    out += buf;
+    if (!(r.coarse_patch_size_m > 0.0)) {
+      // `draft` solves one mesh: nothing to compare it with.
+      out +=
+          "; estimated error: patch size not estimated (one mesh solved), bounces not followed "
+          "up to " +
+          percent2(r.worst_bounces) + " of E";
+    } else {
+      char buf[256];
+      std::snprintf(buf, sizeof buf,
+                    "; estimated error: patch size %.3g m up to %s of E (extrapolated from %.3g m "
+                    "and %.3g m at up to %zu probe points per surface), bounces not followed up "
+                    "to %s of E",
+                    r.patch_size_m, percent2(r.worst_patch_size).c_str(), r.coarse_patch_size_m,
+                    r.coarser_patch_size_m, r.probe_points_per_surface,
+                    percent2(r.worst_bounces).c_str());
+      out += buf;
+    }
   }
   return out;
 }
