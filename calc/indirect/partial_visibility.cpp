@@ -76,6 +76,32 @@ double partial_cells_integral(const Vec3& x, const Vec3& n, const Vec3& from, co
     return a >= 0 && a < kSide && b >= 0 && b < kSide &&
            centre_seen[a * kSide + b] != centre_seen[k];
   };
+  // by_cell: the verdicts of the patch's quarters (2 x 2 cells each) among the patch's faces,
+  // asked when a cell of the quarter first needs one. A quarter proven `visible` or `hidden` is
+  // so for each of its cells, which take that share (1 or 0: what their own verdict, or all five
+  // samples, would give); a cell of a `partial` quarter is classified among the faces the quarter
+  // left, fewer than the patch's. An edge along one border leaves two quarters to go cell by
+  // cell: 4 + 8 verdicts instead of 16.
+  static_assert(kSide % 2 == 0);
+  constexpr int kHalf = kSide / 2;
+  std::array<geometry::Shaft, 4> quarter_verdict;
+  std::array<geometry::ShaftFaces, 4> quarter_faces;
+  std::array<bool, 4> quarter_asked{};
+  const auto quarter = [&](int a, int b) {
+    const int qa = a / kHalf, qb = b / kHalf, q = qa * 2 + qb;
+    if (!quarter_asked[q]) {
+      // Counter-clockwise like the cells: corner 0 of its first cell, 1 along a, 2 opposite, 3
+      // along b.
+      const int a0 = qa * kHalf, b0 = qb * kHalf, a1 = a0 + kHalf - 1, b1 = b0 + kHalf - 1;
+      const std::array<Vec3, 4> corners = {
+          cells[a0 * kSide + b0][0] + lift, cells[a1 * kSide + b0][1] + lift,
+          cells[a1 * kSide + b1][2] + lift, cells[a0 * kSide + b1][3] + lift};
+      quarter_verdict[q] = visibility.classify_within(std::span<const Vec3>(&from, 1), corners,
+                                                      faces, quarter_faces[q]);
+      quarter_asked[q] = true;
+    }
+    return q;
+  };
   double sum = 0.0;
   for (int a = 0; a < kSide; ++a)
     for (int b = 0; b < kSide; ++b) {
@@ -86,11 +112,16 @@ double partial_cells_integral(const Vec3& x, const Vec3& n, const Vec3& from, co
       if (!(f > 0.0)) continue;
       double seen = centre_seen[k] ? 1.0 : 0.0;
       if (by_cell) {
+        const int q = quarter(a, b);
+        if (quarter_verdict[q] != geometry::Shaft::partial) {
+          sum += w * f * (quarter_verdict[q] == geometry::Shaft::visible ? 1.0 : 0.0);
+          continue;
+        }
         std::array<Vec3, 4> corners;
         for (size_t c = 0; c < 4; ++c) corners[c] = cells[k][c] + lift;
         geometry::ShaftFaces cell_faces;
-        const geometry::Shaft verdict =
-            visibility.classify_within(std::span<const Vec3>(&from, 1), corners, faces, cell_faces);
+        const geometry::Shaft verdict = visibility.classify_within(
+            std::span<const Vec3>(&from, 1), corners, quarter_faces[q], cell_faces);
         if (verdict == geometry::Shaft::partial)
           seen = five_sample_share(from, cells[k], centres[k], centre_seen[k], lift, visibility,
                                    &cell_faces);

@@ -104,6 +104,44 @@ geometry::OcclusionTree sheet_occluder(double edge_m) {
   return geometry::OcclusionTree({f});
 }
 
+// The same sheet cut to y >= y_min: from the origin its shadow on the patch is x >= 2 edge_m,
+// y >= 2 y_min.
+geometry::OcclusionTree corner_sheet_occluder(double edge_m, double y_min) {
+  geometry::Face f;
+  f.kind = geometry::Face::Kind::obstacle;
+  f.label = "corner sheet";
+  f.corners = {Vec3(edge_m, y_min, 0.5), Vec3(edge_m + 2.0, y_min, 0.5),
+               Vec3(edge_m + 2.0, 2.0, 0.5), Vec3(edge_m, 2.0, 0.5)};
+  f.normal = Vec3(0.0, 0.0, 1.0);
+  return geometry::OcclusionTree({f});
+}
+
+TEST(PartialVisibility, AShadowInOneQuarterIsFoundThere) {
+  // The shadow 0.4 <= x <= 0.5, 0.3 <= y <= 0.5 lies in one corner cell, between every sample
+  // and every cell centre. The patch's verdict is partial and every centre agrees, so the
+  // patch's quarters are classified first: three are proven visible, and the fourth goes cell by
+  // cell. The answer is Lambert's factor of the patch less that of the shadow, to within the
+  // strip bound of the tests above; the patch's five samples miss the shadow altogether.
+  const Patch p = ceiling_square();
+  const Vec3 x(0.0), n(0.0, 0.0, 1.0);
+  const Vec3 from = x + n * 1e-6;
+  const double whole = point_polygon_form_factor(x, n, p.polygon);
+  const geometry::OcclusionTree occluder = corner_sheet_occluder(0.2, 0.15);
+  const Polygon3 shadow = {Vec3(0.4, 0.3, 1.0), Vec3(0.4, 0.5, 1.0), Vec3(0.5, 0.5, 1.0),
+                           Vec3(0.5, 0.3, 1.0)};
+  const double exact = whole - point_polygon_form_factor(x, n, shadow);
+  EXPECT_EQ(whole * visible_fraction(&occluder, from, p, 1e-6), whole);
+  const double resolved = undecided_patch_integral(x, n, from, p, nullptr, 1.0, whole, 5.0,
+                                                   occluder, 1e-6, geometry::ShaftFaces{});
+  const double half_cell = 0.5 / kSubcellsPerSide;
+  const double strip = visible_part_form_factor(half_cell) - visible_part_form_factor(0.0);
+  EXPECT_LT(resolved, whole);
+  EXPECT_NEAR(resolved, exact, 0.2 * strip);
+  // The cell's five samples place the shadow's corner to within a fifth of the cell: less than
+  // half the error of calling it wholly seen.
+  EXPECT_LT(std::abs(resolved - exact), 0.5 * (whole - exact));
+}
+
 TEST(PartialVisibility, AnEdgeBetweenEverySampleIsFoundByTheShaftVerdicts) {
   // A shadow covering the patch's strip 0.4 <= x <= 0.5: the five samples (x = 0, +-0.25) and the
   // sixteen cell centres (x = +-0.125, +-0.375) all see the light, so both sampled rules call
