@@ -124,17 +124,34 @@ double patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
   double direct_max = 0.0;
   for (size_t i = 0; i < E_direct.size(); ++i)
     if (active(i)) direct_max = std::max(direct_max, E_direct[i]);
+  // The surface's largest E lies between the largest known one (E_direct anywhere, the reflected
+  // light adding to it; E at the probes) and the largest E_direct plus the bound; so does the
+  // floor, a fixed share of it.
+  double known_max = direct_max;
+  for (size_t k = 0; k < probe_index.size(); ++k)
+    if (active(probe_index[k]))
+      known_max = std::max(known_max, E_direct[probe_index[k]] + E_indirect_probe[k]);
   const double floor_bound_lx = kPromiseFloor * (direct_max + max_indirect_lx);
-  double worst = 0.0;
+  const double floor_least_lx = kPromiseFloor * known_max;
+  // A probe at least as bright as the floor's bound counts by its own E, as patch_size_estimate
+  // counts it; a darker one by at most its difference over max(E, the floor's least value).
+  double worst = 0.0, dark_most = 0.0;
   for (size_t k = 0; k < probe_index.size(); ++k) {
     const size_t i = probe_index[k];
     if (!active(i)) continue;
     // The sum patch_size_estimate forms, in the same order.
     const double E = E_direct[i] + E_indirect_probe[k];
-    if (!(E >= floor_bound_lx && E > 0.0)) return -1.0;
-    worst = std::max(worst, std::abs(E_indirect_probe[k] - coarse_lx[k]) / E);
+    const double difference = std::abs(E_indirect_probe[k] - coarse_lx[k]);
+    if (E >= floor_bound_lx && E > 0.0) {
+      worst = std::max(worst, difference / E);
+      continue;
+    }
+    const double least = std::max(E, floor_least_lx);
+    if (!(least > 0.0)) return -1.0;
+    dark_most = std::max(dark_most, difference / least);
   }
-  return worst;
+  // Where no dark probe can exceed the bright ones, the floor does not change the largest.
+  return dark_most <= worst ? worst : -1.0;
 }
 
 void estimate_errors(Results& results, const DirectEstimateInputs& direct,

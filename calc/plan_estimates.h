@@ -136,9 +136,12 @@ double patch_size_estimate(const geometry::SurfaceGrid& grid, const std::vector<
 // The same figure from the probes' own reflected light, without the reflected light at every
 // other point of the grid: `E_direct` per point of `grid`, `E_indirect_probe` and `coarse_lx` per
 // probe, `max_indirect_lx` an upper bound of E_indirect anywhere on the grid. The surface's
-// largest E is then at most the largest E_direct plus that bound; where every counted probe's E
-// is at least 1 % of it, the floor cannot apply and the figure is patch_size_estimate's, to the
-// bit. Returns -1 where a probe is darker (the floor may apply: the caller needs every point).
+// largest E is then at most the largest E_direct plus that bound, and at least the largest E
+// known (E_direct anywhere, E at the probes). A probe whose E is at least 1 % of the upper value
+// counts by its own E; a darker one's figure is at most its difference over max(E, 1 % of the
+// lower value). Where no dark probe's can exceed the largest bright probe's, the floor does not
+// change the largest, and the figure is patch_size_estimate's, to the bit. Returns -1 otherwise
+// (the floor may decide it: the caller needs every point).
 double patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
                                      const std::vector<double>& E_direct,
                                      const std::vector<size_t>& probe_index,

@@ -29,7 +29,8 @@ Scene office() {
 
 // The estimate from the probes' own values (what the plan computes without gathering every
 // point) is patch_size_estimate's to the bit where no probe is darker than 1 % of the bound on
-// the surface's largest E, and declines (-1) where one is, since the floor may then apply.
+// the surface's largest E, or where no darker one can exceed the brighter ones' largest figure
+// whatever the floor, and declines (-1) where one could, since the floor may then decide it.
 TEST(PlanEstimates, PatchSizeEstimateAtTheProbesIsTheWholeGridsOrDeclines) {
   geometry::SurfaceGrid grid =
       geometry::make_plane_grid("g", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2.0, 2.0, 0.25);
@@ -58,6 +59,19 @@ TEST(PlanEstimates, PatchSizeEstimateAtTheProbesIsTheWholeGridsOrDeclines) {
   dark_probe[5] = 1.0;
   EXPECT_EQ(patch_size_estimate_at_probes(grid, dark_direct, probes, dark_probe, coarse, 400.0),
             -1.0);
+  // The same dark probe with a small difference (0.001 lx: at most 0.001 / 3.4 over the least
+  // floor, 1 % of the 337 lx known), below the bright probes' largest: the floor cannot decide
+  // the figure, which is the whole grid's (with that point's E of 2 lx), to the bit.
+  std::vector<double> dark_coarse = coarse;
+  dark_coarse[5] = 1.001;
+  std::vector<double> dark_E = E, dark_ind = E_ind;
+  dark_E[probes[5]] = 2.0;
+  dark_ind[probes[5]] = 1.0;
+  const double dark_whole = patch_size_estimate(grid, dark_E, dark_ind, probes, dark_coarse);
+  ASSERT_GT(dark_whole, 0.001 / 3.0);
+  EXPECT_EQ(
+      patch_size_estimate_at_probes(grid, dark_direct, probes, dark_probe, dark_coarse, 400.0),
+      dark_whole);
 }
 
 // The shadow probes are the active points with the weakest direct light that the evenly spread
