@@ -151,9 +151,10 @@ double indirect_upper_bound_lx(const indirect::IndirectSolution& solution) {
 // The worst patch-size difference d1 over the surfaces for a solution at the evenly spread probes
 // (the choice's, plan_estimates.h), the surface it is on and each surface's E_indirect at all
 // its probes. Gathered at the probe points only (their values are the whole grid's there,
-// indirect.h); a surface where the estimate's floor may decide the figure (a dark probe, see
-// patch_size_estimate_at_probes) at every point of it alone, since the floor needs the surface's
-// largest E. `everywhere`: the solution's results at every point, where gathered (`final`).
+// indirect.h); a surface where the estimate's floor may decide the largest figure (a dark probe,
+// see patch_size_estimate_at_probes) at every point of it alone, since the floor needs the
+// surface's largest E. `everywhere`: the solution's results at every point, where gathered
+// (`final`).
 struct WorstPatchEstimate {
   double worst = 0.0;
   std::string surface;
@@ -181,38 +182,47 @@ WorstPatchEstimate worst_patch_estimate(const Scene& scene, const Results& resul
     w.probe_lx = indirect::gather_indirect(solution, scene, probes).E_indirect_per_surface;
   }
   const double bound_lx = indirect_upper_bound_lx(solution);
-  std::vector<double> estimate(results.surfaces.size());
-  std::vector<size_t> declined;  // surfaces whose estimate needs every point
   const auto spread = [&]<typename T>(size_t s, const std::vector<T>& v) {
     return std::vector(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(est.spread_probes[s]));
   };
+  std::vector<ProbeFigure> estimate;
+  double worst_exact = 0.0;
   for (size_t s = 0; s < results.surfaces.size(); ++s) {
-    estimate[s] = patch_size_estimate_at_probes(
+    estimate.push_back(patch_size_estimate_at_probes(
         results.surfaces[s].grid, results.surfaces[s].E_direct, spread(s, est.probe_index[s]),
-        spread(s, w.probe_lx[s]), spread(s, est.coarse_lx[s]), bound_lx);
-    if (estimate[s] < 0.0) declined.push_back(s);
+        spread(s, w.probe_lx[s]), spread(s, est.coarse_lx[s]), bound_lx));
+    if (estimate.back().exact) worst_exact = std::max(worst_exact, estimate.back().figure);
   }
-  if (!declined.empty()) {
-    // Those surfaces alone, at every point: a point's reflected light is the same whichever other
-    // points are gathered with it (indirect.h), so the figures are those of a gather at every
-    // point of the scene. The everywhere gather of a `final` solution has them already.
+  // A surface whose figure the probes only bound, where the bound reaches the largest exact
+  // figure: at every point of it alone. A point's reflected light is the same whichever other
+  // points are gathered with it (indirect.h), so its figure is that of a gather at every point of
+  // the scene; one whose bound stays below cannot be the largest, so the largest and its surface
+  // are those of the exact figures, to the bit. The everywhere gather of a `final` solution has
+  // every point already.
+  std::vector<size_t> needed;
+  for (size_t s = 0; s < estimate.size(); ++s)
+    if (!estimate[s].exact && (w.everywhere || !(estimate[s].figure < worst_exact)))
+      needed.push_back(s);
+  if (!needed.empty()) {
     std::vector<geometry::SurfaceGrid> grids;
-    for (size_t s : declined) grids.push_back(scene.surfaces[s]);
+    for (size_t s : needed) grids.push_back(scene.surfaces[s]);
     std::optional<indirect::IndirectResult> part;
     if (!w.everywhere) part = indirect::gather_indirect(solution, scene, grids);
-    for (size_t k = 0; k < declined.size(); ++k) {
-      const size_t s = declined[k];
+    for (size_t k = 0; k < needed.size(); ++k) {
+      const size_t s = needed[k];
       const SurfaceResult& sr = results.surfaces[s];
       const std::vector<double>& E_ind =
           w.everywhere ? w.everywhere->E_indirect_per_surface[s] : part->E_indirect_per_surface[k];
       std::vector<double> E(sr.E_direct.size());
       for (size_t i = 0; i < E.size(); ++i) E[i] = sr.E_direct[i] + E_ind[i];
-      estimate[s] = patch_size_estimate(sr.grid, E, E_ind, spread(s, est.probe_index[s]),
-                                        spread(s, est.coarse_lx[s]));
+      estimate[s] = {patch_size_estimate(sr.grid, E, E_ind, spread(s, est.probe_index[s]),
+                                         spread(s, est.coarse_lx[s])),
+                     true};
     }
   }
   for (size_t s = 0; s < results.surfaces.size(); ++s)
-    if (estimate[s] > w.worst) w.worst = estimate[s], w.surface = results.surfaces[s].grid.name;
+    if (estimate[s].exact && estimate[s].figure > w.worst)
+      w.worst = estimate[s].figure, w.surface = results.surfaces[s].grid.name;
   return w;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "calc/nearfield/far_field_bound.h"
 
@@ -115,11 +116,12 @@ PatchErrorEstimate richardson_patch_error(double d_fine, double d_coarse) {
   return {d_fine / (std::exp2(order) - 1.0), order};
 }
 
-double patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
-                                     const std::vector<double>& E_direct,
-                                     const std::vector<size_t>& probe_index,
-                                     const std::vector<double>& E_indirect_probe,
-                                     const std::vector<double>& coarse_lx, double max_indirect_lx) {
+ProbeFigure patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
+                                          const std::vector<double>& E_direct,
+                                          const std::vector<size_t>& probe_index,
+                                          const std::vector<double>& E_indirect_probe,
+                                          const std::vector<double>& coarse_lx,
+                                          double max_indirect_lx) {
   const auto active = [&](size_t i) { return grid.active.empty() || grid.active[i]; };
   double direct_max = 0.0;
   for (size_t i = 0; i < E_direct.size(); ++i)
@@ -147,11 +149,12 @@ double patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
       continue;
     }
     const double least = std::max(E, floor_least_lx);
-    if (!(least > 0.0)) return -1.0;
-    dark_most = std::max(dark_most, difference / least);
+    dark_most = least > 0.0 ? std::max(dark_most, difference / least)
+                            : std::numeric_limits<double>::infinity();
   }
   // Where no dark probe can exceed the bright ones, the floor does not change the largest.
-  return dark_most <= worst ? worst : -1.0;
+  if (dark_most <= worst) return {worst, true};
+  return {dark_most, false};
 }
 
 void estimate_errors(Results& results, const DirectEstimateInputs& direct,

@@ -140,13 +140,19 @@ double patch_size_estimate(const geometry::SurfaceGrid& grid, const std::vector<
 // known (E_direct anywhere, E at the probes). A probe whose E is at least 1 % of the upper value
 // counts by its own E; a darker one's figure is at most its difference over max(E, 1 % of the
 // lower value). Where no dark probe's can exceed the largest bright probe's, the floor does not
-// change the largest, and the figure is patch_size_estimate's, to the bit. Returns -1 otherwise
-// (the floor may decide it: the caller needs every point).
-double patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
-                                     const std::vector<double>& E_direct,
-                                     const std::vector<size_t>& probe_index,
-                                     const std::vector<double>& E_indirect_probe,
-                                     const std::vector<double>& coarse_lx, double max_indirect_lx);
+// change the largest, and the figure is patch_size_estimate's, to the bit (`exact`). Otherwise
+// the floor may decide it, and `figure` is an upper bound of patch_size_estimate's (infinite
+// where a dark probe's E and that floor are both 0): the figure itself needs every point.
+struct ProbeFigure {
+  double figure = 0.0;
+  bool exact = true;
+};
+ProbeFigure patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
+                                          const std::vector<double>& E_direct,
+                                          const std::vector<size_t>& probe_index,
+                                          const std::vector<double>& E_indirect_probe,
+                                          const std::vector<double>& coarse_lx,
+                                          double max_indirect_lx);
 
 // d2 of the estimate: the largest |E_ind(2h) - E_ind(4h)| over the probes of one surface,
 // relative to the same denominators as patch_size_estimate (E at h), `coarse_lx` and

@@ -30,7 +30,7 @@ Scene office() {
 // The estimate from the probes' own values (what the plan computes without gathering every
 // point) is patch_size_estimate's to the bit where no probe is darker than 1 % of the bound on
 // the surface's largest E, or where no darker one can exceed the brighter ones' largest figure
-// whatever the floor, and declines (-1) where one could, since the floor may then decide it.
+// whatever the floor; where one could, the floor may decide it, and the probes give a bound.
 TEST(PlanEstimates, PatchSizeEstimateAtTheProbesIsTheWholeGridsOrDeclines) {
   geometry::SurfaceGrid grid =
       geometry::make_plane_grid("g", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2.0, 2.0, 0.25);
@@ -51,14 +51,36 @@ TEST(PlanEstimates, PatchSizeEstimateAtTheProbesIsTheWholeGridsOrDeclines) {
   ASSERT_GT(whole, 0.0);
   // A bound of the reflected light well above its largest value (91 lx): the floor is then at
   // most 1 % of 337 + 400 lx, below every probe's 300 lx and more.
-  EXPECT_EQ(patch_size_estimate_at_probes(grid, E_direct, probes, E_ind_probe, coarse, 400.0),
-            whole);
-  // A dark probe (2 lx, below 1 % of the bound): the floor may apply, so it declines.
+  const ProbeFigure bright =
+      patch_size_estimate_at_probes(grid, E_direct, probes, E_ind_probe, coarse, 400.0);
+  EXPECT_TRUE(bright.exact);
+  EXPECT_EQ(bright.figure, whole);
+  // A dark probe (2 lx, below 1 % of the bound) with a large difference: the floor may decide
+  // the figure, so the probes only bound it. The bound holds for any largest E from the known
+  // 337 lx up: checked against the whole grid's figure with that point at 2 lx, whatever the
+  // other points' reflected light (here the grid's own, and ten times it).
   std::vector<double> dark_direct = E_direct, dark_probe = E_ind_probe;
   dark_direct[probes[5]] = 1.0;
   dark_probe[5] = 1.0;
-  EXPECT_EQ(patch_size_estimate_at_probes(grid, dark_direct, probes, dark_probe, coarse, 400.0),
-            -1.0);
+  const ProbeFigure dark =
+      patch_size_estimate_at_probes(grid, dark_direct, probes, dark_probe, coarse, 400.0);
+  EXPECT_FALSE(dark.exact);
+  for (const double scale : {1.0, 10.0}) {
+    std::vector<double> dark_E(n), dark_ind(n);
+    for (size_t i = 0; i < n; ++i) {
+      dark_ind[i] = scale * E_ind[i];
+      dark_E[i] = E_direct[i] + dark_ind[i];
+    }
+    dark_E[probes[5]] = 2.0;
+    dark_ind[probes[5]] = 1.0;
+    std::vector<double> dark_E_probe;
+    for (size_t k = 0; k < probes.size(); ++k) dark_E_probe.push_back(dark_ind[probes[k]]);
+    // The probes' own values as the bound saw them (the scale changes them too).
+    const ProbeFigure bound = patch_size_estimate_at_probes(grid, dark_direct, probes, dark_E_probe,
+                                                            coarse, 400.0 * scale);
+    EXPECT_GE(bound.figure, patch_size_estimate(grid, dark_E, dark_ind, probes, coarse))
+        << "scale " << scale;
+  }
   // The same dark probe with a small difference (0.001 lx: at most 0.001 / 3.4 over the least
   // floor, 1 % of the 337 lx known), below the bright probes' largest: the floor cannot decide
   // the figure, which is the whole grid's (with that point's E of 2 lx), to the bit.
@@ -69,9 +91,10 @@ TEST(PlanEstimates, PatchSizeEstimateAtTheProbesIsTheWholeGridsOrDeclines) {
   dark_ind[probes[5]] = 1.0;
   const double dark_whole = patch_size_estimate(grid, dark_E, dark_ind, probes, dark_coarse);
   ASSERT_GT(dark_whole, 0.001 / 3.0);
-  EXPECT_EQ(
-      patch_size_estimate_at_probes(grid, dark_direct, probes, dark_probe, dark_coarse, 400.0),
-      dark_whole);
+  const ProbeFigure small =
+      patch_size_estimate_at_probes(grid, dark_direct, probes, dark_probe, dark_coarse, 400.0);
+  EXPECT_TRUE(small.exact);
+  EXPECT_EQ(small.figure, dark_whole);
 }
 
 // The shadow probes are the active points with the weakest direct light that the evenly spread
