@@ -413,13 +413,16 @@ std::unique_ptr<IndirectSolution> solve_rooms(const Scene& scene, const Indirect
         if (room_split[i]) split[i] = 1, ++cut;
     }
     if (cut > 0) {
+      // The time until now, before the finer solve (which times itself).
+      const double first_s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       IndirectOptions again = options;
       again.mesh = std::make_shared<const PatchMesh>(split_patches(scene, mesh, split));
       std::unique_ptr<IndirectSolution> finer = solve_rooms(scene, again, false);
       IndirectResult& fr = finer->result;
       fr.notes.insert(fr.notes.begin(), res.notes.begin(), res.notes.begin() + mesh_notes);
       fr.split_patches += cut;
-      fr.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      fr.seconds += first_s;
       finer->options.mesh.reset();
       return finer;
     }
