@@ -31,7 +31,7 @@ Scene office() {
 // point) is patch_size_estimate's to the bit where no probe is darker than 1 % of the bound on
 // the surface's largest E, or where no darker one can exceed the brighter ones' largest figure
 // whatever the floor; where one could, the floor may decide it, and the probes give a bound.
-TEST(PlanEstimates, PatchSizeEstimateAtTheProbesIsTheWholeGridsOrDeclines) {
+TEST(PlanEstimates, PatchSizeEstimateAtTheProbesIsTheWholeGridsOrBoundsIt) {
   geometry::SurfaceGrid grid =
       geometry::make_plane_grid("g", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2.0, 2.0, 0.25);
   const size_t n = grid.points.size();
