@@ -201,8 +201,7 @@ WorstPatchEstimate worst_patch_estimate(const Scene& scene, const Results& resul
   // every point already.
   std::vector<size_t> needed;
   for (size_t s = 0; s < estimate.size(); ++s)
-    if (!estimate[s].exact && (w.everywhere || !(estimate[s].figure < worst_exact)))
-      needed.push_back(s);
+    if (!estimate[s].exact && !(estimate[s].figure < worst_exact)) needed.push_back(s);
   if (!needed.empty()) {
     std::vector<geometry::SurfaceGrid> grids;
     for (size_t s : needed) grids.push_back(scene.surfaces[s]);
