@@ -586,28 +586,30 @@ IndirectResult gather_indirect(const IndirectSolution& solution, const Scene& sc
                     .incident_flux_lm;
       std::vector<double> cell_indirect(cells.mesh.patches.size(), 0.0);
       // Near patches cell by cell; the far ones, whose light varies smoothly over a patch, at
-      // the four corner cells of each patch, interpolated bilinearly to the others (subcells.h).
+      // the patch's corners, each distinct corner once, interpolated bilinearly to the cells
+      // (subcells.h).
       const GatherBand near_band{0.0, kCellNearGather * mesh.patch_size_m};
       const GatherBand far_band{near_band.outer_m};
+      const FarCorners far = far_corners(mesh, cells);
+      std::vector<double> far_lx(far.corners.size());
+      tbb::parallel_for(size_t(0), far.corners.size(), [&](size_t k) {
+        const FarCorners::Corner& c = far.corners[k];
+        far_lx[k] = gather_set_point(mesh, gather_sets[c.room], c.x + c.normal * kReceiverInset_m,
+                                     c.normal, room_far[c.room], room_visibility[c.room], far_band);
+      });
       constexpr int kPerSide = kSubcellsPerSide, kCells = kPerSide * kPerSide;
-      tbb::parallel_for(size_t(0), cells.mesh.patches.size() / kCells, [&](size_t patch) {
+      tbb::parallel_for(size_t(0), far.of_patch.size(), [&](size_t patch) {
         const size_t c0 = patch * kCells;
-        const auto gather = [&](size_t c, const GatherBand& band) {
-          const Patch& q = cells.mesh.patches[c];
-          return gather_set_point(mesh, gather_sets[q.room],
-                                  q.centroid + q.normal * kReceiverInset_m, q.normal,
-                                  room_far[q.room], room_visibility[q.room], band);
-        };
-        const int last = kPerSide - 1;
-        const double f00 = gather(c0, far_band), f10 = gather(c0 + last * kPerSide, far_band);
-        const double f01 = gather(c0 + last, far_band);
-        const double f11 = gather(c0 + last * kPerSide + last, far_band);
         for (int a = 0; a < kPerSide; ++a)
           for (int b = 0; b < kPerSide; ++b) {
-            const double u = static_cast<double>(a) / last, v = static_cast<double>(b) / last;
             const size_t c = c0 + static_cast<size_t>(a * kPerSide + b);
-            cell_indirect[c] = gather(c, near_band) + (1 - u) * (1 - v) * f00 + u * (1 - v) * f10 +
-                               (1 - u) * v * f01 + u * v * f11;
+            const Patch& q = cells.mesh.patches[c];
+            double lx = gather_set_point(mesh, gather_sets[q.room],
+                                         q.centroid + q.normal * kReceiverInset_m, q.normal,
+                                         room_far[q.room], room_visibility[q.room], near_band);
+            for (int k = 0; k < 4; ++k)
+              lx += far_corner_weight(a, b, k) * far_lx[far.of_patch[patch][k]];
+            cell_indirect[c] = lx;
           }
       });
       const SubcellExitance sub =

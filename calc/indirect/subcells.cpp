@@ -1,5 +1,9 @@
 #include "calc/indirect/subcells.h"
 
+#include <array>
+#include <cmath>
+#include <map>
+
 #include <tbb/parallel_for.h>
 
 #include "calc/indirect/form_factor.h"
@@ -59,6 +63,40 @@ CellMesh cell_mesh(const PatchMesh& mesh, const std::vector<char>& refine) {
   }
   out.mesh.room_begin.push_back(out.mesh.patches.size());
   return out;
+}
+
+FarCorners far_corners(const PatchMesh& mesh, const CellMesh& cells) {
+  constexpr size_t kCells = kSubcellsPerSide * kSubcellsPerSide;
+  // Positions in micrometres, normals in millionths: what two patches computed apart from one
+  // face's lattice agree on at a shared corner.
+  const auto micro = [](double v) { return std::llround(v * 1e6); };
+  using Key = std::array<long long, 7>;
+  std::map<Key, size_t> index;
+  FarCorners out;
+  out.of_patch.resize(cells.patch.size() / kCells);
+  for (size_t k = 0; k < out.of_patch.size(); ++k) {
+    const Patch& p = mesh.patches[cells.patch[k * kCells]];
+    for (int c = 0; c < 4; ++c) {
+      const Vec3& x = p.polygon[c];
+      const Key key{p.room,           micro(x.x),        micro(x.y),
+                    micro(x.z),       micro(p.normal.x), micro(p.normal.y),
+                    micro(p.normal.z)};
+      const auto [at, fresh] = index.try_emplace(key, out.corners.size());
+      if (fresh) out.corners.push_back({p.room, x, p.normal});
+      out.of_patch[k][c] = at->second;
+    }
+  }
+  return out;
+}
+
+double far_corner_weight(int a, int b, int k) {
+  const double u = (a + 0.5) / kSubcellsPerSide, v = (b + 0.5) / kSubcellsPerSide;
+  switch (k) {
+    case 0: return (1 - u) * (1 - v);
+    case 1: return u * (1 - v);
+    case 2: return u * v;
+    default: return (1 - u) * v;
+  }
 }
 
 SubcellExitance cell_exitance(const PatchMesh& mesh, const CellMesh& cells,

@@ -6,6 +6,7 @@
 
 #include "util/error.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -737,6 +738,62 @@ TEST(Subcells, CellsKeepEachPatchsFlux) {
     EXPECT_NEAR(area, p.area_m2, 1e-12 * p.area_m2);
     EXPECT_NEAR(flux, exitant[i], 1e-12 * exitant[i]) << "patch " << i;
   }
+}
+
+// The far part of the cells' light is gathered once per distinct corner (subcells.h): the patches
+// of one face share their corners, faces meeting at an edge do not, and the corners' bilinear
+// weights give every cell centre the value of a light that changes linearly over the face.
+TEST(Subcells, FarCornersAreSharedOnAFaceAndInterpolateLinearLight) {
+  const Scene s = scene_of(box_room(3, 2, 2.5, 0.3, 0.6, 0.8), {});
+  const PatchMesh mesh = build_patch_mesh(s, 0.5);
+  const CellMesh cells = cell_mesh(mesh, std::vector<char>(mesh.patches.size(), 1));
+  const FarCorners far = far_corners(mesh, cells);
+  ASSERT_EQ(far.of_patch.size(), mesh.patches.size());
+  // Brute force: the distinct (position, normal) pairs among all patches' polygon corners.
+  std::vector<std::pair<Vec3, Vec3>> distinct;
+  for (const Patch& p : mesh.patches)
+    for (const Vec3& x : p.polygon) {
+      bool seen = false;
+      for (const auto& [y, n] : distinct)
+        seen = seen || (glm::length(x - y) < 1e-9 && glm::length(p.normal - n) < 1e-9);
+      if (!seen) distinct.emplace_back(x, p.normal);
+    }
+  EXPECT_EQ(far.corners.size(), distinct.size());
+  // The floor alone: a lattice of nx x ny patches has (nx + 1) (ny + 1) corners.
+  size_t floor_patches = 0;
+  std::vector<size_t> floor_corners;
+  for (size_t k = 0; k < mesh.patches.size(); ++k) {
+    if (mesh.patches[k].face != FaceKind::floor) continue;
+    ++floor_patches;
+    for (size_t c : far.of_patch[k]) floor_corners.push_back(c);
+  }
+  std::sort(floor_corners.begin(), floor_corners.end());
+  floor_corners.erase(std::unique(floor_corners.begin(), floor_corners.end()), floor_corners.end());
+  ASSERT_EQ(floor_patches, 24u);  // 3 x 2 m at 0.5 m
+  EXPECT_EQ(floor_corners.size(), 7u * 5u);
+  // Each patch's corners are its polygon's, in order, and face its way.
+  for (size_t k = 0; k < mesh.patches.size(); ++k)
+    for (int c = 0; c < 4; ++c) {
+      const FarCorners::Corner& corner = far.corners[far.of_patch[k][c]];
+      EXPECT_LT(glm::length(corner.x - mesh.patches[k].polygon[c]), 1e-6) << k << " " << c;
+      EXPECT_EQ(corner.normal, mesh.patches[k].normal);
+      EXPECT_EQ(corner.room, mesh.patches[k].room);
+    }
+  // A light linear in position, taken at the corners, is the cells' centres' own light.
+  const auto light = [](const Vec3& x) { return 40.0 + 3.0 * x.x - 2.0 * x.y + 5.0 * x.z; };
+  for (size_t k = 0; k < mesh.patches.size(); ++k)
+    for (int a = 0; a < kSubcellsPerSide; ++a)
+      for (int b = 0; b < kSubcellsPerSide; ++b) {
+        double lx = 0.0, weights = 0.0;
+        for (int c = 0; c < 4; ++c) {
+          lx += far_corner_weight(a, b, c) * light(far.corners[far.of_patch[k][c]].x);
+          weights += far_corner_weight(a, b, c);
+        }
+        const Patch& cell =
+            cells.mesh.patches[k * kSubcellsPerSide * kSubcellsPerSide + a * kSubcellsPerSide + b];
+        EXPECT_NEAR(weights, 1.0, 1e-15);
+        EXPECT_NEAR(lx, light(cell.centroid), 1e-12) << "patch " << k << " cell " << a << b;
+      }
 }
 
 // ---------------------------------------------------------------------------------------------
