@@ -77,9 +77,11 @@ struct CellMesh {
 CellMesh cell_mesh(const PatchMesh& mesh, const std::vector<char>& refine);
 
 // Where the far part of the refined patches' cells is gathered: each distinct corner of the
-// patches of `cells` once. Corners are the same where their positions agree to 1 micrometre on
-// patches of one room facing the same way (one face, or coplanar ones), so the patches of a face
-// that meet at a corner share it, and two faces meeting at an edge do not.
+// patches of `cells` once. Corners are the same where their positions round to the same
+// micrometre on patches of one room whose normals round to the same millionths (one face, or
+// coplanar ones), so the patches of a face that meet at a corner share it, and two faces meeting
+// at an edge do not. Two computations of one corner that straddle a rounding boundary (1e-12 m
+// apart) are gathered twice, each at its own position: one gather more, never a wrong one.
 struct FarCorners {
   struct Corner {
     int room = 0;
