@@ -20,8 +20,10 @@ the same geometry by construction:
   upwards, sides where it has a height). The light material is made an `illum` without an
   alternate material, so the opening emits but is invisible to the reflected light's rays (luxgrid
   models no luminaire body: the ceiling behind a recessed luminaire reflects);
-- direct light: rtrace -ab 0 with every opening cut into 8 x 8 sources, each subdivided to 1 % of
-  its distance (-ds 0.01 -dj 0 -dt 0 -dc 1: deterministic, partial shadows by the samples);
+- direct light: rtrace -ab 0 with every opening cut into 8 x 8 sources, each subdivided to 0.2 % of
+  its distance (-ds 0.002 -dj 0 -dt 0 -dc 1: deterministic, partial shadows by the samples; at
+  -ds 0.01 a 4 cm source 2.5 m away is sampled at 2 x 2 points, and a shadow edge across the
+  opening costs 1 to 2 % of the light beside examples/lshape's cabinet, docs/indirect.md);
 - reflected light: rtrace -ab AB -aa 0 (no irradiance caching) -ad AD at -ds 0.05, less its own
   -ab 0 run, averaged over RUNS runs (-u+ uncorrelated sampling, each run its own random seed);
   its noise at a point is the standard error of that mean over the runs (stated per table).
@@ -80,8 +82,10 @@ def ldt_angles(path):
     return vals[:mc], vals[mc:]
 
 
-def ies_for_type(path, opening, out_path):
-    """An absolute-photometry IES LM-63-2002 file of `path` as luxgrid reads it, with `opening`."""
+def luxgrid_table(path):
+    """(C angles from 0 to 360, gamma angles, cd at each (C, gamma) C-major) of a EULUMDAT file as
+    luxgrid reads it: `luxgrid info --json --at` at the file's own angles, so symmetry and scaling
+    are luxgrid's."""
     c_list, g_list = ldt_angles(path)
     cs = sorted(set([c % 360.0 for c in c_list] + [0.0]))
     cs.append(360.0)
@@ -91,7 +95,12 @@ def ies_for_type(path, opening, out_path):
             at += ["--at", f"{c % 360.0:g},{g:g}"]
     info = json.loads(subprocess.run([LUXGRID, "info", path, "--json"] + at, check=True,
                                      capture_output=True, text=True).stdout)
-    cd = info["intensity_cd"]
+    return cs, g_list, info["intensity_cd"]
+
+
+def ies_for_type(path, opening, out_path):
+    """An absolute-photometry IES LM-63-2002 file of `path` as luxgrid reads it, with `opening`."""
+    cs, g_list, cd = luxgrid_table(path)
     shape = opening.get("shape", "point")
     if shape == "rectangle":
         w, l, h = opening["width"], opening["length"], opening.get("height", 0.0)
@@ -130,9 +139,10 @@ def radiance_type(key, ies_path, work):
 
 def split_rectangles(text, k):
     """Each four-cornered emitting polygon of ies2rad's text cut into k x k polygons of the same
-    material: rtrace partitions a source into at most MAXSPART samples (src/rt/srcsamp.c), too
-    few for a penumbra cast by an obstacle's edge close by; k x k sources of k x k samples each
-    are not. The luminance per area is the opening's, so the pieces sum to the same light."""
+    material: rtrace samples a source at the centres of pieces about -ds times its distance
+    across, at most MAXSPART (64, src/rt/source.h) of them, too few for a penumbra cast by an
+    obstacle's edge close by; k x k sources of up to 64 samples each are not. The luminance per
+    area is the opening's, so the pieces sum to the same light."""
     pat = re.compile(r"('[^']*_light') polygon '([^']*)'\n0\n0\n12\n((?:\s*\S+){12})\n?")
 
     def cut(m):
@@ -373,7 +383,7 @@ def main():
     print(f"shadowed points: {sum(1 for v in shade if v)}, of them behind an obstacle: "
           f"{sum(1 for v in shade if v == 'obstacle')} ({cpu:.1f} s CPU)")
     n = ["-n", str(a.procs)]
-    fine = ["-ds", "0.01", "-dj", "0", "-dt", "0", "-dc", "1", "-dr", "0"]
+    fine = ["-ds", "0.002", "-dj", "0", "-dt", "0", "-dc", "1", "-dr", "0"]
     direct, cpu = cpu_of(lambda: rtrace_irradiance(pts, a.work, ["-ab", "0"] + fine + n,
                                                    "scene_split.oct"))
     print(f"direct: rtrace -ab 0 {' '.join(fine)}, every opening cut into {SPLIT} x {SPLIT} "
