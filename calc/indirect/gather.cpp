@@ -24,12 +24,19 @@ GatherSet make_gather_set(const PatchMesh& mesh, size_t begin, size_t end,
                           const SubcellExitance* cells, double cluster_opening) {
   GatherSet set;
   set.cluster_opening = cluster_opening;
-  // Runs of emitting patches with the same normal.
+  // Runs of emitting patches in one plane. Not the same normal alone: a receiver skips a whole
+  // group unless it is in front of every patch of it (gather_set_point), so two parallel faces in
+  // one group (the floor and a cabinet's top, consecutive once the walls between them emit
+  // nothing, as with one bounce) would hide the floor from every point below the top's plane.
   std::vector<std::pair<size_t, size_t>> runs;  // [first, last) into `emitting`
   std::vector<size_t> emitting;
+  const auto offset = [&](size_t j) {
+    return glm::dot(mesh.patches[j].normal, mesh.patches[j].centroid);
+  };
   for (size_t j = begin; j < end; ++j) {
     if (!(exitant_flux_lm[j] > 0.0)) continue;
-    if (emitting.empty() || mesh.patches[emitting.back()].normal != mesh.patches[j].normal)
+    if (emitting.empty() || mesh.patches[emitting.back()].normal != mesh.patches[j].normal ||
+        std::abs(offset(j) - offset(emitting[runs.back().first])) > kGatherCoplanar_m)
       runs.push_back({emitting.size(), emitting.size()});
     emitting.push_back(j);
     runs.back().second = emitting.size();
@@ -187,7 +194,7 @@ double gather_set_point(const PatchMesh& mesh, const GatherSet& set, const Vec3&
   const double* flux = set.flux_lm.data();
   const double opening2 = set.cluster_opening * set.cluster_opening;
   for (const auto& g : set.groups) {
-    // x behind (or on) the plane of every patch of the group: each term is skipped below.
+    // x behind (or on) the group's plane (one plane, make_gather_set): every term is 0.
     if (!(glm::dot(g.normal, x) - g.max_offset > kGatherPlaneDistance_m)) continue;
     const Vec3 m = g.normal;
     // A chunk, or a block of chunks, as one source at its flux centroid: when it is seen under

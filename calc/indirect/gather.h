@@ -22,8 +22,14 @@ inline constexpr double kGatherPlaneDistance_m = 1e-7;
 // front of the patch (patches.h visible_fraction), so neither end's own face hides the other.
 inline constexpr double kGatherLift_m = 1e-6;
 
+// Two patches of one normal lie in one plane when their centroids' offsets along it differ by at
+// most this: rounding of a face's centroids is some 1e-13 m at 1 km, and faces closer than this
+// are one plane to kGatherPlaneDistance_m's test.
+inline constexpr double kGatherCoplanar_m = 1e-9;
+
 // The emitting patches of one room (exitant flux > 0) laid out for the final gather: in groups
-// of consecutive patches with the same normal (a face, or part of one), each cut into chunks of
+// of consecutive patches in one plane (the same normal, offsets within kGatherCoplanar_m: a face,
+// or part of one; two faces of one plane may share a group), each cut into chunks of
 // nearby patches (tiles of kChunkTile x the largest diameter). A receiver skips a whole group
 // when it lies behind the group's plane (the floor, for a workplane point), and a whole chunk
 // when the chunk lies wholly behind the receiver's tangent plane (its own wall): exactly the
