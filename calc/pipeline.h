@@ -28,9 +28,12 @@ ReflectedSolutions solve_reflected_light(const Scene& scene,
 // hold the grids and E_direct. Returns what estimate_errors needs. The normal and emergency
 // scenes call it with the luminaires' first bounce, the daylight scene with the light entering
 // through the openings (IndirectOptions::incident_flux_lm). `solved`: solve_reflected_light(scene,
-// options) when the caller has solved it already (empty: solved here).
+// options) when the caller has solved it already (empty: solved here). `direct`: the direct
+// light's estimate, which the refinement's local step weighs (null: the step weighs the reflected
+// light's parts alone).
 IndirectEstimateInputs run_reflected_light(const Scene& scene,
                                            const indirect::IndirectOptions& options,
-                                           Results& results, ReflectedSolutions solved = {});
+                                           Results& results, ReflectedSolutions solved = {},
+                                           const DirectEstimateInputs* direct = nullptr);
 
 }  // namespace luxgrid::calc

@@ -98,15 +98,21 @@ struct IndirectRunPlan {
 };
 
 // One step of the patch-size refinement (calc/pipeline.cpp): the estimate at `from_m` was above
-// half the promise on `surface`; the mesh became `to_m`, or stayed for a reason.
+// half the promise on `surface`; the mesh became `to_m`, or was cut to `to_m` only around
+// `local_points` probe points (`local`: the whole mesh at `to_m` would cost `work_pairs`), or
+// stayed for a reason.
 struct PatchRefinement {
-  enum class Outcome { refined, work_over_limit, over_budget };
+  enum class Outcome { refined, work_over_limit, over_budget, local };
   Outcome outcome = Outcome::refined;
   double from_m = 0.0, to_m = 0.0;
   double estimate = 0.0;  // relative
   std::string surface;
-  double work_pairs = 0.0, work_limit_pairs = 0.0;  // work_over_limit
+  double work_pairs = 0.0, work_limit_pairs = 0.0;  // work_over_limit, local
   std::string budget_error;                         // over_budget: the solver's refusal
+  // local: the probes cut around, how far around them (m) and how many patches were quartered
+  size_t local_points = 0;
+  double reach_m = 0.0;
+  size_t patches_cut = 0;
 };
 
 struct Plan {

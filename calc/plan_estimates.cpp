@@ -116,6 +116,53 @@ PatchErrorEstimate richardson_patch_error(double d_fine, double d_coarse) {
   return {d_fine / (std::exp2(order) - 1.0), order};
 }
 
+PatchErrorEstimate local_patch_error(
+    const geometry::SurfaceGrid& grid, const std::vector<double>& E,
+    const std::vector<double>& E_indirect, const std::vector<size_t>& probe_index,
+    const std::vector<char>& local_probe, const std::vector<double>& level_h_lx,
+    const std::vector<double>& level_2h_lx, const std::vector<double>& level_4h_lx) {
+  struct Group {
+    std::vector<size_t> index;
+    std::vector<double> h, h2, h4;
+  } cut, kept;
+  for (size_t k = 0; k < probe_index.size(); ++k) {
+    Group& g = local_probe[k] ? cut : kept;
+    g.index.push_back(probe_index[k]);
+    g.h.push_back(level_h_lx[k]);
+    g.h2.push_back(level_2h_lx[k]);
+    g.h4.push_back(level_4h_lx[k]);
+  }
+  const double first_order = patch_size_estimate(grid, E, E_indirect, cut.index, cut.h);
+  // The others: the order over them alone, each probe's E_ind(0) extrapolated with it from its h
+  // and 2h values, and the run's distance from that.
+  const PatchErrorEstimate order =
+      richardson_patch_error(coarse_level_difference(grid, E, kept.index, kept.h, kept.h2),
+                             coarse_level_difference(grid, E, kept.index, kept.h2, kept.h4));
+  std::vector<double> extrapolated(kept.index.size());
+  for (size_t k = 0; k < kept.index.size(); ++k)
+    extrapolated[k] = kept.h[k] - (kept.h2[k] - kept.h[k]) / (std::exp2(order.order) - 1.0);
+  const double others = patch_size_estimate(grid, E, E_indirect, kept.index, extrapolated);
+  if (first_order > others) return {first_order, kMinPatchOrder};
+  return {others, order.order};
+}
+
+std::vector<char> local_refinement_probes(const std::vector<double>& E_direct,
+                                          const std::vector<size_t>& probe_index,
+                                          const std::vector<double>& probe_lx,
+                                          const std::vector<double>& coarse_lx, double threshold) {
+  double known_max = 0.0;
+  for (double e : E_direct) known_max = std::max(known_max, e);
+  for (size_t k = 0; k < probe_index.size(); ++k)
+    known_max = std::max(known_max, E_direct[probe_index[k]] + probe_lx[k]);
+  const double floor_lx = kPromiseFloor * known_max;
+  std::vector<char> centre(probe_index.size(), 0);
+  for (size_t k = 0; k < probe_index.size(); ++k) {
+    const double E = std::max(E_direct[probe_index[k]] + probe_lx[k], floor_lx);
+    if (E > 0.0 && std::abs(probe_lx[k] - coarse_lx[k]) > threshold * E) centre[k] = 1;
+  }
+  return centre;
+}
+
 ProbeFigure patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
                                           const std::vector<double>& E_direct,
                                           const std::vector<size_t>& probe_index,
@@ -157,6 +204,51 @@ ProbeFigure patch_size_estimate_at_probes(const geometry::SurfaceGrid& grid,
   return {dark_most, false};
 }
 
+SurfaceEstimate estimate_surface(const geometry::SurfaceGrid& grid, const std::vector<double>& E,
+                                 const std::vector<double>& E_indirect,
+                                 const DirectEstimateInputs& direct,
+                                 const IndirectEstimateInputs& indirect, size_t s) {
+  SurfaceEstimate est;
+  est.surface = grid.name;
+  const auto active = [&](size_t i) { return grid.active.empty() || grid.active[i]; };
+  double e_max = 0.0;
+  for (size_t i = 0; i < E.size(); ++i)
+    if (active(i)) e_max = std::max(e_max, E[i]);
+  // As `luxgrid cost` measures (report/diff.h): relative to the point, but no less than 1 % of
+  // the surface's maximum, so a point in near darkness counts by its absolute error.
+  const double floor_lx = kPromiseFloor * e_max;
+  const auto counted = [&](size_t i) { return active(i) && std::max(E[i], floor_lx) > 0.0; };
+  const auto denom = [&](size_t i) { return std::max(E[i], floor_lx); };
+  est.direct = direct.estimated ? 0.0 : -1.0;
+  if (direct.estimated && s < direct.error_lx.size())
+    for (size_t i = 0; i < E.size(); ++i)
+      if (counted(i)) est.direct = std::max(est.direct, direct.error_lx[s][i] / denom(i));
+  if (!indirect.ran) return est;
+  est.bounces = 0.0;
+  for (size_t i = 0; i < E.size(); ++i)
+    if (counted(i))
+      est.bounces = std::max(est.bounces, indirect.residual * E_indirect[i] / denom(i));
+  // No probes: `draft` solves one mesh, and its patch size is not estimated (-1, not 0).
+  if (s < indirect.probe_index.size()) {
+    est.patch_difference = patch_size_estimate(grid, E, E_indirect, indirect.probe_index[s],
+                                               indirect.coarse_lx[s], &est.probe_points);
+    const double d_coarse =
+        s < indirect.coarser_lx.size()
+            ? coarse_level_difference(grid, E, indirect.probe_index[s], indirect.coarse_lx[s],
+                                      indirect.coarser_lx[s])
+            : -1.0;
+    const bool local = s < indirect.local_probe.size() && s < indirect.coarsest_lx.size();
+    const PatchErrorEstimate p =
+        local ? local_patch_error(grid, E, E_indirect, indirect.probe_index[s],
+                                  indirect.local_probe[s], indirect.coarse_lx[s],
+                                  indirect.coarser_lx[s], indirect.coarsest_lx[s])
+              : richardson_patch_error(est.patch_difference, d_coarse);
+    est.patch_size = p.error;
+    est.patch_order = p.order;
+  }
+  return est;
+}
+
 void estimate_errors(Results& results, const DirectEstimateInputs& direct,
                      const IndirectEstimateInputs& indirect) {
   Plan& plan = results.plan;
@@ -167,40 +259,8 @@ void estimate_errors(Results& results, const DirectEstimateInputs& direct,
   double worst_patch = 0.0, worst_bounces = 0.0;
   for (size_t s = 0; s < results.surfaces.size(); ++s) {
     const SurfaceResult& r = results.surfaces[s];
-    SurfaceEstimate est;
-    est.surface = r.grid.name;
-    const auto active = [&](size_t i) { return r.grid.active.empty() || r.grid.active[i]; };
-    double e_max = 0.0;
-    for (size_t i = 0; i < r.E.size(); ++i)
-      if (active(i)) e_max = std::max(e_max, r.E[i]);
-    // As `luxgrid cost` measures (report/diff.h): relative to the point, but no less than 1 % of
-    // the surface's maximum, so a point in near darkness counts by its absolute error.
-    const double floor_lx = kPromiseFloor * e_max;
-    const auto counted = [&](size_t i) { return active(i) && std::max(r.E[i], floor_lx) > 0.0; };
-    const auto denom = [&](size_t i) { return std::max(r.E[i], floor_lx); };
-    est.direct = direct.estimated ? 0.0 : -1.0;
-    if (direct.estimated && s < direct.error_lx.size())
-      for (size_t i = 0; i < r.E.size(); ++i)
-        if (counted(i)) est.direct = std::max(est.direct, direct.error_lx[s][i] / denom(i));
+    SurfaceEstimate est = estimate_surface(r.grid, r.E, r.E_indirect, direct, indirect, s);
     if (indirect.ran) {
-      est.bounces = 0.0;
-      for (size_t i = 0; i < r.E.size(); ++i)
-        if (counted(i))
-          est.bounces = std::max(est.bounces, indirect.residual * r.E_indirect[i] / denom(i));
-      // No probes: `draft` solves one mesh, and its patch size is not estimated (-1, not 0).
-      if (s < indirect.probe_index.size()) {
-        est.patch_difference =
-            patch_size_estimate(r.grid, r.E, r.E_indirect, indirect.probe_index[s],
-                                indirect.coarse_lx[s], &est.probe_points);
-        const double d_coarse =
-            s < indirect.coarser_lx.size()
-                ? coarse_level_difference(r.grid, r.E, indirect.probe_index[s],
-                                          indirect.coarse_lx[s], indirect.coarser_lx[s])
-                : -1.0;
-        const PatchErrorEstimate p = richardson_patch_error(est.patch_difference, d_coarse);
-        est.patch_size = p.error;
-        est.patch_order = p.order;
-      }
       worst_patch = std::max(worst_patch, est.patch_size);
       worst_bounces = std::max(worst_bounces, est.bounces);
     }

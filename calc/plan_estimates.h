@@ -81,6 +81,23 @@ struct PatchErrorEstimate {
 };
 PatchErrorEstimate richardson_patch_error(double d_fine, double d_coarse);
 
+// The patch-size estimate of a surface after a local step (IndirectEstimateInputs::local_probe):
+// the levels are no longer one mesh halved, so no order can be measured where the mesh was cut.
+//   - at the probes cut around: d1 = |E_ind - E_ind(h)|, the first-order estimate (the one the
+//     plan makes without a measured order, kMinPatchOrder);
+//   - at the others the mesh is h's as before: the order p measured over them alone (as
+//     richardson_patch_error, from h, 2h and 4h), each one's E_ind(0) extrapolated with it,
+//     E_ind(h) - (E_ind(2h) - E_ind(h)) / (2^p - 1), and the estimate |E_ind - E_ind(0)|: where
+//     the step did not move a probe, Richardson's estimate of it, and the step's move counted
+//     with its sign (towards the extrapolated value or away from it).
+// The larger of the two; `order` is 1 where the first decides, else the measured one. `E`,
+// `E_indirect` per point of `grid`, the levels per probe.
+PatchErrorEstimate local_patch_error(
+    const geometry::SurfaceGrid& grid, const std::vector<double>& E,
+    const std::vector<double>& E_indirect, const std::vector<size_t>& probe_index,
+    const std::vector<char>& local_probe, const std::vector<double>& level_h_lx,
+    const std::vector<double>& level_2h_lx, const std::vector<double>& level_4h_lx);
+
 // Up to kProbePointsPerSurface active points of `grid`, evenly spread over its index order
 // (rows of a grid), and the grid reduced to them.
 std::vector<size_t> probe_points(const geometry::SurfaceGrid& grid);
@@ -91,6 +108,24 @@ std::vector<size_t> probe_points(const geometry::SurfaceGrid& grid);
 // probes see at most 0.5 % between h and 2h). They count in the estimate, not in the patch-size
 // choice (calc/pipeline.cpp), which the evenly spread probes make alone.
 inline constexpr size_t kShadowProbesPerSurface = 16;
+
+// Where the mesh at half the patch size would cost more than the refinement's work limit and the
+// estimate exceeds the promise (calc/pipeline.cpp, refine_locally), the run cuts it finer only
+// around the probes that ask for it: every patch within this many patch sizes of such a probe is
+// cut into quarters and the rooms solved again. tests/rooms/tshape at `standard` (the cabinet
+// 5 cm from wall 4, 0.25 m patches): 340 patches cut around 3 probes, the wall's worst point from
+// 0.39 % to 0.18 % of the room's reference (docs/accuracy.md, "The local step"). The reach costs
+// patches, not time: the step's cost is the second solve of the whole mesh.
+inline constexpr double kLocalRefinementReach = 4.0;
+
+// Per probe of one surface (probe_index, `probe_lx` the run's E_ind at h there, `coarse_lx` at
+// 2h): 1 where |E_ind(h) - E_ind(2h)| exceeds `threshold` of the probe's E (E_direct plus
+// E_ind(h), no less than 1 % of the largest E known: at the probes, and E_direct anywhere): the
+// probes a local step cuts the mesh around.
+std::vector<char> local_refinement_probes(const std::vector<double>& E_direct,
+                                          const std::vector<size_t>& probe_index,
+                                          const std::vector<double>& probe_lx,
+                                          const std::vector<double>& coarse_lx, double threshold);
 
 // Appends to `picked` (probe_points' choice) up to kShadowProbesPerSurface active points of
 // `grid` not in it: those with the smallest `E_direct` (per point of `grid`; ties: lower index).
@@ -118,6 +153,12 @@ struct IndirectEstimateInputs {
   // At 4h: as coarse_lx, for the measured order; empty where no 4h level was run.
   double coarser_patch_size_m = 0.0;
   std::vector<std::vector<double>> coarser_lx;
+  // After a local step (local_refinement_probes, calc/pipeline.cpp): per surface and probe, 1
+  // where the mesh was cut finer around that probe; coarse_lx, coarser_lx and coarsest_lx then
+  // hold the levels h (the mesh before the step, at the run's own patch size), 2h and 4h. Empty
+  // without a local step.
+  std::vector<std::vector<char>> local_probe;
+  std::vector<std::vector<double>> coarsest_lx;
   // Not for the estimate: the reflected light leaving through openings (IndirectResult's), for
   // the daylight plan's balance.
   double escaped_flux_lm = 0.0;
@@ -161,6 +202,13 @@ double coarse_level_difference(const geometry::SurfaceGrid& grid, const std::vec
                                const std::vector<size_t>& probe_index,
                                const std::vector<double>& coarse_lx,
                                const std::vector<double>& coarser_lx);
+
+// Surface `s`'s estimate (every part the plan states) from its grid, E and E_indirect at every
+// point (the same scale as the inputs' lx: both maintained, or both initial).
+SurfaceEstimate estimate_surface(const geometry::SurfaceGrid& grid, const std::vector<double>& E,
+                                 const std::vector<double>& E_indirect,
+                                 const DirectEstimateInputs& direct,
+                                 const IndirectEstimateInputs& indirect, size_t s);
 
 // Fills results.plan.promise, .estimates and the indirect run's estimate (report/plan_text.h
 // words them: a note per surface, a warning per surface whose estimate exceeds the promise).

@@ -96,7 +96,8 @@ NLOHMANN_JSON_SERIALIZE_ENUM(
 NLOHMANN_JSON_SERIALIZE_ENUM(PatchRefinement::Outcome,
                              {{PatchRefinement::Outcome::refined, "refined"},
                               {PatchRefinement::Outcome::work_over_limit, "work_over_limit"},
-                              {PatchRefinement::Outcome::over_budget, "over_budget"}})
+                              {PatchRefinement::Outcome::over_budget, "over_budget"},
+                              {PatchRefinement::Outcome::local, "local"}})
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DirectCounts, point_sources, far, near, blended, fixed_rule,
                                    fixed_blended)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LuminaireGroup, photometry, luminaires, label)
@@ -126,8 +127,30 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IndirectRunPlan, bounces_asked, bounces_run, 
                                    clustered_rooms, clustered_links, visibility, obstacles,
                                    estimated, coarse_patch_size_m, coarser_patch_size_m,
                                    probe_points_per_surface, worst_patch_size, worst_bounces)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PatchRefinement, outcome, from_m, to_m, estimate, surface,
-                                   work_pairs, work_limit_pairs, budget_error)
+// A local step's own numbers are written for it alone (the other outcomes have none).
+void to_json(nlohmann::json& j, const PatchRefinement& r) {
+  j = {{"outcome", r.outcome},
+       {"from_m", r.from_m},
+       {"to_m", r.to_m},
+       {"estimate", r.estimate},
+       {"surface", r.surface},
+       {"work_pairs", r.work_pairs},
+       {"work_limit_pairs", r.work_limit_pairs},
+       {"budget_error", r.budget_error}};
+  if (r.outcome == PatchRefinement::Outcome::local) {
+    j["local_points"] = r.local_points;
+    j["reach_m"] = r.reach_m;
+    j["patches_cut"] = r.patches_cut;
+  }
+}
+void from_json(const nlohmann::json& j, PatchRefinement& r) {
+  report::read_fields(j, "outcome", r.outcome, "from_m", r.from_m, "to_m", r.to_m, "estimate",
+                      r.estimate, "surface", r.surface, "work_pairs", r.work_pairs,
+                      "work_limit_pairs", r.work_limit_pairs, "budget_error", r.budget_error);
+  if (r.outcome == PatchRefinement::Outcome::local)
+    report::read_fields(j, "local_points", r.local_points, "reach_m", r.reach_m, "patches_cut",
+                        r.patches_cut);
+}
 NLOHMANN_JSON_SERIALIZE_ENUM(SceneNote::Kind,
                              {{SceneNote::Kind::emergency_scene, "emergency_scene"},
                               {SceneNote::Kind::observers_left_out, "observers_left_out"}})

@@ -54,16 +54,38 @@ std::string refinement_why(const calc::PatchRefinement& r, calc::Quality quality
          " % on surface '" + r.surface + "', is above half of " + refinement_target_text(quality);
 }
 
+std::string work_over_limit_text(const calc::PatchRefinement& r) {
+  return "a mesh at " + format_double("%.3g", r.to_m) + " m would cost " +
+         format_double("%.2g", r.work_pairs) +
+         " pairs and links (a dense room's form-factor pairs, a pair counting 8 where rays are "
+         "traced; a clustered room's links), above the limit of " +
+         format_double("%.2g", r.work_limit_pairs);
+}
+
+// A refinement that took place: the whole mesh at `to_m`, or the mesh cut to `to_m` around probes.
+bool refined(const calc::PatchRefinement& r) {
+  return r.outcome == calc::PatchRefinement::Outcome::refined ||
+         r.outcome == calc::PatchRefinement::Outcome::local;
+}
+
+std::string refinement_text(const calc::PatchRefinement& r, calc::Quality quality) {
+  if (r.outcome == calc::PatchRefinement::Outcome::local)
+    return "indirect: patches cut to " + format_double("%.3g", r.to_m) + " m within " +
+           format_double("%.3g", r.reach_m) + " m of " +
+           plural(r.local_points, "probe point", "probe points") + " (" +
+           plural(r.patches_cut, "patch", "patches") + " of " + format_double("%.3g", r.from_m) +
+           " m cut into quarters) where the difference asks for it: " + refinement_why(r, quality) +
+           ", and " + work_over_limit_text(r);
+  return "indirect: patch size refined from " + format_double("%.3g", r.from_m) + " m to " +
+         format_double("%.3g", r.to_m) + " m: " + refinement_why(r, quality);
+}
+
 // A refinement the work limit or the patch budget stopped (PatchRefinement's outcomes other than
-// `refined`).
+// `refined` and `local`).
 std::string refinement_stop_text(const calc::PatchRefinement& r, calc::Quality quality) {
   if (r.outcome == calc::PatchRefinement::Outcome::work_over_limit)
-    return "indirect: " + refinement_why(r, quality) + ", but a mesh at " +
-           format_double("%.3g", r.to_m) + " m would cost " + format_double("%.2g", r.work_pairs) +
-           " pairs and links (a dense room's form-factor pairs, a pair counting 8 where rays are "
-           "traced; a clustered room's links), above the limit of " +
-           format_double("%.2g", r.work_limit_pairs) + "; the patch size stays " +
-           format_double("%.3g", r.from_m) + " m";
+    return "indirect: " + refinement_why(r, quality) + ", but " + work_over_limit_text(r) +
+           "; the patch size stays " + format_double("%.3g", r.from_m) + " m";
   return "indirect: " + refinement_why(r, quality) + ", but a mesh at " +
          format_double("%.3g", r.to_m) + " m exceeds the patch budget (" + r.budget_error + ")";
 }
@@ -457,13 +479,10 @@ std::vector<std::string> plan_notes(const calc::Plan& plan) {
     notes.push_back("quality draft: far-field point model at every distance");
   for (const auto& n : plan.scene_notes) notes.push_back(scene_note_text(n));
   for (const auto& r : plan.refinements)
-    if (r.outcome == calc::PatchRefinement::Outcome::refined)
-      notes.push_back("indirect: patch size refined from " + format_double("%.3g", r.from_m) +
-                      " m to " + format_double("%.3g", r.to_m) +
-                      " m: " + refinement_why(r, plan.quality));
+    if (refined(r)) notes.push_back(refinement_text(r, plan.quality));
   if (refinement_stop_harmless(plan))
     for (const auto& r : plan.refinements)
-      if (r.outcome != calc::PatchRefinement::Outcome::refined)
+      if (!refined(r))
         notes.push_back(refinement_stop_text(r, plan.quality) + "; " +
                         refinement_stop_harmless_text(plan));
   for (const auto& n : plan.indirect_notes) notes.push_back(indirect_note_text(n));
@@ -496,8 +515,7 @@ std::vector<std::string> plan_warnings(const calc::Plan& plan) {
       plan.daylight ? daylight_warnings(plan) : std::vector<std::string>{};
   if (!refinement_stop_harmless(plan))
     for (const auto& r : plan.refinements)
-      if (r.outcome != calc::PatchRefinement::Outcome::refined)
-        warnings.push_back(refinement_stop_text(r, plan.quality));
+      if (!refined(r)) warnings.push_back(refinement_stop_text(r, plan.quality));
   for (const auto& w : plan.indirect_warnings) warnings.push_back(indirect_note_text(w));
   const double promise = plan.promise;
   const std::string quality = calc::to_string(plan.quality);

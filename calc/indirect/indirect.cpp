@@ -324,6 +324,15 @@ IndirectOptions indirect_options(const Settings& settings) {
   return o;
 }
 
+bool near_any(const Patch& p, const std::vector<Neighbourhood>& near) {
+  for (const Neighbourhood& n : near) {
+    const double reach_m = n.radius_m + p.diameter_m;
+    const Vec3 d = p.centroid - n.point;
+    if (glm::dot(d, d) <= reach_m * reach_m) return true;
+  }
+  return false;
+}
+
 namespace {
 
 // solve_indirect, returning the solution it may still change (the split's second solve).
@@ -350,6 +359,15 @@ std::unique_ptr<IndirectSolution> solve_rooms(const Scene& scene, const Indirect
   const RoomBudgets budgets = room_budgets(scene, options, size);
   sol_out.mesh =
       options.mesh ? *options.mesh : mesh_within_budget(scene, options, budgets, size, res.notes);
+  if (!options.mesh && !options.refine_near.empty()) {
+    std::vector<char> near(sol_out.mesh.patches.size(), 0);
+    for (size_t i = 0; i < near.size(); ++i) {
+      const Patch& p = sol_out.mesh.patches[i];
+      near[i] = p.has_quarters && near_any(p, options.refine_near) ? 1 : 0;
+      res.locally_refined_patches += near[i];
+    }
+    sol_out.mesh = split_patches(scene, sol_out.mesh, near);
+  }
   const size_t mesh_notes = res.notes.size();
   const PatchMesh& mesh = sol_out.mesh;
   res.clustered = budgets.clustered;
@@ -422,6 +440,7 @@ std::unique_ptr<IndirectSolution> solve_rooms(const Scene& scene, const Indirect
       IndirectResult& fr = finer->result;
       fr.notes.insert(fr.notes.begin(), res.notes.begin(), res.notes.begin() + mesh_notes);
       fr.split_patches += cut;
+      fr.locally_refined_patches = res.locally_refined_patches;
       fr.seconds += first_s;
       finer->options.mesh.reset();
       return finer;
@@ -511,6 +530,7 @@ std::unique_ptr<IndirectSolution> solve_rooms(const Scene& scene, const Indirect
       // The notes of meshing the rooms (the budget) are the first solve's.
       fr.notes.insert(fr.notes.begin(), res.notes.begin(), res.notes.begin() + mesh_notes);
       fr.split_patches += cut;
+      fr.locally_refined_patches = res.locally_refined_patches;
       fr.seconds += res.seconds;
       finer->options.mesh.reset();
       finer->options.split_patches = options.split_patches;

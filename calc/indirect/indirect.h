@@ -36,6 +36,17 @@ namespace luxgrid::calc::indirect {
 
 struct CellMesh;  // subcells.h
 
+// A ball around a point: the patches that reach into it are cut finer (IndirectOptions::
+// refine_near).
+struct Neighbourhood {
+  Vec3 point{0.0};
+  double radius_m = 0.0;
+};
+// Whether `p` may reach into one of `near`: its centroid within the radius plus the patch's
+// diameter (every point of a patch lies within its diameter of its centroid, which lies in it), so
+// no patch that reaches in is missed; one that only comes close may be taken too.
+bool near_any(const Patch& p, const std::vector<Neighbourhood>& near);
+
 struct IndirectOptions {
   Quality quality = Quality::standard;
   int bounces = 0;            // 0: auto (converged; draft: 1); N >= 1: exactly N reflections
@@ -55,6 +66,10 @@ struct IndirectOptions {
   // `draft`: the patches whose exitance jumps against a neighbour's cut into quarters
   // and the room solved again (split_mask.h).
   bool split_patches = true;
+  // Where the mesh is cut finer than patch_size_m (the plan's local step, calc/pipeline.cpp):
+  // every parallelogram patch (Patch::has_quarters) near_any of these is cut into quarters before
+  // the rooms are solved, and then split where its light jumps as any other.
+  std::vector<Neighbourhood> refine_near;
   // A mesh to solve on instead of meshing the rooms (the second solve of split_patches).
   std::shared_ptr<const PatchMesh> mesh;
   // What blocks light between two points of the scene: the plan's visibility test (its AABB tree
@@ -98,7 +113,8 @@ struct IndirectResult {
   bool tail_added = false;
   double residual = 0.0;  // largest over rooms, relative
   double patch_size_m = 0.0;
-  size_t refined_patches = 0;      // patches gathered cell by cell (subcells.h)
+  size_t refined_patches = 0;          // patches gathered cell by cell (subcells.h)
+  size_t locally_refined_patches = 0;  // cut into quarters near IndirectOptions::refine_near
   size_t split_patches = 0;        // patches cut into quarters where the light jumps (split_mask.h)
   double emitted_flux_lm = 0.0;    // entering the rooms (the parts of the openings inside them)
   double luminaire_flux_lm = 0.0;  // of the luminaires that reach a room, whole

@@ -201,6 +201,64 @@ TEST(PlanEstimates, RichardsonOnASurfaceMeasuresTheOrderFromTheProbes) {
   EXPECT_NEAR(r.error, truth, 1e-9 * truth);
 }
 
+// After a local step: probes the mesh was cut around are estimated by their own last difference
+// (first order); the others by their distance from E_ind(0) extrapolated from h and 2h with the
+// order measured over them alone, so a move towards that value lowers their figure and one away
+// raises it. Each figure is worked out by hand from the probes' values.
+TEST(PlanEstimates, ALocalStepEstimatesTheCutProbesToFirstOrderAndTheRestByExtrapolation) {
+  geometry::SurfaceGrid grid =
+      geometry::make_plane_grid("g", {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0, 1.0, 0.5);
+  ASSERT_EQ(grid.points.size(), 4u);
+  const std::vector<size_t> probes = {0, 1, 2, 3};
+  // Probe 0 was cut around, probes 1-3 were not. Their h, 2h, 4h differences fall as 2^-p with
+  // p = 1.5 at probe 1 (the largest: it sets the order), less at the others.
+  const std::vector<char> cut = {1, 0, 0, 0};
+  const double q = std::exp2(1.5);
+  const std::vector<double> h = {100.4, 100.0, 99.95, 100.02};
+  const std::vector<double> h2 = {103.0, 100.8, 100.15, 99.92};
+  const std::vector<double> h4 = {90.0, 100.8 + 0.8 * q, 100.35, 99.82};
+  // E_ind(0) extrapolated at probe 1: 100 - 0.8 / (q - 1) = 99.5624 lx.
+  const double e0 = 100.0 - 0.8 / (q - 1.0);
+  const auto run = [&](double at_1, double at_0) {
+    std::vector<double> E_ind = {at_0, at_1, 100.0, 100.0};  // all of E reflected
+    return local_patch_error(grid, E_ind, E_ind, probes, cut, h, h2, h4);
+  };
+  // Probe 0 moved 0.4 lx by the step: 0.4 %. Probe 1 not moved: Richardson's estimate there,
+  // 0.8 / (q - 1) = 0.4376 %, the larger (probes 2 and 3: 0.16 % and 0.07 %).
+  PatchErrorEstimate r = run(100.0, 100.0);
+  EXPECT_NEAR(r.error, (100.0 - e0) / 100.0, 1e-12);
+  EXPECT_NEAR(r.order, 1.5, 1e-9);
+  // Moved 0.3 lx towards the extrapolated value: 0.1376 lx of 99.7; probe 0's 0.4 % decides,
+  // first order.
+  r = run(99.7, 100.0);
+  EXPECT_NEAR(r.error, 0.4 / 100.0, 1e-12);
+  EXPECT_EQ(r.order, kMinPatchOrder);
+  // Moved 0.3 lx away from it: 0.7376 lx of 100.3.
+  r = run(100.3, 100.0);
+  EXPECT_NEAR(r.error, (100.3 - e0) / 100.3, 1e-12);
+  EXPECT_NEAR(r.order, 1.5, 1e-9);
+  // Probe 0 moved further (0.6 lx the other way): its first-order figure decides. Its coarse
+  // levels (103, 90: not in any order with h) play no part.
+  r = run(100.0, 101.0);
+  EXPECT_NEAR(r.error, 0.6 / 101.0, 1e-12);
+  EXPECT_EQ(r.order, kMinPatchOrder);
+}
+
+// The probes a local step cuts around: those whose difference between h and 2h exceeds the
+// threshold of their E, dark ones counted against 1 % of the largest E known.
+TEST(PlanEstimates, LocalRefinementProbesAreThoseAboveTheThreshold) {
+  const std::vector<double> E_direct = {400.0, 0.0, 100.0, 0.5, 0.0};
+  const std::vector<size_t> probes = {0, 2, 3, 4};
+  // E at the probes: 500, 200, 2.5 (floor: 1 % of 500 = 5 lx), 0 + 0 (no light: never).
+  const std::vector<double> at_h = {100.0, 100.0, 2.0, 0.0};
+  const std::vector<double> at_2h = {104.0, 102.1, 2.04, 0.0};
+  // Differences: 4 / 500 = 0.8 %, 2.1 / 200 = 1.05 %, 0.04 / 5 = 0.8 %, 0.
+  const std::vector<char> centre = local_refinement_probes(E_direct, probes, at_h, at_2h, 0.01);
+  EXPECT_EQ(centre, (std::vector<char>{0, 1, 0, 0}));
+  EXPECT_EQ(local_refinement_probes(E_direct, probes, at_h, at_2h, 0.005),
+            (std::vector<char>{1, 1, 1, 0}));
+}
+
 TEST(PlanEstimates, PatchSizeEstimateIsNotBelowTheMeshErrorSeenAtHalfTheSize) {
   // The estimate at patch size h is |E_ind(h) - E_ind(2h)| (first-order convergence in h). The
   // mesh's true error at h is at least |E_ind(h) - E_ind(h / 2)| when the indirect light

@@ -136,5 +136,54 @@ TEST(Split, AnLShapedRoomComesCloserToAFineSolve) {
   }
 }
 
+// The local step's mesh (IndirectOptions::refine_near): every parallelogram with a corner inside
+// a ball is cut into quarters, every one whose centroid is further than the ball's radius plus
+// its diameter is not, the quarters tile what they replace, and the solve counts what it cut.
+TEST(Split, RefineNearCutsThePatchesReachingIntoItsBalls) {
+  const Scene s = l_scene("split");
+  const PatchMesh whole = build_patch_mesh(s, 0.5);
+  IndirectOptions o;
+  o.quality = Quality::standard;
+  o.patch_size_m = 0.5;
+  o.split_patches = false;  // the light's own cut is Split's other tests'
+  o.refine_near = {{{1.0, 3.0, 0.0}, 0.6}, {{6.0, 1.0, 1.5}, 0.3}};
+  const std::unique_ptr<const IndirectSolution> solved = solve_indirect(s, o);
+  const PatchMesh& mesh = solved->mesh;
+  const auto kept = [&](const Patch& p) {
+    return std::any_of(mesh.patches.begin(), mesh.patches.end(), [&](const Patch& q) {
+      return glm::length(q.centroid - p.centroid) < 1e-12 && q.area_m2 == p.area_m2;
+    });
+  };
+  size_t cut = 0, inside = 0, outside = 0;
+  double area = 0.0, cut_area = 0.0;
+  for (const Patch& p : whole.patches) {
+    area += p.area_m2;
+    if (!p.has_quarters) continue;
+    const bool reaches = std::any_of(p.polygon.begin(), p.polygon.end(), [&](const Vec3& v) {
+      return std::any_of(o.refine_near.begin(), o.refine_near.end(), [&](const Neighbourhood& n) {
+        return glm::length(v - n.point) < n.radius_m;
+      });
+    });
+    const bool far = std::all_of(o.refine_near.begin(), o.refine_near.end(), [&](const auto& n) {
+      return glm::length(p.centroid - n.point) > n.radius_m + p.diameter_m;
+    });
+    if (reaches) {
+      EXPECT_FALSE(kept(p)) << p.centroid.x << " " << p.centroid.y << " " << p.centroid.z;
+    }
+    if (far) {
+      EXPECT_TRUE(kept(p)) << p.centroid.x << " " << p.centroid.y << " " << p.centroid.z;
+    }
+    inside += reaches ? 1 : 0;
+    outside += far ? 1 : 0;
+    cut += kept(p) ? 0 : 1;
+  }
+  for (const Patch& p : mesh.patches) cut_area += p.area_m2;
+  EXPECT_GT(inside, 4u);    // the floor near (1, 3) and the wall at x = 6: several of each
+  EXPECT_GT(outside, 50u);  // most of the room
+  EXPECT_EQ(solved->result.locally_refined_patches, cut);
+  EXPECT_EQ(mesh.patches.size(), whole.patches.size() + 3 * cut);
+  EXPECT_NEAR(cut_area, area, 1e-12 * area);
+}
+
 }  // namespace
 }  // namespace luxgrid::calc::indirect

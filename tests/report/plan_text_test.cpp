@@ -78,6 +78,41 @@ TEST(PlanText, WordsEachDecisionFromItsValues) {
             "surface's maximum");
 }
 
+// A local step (the whole mesh at half the size over the work limit, the mesh cut around the
+// probes instead): a note saying what was cut and why, never a warning of its own, whatever the
+// estimate; and results.json keeps its numbers.
+TEST(PlanText, ALocalStepIsANoteWithWhatItCut) {
+  calc::Plan p = sample_plan();
+  p.estimates.front().patch_size = 0.02;  // above the promise: the estimate's own warning only
+  calc::PatchRefinement r;
+  r.outcome = calc::PatchRefinement::Outcome::local;
+  r.from_m = 0.25, r.to_m = 0.125, r.estimate = 0.022, r.surface = "room wall 4";
+  r.work_pairs = 2.5e7, r.work_limit_pairs = 1e7;
+  r.local_points = 3, r.reach_m = 1.0, r.patches_cut = 340;
+  p.refinements.push_back(r);
+  EXPECT_EQ(plan_notes(p).front(),
+            "indirect: patches cut to 0.125 m within 1 m of 3 probe points (340 patches of 0.25 m "
+            "cut into quarters) where the difference asks for it: the patch-size difference at "
+            "0.25 m (to the mesh at 0.5 m), 2.2 % on surface 'room wall 4', is above half of "
+            "standard's promise, and a mesh at 0.125 m would cost 2.5e+07 pairs and links (a "
+            "dense room's form-factor pairs, a pair counting 8 where rays are traced; a clustered "
+            "room's links), above the limit of 1e+07");
+  for (const std::string& w : plan_warnings(p))
+    EXPECT_EQ(w.find("indirect:"), std::string::npos) << w;
+  const nlohmann::json j = report::plan_to_json(p).at("refinements").at(0);
+  EXPECT_EQ(j.at("outcome"), "local");
+  EXPECT_EQ(j.at("patches_cut"), 340);
+  const calc::PatchRefinement back =
+      report::plan_from_json(report::plan_to_json(p)).refinements.at(0);
+  EXPECT_EQ(back.outcome, calc::PatchRefinement::Outcome::local);
+  EXPECT_EQ(back.local_points, 3u);
+  EXPECT_EQ(back.reach_m, 1.0);
+  EXPECT_EQ(back.patches_cut, 340u);
+  // The other outcomes write none of the local step's keys (results.json as before).
+  p.refinements.front().outcome = calc::PatchRefinement::Outcome::refined;
+  EXPECT_FALSE(report::plan_to_json(p).at("refinements").at(0).contains("patches_cut"));
+}
+
 // A refinement the work limit stopped: a warning where the plan's estimate of the mesh that
 // stayed exceeds the quality's target, a note where it does not (the refinement chooses on the
 // difference d1 against half the target, the estimate extrapolates d1 with the measured order and
