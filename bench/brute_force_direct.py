@@ -144,11 +144,14 @@ def direct_lx(p, n, luminaires, tables, faces, nodes):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("project")
-    ap.add_argument("run")
-    ap.add_argument("--at", action="append", required=True, help="SURFACE:INDEX")
-    ap.add_argument("--nodes", default="128,256,512")
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("project", help="the project file RUN was made from")
+    ap.add_argument("run", help="a luxgrid output folder of PROJECT (its results.json)")
+    ap.add_argument("--at", action="append", required=True,
+                    help="SURFACE:INDEX, a point of RUN's surface (repeat for more)")
+    ap.add_argument("--nodes", default="128,256,512",
+                    help="cells per side of each opening, one run each (default 128,256,512)")
     args = ap.parse_args()
     results = json.load(open(os.path.join(args.run, "results.json")))
     ri = results["report_input"]

@@ -13,13 +13,14 @@ Elements closer to the point than 0.3 m are cut into 16 x 16 parts (64 x 64 with
 256 within 0.03 m), E constant over each element; beyond, one sample each.
 
   python3 bench/brute_force_gather.py PROJECT RUN --surface NAME [--spacing 0.05] [--every K]
-      [--fields FIELD_RUN]
+      [--fields FIELD_RUN] [--within X,Y,Z,R ...]
 
 RUN: a luxgrid output folder of PROJECT (results.json). The points of surface NAME are gathered
-(every K-th of those brighter than 1 % of its maximum), and their reflected light compared with
-RUN's E_indirect as the promise measures it (|difference| / E). FIELD_RUN (default
-RUN/brute_force_fields): a folder for the field run's project and its output (`run/`, reused
-when there); LUXGRID (default build/luxgrid) makes it. numpy is needed."""
+(every K-th of those brighter than 1 % of its maximum, within one of the --within balls where
+given), and their reflected light compared with RUN's E_indirect as the promise measures it
+(|difference| / E). FIELD_RUN (default RUN/brute_force_fields): a folder for the field run's
+project and its output (`run/`, reused when there); LUXGRID (default build/luxgrid) makes it.
+numpy is needed."""
 import argparse
 import json
 import math
@@ -164,14 +165,24 @@ def gather(p, n, Y, N, W, sizes, faces):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("project")
-    ap.add_argument("run")
-    ap.add_argument("--surface", required=True)
-    ap.add_argument("--spacing", type=float, default=0.05)
-    ap.add_argument("--every", type=int, default=1)
-    ap.add_argument("--fields", default=None)
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("project", help="the project file RUN was made from")
+    ap.add_argument("run", help="a luxgrid output folder of PROJECT (its results.json)")
+    ap.add_argument("--surface", required=True, help="the surface whose points are gathered")
+    ap.add_argument("--spacing", type=float, default=0.05,
+                    help="the field run's grid on every face, m (default 0.05)")
+    ap.add_argument("--every", type=int, default=1,
+                    help="gather every K-th bright point (default 1: all)")
+    ap.add_argument("--fields", default=None,
+                    help="the field run's folder (default RUN/brute_force_fields; reused when "
+                         "there)")
+    ap.add_argument("--within", action="append", default=[], metavar="X,Y,Z,R",
+                    help="only the points within R m of (X, Y, Z) (repeat for more balls)")
     args = ap.parse_args()
+    balls = [[float(v) for v in b.split(",")] for b in args.within]
+    if any(len(b) != 4 for b in balls):
+        sys.exit("--within takes X,Y,Z,R")
     results = json.load(open(os.path.join(args.run, "results.json")))
     ri = results["report_input"]
     fields, cells = field_run(args.project, results, args.spacing,
@@ -182,7 +193,9 @@ def main():
     mf = results.get("maintenance_factor", 1.0)
     act = s.get("active") or [True] * len(s["E"])
     top = max(e for e, a in zip(s["E"], act) if a)
-    chosen = [i for i in range(len(s["E"])) if act[i] and s["E"][i] > 0.01 * top][::args.every]
+    chosen = [i for i in range(len(s["E"])) if act[i] and s["E"][i] > 0.01 * top
+              and (not balls or any(math.dist(s["points"][i], b[:3]) <= b[3] for b in balls))]
+    chosen = chosen[::args.every]
     rows = []
     for i in chosen:
         p = np.array(s["points"][i], float)
