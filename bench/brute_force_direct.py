@@ -143,11 +143,17 @@ def direct_lx(p, n, luminaires, tables, faces, nodes):
     return total
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__,
+def run_parser(doc):
+    """The command line both brute-force scripts start from: PROJECT and RUN, `doc` as help."""
+    ap = argparse.ArgumentParser(description=doc,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("project", help="the project file RUN was made from")
     ap.add_argument("run", help="a luxgrid output folder of PROJECT (its results.json)")
+    return ap
+
+
+def main():
+    ap = run_parser(__doc__)
     ap.add_argument("--at", action="append", required=True,
                     help="SURFACE:INDEX, a point of RUN's surface (repeat for more)")
     ap.add_argument("--nodes", default="128,256,512",

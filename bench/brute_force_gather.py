@@ -21,7 +21,6 @@ given), and their reflected light compared with RUN's E_indirect as the promise 
 (|difference| / E). FIELD_RUN (default RUN/brute_force_fields): a folder for the field run's
 project and its output (`run/`, reused when there); LUXGRID (default build/luxgrid) makes it.
 numpy is needed."""
-import argparse
 import json
 import math
 import os
@@ -31,7 +30,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from brute_force_direct import faces_of, hidden, in_polygon  # noqa: E402
+from brute_force_direct import faces_of, hidden, in_polygon, run_parser  # noqa: E402
 from radiance_rooms import LUXGRID, ccw  # noqa: E402
 
 NEAR = ((0.3, 16), (0.1, 64), (0.03, 256))  # (distance m, parts per side) of the near elements
@@ -165,10 +164,7 @@ def gather(p, n, Y, N, W, sizes, faces):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("project", help="the project file RUN was made from")
-    ap.add_argument("run", help="a luxgrid output folder of PROJECT (its results.json)")
+    ap = run_parser(__doc__)
     ap.add_argument("--surface", required=True, help="the surface whose points are gathered")
     ap.add_argument("--spacing", type=float, default=0.05,
                     help="the field run's grid on every face, m (default 0.05)")
